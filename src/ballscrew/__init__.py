@@ -1,0 +1,3 @@
+"""ballscrew: precision ball-screw simulation."""
+
+__version__ = "0.1.0"
