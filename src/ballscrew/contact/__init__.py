@@ -1,1 +1,33 @@
-"""contact"""
+"""Normal contact of smooth or rough bodies: Hertz closed forms and the discrete half-space solver.
+
+1. :func:`hertz` (exact, Johnson 1985) and :func:`hamrock_brewe` (curve fits, 1983) for the quadratic
+   gap h = x²/(2 rx) + y²/(2 ry).
+2. :func:`solve_normal` (load given) and :func:`solve_normal_displacement` (approach given): the
+   Polonsky & Keer (1999) conjugate-gradient solver on any gap h(x, y) sampled on a cell-centred
+   grid, with Love's (1929) cell coefficients and DC-FFT convolution (Liu, Wang & Liu 2000).
+3. :func:`solve_contact`: sizes the grid from the Hertz estimate, warm-starts from the Hertz pressure
+   and enlarges the box until the pressure vanishes on its edge.
+"""
+
+from ballscrew.contact.convolution import DCFFTOperator, direct_convolution, wraparound_kernel
+from ballscrew.contact.grid import GridContactResult, solve_contact
+from ballscrew.contact.hertz import HertzContact, hamrock_brewe, hertz
+from ballscrew.contact.influence import love_coefficient, love_coefficients
+from ballscrew.contact.polonsky_keer import solve_normal, solve_normal_displacement
+from ballscrew.contact.result import ContactResult
+
+__all__ = [
+    "ContactResult",
+    "DCFFTOperator",
+    "GridContactResult",
+    "HertzContact",
+    "direct_convolution",
+    "hamrock_brewe",
+    "hertz",
+    "love_coefficient",
+    "love_coefficients",
+    "solve_contact",
+    "solve_normal",
+    "solve_normal_displacement",
+    "wraparound_kernel",
+]

@@ -1,1 +1,28 @@
-"""loads"""
+"""Axial loads: ball load (Q1) and the preloaded double nut (P1)–(P3), (E1.7)–(E1.13).
+
+Vectorised functions return NumPy float64 scalars for scalar inputs.
+"""
+
+from ballscrew.loads.ball_load import ball_load, validate_angles, validate_balls
+from ballscrew.loads.double_nut import (
+    NutForces,
+    axial_deflection_from_approaches,
+    nut_axial_compliance,
+    nut_axial_deflection,
+    nut_forces,
+    preload_after_wear,
+    preloaded_axial_stiffness,
+)
+
+__all__ = [
+    "NutForces",
+    "axial_deflection_from_approaches",
+    "ball_load",
+    "nut_axial_compliance",
+    "nut_axial_deflection",
+    "nut_forces",
+    "preload_after_wear",
+    "preloaded_axial_stiffness",
+    "validate_angles",
+    "validate_balls",
+]

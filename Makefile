@@ -1,0 +1,38 @@
+# ballscrew: the two set-up commands are `make demo` and `make test`.
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+DEMO   := results/demo
+
+.PHONY: demo test bench lint format clean
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -e ".[test]"
+	touch $(STAMP)
+
+## demo: create .venv, install, run the flagship example and write its report
+demo: $(STAMP)
+	$(VENV)/bin/ballscrew contact examples/gao2019_tcr.toml --out $(DEMO)/contact
+	@echo "report: $(DEMO)/contact/report.html"
+
+## test: create .venv, install, run the test suite
+test: $(STAMP)
+	$(PY) -m pytest -q
+
+## bench: run the benchmarks (prints tables; not part of the tests)
+bench: $(STAMP)
+	$(PY) benchmarks/bench_contact.py
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check src tests benchmarks
+	$(VENV)/bin/ruff format --check src tests benchmarks
+
+format: $(STAMP)
+	$(VENV)/bin/ruff format src tests benchmarks
+	$(VENV)/bin/ruff check --fix src tests benchmarks
+
+clean:
+	rm -rf $(VENV) results .pytest_cache .ruff_cache

@@ -1,0 +1,125 @@
+"""Benchmark of the normal-contact solver against Hertz, the FFT floor and peer solvers.
+
+Cases of /work/shared/anchors/contact-solvers.md: sphere R = 10 mm, W = 100 N and the ellipse
+Rx = 3.6 mm, Ry = 40 mm, W = 1000 N, E* = 113.19 GPa, box side 3 × the Hertz contact diameter along
+each axis, N × N cells, tol 1e-8. For each N: median wall time of 5 solves after a warm-up, iterations,
+peak-pressure error against Hertz, and the ratio of the time to the "FFT floor" = iterations × one
+forward + inverse real FFT of 2N × 2N with the same backend (pyFFTW, same threads).
+
+Columns: ``cold`` = solve_normal from the uniform start of Polonsky & Keer, including the set-up of
+a new DC-FFT operator (Love coefficients + kernel FFT), comparable with the peers' times;
+``warm`` = the same started from the Hertz pressure (as solve_contact does) with the cached operator.
+
+Usage: python benchmarks/bench_contact.py [--quick]   (--quick: N = 64, 128 and 2 repeats)
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+from collections.abc import Callable
+
+import numpy as np
+import pyfftw
+
+from ballscrew.backend import blas_single_thread, fft_threads
+from ballscrew.contact import DCFFTOperator, hertz, solve_normal
+from ballscrew.contact.grid import cell_centres
+
+E_STAR = 113.19e9
+CASES = {"sphere": (10e-3, 10e-3, 100.0), "ellipse": (3.6e-3, 40e-3, 1000.0)}
+PEERS = {  # (plain NumPy PK, Tamaas, ContactMechanics) [s], same machine, anchors file
+    "sphere": {128: (0.055, 0.141, 0.155), 256: (0.31, 0.82, 0.92), 512: (1.5, 5.2, 7.4),
+               1024: (10.9, 36.9, 56.3)},
+    "ellipse": {128: (0.072, 0.186, 0.198), 256: (0.38, 1.07, 1.19), 512: (1.9, 6.6, 9.7),
+                1024: (14.3, 51.0, 83.0)},
+}  # fmt: skip
+
+
+def median_time(func: Callable[[], object], repeats: int) -> float:
+    """Median wall time of ``repeats`` calls after one warm-up call [s]."""
+    func()
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        func()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def fft_pair_time(n: int, repeats: int = 20) -> float:
+    """Best time of one forward + inverse real FFT of 2n × 2n with pyFFTW, FFTW_MEASURE [s]."""
+    real = pyfftw.zeros_aligned((2 * n, 2 * n), dtype=np.float64)
+    spectrum = pyfftw.empty_aligned((2 * n, n + 1), dtype=np.complex128)
+    kw = {"axes": (0, 1), "flags": ("FFTW_MEASURE",), "threads": fft_threads()}
+    forward = pyfftw.FFTW(real, spectrum, **kw)
+    backward = pyfftw.FFTW(spectrum, real, direction="FFTW_BACKWARD", **kw)
+    real[:] = np.random.default_rng(0).random(real.shape)
+    best = np.inf
+    for _ in range(repeats):
+        start = time.perf_counter()
+        forward.execute()
+        backward.execute()
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def run_case(name: str, n: int, repeats: int) -> dict[str, float]:
+    rx, ry, load = CASES[name]
+    estimate = hertz(rx, ry, E_STAR, load)
+    dx, dy = 6.0 * estimate.a / n, 6.0 * estimate.b / n
+    x, y = cell_centres(n, dx)[:, None], cell_centres(n, dy)[None, :]
+    gap = x**2 / (2.0 * rx) + y**2 / (2.0 * ry)
+    initial = estimate.pressure(x, y)
+
+    def cold() -> object:
+        operator = DCFFTOperator(gap.shape, dx, dy, E_STAR)
+        return solve_normal(gap, dx, dy, E_STAR, load, operator=operator)
+
+    def warm() -> object:
+        return solve_normal(gap, dx, dy, E_STAR, load, initial=initial)
+
+    result = solve_normal(gap, dx, dy, E_STAR, load)
+    warm_result = warm()
+    with blas_single_thread():
+        pair = fft_pair_time(n)
+    t_cold = median_time(cold, repeats)
+    t_warm = median_time(warm, repeats)
+    return {
+        "time": t_cold,
+        "iterations": result.iterations,
+        "error": result.peak_pressure / estimate.p0 - 1.0,
+        "floor": t_cold / (result.iterations * pair),
+        "warm_time": t_warm,
+        "warm_iterations": warm_result.iterations,
+        "pair_ms": 1e3 * pair,
+    }
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="N = 64, 128 and 2 repeats only")
+    args = parser.parse_args()
+    sizes, repeats = ((64, 128), 2) if args.quick else ((128, 256, 512, 1024), 5)
+    print(f"pyFFTW {pyfftw.__version__}, {fft_threads()} FFT threads, E* = {E_STAR:.5g} Pa, tol 1e-8")
+    header = (
+        f"{'case':8s} {'N':>5s} {'cold [s]':>9s} {'it':>4s} {'p_max err':>10s} {'/floor':>7s} "
+        f"{'warm [s]':>9s} {'it':>4s} {'FFT pair':>9s} | peers [s]: NumPy PK, Tamaas, CM"
+    )
+    print(header)
+    print("-" * len(header))
+    for name in CASES:
+        for n in sizes:
+            row = run_case(name, n, repeats)
+            peers = PEERS[name].get(n)
+            peer_text = "  ".join(f"{t:6.3f}" for t in peers) if peers else "   -"
+            print(
+                f"{name:8s} {n:5d} {row['time']:9.4f} {row['iterations']:4d} "
+                f"{row['error']:+10.2e} {row['floor']:7.2f} {row['warm_time']:9.4f} "
+                f"{row['warm_iterations']:4d} {row['pair_ms']:7.3f}ms | {peer_text}"
+            )
+
+
+if __name__ == "__main__":
+    main()

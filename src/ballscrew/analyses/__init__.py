@@ -1,0 +1,1 @@
+"""Analyses: compose geometry, loads and physics models into the runs the CLI offers."""

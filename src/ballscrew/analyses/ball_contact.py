@@ -1,0 +1,163 @@
+"""Contact of one ball with the screw raceway (A) and the nut raceway (B).
+
+The chain of the contact-tcr reference (§1–§4, §8.1): case → screw geometry → axial force on the
+loaded nut → ball load Q (Q1) → exact (or quadratic) raceway gap → Polonsky–Keer on DC-FFT,
+with the exact elliptical Hertz and Hamrock–Brewe solutions alongside for comparison.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Literal
+
+import numpy as np
+
+from ballscrew.case import Case, NumericsSpec
+from ballscrew.contact import hamrock_brewe, hertz, solve_contact
+from ballscrew.contact.elastic import composite_modulus
+from ballscrew.contact.hertz import HertzContact
+from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
+from ballscrew.loads import ball_load, nut_forces
+
+Side = Literal["screw", "nut"]
+SIDES: tuple[Side, Side] = ("screw", "nut")
+
+
+@dataclass(frozen=True)
+class RacewayContact:
+    """Solved contact of a ball with one raceway."""
+
+    side: Side
+    """'screw' (contact A) or 'nut' (contact B)."""
+    load: float
+    """Normal ball load Q [N]."""
+    e_star: float
+    """Composite modulus of ball and raceway [Pa]."""
+    curvature: RacewayCurvature
+    """Exact gap curvatures (G15)–(G17) at the contact point."""
+    hertz: HertzContact
+    """Exact elliptical Hertz solution on the quadratic gap (H2)–(H4)."""
+    hamrock_brewe: HertzContact
+    """Hamrock–Brewe approximation (H5)–(H7)."""
+    x: np.ndarray
+    """Cell centres along the rolling direction t [m]."""
+    y: np.ndarray
+    """Cell centres across the groove [m]."""
+    gap: np.ndarray
+    """Initial gap h(x, y) [m] (exact or quadratic, as the case's ``numerics.gap_model``)."""
+    solution: Any
+    """The converged :class:`ballscrew.contact.ContactResult`."""
+
+    @property
+    def semi_axes(self) -> tuple[float, float]:
+        """Half-extents of the loaded cells along x and y [m] (± half a cell)."""
+        loaded = self.solution.pressure > 0
+        rows = np.flatnonzero(loaded.any(axis=1))
+        cols = np.flatnonzero(loaded.any(axis=0))
+        return (
+            0.5 * (rows[-1] - rows[0] + 1) * self.solution.dx,
+            0.5 * (cols[-1] - cols[0] + 1) * self.solution.dy,
+        )
+
+
+@dataclass(frozen=True)
+class BallContacts:
+    """Both contacts of one ball of the loaded nut."""
+
+    case: Case
+    geometry: ScrewGeometry
+    nut_force: float
+    """Axial force carried by the loaded nut [N]."""
+    ball_load: float
+    """Normal load on each of its balls, Q = F/(n_b sinβ cosα) [N]."""
+    screw: RacewayContact
+    nut: RacewayContact
+
+    def contact(self, side: Side) -> RacewayContact:
+        """The contact on ``side``."""
+        return self.screw if side == "screw" else self.nut
+
+
+def contact_modulus(case: Case, side: Side) -> float:
+    """E* of the ball against the screw or nut material (K1)."""
+    ball, race = case.materials.ball, getattr(case.materials, side)
+    return composite_modulus(
+        ball.youngs_modulus, ball.poissons_ratio, race.youngs_modulus, race.poissons_ratio
+    )
+
+
+def loaded_nut_force(case: Case) -> float:
+    """Axial force on the loaded nut: (P1)–(P3) for a double nut, F_p + F_a for a single one."""
+    op = case.operating
+    if case.screw.nuts == 2:
+        return nut_forces(op.preload, op.axial_load)[0]
+    return op.preload + op.axial_load
+
+
+def solve_raceway_contact(
+    geometry: ScrewGeometry,
+    side: Side,
+    load: float,
+    e_star: float,
+    numerics: NumericsSpec,
+    flank: int = 1,
+) -> RacewayContact:
+    """Solve one ball–raceway contact on an automatically sized grid.
+
+    The grid follows the Hertz ellipse of the quadratic gap (``numerics.cells_across`` cells
+    across it on each axis, box ``numerics.box_factor`` × the semi-axes, enlarged until the
+    pressure vanishes at its edge); the gap itself is exact or quadratic per
+    ``numerics.gap_model``.
+    """
+    curvature = raceway_curvature(geometry, side)
+    rx, ry = curvature.rx, curvature.ry
+    outcome = solve_contact(
+        gap_function(geometry, side, flank=flank, model=numerics.gap_model),
+        rx,
+        ry,
+        e_star,
+        load,
+        cells_across=numerics.cells_across,
+        box_factor=numerics.box_factor,
+        tol=numerics.tolerance,
+    )
+    return RacewayContact(
+        side=side,
+        load=load,
+        e_star=e_star,
+        curvature=curvature,
+        hertz=hertz(rx, ry, e_star, load),
+        hamrock_brewe=hamrock_brewe(rx, ry, e_star, load),
+        x=np.asarray(outcome.x),
+        y=np.asarray(outcome.y),
+        gap=np.asarray(outcome.gap),
+        solution=outcome.solution,
+    )
+
+
+def solve_ball_contacts(case: Case) -> BallContacts:
+    """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads."""
+    geometry = ScrewGeometry.from_spec(case.screw)
+    force = loaded_nut_force(case)
+    q = ball_load(force, case.screw.balls_per_nut, geometry.contact_angle, geometry.lead_angle)
+    contacts = {
+        side: solve_raceway_contact(geometry, side, q, contact_modulus(case, side), case.numerics)
+        for side in SIDES
+    }
+    return BallContacts(case, geometry, force, q, contacts["screw"], contacts["nut"])
+
+
+def contact_scalars(case: Case) -> dict[str, tuple[float, str]]:
+    """Sweepable scalars of :func:`solve_ball_contacts`: loads and peak pressures with units."""
+    result = solve_ball_contacts(case)
+    scalars = {
+        "nut_force": (result.nut_force, "N"),
+        "ball_load": (result.ball_load, "N"),
+    }
+    for side in SIDES:
+        c = result.contact(side)
+        scalars[f"{side}_peak_pressure"] = (c.solution.peak_pressure, "Pa")
+        scalars[f"{side}_hertz_peak_pressure"] = (c.hertz.p0, "Pa")
+        scalars[f"{side}_approach"] = (c.solution.approach, "m")
+        scalars[f"{side}_contact_area"] = (c.solution.contact_area, "m^2")
+    return scalars

@@ -1,0 +1,213 @@
+"""Thermal contact resistance of a (double-nut) ball screw, Gao, Wang & Liu (2019).
+
+The chain of contact-tcr.md §7.1: nut forces under preload and axial load (P1)–(P3) → ball load
+(Q1) → contact pressure at the screw (A) and nut (B) contacts → fractal element resistances on
+Δ_f cells (§5–§6) → elements in parallel (A1), screw and nut contact in series per ball (A2),
+balls and nuts in parallel (A3) → unit-area value R″ = R·S (A4).
+
+Every ball of a nut carries the same load (the paper's assumption). The two nuts load opposite
+flanks; the flank mirrors the gap (h₋₁(x, y) = h₊₁(−x, −y)) and leaves the resistance unchanged,
+so one solve serves every contact of equal load and side.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ballscrew.analyses.ball_contact import (
+    SIDES,
+    RacewayContact,
+    Side,
+    contact_modulus,
+    solve_raceway_contact,
+)
+from ballscrew.case import Case
+from ballscrew.errors import InputError
+from ballscrew.geometry import ScrewGeometry
+from ballscrew.loads import ball_load, nut_forces, preloaded_axial_stiffness
+from ballscrew.thermal import (
+    ContactTCR,
+    FractalTCRModel,
+    contact_tcr,
+    parallel_resistance,
+    series_resistance,
+)
+
+
+@dataclass(frozen=True)
+class RacewayTCR:
+    """Pressure solution and thermal contact resistance of one ball–raceway contact."""
+
+    contact: RacewayContact
+    tcr: ContactTCR
+
+
+@dataclass(frozen=True)
+class NutTCR:
+    """One nut: its force, ball load, the two contacts of a ball, and what they add up to."""
+
+    index: int
+    """1 = the nut the axial load presses on, 2 = the one it unloads."""
+    force: float
+    """Axial force on the nut [N]."""
+    ball_load: float
+    """Normal load of each of its balls [N]."""
+    balls: int
+    """Loaded balls of the nut."""
+    screw: RacewayTCR
+    nut: RacewayTCR
+    axial_deflection: float
+    """δ_a = (δ_A + δ_B)/(sinβ cosα) from the solved approaches (E1.7) [m]."""
+
+    @property
+    def ball_resistance(self) -> float:
+        """R_sbn = R_sb + R_bn, one ball, screw and nut contact in series (A2) [K/W]."""
+        return float(series_resistance(self.screw.tcr.resistance, self.nut.tcr.resistance))
+
+    @property
+    def resistance(self) -> float:
+        """All balls of the nut in parallel, R_sbn / n_b (A3) [K/W]."""
+        return self.ball_resistance / self.balls
+
+    @property
+    def apparent_area(self) -> float:
+        """n_b (S_sb + S_bn)/2, the nut's share of S in (A4) [m²]."""
+        return self.balls * 0.5 * (self.screw.tcr.apparent_area + self.nut.tcr.apparent_area)
+
+    @property
+    def axial_stiffness(self) -> float:
+        """Preloaded axial stiffness dF/dδ_a = 1.5 F/δ_a of the nut (Hertz, §8.2) [N/m]."""
+        return float(preloaded_axial_stiffness(self.force, self.axial_deflection))
+
+
+@dataclass(frozen=True)
+class ScrewTCR:
+    """Thermal contact resistance of the whole screw and of each nut and contact."""
+
+    case_name: str
+    variant: str
+    """Element model that produced the numbers (V2, MT or V1)."""
+    cell_size: float
+    """Fractal cell size Δ_f [m] (results depend on it, contact-tcr.md §6.5)."""
+    nut_forces: tuple[float, float]
+    """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
+    nuts: tuple[NutTCR, ...]
+    """The nuts that carry load (a lifted-off nut is absent)."""
+
+    @property
+    def resistance(self) -> float:
+        """R of the whole screw: every loaded ball of every nut in parallel (A3) [K/W]."""
+        return float(parallel_resistance([n.resistance for n in self.nuts]))
+
+    @property
+    def apparent_area(self) -> float:
+        """S = Σ over nuts of n_b (S_sb + S_bn)/2 (A4) [m²]."""
+        return float(sum(n.apparent_area for n in self.nuts))
+
+    @property
+    def resistance_per_area(self) -> float:
+        """Unit-area TCR R″ = R·S (A4) [m² K/W]."""
+        return self.resistance * self.apparent_area
+
+
+def tcr_model(case: Case, side: Side, variant: str | None = None) -> FractalTCRModel:
+    """Fractal TCR parameters of the ball against the ``side`` raceway, from the case."""
+    if case.surface.ball is not None:
+        raise InputError(
+            "surface.ball", "rough", "absent (smooth ball): the TCR chain models the raceway only"
+        )
+    ball, race = case.materials.ball, getattr(case.materials, side)
+    options = case.tcr
+    return FractalTCRModel(
+        D=case.surface.D,
+        G=case.surface.G,
+        E_star=contact_modulus(case, side),
+        H=min(ball.hardness, race.hardness),
+        lambda_1=ball.thermal_conductivity,
+        lambda_2=race.thermal_conductivity,
+        lambda_f=case.medium.thermal_conductivity,
+        variant=variant or options.variant,
+        cutoff_area=options.cutoff_area,
+        gap_model=options.gap_model,
+        gap_factor=options.gap_factor,
+    )
+
+
+def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
+    """Thermal contact resistance of the ball screw of ``case`` (contact-tcr.md §7.1).
+
+    ``variant`` picks the element model (V2, MT or V1); ``None`` takes ``case.tcr.variant``.
+    Contacts of equal side and ball load are solved once (both nuts share them at zero axial
+    load).
+    """
+    geometry = ScrewGeometry.from_spec(case.screw)
+    op = case.operating
+    if case.screw.nuts == 2:
+        forces = tuple(float(f) for f in nut_forces(op.preload, op.axial_load))
+    else:
+        forces = (op.preload + op.axial_load, 0.0)
+    models = {side: tcr_model(case, side, variant) for side in SIDES}
+    solved: dict[tuple[Side, float], RacewayTCR] = {}
+
+    def raceway(side: Side, load: float, flank: int) -> RacewayTCR:
+        if (side, load) not in solved:
+            contact = solve_raceway_contact(
+                geometry, side, load, contact_modulus(case, side), case.numerics, flank
+            )
+            sol = contact.solution
+            tcr = contact_tcr(
+                sol.pressure,
+                sol.dx,
+                sol.dy,
+                models[side],
+                cell_size=case.tcr.cell_size,
+                load_threshold=case.tcr.load_threshold,
+            )
+            solved[side, load] = RacewayTCR(contact, tcr)
+        return solved[side, load]
+
+    projection = np.sin(geometry.contact_angle) * np.cos(geometry.lead_angle)
+    nuts = []
+    for index, force in enumerate(forces, start=1):
+        if force <= 0.0:
+            continue  # a lifted-off (or absent) nut carries nothing
+        q = ball_load(force, case.screw.balls_per_nut, geometry.contact_angle, geometry.lead_angle)
+        flank = 1 if index == 1 else -1
+        screw_side, nut_side = raceway("screw", q, flank), raceway("nut", q, flank)
+        approach = screw_side.contact.solution.approach + nut_side.contact.solution.approach
+        nuts.append(
+            NutTCR(
+                index=index,
+                force=force,
+                ball_load=q,
+                balls=case.screw.balls_per_nut,
+                screw=screw_side,
+                nut=nut_side,
+                axial_deflection=approach / projection,
+            )
+        )
+    return ScrewTCR(
+        case_name=case.name,
+        variant=models["screw"].variant,
+        cell_size=case.tcr.cell_size,
+        nut_forces=forces,
+        nuts=tuple(nuts),
+    )
+
+
+def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
+    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units."""
+    result = screw_tcr(case, variant=None)
+    scalars = {
+        "resistance": (result.resistance, "K/W"),
+        "resistance_per_area": (result.resistance_per_area, "m^2*K/W"),
+        "apparent_area": (result.apparent_area, "m^2"),
+        "F1": (result.nut_forces[0], "N"),
+        "F2": (result.nut_forces[1], "N"),
+    }
+    for nut in result.nuts:
+        scalars[f"nut{nut.index}_resistance"] = (nut.resistance, "K/W")
+        scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")
+    return scalars

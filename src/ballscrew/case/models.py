@@ -1,0 +1,185 @@
+"""Pydantic models of a ballscrew case file.
+
+A case is one TOML file with the sections ``[screw]``, ``[materials.ball|screw|nut]``,
+``[surface]``, ``[medium]``, ``[operating]`` and ``[numerics]``. Every number is SI; a string
+with a unit (``lead = "10 mm"``) is converted by pint. Unknown keys are errors, so a misspelt
+parameter is never silently ignored.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import partial
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+
+from ballscrew.units import SI_UNITS, to_si
+
+
+def quantity(kind: str, description: str, **constraints: float) -> Any:
+    """An annotated float field that accepts SI numbers or unit strings of ``kind``."""
+    return Annotated[
+        float,
+        BeforeValidator(partial(to_si, kind=kind)),
+        Field(description=description, json_schema_extra={"unit": SI_UNITS[kind]}, **constraints),
+    ]
+
+
+class Model(BaseModel):
+    """Base of every case section: unknown keys are rejected, instances are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+
+
+class ScrewSpec(Model):
+    """Catalogue geometry of the screw and its nut(s)."""
+
+    pitch_diameter: quantity("length", "ball-centre (pitch-circle) diameter d_m", gt=0)
+    lead: quantity("length", "lead L (axial advance per screw revolution)", gt=0)
+    ball_diameter: quantity("length", "ball diameter D_b", gt=0)
+    screw_conformity: Annotated[
+        float, Field(gt=0.5, lt=1.0, description="screw groove radius / ball diameter f_s")
+    ]
+    nut_conformity: Annotated[
+        float, Field(gt=0.5, lt=1.0, description="nut groove radius / ball diameter f_N")
+    ]
+    contact_angle: quantity(
+        "angle",
+        'contact angle β in the normal plane (rad; "45 deg" also works)',
+        gt=0,
+        lt=math.pi / 2,
+    )
+    balls_per_nut: Annotated[int, Field(ge=1, le=10_000, description="loaded balls per nut")]
+    nuts: Literal[1, 2] = Field(2, description="1 (single nut) or 2 (preloaded double nut)")
+
+    @model_validator(mode="after")
+    def _ball_fits(self) -> ScrewSpec:
+        if self.ball_diameter >= self.pitch_diameter:
+            raise ValueError(
+                f"ball_diameter = {self.ball_diameter:g} m is not allowed: it must be smaller "
+                f"than pitch_diameter = {self.pitch_diameter:g} m"
+            )
+        return self
+
+
+class MaterialSpec(Model):
+    """Mechanical and thermal properties of one part (ball, screw or nut)."""
+
+    youngs_modulus: quantity("pressure", "Young's modulus E", gt=0)
+    poissons_ratio: Annotated[float, Field(gt=0.0, lt=0.5, description="Poisson's ratio ν")]
+    hardness: quantity("pressure", "indentation hardness H of the surface", gt=0)
+    yield_strength: quantity("pressure", "yield strength σ_y", gt=0)
+    thermal_conductivity: quantity("thermal_conductivity", "thermal conductivity λ", gt=0)
+    density: quantity("density", "density ρ", gt=0)
+    specific_heat: quantity("specific_heat", "specific heat capacity c_p", gt=0)
+    thermal_expansion: quantity("expansion", "linear thermal expansion coefficient α_T", ge=0)
+
+
+class Materials(Model):
+    """Materials of the three parts in contact."""
+
+    ball: MaterialSpec
+    screw: MaterialSpec
+    nut: MaterialSpec
+
+
+class FractalSurface(Model):
+    """Weierstrass–Mandelbrot description of a rough surface (profile dimension)."""
+
+    D: Annotated[float, Field(gt=1.0, lt=2.0, description="profile fractal dimension D")]
+    G: quantity("length", "fractal roughness G", gt=0)
+
+
+class SurfaceSpec(FractalSurface):
+    """Raceway roughness (``D``, ``G``) and, optionally, the ball's (smooth when absent)."""
+
+    ball: FractalSurface | None = Field(None, description="ball roughness; None = smooth ball")
+
+
+class MediumSpec(Model):
+    """The interstitial medium between the asperities: lubricant, grease or air."""
+
+    name: str = Field("mineral oil", description="what the medium is, for the report")
+    thermal_conductivity: quantity("thermal_conductivity", "conductivity λ_f of the medium", gt=0)
+    viscosity: quantity("viscosity", "dynamic viscosity η₀ at the inlet", gt=0) | None = None
+    pressure_viscosity: (
+        quantity("inverse_pressure", "Barus pressure–viscosity coefficient α_p", ge=0) | None
+    ) = None
+
+
+class OperatingSpec(Model):
+    """Operating point: preload, external axial load and screw speed."""
+
+    preload: quantity("force", "preload F_p of the nut(s)", ge=0)
+    axial_load: quantity(
+        "force", "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2)", ge=0
+    ) = 0.0
+    speed: quantity("angular_velocity", 'screw speed ω (rad/s; "1000 rpm" also works)', ge=0) = 0.0
+
+
+class NumericsSpec(Model):
+    """Numerical settings of the contact solver."""
+
+    cells_across: Annotated[
+        int, Field(ge=8, le=4096, description="grid cells across the Hertz contact, each axis")
+    ] = 64
+    box_factor: Annotated[
+        float, Field(ge=1.05, le=5.0, description="grid box half-width / Hertz semi-axis")
+    ] = 1.3
+    tolerance: Annotated[
+        float, Field(gt=0.0, le=1e-3, description="relative pressure change to stop the CG")
+    ] = 1e-8
+    max_iterations: Annotated[
+        int, Field(ge=10, le=100_000, description="CG iteration limit before it is an error")
+    ] = 2000
+    gap_model: Literal["exact", "quadratic"] = Field(
+        "exact", description="raceway gap: exact Newton projection or quadratic (Hertz) form"
+    )
+
+
+class TCRSpec(Model):
+    """Options of the fractal thermal-contact-resistance model (contact-tcr.md §6)."""
+
+    variant: Literal["V2", "MT", "V1"] = Field(
+        "V2", description="element solid conductance: V2 (default, reconstruction), MT or V1"
+    )
+    cell_size: quantity("length", "fractal cell size Δ_f the pressure is re-binned onto", gt=0) = (
+        8e-6
+    )
+    cutoff_area: quantity("area", "lower spot-area cut-off a_s of variant MT", gt=0) = 1e-16
+    gap_model: Literal["mean_cap", "cap_clearance", "interference", "two_sigma"] = Field(
+        "mean_cap", description="gap-thickness model L_g (T6 = mean_cap)"
+    )
+    gap_factor: Annotated[float, Field(gt=0, description="multiplier on L_g")] = 1.0
+    load_threshold: Annotated[
+        float, Field(ge=0, lt=1, description="cells below this × the peak load are skipped")
+    ] = 1e-8
+
+
+class Case(Model):
+    """One validated ball-screw case (all values SI)."""
+
+    name: str = Field("case", description="short name of the case, used in reports")
+    description: str = Field("", description="free text shown in the report")
+    screw: ScrewSpec
+    materials: Materials
+    surface: SurfaceSpec
+    medium: MediumSpec
+    operating: OperatingSpec
+    numerics: NumericsSpec = NumericsSpec()
+    tcr: TCRSpec = TCRSpec()
+
+    @model_validator(mode="after")
+    def _some_ball_is_loaded(self) -> Case:
+        op = self.operating
+        if self.screw.nuts == 2 and op.preload <= 0:
+            raise ValueError(
+                "operating.preload = 0 N is not allowed: a double nut needs a preload > 0 N"
+            )
+        if op.preload + op.axial_load <= 0:
+            raise ValueError(
+                "operating.axial_load = 0 N with operating.preload = 0 N lifts every ball off: "
+                "the nut needs preload + axial_load > 0 N"
+            )
+        return self

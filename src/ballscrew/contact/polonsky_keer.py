@@ -1,0 +1,347 @@
+"""Normal contact of a rigid-body gap on the elastic half-space: Polonsky & Keer conjugate gradients.
+
+Polonsky & Keer (1999), Wear 231:206, "A numerical method for solving rough contact problems based
+on the multi-level multi-summation and conjugate gradient techniques", with the convolutions done
+by DC-FFT (Liu, Wang & Liu 2000). Unknowns: cell pressures p ≥ 0 and the approach δ, such that
+
+(C1) s = h + u − δ = 0 where p > 0 and s ≥ 0 where p = 0, u = K ∗ p  (K5);
+(C2) dx·dy·Σp = W  (load control, δ is its Lagrange multiplier), or δ given (displacement control).
+
+Each iteration costs one convolution (of the search direction); the displacement u = K ∗ p is
+updated from it as u ← scale·(u − τ r) when the step neither clips a pressure nor re-admits a cell,
+and recomputed by a second convolution otherwise. All array work is written against the array module
+of the gap, so the same code runs on NumPy and CuPy arrays.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from dataclasses import dataclass
+from types import ModuleType
+from typing import Any
+
+import numpy as np
+
+from ballscrew.backend import array_module, blas_single_thread
+from ballscrew.contact._validation import finite_grid, positive
+from ballscrew.contact.convolution import DCFFTOperator
+from ballscrew.contact.result import ContactResult
+from ballscrew.errors import ConvergenceError, InputError
+
+__all__ = ["solve_normal", "solve_normal_displacement"]
+
+SOLVER = "Polonsky-Keer conjugate gradient"
+DEFAULT_MAX_ITERATIONS = 1000
+
+
+@dataclass
+class _Iterate:
+    """State handed back by :func:`_conjugate_gradient`."""
+
+    pressure: Any
+    iterations: int
+    residual: float
+    converged: bool
+
+
+def _reductions_context(xp: ModuleType) -> contextlib.AbstractContextManager[None]:
+    return blas_single_thread() if xp is np else contextlib.nullcontext()
+
+
+def _row_span(mask: Any) -> tuple[int, int]:
+    """First and one-past-last row of ``mask`` holding a True value ((0, 0) if none)."""
+    xp = array_module(mask)
+    rows = xp.flatnonzero(mask.any(axis=1))
+    return (int(rows[0]), int(rows[-1]) + 1) if rows.size else (0, 0)
+
+
+def _min_outside(a: Any, lo: int, hi: int) -> float:
+    """Smallest value of ``a`` outside rows lo:hi (+inf if there is none)."""
+    parts = [part.min() for part in (a[:lo], a[hi:]) if part.size]
+    return min((float(v) for v in parts), default=np.inf)
+
+
+def _conjugate_gradient(
+    h: Any,
+    p: Any,
+    u: Any,
+    operator: DCFFTOperator,
+    tol: float,
+    max_iterations: int,
+    total: float | None,
+) -> _Iterate:
+    """Polonsky & Keer (1999) CG, steps 2-10 of §3.2 (load control) or §3.3 (displacement control).
+
+    ``h`` is the gap (load control) or h − δ (displacement control, ``total`` None); ``p`` the
+    initial pressures (modified in place) and ``u`` = K ∗ p (modified in place). Load control keeps
+    Σp = ``total`` = W/(dx·dy): the gap and the conjugate response are taken relative to their means
+    over the contact set (Eqs. 24-26 and 30-32) and p is rescaled after each step (Eqs. 38-39).
+
+    Bookkeeping: p and t vanish outside the band of rows lo:hi that holds the contact set, so the
+    contact-set arithmetic runs on that (contiguous) band only; the gap g = u + h − ḡ is still checked
+    on every cell for penetration (Eq. 37), and the band grows when a cell outside it re-enters.
+    """
+    xp = array_module(h)
+    load_control = total is not None
+    q, t, r, p_old, contact, step, work = (xp.empty_like(h) for _ in range(7))
+    t.fill(0.0)
+    empty, penetrating = xp.empty(h.shape, dtype=bool), xp.empty(h.shape, dtype=bool)
+    lo, hi = _row_span(p > 0.0)
+    conjugate, g_norm_old, residual = False, 1.0, np.inf
+    for iteration in range(1, max_iterations + 1):
+        # Step 3: q = u + h, contact set I_c = {p > 0}, gap g = q − ḡ on I_c (in `s`).
+        xp.add(u, h, out=q)
+        pb, tb, qb = p[lo:hi], t[lo:hi], q[lo:hi]
+        c, s, w = contact[lo:hi], step[lo:hi], work[lo:hi]
+        xp.greater(pb, 0.0, out=c)
+        n_contact = float(c.sum())
+        xp.multiply(qb, c, out=s)
+        g_mean = float(s.sum()) / n_contact if load_control else 0.0
+        if load_control:
+            xp.subtract(qb, g_mean, out=s)
+            xp.multiply(s, c, out=s)
+        # Step 4: new conjugate direction t on I_c (Eqs. 27-29).
+        g_norm = float(xp.vdot(s, s))
+        if g_norm == 0.0:
+            return _Iterate(p, iteration, 0.0, True)
+        if conjugate:
+            xp.multiply(tb, g_norm / g_norm_old, out=tb)
+            xp.multiply(tb, c, out=tb)
+            xp.add(tb, s, out=tb)
+        else:
+            xp.copyto(tb, s)
+        g_norm_old = g_norm
+        # Step 5: r = K ∗ t and the step length τ (Eqs. 30-33).
+        operator.apply(t, out=r)
+        rb = r[lo:hi]
+        curvature = float(xp.vdot(rb, tb))
+        if load_control:
+            curvature -= float(xp.vdot(rb, c)) / n_contact * float(tb.sum())
+        tau = float(xp.vdot(s, tb)) / curvature
+        # Steps 6-7: p ← max(p − τ t, 0) (Eqs. 34-36).
+        xp.copyto(p_old[lo:hi], pb)
+        xp.multiply(tb, tau, out=w)
+        xp.subtract(pb, w, out=pb)
+        clipped = float(pb.min()) < 0.0
+        if clipped:
+            xp.maximum(pb, 0.0, out=pb)
+        # Step 8: cells with p = 0 and g < 0 re-enter the contact (Eq. 37); conjugacy is reset.
+        if _min_outside(q, lo, hi) < g_mean:
+            new_lo, new_hi = _row_span(q < g_mean)
+            new_lo, new_hi = min(lo, new_lo), max(hi, new_hi)
+            p_old[new_lo:lo] = 0.0
+            p_old[hi:new_hi] = 0.0
+            lo, hi = new_lo, new_hi
+            pb, qb, w = p[lo:hi], q[lo:hi], work[lo:hi]
+        zero, enter = empty[lo:hi], penetrating[lo:hi]
+        xp.less_equal(pb, 0.0, out=zero)
+        xp.less(qb, g_mean, out=enter)
+        xp.logical_and(zero, enter, out=enter)
+        readmitted = bool(enter.any())
+        if readmitted:
+            xp.subtract(qb, g_mean, out=w)
+            xp.multiply(w, enter, out=w)
+            xp.multiply(w, tau, out=w)
+            xp.subtract(pb, w, out=pb)
+        conjugate = not readmitted
+        # Step 9: load balance (Eqs. 38-39).
+        current = float(pb.sum())
+        if not current > 0.0:
+            return _Iterate(p, iteration, np.inf, False)
+        scale = total / current if load_control else 1.0
+        if load_control:
+            xp.multiply(pb, scale, out=pb)
+        # Step 10: ε = Σ|p − p_old| / Σp (Eq. 40).
+        xp.subtract(pb, p_old[lo:hi], out=w)
+        xp.abs(w, out=w)
+        residual = float(w.sum()) / (total if load_control else current)
+        if clipped or readmitted:
+            operator.apply(p, out=u)
+        else:  # p = scale·(p_old − τ t) exactly, so u = scale·(u_old − τ r).
+            xp.multiply(r, tau, out=step)
+            xp.subtract(u, step, out=u)
+            if load_control:
+                xp.multiply(u, scale, out=u)
+        if residual < tol:
+            return _Iterate(p, iteration, residual, True)
+        # Shrink the band to the rows that still carry pressure; t must vanish outside it.
+        first, last = _row_span(pb > 0.0)
+        t[lo : lo + first] = 0.0
+        t[lo + last : hi] = 0.0
+        lo, hi = lo + first, lo + last
+    return _Iterate(p, max_iterations, residual, False)
+
+
+def _grid_operator(
+    operator: DCFFTOperator | None,
+    shape: tuple[int, int],
+    dx: float,
+    dy: float,
+    e_star: float,
+    xp: ModuleType,
+) -> DCFFTOperator:
+    if operator is None:
+        return DCFFTOperator.for_grid(shape, dx, dy, e_star, xp)
+    if not operator.matches(shape, dx, dy, e_star):
+        raise InputError(
+            "operator",
+            f"DCFFTOperator(shape={operator.shape}, dx={operator.dx}, dy={operator.dy}, "
+            f"e_star={operator.e_star})",
+            f"the operator of this grid: shape={shape}, dx={dx}, dy={dy}, e_star={e_star}",
+        )
+    return operator
+
+
+def _check_iterations(max_iterations: int) -> int:
+    if isinstance(max_iterations, bool) or not isinstance(max_iterations, int | np.integer):
+        raise InputError("max_iterations", max_iterations, "an integer ≥ 1")
+    if max_iterations < 1:
+        raise InputError("max_iterations", max_iterations, "an integer ≥ 1")
+    return int(max_iterations)
+
+
+def _finish(
+    state: _Iterate,
+    h: Any,
+    operator: DCFFTOperator,
+    dx: float,
+    dy: float,
+    tol: float,
+    raise_on_failure: bool,
+    approach: float | None = None,
+) -> ContactResult:
+    """Check convergence, recompute u = K ∗ p exactly, and collect the result."""
+    if not state.converged and raise_on_failure:
+        raise ConvergenceError(SOLVER, state.iterations, state.residual, tol)
+    xp = array_module(h)
+    p = state.pressure
+    u = operator.apply(p)
+    contact = p > 0.0
+    n_contact = int(contact.sum())
+    if approach is None:  # δ = mean of u + h over the contact set (§3.2, output).
+        approach = float(xp.where(contact, u + h, 0.0).sum()) / max(n_contact, 1)
+    return ContactResult(
+        pressure=p,
+        displacement=u,
+        approach=approach,
+        load=float(p.sum()) * dx * dy,
+        contact_area=n_contact * dx * dy,
+        iterations=state.iterations,
+        residual=state.residual,
+        converged=state.converged,
+        dx=dx,
+        dy=dy,
+    )
+
+
+def solve_normal(
+    gap: Any,
+    dx: float,
+    dy: float,
+    e_star: float,
+    load: float,
+    tol: float = 1e-8,
+    *,
+    max_iterations: int = DEFAULT_MAX_ITERATIONS,
+    initial: Any = None,
+    operator: DCFFTOperator | None = None,
+    raise_on_failure: bool = True,
+) -> ContactResult:
+    """Pressure under the normal load W between two bodies with the initial gap ``gap``.
+
+    Load-controlled conjugate gradients of Polonsky & Keer (1999), §3.2, on the discrete problem
+    (C1)-(C2) with Love's cell coefficients (K4) and DC-FFT convolution (Liu, Wang & Liu 2000).
+
+    Parameters
+    ----------
+    gap
+        Initial separation h [m] at the cell centres, a 2-D NumPy or CuPy array; ``gap[i, j]`` is
+        at (x_i, y_j), axis 0 along x.
+    dx, dy
+        Cell sizes along x and y [m].
+    e_star
+        Composite modulus E* [Pa] (K1).
+    load
+        Normal load W [N].
+    tol
+        Stop when Σ|p − p_old| / Σp < tol (Polonsky & Keer, Eq. 40).
+    max_iterations
+        Iterations allowed before :class:`~ballscrew.errors.ConvergenceError` is raised.
+    initial
+        Warm-start pressures (≥ 0, shape of ``gap``); rescaled to the load. Default: uniform.
+    operator
+        A :class:`DCFFTOperator` of this grid to reuse; default: the cached one of the grid.
+    raise_on_failure
+        If False, return the last iterate with ``converged=False`` instead of raising.
+
+    Returns
+    -------
+    ContactResult
+        Pressure [Pa], displacement [m], approach δ = mean of u + h over the contact set [m], ...
+    """
+    xp = array_module(gap)
+    h = finite_grid("gap", gap, xp)
+    dx, dy = positive("dx", dx), positive("dy", dy)
+    e_star, load, tol = positive("e_star", e_star), positive("load", load), positive("tol", tol)
+    max_iterations = _check_iterations(max_iterations)
+    op = _grid_operator(operator, h.shape, dx, dy, e_star, xp)
+    total = load / (dx * dy)
+    if initial is None:
+        p = xp.full(h.shape, total / h.size)
+    else:
+        p = _initial_pressure(initial, h, xp)
+        p *= total / float(p.sum())
+    with _reductions_context(xp):
+        state = _conjugate_gradient(h, p, op.apply(p), op, tol, max_iterations, total)
+    return _finish(state, h, op, dx, dy, tol, raise_on_failure)
+
+
+def _initial_pressure(initial: Any, h: Any, xp: ModuleType) -> Any:
+    p = xp.array(initial, dtype=xp.float64, copy=True)
+    if p.shape != h.shape:
+        raise InputError("initial", f"array of shape {p.shape}", f"an array of shape {h.shape}")
+    if not bool(xp.isfinite(p).all()) or bool((p < 0.0).any()) or not float(p.sum()) > 0.0:
+        raise InputError("initial", "array", "finite pressures ≥ 0 with a positive sum")
+    return p
+
+
+def solve_normal_displacement(
+    gap: Any,
+    dx: float,
+    dy: float,
+    e_star: float,
+    approach: float,
+    tol: float = 1e-8,
+    *,
+    max_iterations: int = DEFAULT_MAX_ITERATIONS,
+    initial: Any = None,
+    operator: DCFFTOperator | None = None,
+    raise_on_failure: bool = True,
+) -> ContactResult:
+    """Pressure and load for a given rigid-body approach δ (displacement control, §3.3).
+
+    Polonsky & Keer (1999) CG with g = u + h − δ and neither the mean subtraction nor the load
+    rescaling; stops when Σ|p − p_old| / Σp < tol. The initial guess is p ∝ (δ − h)⁺ scaled to
+    minimise the complementary energy (C3) along it, unless ``initial`` (pressures [Pa], used as
+    given) is. The load W = dx·dy·Σp is an output. Parameters as :func:`solve_normal`, with ``approach``
+    δ [m] (> 0) in place of the load.
+    """
+    xp = array_module(gap)
+    h = finite_grid("gap", gap, xp)
+    dx, dy = positive("dx", dx), positive("dy", dy)
+    e_star, approach = positive("e_star", e_star), positive("approach", approach)
+    tol = positive("tol", tol)
+    max_iterations = _check_iterations(max_iterations)
+    op = _grid_operator(operator, h.shape, dx, dy, e_star, xp)
+    h_shifted = h - approach
+    p = xp.maximum(-h_shifted, 0.0) if initial is None else _initial_pressure(initial, h, xp)
+    if not float(p.sum()) > 0.0:  # No interference anywhere: the bodies do not touch.
+        return _finish(_Iterate(p, 0, 0.0, True), h, op, dx, dy, tol, raise_on_failure, approach)
+    with _reductions_context(xp):
+        u = op.apply(p)
+        if initial is None:
+            scale = -float(xp.vdot(p, h_shifted)) / float(xp.vdot(p, u))
+            p *= scale
+            u *= scale
+        state = _conjugate_gradient(h_shifted, p, u, op, tol, max_iterations, None)
+    return _finish(state, h, op, dx, dy, tol, raise_on_failure, approach)

@@ -1,0 +1,82 @@
+"""Figures written by the analyses (matplotlib, non-interactive)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.patches import Ellipse
+
+
+def pressure_map(
+    x: np.ndarray,
+    y: np.ndarray,
+    pressure: np.ndarray,
+    hertz_semi_axes: tuple[float, float],
+    title: str,
+    path: str | Path,
+) -> Path:
+    """Contact pressure over the tangent-plane grid, Hertz ellipse drawn over it.
+
+    ``x`` (rolling direction) and ``y`` (across the groove) in m, ``pressure`` in Pa with
+    ``pressure[i, j]`` at ``(x[i], y[j])``, ``hertz_semi_axes`` = (semi-axis along x, along y).
+    Axes are drawn in µm and pressure in GPa.
+    """
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), layout="constrained")
+    extent = (y[0] * 1e6, y[-1] * 1e6, x[0] * 1e6, x[-1] * 1e6)
+    image = ax.imshow(pressure * 1e-9, origin="lower", extent=extent, aspect="auto", cmap="inferno")
+    fig.colorbar(image, ax=ax, label="contact pressure [GPa]")
+    ax.add_patch(
+        Ellipse(
+            (0.0, 0.0),
+            width=2e6 * hertz_semi_axes[1],
+            height=2e6 * hertz_semi_axes[0],
+            fill=False,
+            color="cyan",
+            linestyle="--",
+            linewidth=1.2,
+            label="Hertz ellipse",
+        )
+    )
+    ax.set_xlabel("y, across the groove [µm]")
+    ax.set_ylabel("x, rolling direction [µm]")
+    ax.set_title(title)
+    ax.legend(loc="upper right", fontsize=8)
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def pressure_profiles(
+    x: np.ndarray,
+    y: np.ndarray,
+    pressure: np.ndarray,
+    hertz_p0: float,
+    hertz_semi_axes: tuple[float, float],
+    title: str,
+    path: str | Path,
+) -> Path:
+    """Centre-line pressure profiles along x and y against the Hertz ellipsoidal profile."""
+    i0, j0 = np.unravel_index(np.argmax(pressure), pressure.shape)
+    fig, axes = plt.subplots(1, 2, figsize=(8.0, 3.2), layout="constrained")
+    for ax, coord, profile, semi, label in (
+        (axes[0], x, pressure[:, j0], hertz_semi_axes[0], "x, rolling direction [µm]"),
+        (axes[1], y, pressure[i0, :], hertz_semi_axes[1], "y, across the groove [µm]"),
+    ):
+        fine = np.linspace(coord[0], coord[-1], 400)
+        hertz = hertz_p0 * np.sqrt(np.clip(1.0 - (fine / semi) ** 2, 0.0, None))
+        ax.plot(fine * 1e6, hertz * 1e-9, "k--", linewidth=1, label="Hertz")
+        ax.plot(coord * 1e6, profile * 1e-9, ".", markersize=3, label="numerical")
+        ax.set_xlabel(label)
+        ax.set_ylabel("pressure [GPa]")
+        ax.legend(fontsize=8)
+    fig.suptitle(title, fontsize=10)
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path

@@ -1,0 +1,98 @@
+"""Results folder of ``ballscrew sweep``: sweep.nc, line/map plots and report.html."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+
+from ballscrew.results.folder import SUMMARY_NAME
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import write_summary
+
+
+def _label(da: xr.DataArray, name: str) -> str:
+    unit = da.attrs.get("units", "")
+    return f"{name} [{unit}]" if unit else name
+
+
+def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
+    """Line plot over the first swept key; one line per value of the second, if any."""
+    da = ds[name]
+    dims = list(da.dims)
+    fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
+    x = ds[dims[0]]
+    if len(dims) == 1:
+        ax.plot(x, da, "o-", markersize=4)
+    else:
+        other = dims[1]
+        for k, level in enumerate(ds[other].values):
+            series = da.isel({other: k}).values.reshape(len(x), -1)[:, 0]
+            unit = ds[other].attrs.get("units", "")
+            ax.plot(x, series, "o-", markersize=3, label=f"{other} = {level:.4g} {unit}".strip())
+        ax.legend(fontsize=7, ncol=2)
+    ax.set_xlabel(_label(x, dims[0]))
+    ax.set_ylabel(_label(da, name))
+    ax.grid(alpha=0.3)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def write_sweep(ds: xr.Dataset, folder: Path, computed: int) -> Path:
+    """Write sweep.nc, one plot per result, summary.json and report.html into ``folder``.
+
+    ``folder`` also holds the per-point store (``points/``), so it is written in place.
+    """
+    folder = Path(folder)
+    ds.to_netcdf(folder / "sweep.nc", engine="h5netcdf")
+    names = [n for n in ds.data_vars if n not in ("error", "failed")]
+    figures = [
+        (plot_variable(ds, n, folder / f"sweep_{n}.png"), f"{n} over the sweep") for n in names
+    ]
+    failed = np.argwhere(ds["failed"].values)
+    dims = list(ds["failed"].dims)
+    failures = [
+        [
+            ", ".join(f"{d}={ds[d].values[i]:.4g}" for d, i in zip(dims, idx, strict=True)),
+            str(ds["error"].values[tuple(idx)]),
+        ]
+        for idx in failed
+    ]
+    write_summary(
+        folder / SUMMARY_NAME,
+        {
+            "analysis": ds.attrs["analysis"],
+            "case": ds.attrs["case"],
+            "points": int(ds.attrs["points"]),
+            "computed_now": computed,
+            "failed": len(failures),
+            "axes": {
+                d: {"values": ds[d].values, "unit": ds[d].attrs.get("units", "")} for d in dims
+            },
+            "failures": failures,
+        },
+    )
+    sections = [
+        Section(
+            "Sweep",
+            paragraphs=[
+                f"{ds.attrs['points']} points over {', '.join(dims)}; {computed} computed in "
+                f"this run, the rest reused from points/. {len(failures)} failed."
+            ],
+            tables=[(["point", "error"], failures)] if failures else [],
+            figures=figures,
+        )
+    ]
+    write_report(
+        folder / "report.html",
+        f"Sweep: {ds.attrs['case']}",
+        f"ballscrew sweep --analysis {ds.attrs['analysis']}",
+        sections,
+    )
+    return folder

@@ -1,0 +1,168 @@
+"""Run a parameter sweep on Dask and collect it into one labelled xarray Dataset.
+
+Each point runs ``analysis(case) -> {name: (value, unit)}`` on a Dask worker: a local cluster
+by default, or any running scheduler given by address. A point that raises is recorded with
+its error and does not stop the sweep. Finished points are stored one JSON file each under
+``points/``, so re-running into the same folder computes only what is missing.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import time
+import traceback
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from ballscrew.case import Case
+from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
+
+log = logging.getLogger(__name__)
+
+#: An analysis maps a validated case to named scalars with their SI units.
+Analysis = Callable[[Case], dict[str, tuple[float, str]]]
+
+
+@dataclass(frozen=True)
+class PointRecord:
+    """What one sweep point produced: its results or its error."""
+
+    overrides: dict[str, float]
+    results: dict[str, tuple[float, str]] | None
+    error: str | None
+    seconds: float
+
+
+def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> PointRecord:
+    """Run one point, catching any exception into the record (runs on a worker)."""
+    start = time.perf_counter()
+    try:
+        results = {k: (float(v), u) for k, (v, u) in analysis(case).items()}
+        error = None
+    except Exception as exc:  # a failed point must not kill the sweep
+        results, error = None, f"{type(exc).__name__}: {exc}"
+        log.debug("point %s failed:\n%s", overrides, traceback.format_exc())
+    return PointRecord(overrides, results, error, time.perf_counter() - start)
+
+
+def point_key(analysis_name: str, case: Case) -> str:
+    """Stable identity of a point: the analysis and every value of its case."""
+    text = json.dumps([analysis_name, case.model_dump(mode="json")], sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()[:20]
+
+
+def _save(path: Path, record: PointRecord) -> None:
+    scratch = path.with_suffix(".tmp")
+    scratch.write_text(json.dumps(record.__dict__))
+    scratch.replace(path)
+
+
+def _load(path: Path) -> PointRecord:
+    raw = json.loads(path.read_text())
+    results = {k: (v[0], v[1]) for k, v in raw["results"].items()} if raw["results"] else None
+    return PointRecord(raw["overrides"], results, raw["error"], raw["seconds"])
+
+
+def _client(scheduler: str | None, workers: int | None):  # -> distributed.Client
+    from distributed import Client, LocalCluster
+
+    if scheduler:
+        return Client(scheduler), None
+    cluster = LocalCluster(
+        n_workers=workers,
+        threads_per_worker=1,
+        processes=True,
+        host="127.0.0.1",
+        dashboard_address=None,
+    )
+    return Client(cluster), cluster
+
+
+def run_sweep(
+    base: Case,
+    axes: Sequence[SweepAxis],
+    analysis: Analysis,
+    analysis_name: str,
+    store: str | Path,
+    scheduler: str | None = None,
+    workers: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> tuple[xr.Dataset, int]:
+    """Run every point of the grid not already in ``store/points`` and assemble the Dataset.
+
+    Returns the Dataset and the number of points computed in this call (0 when all were done).
+    """
+    points = grid_points(axes)
+    cases = validate_points(base, points)
+    folder = Path(store) / "points"
+    folder.mkdir(parents=True, exist_ok=True)
+    keys = [point_key(analysis_name, case) for case in cases]
+    todo = [i for i, key in enumerate(keys) if not (folder / f"{key}.json").is_file()]
+    done = len(points) - len(todo)
+    if progress:
+        progress(done, len(points))
+    if todo:
+        from distributed import as_completed
+
+        client, cluster = _client(scheduler, workers)
+        try:
+            futures = {
+                client.submit(run_point, analysis, cases[i], points[i], pure=False): i for i in todo
+            }
+            for future in as_completed(futures):
+                i = futures[future]
+                _save(folder / f"{keys[i]}.json", future.result())
+                done += 1
+                if progress:
+                    progress(done, len(points))
+        finally:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+    records = [_load(folder / f"{key}.json") for key in keys]
+    return assemble(axes, records, analysis_name, base), len(todo)
+
+
+def assemble(
+    axes: Sequence[SweepAxis], records: Sequence[PointRecord], analysis_name: str, base: Case
+) -> xr.Dataset:
+    """Records (in grid order) → Dataset with the swept keys as coordinates."""
+    shape = tuple(len(axis.values) for axis in axes)
+    dims = [axis.key for axis in axes]
+    names: dict[str, str] = {}
+    for record in records:
+        for name, (_, unit) in (record.results or {}).items():
+            names.setdefault(name, unit)
+    data = {name: np.full(len(records), np.nan) for name in names}
+    errors = np.array([r.error or "" for r in records], dtype=object)
+    for n, record in enumerate(records):
+        for name, (val, _) in (record.results or {}).items():
+            data[name][n] = val
+    variables = {
+        name: (dims, data[name].reshape(shape), {"units": unit}) for name, unit in names.items()
+    }
+    variables["error"] = (
+        dims,
+        errors.reshape(shape).astype(str),
+        {"long_name": "error of a failed point"},
+    )
+    variables["failed"] = (dims, (errors != "").reshape(shape), {"long_name": "point failed"})
+    coords = {
+        axis.key: (
+            axis.key,
+            np.array(axis.values),
+            {"units": axis.unit, "long_name": axis.description},
+        )
+        for axis in axes
+    }
+    return xr.Dataset(
+        variables,
+        coords=coords,
+        attrs={"analysis": analysis_name, "case": base.name, "points": len(records)},
+    )

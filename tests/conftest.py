@@ -1,0 +1,21 @@
+"""Shared fixtures: paths of the example cases."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+@pytest.fixture
+def gao_case_path() -> Path:
+    """The TCR reference screw (contact-tcr.md §10.1)."""
+    return EXAMPLES / "gao2019_tcr.toml"
+
+
+@pytest.fixture
+def wear_case_path() -> Path:
+    """The step-stress wear reference screw (kinematics-wear.md §10.2)."""
+    return EXAMPLES / "wear_step_stress.toml"

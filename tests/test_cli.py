@@ -1,0 +1,117 @@
+"""The command line, run as a user would: exit codes, messages and the results folder."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import xarray as xr
+from typer.testing import CliRunner
+
+from ballscrew.cli import app
+
+runner = CliRunner()
+
+
+def run(*args: str):
+    return runner.invoke(app, [str(a) for a in args])
+
+
+def edited_case(tmp_path: Path, source: Path, old: str, new: str) -> Path:
+    text = source.read_text()
+    assert old in text, f"{old!r} not in the example case"
+    path = tmp_path / "case.toml"
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
+@pytest.mark.parametrize("example", ["gao_case_path", "wear_case_path"])
+def test_contact_writes_a_complete_results_folder(tmp_path, example, request):
+    case_path = request.getfixturevalue(example)
+    out = tmp_path / "out"
+    result = run("contact", case_path, "--out", out)
+    assert result.exit_code == 0, result.output
+    names = {p.name for p in out.iterdir()}
+    assert {"summary.json", "fields.nc", "report.html"} <= names
+    assert {"pressure_screw.png", "pressure_nut.png"} <= names
+    summary = json.loads((out / "summary.json").read_text())
+    for side in ("screw", "nut"):
+        contact = summary["contacts"][side]
+        assert contact["numerical"]["peak_pressure"]["unit"] == "Pa"
+        assert contact["hertz"]["semi_axis_x"]["unit"] == "m"
+        # The exact raceway gap is within about 0.2 % of Hertz at these loads (T-H3/T-H4).
+        assert abs(contact["relative_difference_to_hertz"]["peak_pressure"]) < 5e-3
+        assert contact["numerical"]["load"]["value"] == pytest.approx(
+            summary["ball_load"]["value"], rel=1e-10
+        )
+    with xr.open_dataset(out / "fields.nc", engine="h5netcdf") as fields:
+        assert fields["screw_pressure"].attrs["units"] == "Pa"
+        assert fields["nut_gap"].attrs["units"] == "m"
+        assert fields["screw_x"].attrs["units"] == "m"
+    html = (out / "report.html").read_text()
+    assert "data:image/png;base64," in html and "Hertz" in html
+
+
+BAD_EDITS = [
+    ('lead = "10 mm"', "", "screw.lead is missing"),
+    ("[numerics]\n", "[numerics]\nspeeed = 3\n", "numerics.speeed: unknown key"),
+    ('lead = "10 mm"', 'lead = "-10 mm"', "screw.lead = '-10 mm' is not allowed: allowed range "
+     "is (0, inf) m"),
+    ("screw_conformity = 0.52", "screw_conformity = 0.5", "screw.screw_conformity = 0.5 is not "
+     "allowed"),
+    ('contact_angle = "45 deg"', 'contact_angle = "90 deg"', "screw.contact_angle = '90 deg' is "
+     "not allowed: allowed range is (0, 1.5708) rad"),
+    ('ball_diameter = "6.35 mm"', 'ball_diameter = "45 mm"', "screw.ball_diameter = 0.045 m is "
+     "not allowed: it must be smaller than pitch_diameter = 0.04 m"),
+    ("poissons_ratio = 0.3", "poissons_ratio = 0.55", "materials.ball.poissons_ratio = 0.55 is "
+     "not allowed: allowed range is (0, 0.5)"),
+    ('preload = "1500 N"', 'preload = "-1500 N"', "operating.preload = '-1500 N' is not allowed"),
+    ('preload = "1500 N"', 'preload = "0 N"', "a double nut needs a preload > 0 N"),
+    ('lead = "10 mm"', 'lead = "10 mm', "TOML syntax error"),
+]
+
+
+@pytest.mark.parametrize(("old", "new", "message"), BAD_EDITS)
+def test_bad_input_is_one_line_exit_2_and_no_output(tmp_path, gao_case_path, old, new, message):
+    case_path = edited_case(tmp_path, gao_case_path, old, new)
+    out = tmp_path / "out"
+    result = run("contact", case_path, "--out", out)
+    assert result.exit_code == 2
+    assert message in result.output
+    assert "Traceback" not in result.output
+    assert len(result.output.strip().splitlines()) == 1
+    assert not out.exists()
+
+
+def test_toml_error_names_the_line(tmp_path, gao_case_path):
+    case_path = edited_case(tmp_path, gao_case_path, 'lead = "10 mm"', 'lead = "10 mm')
+    result = run("contact", case_path, "--out", tmp_path / "out")
+    assert "line 13" in result.output
+
+
+def test_unwritable_output_folder(tmp_path, gao_case_path):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("")
+    result = run("contact", gao_case_path, "--out", blocker / "results")
+    assert result.exit_code == 2
+    assert result.output.startswith("error: --out = ")
+    assert "Traceback" not in result.output
+
+
+def test_existing_foreign_folder_is_not_overwritten(tmp_path, gao_case_path):
+    (tmp_path / "notes.txt").write_text("mine")
+    result = run("contact", gao_case_path, "--out", tmp_path)
+    assert result.exit_code == 2
+    assert (tmp_path / "notes.txt").read_text() == "mine"
+
+
+def test_missing_case_file(tmp_path):
+    result = run("contact", tmp_path / "nope.toml", "--out", tmp_path / "out")
+    assert result.exit_code == 2
+    assert "cannot read the case file" in result.output
+
+
+def test_version():
+    result = run("--version")
+    assert result.exit_code == 0 and result.output.startswith("ballscrew ")
