@@ -1,17 +1,33 @@
 """ballscrew: precision ball-screw simulation.
 
-Raceway geometry, non-Hertzian ball–raceway contact, fractal thermal contact resistance,
-temperature field, ball kinematics and wear, in SI units throughout.
+Raceway geometry, non-Hertzian ball–raceway contact, ball loads in preloaded double nuts, fractal
+thermal contact resistance and parameter sweeps, in SI units throughout.
 
->>> import ballscrew
->>> case = ballscrew.load_case("examples/gao2019_tcr.toml")       # doctest: +SKIP
->>> ballscrew.geometry.lead_angle(case)                             # doctest: +SKIP
-0.0794...
+1. ``case = ballscrew.load_case("examples/gao2019_tcr.toml")`` reads and validates a case.
+2. ``ballscrew.geometry``, ``ballscrew.contact``, ``ballscrew.loads``, ``ballscrew.fractal`` and
+   ``ballscrew.thermal`` hold the physical models as plain functions.
+3. ``ballscrew.screw_tcr(case)`` and the other analyses compose them; ``ballscrew.results``
+   writes results folders; ``ballscrew.sweep`` runs them over parameter grids on Dask.
 """
 
 __version__ = "0.1.0"
 
-from ballscrew import case, errors, units  # noqa: E402
+from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units  # noqa: E402
+from ballscrew.analyses.screw_tcr import screw_tcr  # noqa: E402
 from ballscrew.case import load_case  # noqa: E402
+from ballscrew.loads import nut_forces  # noqa: E402
 
-__all__ = ["__version__", "case", "errors", "load_case", "units"]
+__all__ = [
+    "__version__",
+    "case",
+    "contact",
+    "errors",
+    "fractal",
+    "geometry",
+    "load_case",
+    "loads",
+    "nut_forces",
+    "screw_tcr",
+    "thermal",
+    "units",
+]

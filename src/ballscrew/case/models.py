@@ -9,27 +9,13 @@ parameter is never silently ignored.
 from __future__ import annotations
 
 import math
-from functools import partial
-from typing import Annotated, Any, Literal
+from typing import Annotated, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+from pydantic import Field, model_validator
 
-from ballscrew.units import SI_UNITS, to_si
-
-
-def quantity(kind: str, description: str, **constraints: float) -> Any:
-    """An annotated float field that accepts SI numbers or unit strings of ``kind``."""
-    return Annotated[
-        float,
-        BeforeValidator(partial(to_si, kind=kind)),
-        Field(description=description, json_schema_extra={"unit": SI_UNITS[kind]}, **constraints),
-    ]
-
-
-class Model(BaseModel):
-    """Base of every case section: unknown keys are rejected, instances are immutable."""
-
-    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+from ballscrew.case.base import Model, quantity
+from ballscrew.case.kinematics_spec import KinematicsSpec
+from ballscrew.case.thermal_spec import ThermalSpec
 
 
 class ScrewSpec(Model):
@@ -169,6 +155,8 @@ class Case(Model):
     operating: OperatingSpec
     numerics: NumericsSpec = NumericsSpec()
     tcr: TCRSpec = TCRSpec()
+    thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
+    kinematics: KinematicsSpec = KinematicsSpec()
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:

@@ -1,12 +1,12 @@
 """Normal contact of smooth or rough bodies: Hertz closed forms and the discrete half-space solver.
 
-1. :func:`hertz` (exact, Johnson 1985) and :func:`hamrock_brewe` (curve fits, 1983) for the quadratic
-   gap h = x²/(2 rx) + y²/(2 ry).
+1. :func:`hertz` (exact, Johnson 1985) and :func:`hamrock_brewe` (curve fits, 1983) for the
+   quadratic gap h = x²/(2 rx) + y²/(2 ry).
 2. :func:`solve_normal` (load given) and :func:`solve_normal_displacement` (approach given): the
    Polonsky & Keer (1999) conjugate-gradient solver on any gap h(x, y) sampled on a cell-centred
    grid, with Love's (1929) cell coefficients and DC-FFT convolution (Liu, Wang & Liu 2000).
-3. :func:`solve_contact`: sizes the grid from the Hertz estimate, warm-starts from the Hertz pressure
-   and enlarges the box until the pressure vanishes on its edge.
+3. :func:`solve_contact`: sizes the grid from the Hertz estimate, warm-starts from the Hertz
+   pressure and enlarges the box until the pressure vanishes on its edge.
 """
 
 from ballscrew.contact.convolution import DCFFTOperator, direct_convolution, wraparound_kernel

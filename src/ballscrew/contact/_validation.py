@@ -6,6 +6,8 @@ import math
 from types import ModuleType
 from typing import Any
 
+import numpy as np
+
 from ballscrew.errors import InputError
 
 
@@ -18,6 +20,13 @@ def positive(name: str, value: float) -> float:
     if not (math.isfinite(number) and number > 0.0):
         raise InputError(name, value, "a finite number > 0")
     return number
+
+
+def integer_at_least(name: str, value: int, minimum: int) -> int:
+    """``value`` if it is an integer ≥ ``minimum`` (bools excluded), else :class:`InputError`."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < minimum:
+        raise InputError(name, value, f"an integer ≥ {minimum}")
+    return int(value)
 
 
 def finite_grid(name: str, array: Any, xp: ModuleType) -> Any:

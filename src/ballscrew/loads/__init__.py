@@ -4,6 +4,7 @@ Vectorised functions return NumPy float64 scalars for scalar inputs.
 """
 
 from ballscrew.loads.ball_load import ball_load, validate_angles, validate_balls
+from ballscrew.loads.drag_torque import preload_drag_torque
 from ballscrew.loads.double_nut import (
     NutForces,
     axial_deflection_from_approaches,
@@ -22,6 +23,7 @@ __all__ = [
     "nut_axial_deflection",
     "nut_forces",
     "preload_after_wear",
+    "preload_drag_torque",
     "preloaded_axial_stiffness",
     "validate_angles",
     "validate_balls",

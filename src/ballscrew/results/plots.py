@@ -42,7 +42,7 @@ def pressure_map(
             label="Hertz ellipse",
         )
     )
-    ax.set_xlabel("y, across the groove [µm]")
+    ax.set_xlabel("y, across the groove [µm] (axes not to scale)")
     ax.set_ylabel("x, rolling direction [µm]")
     ax.set_title(title)
     ax.legend(loc="upper right", fontsize=8)
@@ -76,6 +76,33 @@ def pressure_profiles(
         ax.set_ylabel("pressure [GPa]")
         ax.legend(fontsize=8)
     fig.suptitle(title, fontsize=10)
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def resistance_map(
+    x: np.ndarray, y: np.ndarray, resistance: np.ndarray, title: str, path: str | Path
+) -> Path:
+    """Element thermal contact resistance R_ij on the fractal cells (log colour scale, K/W)."""
+    from matplotlib.colors import LogNorm
+
+    finite = np.where(np.isfinite(resistance), resistance, np.nan)
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), layout="constrained")
+    extent = (y[0] * 1e6, y[-1] * 1e6, x[0] * 1e6, x[-1] * 1e6)
+    image = ax.imshow(
+        finite,
+        origin="lower",
+        extent=extent,
+        aspect="auto",
+        cmap="viridis_r",
+        norm=LogNorm(np.nanmin(finite), np.nanmax(finite)),
+    )
+    fig.colorbar(image, ax=ax, label="element resistance R_ij [K/W]")
+    ax.set_xlabel("y, across the groove [µm] (axes not to scale)")
+    ax.set_ylabel("x, rolling direction [µm]")
+    ax.set_title(title)
     path = Path(path)
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -10,6 +10,7 @@ from ballscrew.sweep.runner import Analysis
 #: name → "module:function" returning {quantity: (value, SI unit)} for a case.
 ANALYSES: dict[str, str] = {
     "contact": "ballscrew.analyses.ball_contact:contact_scalars",
+    "tcr": "ballscrew.analyses.screw_tcr:tcr_scalars",
 }
 
 

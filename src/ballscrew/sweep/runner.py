@@ -69,6 +69,12 @@ def _load(path: Path) -> PointRecord:
     return PointRecord(raw["overrides"], results, raw["error"], raw["seconds"])
 
 
+def _needs_run(path: Path, retry_failed: bool) -> bool:
+    if not path.is_file():
+        return True
+    return retry_failed and _load(path).error is not None
+
+
 def _client(scheduler: str | None, workers: int | None):  # -> distributed.Client
     from distributed import Client, LocalCluster
 
@@ -93,17 +99,19 @@ def run_sweep(
     scheduler: str | None = None,
     workers: int | None = None,
     progress: Callable[[int, int], None] | None = None,
+    retry_failed: bool = False,
 ) -> tuple[xr.Dataset, int]:
     """Run every point of the grid not already in ``store/points`` and assemble the Dataset.
 
-    Returns the Dataset and the number of points computed in this call (0 when all were done).
+    Points that failed earlier count as done unless ``retry_failed``. Returns the Dataset and
+    the number of points computed in this call (0 when all were done).
     """
     points = grid_points(axes)
     cases = validate_points(base, points)
     folder = Path(store) / "points"
     folder.mkdir(parents=True, exist_ok=True)
     keys = [point_key(analysis_name, case) for case in cases]
-    todo = [i for i, key in enumerate(keys) if not (folder / f"{key}.json").is_file()]
+    todo = [i for i, key in enumerate(keys) if _needs_run(folder / f"{key}.json", retry_failed)]
     done = len(points) - len(todo)
     if progress:
         progress(done, len(points))

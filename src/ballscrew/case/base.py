@@ -1,0 +1,25 @@
+"""Building blocks of the case models: the strict base model and unit-aware float fields."""
+
+from __future__ import annotations
+
+from functools import partial
+from typing import Annotated, Any
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
+
+from ballscrew.units import SI_UNITS, to_si
+
+
+def quantity(kind: str, description: str, **constraints: float) -> Any:
+    """An annotated float field that accepts SI numbers or unit strings of ``kind``."""
+    return Annotated[
+        float,
+        BeforeValidator(partial(to_si, kind=kind)),
+        Field(description=description, json_schema_extra={"unit": SI_UNITS[kind]}, **constraints),
+    ]
+
+
+class Model(BaseModel):
+    """Base of every case section: unknown keys are rejected, instances are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)

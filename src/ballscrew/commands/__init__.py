@@ -1,0 +1,1 @@
+"""One module per ``ballscrew`` subcommand; ``ballscrew.cli`` registers them."""

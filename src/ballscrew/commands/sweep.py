@@ -1,0 +1,76 @@
+"""``ballscrew sweep``: an analysis over a grid of case values, on Dask."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ballscrew.commands._common import OutOpt, log, user_errors_exit_2
+
+
+@user_errors_exit_2
+def sweep(
+    case_file: Annotated[
+        Path, typer.Argument(help="case file, or sweep file with a [sweep] table", dir_okay=False)
+    ],
+    vary: Annotated[
+        list[str] | None,
+        typer.Option(help="KEY=START:STOP:NUM or KEY=V1,V2,... (repeat for a grid)"),
+    ] = None,
+    analysis: Annotated[
+        str | None, typer.Option(help="analysis run at each point (default: tcr)")
+    ] = None,
+    out: OutOpt = Path("results/sweep"),
+    scheduler: Annotated[
+        str | None, typer.Option(help="address of a running Dask scheduler (default: local)")
+    ] = None,
+    workers: Annotated[int, typer.Option(min=1, help="local cluster workers")] = 2,
+    retry_failed: Annotated[
+        bool, typer.Option(help="recompute points that failed in an earlier run")
+    ] = False,
+) -> None:
+    """Run an analysis over a grid of case values on Dask; re-runs skip finished points."""
+    from ballscrew.case import CaseError, load_case
+    from ballscrew.results.sweep_report import write_sweep
+    from ballscrew.sweep import parse_axis, run_sweep
+    from ballscrew.sweep.registry import get_analysis
+    from ballscrew.sweep.spec import is_sweep_file, load_sweep, merge_axes
+
+    extra = [parse_axis(text) for text in vary or []]
+    if is_sweep_file(case_file):
+        spec = load_sweep(case_file)
+        case, axes = spec.case, merge_axes(spec.axes, extra)
+        name = analysis or spec.analysis or "tcr"
+    else:
+        case, axes, name = load_case(case_file), tuple(extra), analysis or "tcr"
+    if not axes:
+        raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
+    function = get_analysis(name)
+    folder = check_sweep_folder(out)
+
+    def progress(done: int, total: int) -> None:
+        log.info("sweep: %d/%d points done", done, total)
+
+    dataset, computed = run_sweep(
+        case, axes, function, name, folder, scheduler, workers, progress, retry_failed
+    )
+    write_sweep(dataset, folder, computed)
+    log.info("wrote %s", folder / "report.html")
+
+
+def check_sweep_folder(out: Path) -> Path:
+    """A sweep writes in place (to resume): the folder must be new, empty or an earlier sweep."""
+    from ballscrew.errors import InputError
+    from ballscrew.results import check_output_folder
+
+    out = out.expanduser().resolve()
+    if (out / "points").is_dir():
+        return out
+    out = check_output_folder(out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError("--out", str(out), f"a writable folder ({exc.strerror})") from None
+    return out

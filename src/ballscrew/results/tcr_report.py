@@ -1,0 +1,224 @@
+"""Results folder of ``ballscrew tcr``: summary.json, fields.nc, maps and report.html."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from ballscrew.analyses.ball_contact import SIDES
+from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR, ScrewTCR
+from ballscrew.case import Case
+from ballscrew.results import plots
+from ballscrew.results.folder import results_folder
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import value, write_summary
+
+_LABEL = {"screw": "ball–screw contact", "nut": "ball–nut contact"}
+
+
+def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarray:
+    """Centres of ``count`` fractal cells of side ``cell`` centred on the solver grid ``coord``."""
+    centre = 0.5 * (coord[0] + coord[-1])
+    return centre + (np.arange(count) - 0.5 * (count - 1)) * cell
+
+
+def _contact_summary(r: RacewayTCR) -> dict[str, Any]:
+    return {
+        "resistance": value(r.tcr.resistance, "K/W"),
+        "apparent_area": value(r.tcr.apparent_area, "m^2"),
+        "resistance_per_area": value(r.tcr.unit_area_resistance, "m^2*K/W"),
+        "loaded_cells": r.tcr.loaded_cells,
+        "peak_pressure": value(r.contact.solution.peak_pressure, "Pa"),
+        "approach": value(r.contact.solution.approach, "m"),
+        "solver_iterations": r.contact.solution.iterations,
+    }
+
+
+def _nut_summary(nut: NutTCR) -> dict[str, Any]:
+    return {
+        "force": value(nut.force, "N"),
+        "ball_load": value(nut.ball_load, "N"),
+        "balls": nut.balls,
+        "ball_resistance": value(nut.ball_resistance, "K/W"),
+        "resistance": value(nut.resistance, "K/W"),
+        "apparent_area": value(nut.apparent_area, "m^2"),
+        "axial_deflection": value(nut.axial_deflection, "m"),
+        "axial_stiffness": value(nut.axial_stiffness, "N/m"),
+        "contacts": {side: _contact_summary(getattr(nut, side)) for side in SIDES},
+    }
+
+
+def tcr_summary(result: ScrewTCR, case: Case) -> dict[str, Any]:
+    """Scalars of the whole screw, per nut and per contact, with the options that produced them."""
+    return {
+        "analysis": "tcr",
+        "case": result.case_name,
+        "resistance": value(result.resistance, "K/W"),
+        "resistance_per_area": value(result.resistance_per_area, "m^2*K/W"),
+        "apparent_area": value(result.apparent_area, "m^2"),
+        "nut_forces": [value(f, "N") for f in result.nut_forces],
+        "nuts": {f"nut{n.index}": _nut_summary(n) for n in result.nuts},
+        "options": {
+            "variant": result.variant,
+            "cell_size": value(result.cell_size, "m"),
+            "gap_model": case.tcr.gap_model,
+            "gap_factor": case.tcr.gap_factor,
+            "cutoff_area": value(case.tcr.cutoff_area, "m^2"),
+            "load_threshold": case.tcr.load_threshold,
+            "surface": {"D": case.surface.D, "G": value(case.surface.G, "m")},
+            "medium_conductivity": value(case.medium.thermal_conductivity, "W/(m*K)"),
+            "contact_gap_model": case.numerics.gap_model,
+        },
+    }
+
+
+def tcr_fields(result: ScrewTCR) -> xr.Dataset:
+    """Pressure (solver grid) and element TCR (fractal cells) of every contact, with units."""
+    variables: dict[str, Any] = {}
+    coords: dict[str, Any] = {}
+    for nut in result.nuts:
+        for side in SIDES:
+            r: RacewayTCR = getattr(nut, side)
+            tag = f"nut{nut.index}_{side}"
+            c = r.contact
+            px, py = f"{tag}_x", f"{tag}_y"
+            coords[px] = (px, c.x, {"units": "m", "long_name": "rolling direction"})
+            coords[py] = (py, c.y, {"units": "m", "long_name": "across the groove"})
+            variables[f"{tag}_pressure"] = (
+                (px, py),
+                np.asarray(c.solution.pressure),
+                {"units": "Pa", "long_name": f"nut {nut.index}, {_LABEL[side]}: pressure"},
+            )
+            rmap = r.tcr.cell_resistance
+            fx, fy = f"{tag}_fx", f"{tag}_fy"
+            coords[fx] = (
+                fx,
+                fractal_cell_centres(c.x, rmap.shape[0], r.tcr.cell_size[0]),
+                {"units": "m", "long_name": "fractal cell centre, rolling direction"},
+            )
+            coords[fy] = (
+                fy,
+                fractal_cell_centres(c.y, rmap.shape[1], r.tcr.cell_size[1]),
+                {"units": "m", "long_name": "fractal cell centre, across the groove"},
+            )
+            variables[f"{tag}_element_resistance"] = (
+                (fx, fy),
+                np.where(np.isfinite(rmap), rmap, np.nan),
+                {
+                    "units": "K/W",
+                    "long_name": f"nut {nut.index}, {_LABEL[side]}: element TCR (NaN = unloaded)",
+                },
+            )
+    return xr.Dataset(
+        variables,
+        coords=coords,
+        attrs={
+            "case": result.case_name,
+            "variant": result.variant,
+            "cell_size_m": result.cell_size,
+        },
+    )
+
+
+def write_screw_tcr(result: ScrewTCR, case: Case, out: str | Path) -> Path:
+    """Write the ``tcr`` results folder and return its path."""
+    summary = tcr_summary(result, case)
+    with results_folder(out) as folder:
+        write_summary(folder / "summary.json", summary)
+        fields = tcr_fields(result)
+        fields.to_netcdf(folder / "fields.nc", engine="h5netcdf")
+        figures = []
+        for nut in result.nuts:
+            for side in SIDES:
+                r: RacewayTCR = getattr(nut, side)
+                tag = f"nut{nut.index}_{side}"
+                c = r.contact
+                figures.append(
+                    (
+                        plots.pressure_map(
+                            c.x,
+                            c.y,
+                            c.solution.pressure,
+                            (c.hertz.a, c.hertz.b),
+                            f"nut {nut.index}, {_LABEL[side]}: Q = {c.load:.1f} N",
+                            folder / f"pressure_{tag}.png",
+                        ),
+                        f"Pressure, nut {nut.index}, {_LABEL[side]}, Hertz ellipse dashed.",
+                    )
+                )
+                figures.append(
+                    (
+                        plots.resistance_map(
+                            fields[f"{tag}_fx"].values,
+                            fields[f"{tag}_fy"].values,
+                            r.tcr.cell_resistance,
+                            f"nut {nut.index}, {_LABEL[side]}: R_c = {r.tcr.resistance:.3g} K/W",
+                            folder / f"tcr_{tag}.png",
+                        ),
+                        f"Element TCR on {1e6 * result.cell_size:g} µm cells ({result.variant}).",
+                    )
+                )
+        rows = [
+            [
+                f"nut {n.index}",
+                n.force,
+                n.ball_load,
+                n.screw.tcr.resistance,
+                n.nut.tcr.resistance,
+                n.ball_resistance,
+                n.resistance,
+                n.axial_stiffness * 1e-6,
+            ]
+            for n in result.nuts
+        ]
+        sections = [
+            Section(
+                "Thermal contact resistance of the screw",
+                paragraphs=[
+                    f"Element model {result.variant} on {1e6 * result.cell_size:g} µm fractal "
+                    f"cells (D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
+                    f"{case.medium.thermal_conductivity:g} W/mK). Elements in parallel per "
+                    "contact, screw and nut contact in series per ball, all loaded balls of "
+                    "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "
+                    "cell size Δ_f; compare results only at equal Δ_f.",
+                ],
+                tables=[
+                    (
+                        ["quantity", "value"],
+                        [
+                            ["R, whole screw [K/W]", result.resistance],
+                            ["S, apparent area [mm²]", result.apparent_area * 1e6],
+                            ["R″ = R·S [m²K/W]", result.resistance_per_area],
+                            [
+                                "F1, F2 [N]",
+                                f"{result.nut_forces[0]:.1f}, {result.nut_forces[1]:.1f}",
+                            ],
+                        ],
+                    ),
+                    (
+                        [
+                            "nut",
+                            "force [N]",
+                            "ball load [N]",
+                            "R_sb [K/W]",
+                            "R_bn [K/W]",
+                            "R_sbn [K/W]",
+                            "R nut [K/W]",
+                            "stiffness [N/µm]",
+                        ],
+                        rows,
+                    ),
+                ],
+                figures=figures,
+            )
+        ]
+        write_report(
+            folder / "report.html",
+            f"Thermal contact resistance: {case.name}",
+            "ballscrew tcr",
+            sections,
+        )
+    return Path(out).resolve()

@@ -1,0 +1,105 @@
+"""Array-module dispatch and the zero-padded FFT backends of ballscrew.backend, checked against
+numpy.fft on explicitly padded arrays."""
+
+import threading
+
+import numpy as np
+import pytest
+from threadpoolctl import threadpool_info
+
+from ballscrew import backend
+from ballscrew.contact import hertz, solve_normal
+from ballscrew.contact.grid import cell_centres
+
+
+def padded_spectrum(a):
+    m, n = a.shape
+    padded = np.zeros((2 * m, 2 * n))
+    padded[:m, :n] = a
+    return np.fft.rfft2(padded)
+
+
+def implementations(shape):
+    yield backend._ScipyPadded(shape, 2)
+    if backend.pyfftw is not None:
+        yield backend._FFTWPadded(shape, 2)
+
+
+@pytest.mark.parametrize("shape", [(1, 1), (6, 5), (16, 9), (32, 32)])
+def test_forward_is_the_spectrum_of_the_padded_array_and_inverse_undoes_it(shape):
+    a = np.random.default_rng(7).standard_normal(shape)
+    for transform in implementations(shape):
+        for _ in range(2):  # buffers are reused between calls
+            spectrum = transform.forward(a)
+            np.testing.assert_allclose(spectrum, padded_spectrum(a), atol=1e-12)
+            out = transform.inverse(spectrum.copy(), np.empty(shape))
+            np.testing.assert_allclose(out * transform.scale, a, atol=1e-13)
+        assert transform.scale == 1.0 / (4 * shape[0] * shape[1])
+
+
+@pytest.mark.skipif(backend.pyfftw is None, reason="pyFFTW not installed")
+def test_fftw_replanning_with_measure_keeps_results_exact():
+    """Force the ski-rental switch to FFTW_MEASURE; the zero padding must survive re-planning."""
+    shape = (12, 10)
+    transform = backend._FFTWPadded(shape, 2)
+    a = np.random.default_rng(1).standard_normal(shape)
+    transform.forward(a + 1.0)
+    transform._spent = np.inf
+    spectrum = transform.forward(a)
+    assert transform._measured
+    np.testing.assert_allclose(spectrum, padded_spectrum(a), atol=1e-12)
+
+
+def test_padded_rfft_is_cached_per_thread():
+    here = backend.padded_rfft((8, 8))
+    assert backend.padded_rfft((8, 8)) is here
+    other = []
+    thread = threading.Thread(target=lambda: other.append(backend.padded_rfft((8, 8))))
+    thread.start()
+    thread.join()
+    assert other[0] is not here
+
+
+def test_transform_cache_keeps_the_recent_shapes():
+    first = backend.padded_rfft((3, 2))
+    for rows in range(4, 4 + backend.CACHED_SHAPES):
+        backend.padded_rfft((rows, 2))
+    assert backend.padded_rfft((3, 2)) is not first
+    assert backend.padded_rfft((4 + backend.CACHED_SHAPES - 1, 2)) is backend.padded_rfft(
+        (4 + backend.CACHED_SHAPES - 1, 2)
+    )
+
+
+def test_array_module_is_numpy_for_numpy_and_without_cupy(monkeypatch):
+    assert backend.array_module(np.zeros(3)) is np
+    monkeypatch.setattr(backend, "cupy", None)
+    assert backend.array_module(np.zeros(3)) is np
+    assert backend.array_module([1.0, 2.0]) is np
+
+
+def test_fft_threads_setting(monkeypatch):
+    monkeypatch.setenv("BALLSCREW_FFT_THREADS", "1")
+    assert backend.fft_threads() == 1
+    monkeypatch.delenv("BALLSCREW_FFT_THREADS")
+    assert 1 <= backend.fft_threads() <= backend.MAX_FFT_THREADS
+
+
+def test_blas_runs_single_threaded_inside_the_context():
+    with backend.blas_single_thread():
+        blas = [info for info in threadpool_info() if info["user_api"] == "blas"]
+        assert all(info["num_threads"] == 1 for info in blas)
+
+
+def test_solver_runs_on_cupy_arrays():
+    """The same solver code on the GPU gives the NumPy answer (skipped without CuPy)."""
+    cupy = pytest.importorskip("cupy")
+    reference = hertz(10e-3, 10e-3, 113.19e9, 100.0)
+    dx = 3 * reference.a / 48
+    x = cell_centres(48, dx)
+    gap = (x[:, None] ** 2 + x[None, :] ** 2) / 20e-3
+    on_cpu = solve_normal(gap, dx, dx, 113.19e9, 100.0)
+    on_gpu = solve_normal(cupy.asarray(gap), dx, dx, 113.19e9, 100.0)
+    assert backend.array_module(on_gpu.pressure) is cupy
+    np.testing.assert_allclose(
+        cupy.asnumpy(on_gpu.pressure), on_cpu.pressure, atol=1e-6 * reference.p0
+    )

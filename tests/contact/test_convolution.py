@@ -1,0 +1,89 @@
+"""DC-FFT convolution against a direct double sum written here (T-K2, Liu, Wang & Liu 2000)."""
+
+import threading
+
+import numpy as np
+import pytest
+
+from ballscrew.contact import DCFFTOperator, direct_convolution, love_coefficient
+
+E_STAR = 113.19e9
+
+
+def naive_sum(p, dx, dy):
+    """u_ij = Σ_kl K(x_i − x_k, y_j − y_l) p_kl, one cell pair at a time (K5)."""
+    nx, ny = p.shape
+    u = np.zeros_like(p)
+    for i in range(nx):
+        for j in range(ny):
+            for k in range(nx):
+                for m in range(ny):
+                    offset_x, offset_y = (i - k) * dx, (j - m) * dy
+                    u[i, j] += float(love_coefficient(offset_x, offset_y, dx, dy, E_STAR)) * p[k, m]
+    return u
+
+
+@pytest.fixture(scope="module")
+def t_k2():
+    """T-K2: 8 × 6 cells, Δx = 10 µm, Δy = 20 µm, random p ≤ 1 GPa."""
+    p = np.random.default_rng(20000101).uniform(0.0, 1e9, (8, 6))
+    return p, 10e-6, 20e-6, naive_sum(p, 10e-6, 20e-6)
+
+
+def test_dcfft_equals_direct_sum_t_k2(t_k2):
+    p, dx, dy, reference = t_k2
+    operator = DCFFTOperator(p.shape, dx, dy, E_STAR)
+    first = operator.apply(p)
+    second = operator.apply(p)  # the FFT buffers are reused: a second call must not drift
+    for u in (first, second):
+        assert np.max(np.abs(u - reference)) / np.max(np.abs(reference)) < 1e-12
+
+
+def test_direct_convolution_equals_naive_sum(t_k2):
+    p, dx, dy, reference = t_k2
+    np.testing.assert_allclose(direct_convolution(p, dx, dy, E_STAR), reference, rtol=1e-13)
+
+
+@pytest.mark.parametrize("shape", [(1, 1), (5, 1), (7, 4), (16, 9), (33, 32)])
+def test_dcfft_odd_even_and_degenerate_shapes(shape):
+    """Aperiodic (no wrap-around) on odd, even and one-cell-wide grids."""
+    rng = np.random.default_rng(sum(shape))
+    p = rng.uniform(0.0, 2e9, shape)
+    dx, dy = 3e-6, 5e-6
+    u = DCFFTOperator(shape, dx, dy, E_STAR)(p)
+    reference = direct_convolution(p, dx, dy, E_STAR)
+    assert np.max(np.abs(u - reference)) / np.max(np.abs(reference)) < 1e-12
+
+
+def test_out_argument_and_cache():
+    """`out` receives u; for_grid returns one operator per grid."""
+    shape, dx, dy = (12, 10), 2e-6, 3e-6
+    operator = DCFFTOperator.for_grid(shape, dx, dy, E_STAR)
+    assert DCFFTOperator.for_grid(shape, dx, dy, E_STAR) is operator
+    assert DCFFTOperator.for_grid(shape, dx, 2 * dy, E_STAR) is not operator
+    p = np.ones(shape)
+    out = np.empty(shape)
+    assert operator.apply(p, out=out) is out
+    np.testing.assert_allclose(out, direct_convolution(p, dx, dy, E_STAR), rtol=1e-12)
+
+
+def test_concurrent_threads_use_their_own_buffers():
+    """Two threads convolving different pressures on one grid get their own answers."""
+    shape, dx, dy = (24, 20), 1e-6, 1e-6
+    operator = DCFFTOperator(shape, dx, dy, E_STAR)
+    pressures = [np.full(shape, 1e8), np.random.default_rng(3).uniform(0, 1e9, shape)]
+    expected = [direct_convolution(p, dx, dy, E_STAR) for p in pressures]
+    errors = []
+
+    def work(index):
+        for _ in range(50):
+            u = operator.apply(pressures[index])
+            errors.append(np.max(np.abs(u - expected[index])) / np.max(expected[index]))
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert len(errors) == 100
+    assert max(errors) < 1e-12

@@ -1,0 +1,94 @@
+"""Automatic grid sizing: Hertz-sized grid, edge check and box enlargement (§3.4)."""
+
+import numpy as np
+import pytest
+
+from ballscrew.contact import GridContactResult, hertz, solve_contact
+from ballscrew.errors import BallscrewError, InputError
+
+E_STAR = 113.19e9
+RX, RY, LOAD = 3.6e-3, 40e-3, 1000.0
+
+
+def ellipsoid(x, y):
+    return x**2 / (2 * RX) + y**2 / (2 * RY)
+
+
+def test_grid_follows_the_hertz_ellipse():
+    result = solve_contact(ellipsoid, RX, RY, E_STAR, LOAD, cells_across=32)
+    assert isinstance(result, GridContactResult)
+    reference = hertz(RX, RY, E_STAR, LOAD)
+    assert result.hertz == reference
+    dx, dy = result.x[1] - result.x[0], result.y[1] - result.y[0]
+    assert dx == pytest.approx(2 * reference.a / 32, rel=1e-12)
+    assert dy == pytest.approx(2 * reference.b / 32, rel=1e-12)
+    assert -result.x[0] >= 1.3 * reference.a - dx  # box half-width ≥ 1.3 a (cell centres)
+    np.testing.assert_allclose(result.x, -result.x[::-1], atol=1e-18)
+    np.testing.assert_allclose(result.gap, ellipsoid(result.x[:, None], result.y[None, :]))
+    assert result.pressure.shape == (result.x.size, result.y.size)
+    assert result.enlargements == 0
+    assert result.edge_pressure == 0.0
+    assert result.solution.peak_pressure == pytest.approx(reference.p0, rel=2e-3)
+    assert result.approach == pytest.approx(reference.approach, rel=1e-3)
+
+
+def test_box_too_small_is_enlarged_until_the_edge_is_free():
+    """box_factor 0.8 cuts the patch; the box grows (same spacing) until its edge is unloaded."""
+    small = solve_contact(ellipsoid, RX, RY, E_STAR, LOAD, cells_across=24, box_factor=0.8)
+    assert small.enlargements >= 1
+    assert small.edge_pressure <= 1e-6
+    p = small.pressure
+    assert max(p[0].max(), p[-1].max(), p[:, 0].max(), p[:, -1].max()) <= 1e-6 * p.max()
+    normal = solve_contact(ellipsoid, RX, RY, E_STAR, LOAD, cells_across=24)
+    assert small.x[1] - small.x[0] == pytest.approx(normal.x[1] - normal.x[0], rel=1e-12)
+    assert small.approach == pytest.approx(normal.approach, rel=1e-6)
+
+
+def test_gap_wider_than_the_estimate_triggers_enlargement():
+    """A flatter gap than rx, ry say: the patch (1.6 × larger) outgrows the box, which follows."""
+    result = solve_contact(
+        lambda x, y: 0.25 * ellipsoid(x, y), RX, RY, E_STAR, LOAD, cells_across=16
+    )
+    assert result.enlargements >= 1
+    assert result.edge_pressure <= 1e-6
+
+
+def test_still_cut_after_the_allowed_enlargements_raises():
+    with pytest.raises(BallscrewError, match="edge of the grid after 0 enlargements"):
+        solve_contact(
+            ellipsoid, RX, RY, E_STAR, LOAD, cells_across=16, box_factor=0.8, max_enlargements=0
+        )
+
+
+def test_warm_start_saves_iterations():
+    """Starting from the Hertz pressure needs fewer iterations than the uniform start."""
+    warm = solve_contact(ellipsoid, RX, RY, E_STAR, LOAD, cells_across=64)
+    cold = solve_contact(ellipsoid, RX, RY, E_STAR, LOAD, cells_across=64, warm_start=False)
+    assert warm.solution.iterations < cold.solution.iterations
+    np.testing.assert_allclose(warm.pressure, cold.pressure, atol=1e-6 * cold.pressure.max())
+
+
+@pytest.mark.parametrize(
+    ("arguments", "field"),
+    [
+        ({"cells_across": 1}, "cells_across"),
+        ({"cells_across": 8.0}, "cells_across"),
+        ({"box_factor": 0.0}, "box_factor"),
+        ({"max_enlargements": -1}, "max_enlargements"),
+        ({"edge_tolerance": -1.0}, "edge_tolerance"),
+        ({"rx": -1.0}, "rx"),
+    ],
+)
+def test_invalid_arguments(arguments, field):
+    with pytest.raises(InputError, match=field):
+        solve_contact(**{"gap_function": ellipsoid, "rx": RX, "ry": RY, "e_star": E_STAR,
+                         "load": LOAD, **arguments})  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "gap_function",
+    [lambda x, y: np.zeros(3), lambda x, y: np.full(np.broadcast(x, y).shape, np.nan)],
+)
+def test_bad_gap_function_results(gap_function):
+    with pytest.raises(InputError, match="gap_function"):
+        solve_contact(gap_function, RX, RY, E_STAR, LOAD, cells_across=8)

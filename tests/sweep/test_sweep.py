@@ -1,0 +1,92 @@
+"""Sweeps on a real local Dask cluster: coordinates, failures recorded, resumption."""
+
+from __future__ import annotations
+
+import sys
+
+import cloudpickle
+import numpy as np
+import pytest
+
+from ballscrew import load_case
+from ballscrew.analyses.screw_tcr import tcr_scalars
+from ballscrew.case import CaseError
+from ballscrew.sweep import parse_axis, run_sweep
+
+# Workers are separate processes that cannot import this test module: ship it by value.
+cloudpickle.register_pickle_by_value(sys.modules[__name__])
+
+FAILING_POINT = (1.5, 1000.0)
+
+
+def tcr_with_one_failure(case):
+    """tcr_scalars, except that one chosen point raises (an injected failure)."""
+    if (case.surface.D, case.operating.axial_load) == FAILING_POINT:
+        raise RuntimeError("injected failure")
+    return tcr_scalars(case)
+
+
+@pytest.fixture
+def coarse_case(gao_case_path):
+    return load_case(
+        gao_case_path, {"numerics.cells_across": 24, "numerics.gap_model": "quadratic"}
+    )
+
+
+def test_sweep_on_local_dask_cluster(tmp_path, coarse_case):
+    axes = [parse_axis("surface.D=1.45:1.55:3"), parse_axis("operating.axial_load=0,1000")]
+    seen = []
+    ds, computed = run_sweep(
+        coarse_case,
+        axes,
+        tcr_with_one_failure,
+        "tcr-test",
+        tmp_path,
+        workers=2,
+        progress=lambda done, total: seen.append((done, total)),
+    )
+    assert computed == 6
+    assert seen[-1] == (6, 6)
+    assert list(ds.dims) == ["surface.D", "operating.axial_load"]
+    np.testing.assert_allclose(ds["surface.D"], [1.45, 1.5, 1.55])
+    np.testing.assert_allclose(ds["operating.axial_load"], [0.0, 1000.0])
+    assert ds["operating.axial_load"].attrs["units"] == "N"
+    assert ds["resistance"].attrs["units"] == "K/W"
+
+    failed = ds["failed"].sel({"surface.D": 1.5, "operating.axial_load": 1000.0})
+    assert bool(failed)
+    assert int(ds["failed"].sum()) == 1
+    assert "injected failure" in str(
+        ds["error"].sel({"surface.D": 1.5, "operating.axial_load": 1000.0}).values
+    )
+    assert np.isnan(ds["resistance"].sel({"surface.D": 1.5, "operating.axial_load": 1000.0}))
+    good = ds["resistance"].where(~ds["failed"])
+    assert int(np.isfinite(good).sum()) == 5
+    # Physics through the sweep: R falls with D (contact-tcr T-TR1) at either load.
+    assert float(good.isel({"operating.axial_load": 0}).diff("surface.D").max()) < 0
+    # F1 − F2 = F_a at every good point (P1).
+    np.testing.assert_allclose(
+        (ds["F1"] - ds["F2"]).where(~ds["failed"]).isel({"surface.D": 0}),
+        [0.0, 1000.0],
+        atol=1e-9,
+    )
+
+    ds_again, computed_again = run_sweep(
+        coarse_case, axes, tcr_with_one_failure, "tcr-test", tmp_path, workers=2
+    )
+    assert computed_again == 0
+    np.testing.assert_array_equal(ds_again["resistance"].values, ds["resistance"].values)
+
+
+def test_bad_sweep_axes_are_refused_before_any_work(coarse_case, tmp_path):
+    with pytest.raises(CaseError, match="unknown key"):
+        parse_axis("surface.X=1:2:3")
+    with pytest.raises(CaseError, match="empty"):
+        parse_axis("surface.D=1.4:1.6:0")
+    with pytest.raises(CaseError, match="expected KEY=START:STOP:NUM"):
+        parse_axis("surface.D")
+    with pytest.raises(
+        CaseError, match=r"surface.D = 2.1 is not allowed: allowed range is \(1, 2\)"
+    ):
+        run_sweep(coarse_case, [parse_axis("surface.D=1.5,2.1")], tcr_scalars, "tcr", tmp_path)
+    assert not (tmp_path / "points").exists()
