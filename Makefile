@@ -16,7 +16,9 @@ $(STAMP): pyproject.toml
 ## demo: create .venv, install, run the flagship example and write its report
 demo: $(STAMP)
 	$(VENV)/bin/ballscrew contact examples/gao2019_tcr.toml --out $(DEMO)/contact
-	@echo "report: $(DEMO)/contact/report.html"
+	$(VENV)/bin/ballscrew tcr examples/gao2019_tcr.toml --out $(DEMO)/tcr
+	$(VENV)/bin/ballscrew sweep examples/sweeps/fig13_tcr_vs_axial_load.toml --out $(DEMO)/fig13
+	@echo "reports: $(DEMO)/contact/report.html $(DEMO)/tcr/report.html $(DEMO)/fig13/report.html"
 
 ## test: create .venv, install, run the test suite
 test: $(STAMP)
@@ -25,6 +27,7 @@ test: $(STAMP)
 ## bench: run the benchmarks (prints tables; not part of the tests)
 bench: $(STAMP)
 	$(PY) benchmarks/bench_contact.py
+	$(PY) benchmarks/bench_tcr.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -12,10 +12,10 @@ thermal contact resistance and parameter sweeps, in SI units throughout.
 
 __version__ = "0.1.0"
 
-from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units  # noqa: E402
-from ballscrew.analyses.screw_tcr import screw_tcr  # noqa: E402
-from ballscrew.case import load_case  # noqa: E402
-from ballscrew.loads import nut_forces  # noqa: E402
+from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units
+from ballscrew.analyses.screw_tcr import screw_tcr
+from ballscrew.case import load_case
+from ballscrew.loads import nut_forces
 
 __all__ = [
     "__version__",

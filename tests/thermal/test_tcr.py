@@ -59,7 +59,7 @@ def test_t_tcr1_v2_all_rows_in_one_call() -> None:
     rows = np.array(T_TCR1)
     res = element_tcr(rows[:, 0], A, model())
     assert res.variant == "V2"
-    assert res.apparent_area == A
+    assert np.all(res.apparent_area == A)
     np.testing.assert_allclose(res.gap_thickness, rows[:, 1], rtol=1e-4)
     np.testing.assert_allclose(res.solid_conductance, rows[:, 2], rtol=1e-4)
     np.testing.assert_allclose(res.gap_conductance, rows[:, 3], rtol=1e-4)

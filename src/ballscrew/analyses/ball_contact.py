@@ -120,6 +120,8 @@ def solve_raceway_contact(
         cells_across=numerics.cells_across,
         box_factor=numerics.box_factor,
         tol=numerics.tolerance,
+        cells=numerics.cells,
+        max_iterations=numerics.max_iterations,
     )
     return RacewayContact(
         side=side,

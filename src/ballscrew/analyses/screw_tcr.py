@@ -89,8 +89,8 @@ class ScrewTCR:
     case_name: str
     variant: str
     """Element model that produced the numbers (V2, MT or V1)."""
-    cell_size: float
-    """Fractal cell size Δ_f [m] (results depend on it, contact-tcr.md §6.5)."""
+    cell_size: float | None
+    """Fractal cell size Δ_f [m], None = the solver grid (results depend on it, §6.5)."""
     nut_forces: tuple[float, float]
     """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
     nuts: tuple[NutTCR, ...]
@@ -162,8 +162,9 @@ def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
                 sol.dx,
                 sol.dy,
                 models[side],
-                cell_size=case.tcr.cell_size,
+                cell_size=case.tcr.cell_size if case.tcr.rebin else None,
                 load_threshold=case.tcr.load_threshold,
+                partial_cells=case.tcr.partial_cells,
             )
             solved[side, load] = RacewayTCR(contact, tcr)
         return solved[side, load]
@@ -191,7 +192,7 @@ def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
     return ScrewTCR(
         case_name=case.name,
         variant=models["screw"].variant,
-        cell_size=case.tcr.cell_size,
+        cell_size=case.tcr.cell_size if case.tcr.rebin else None,
         nut_forces=forces,
         nuts=tuple(nuts),
     )

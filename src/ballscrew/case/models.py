@@ -104,15 +104,24 @@ class OperatingSpec(Model):
     speed: quantity("angular_velocity", 'screw speed ω (rad/s; "1000 rpm" also works)', ge=0) = 0.0
 
 
+BoxFactor = Annotated[float, Field(ge=1.05, le=5.0)]
+
+
 class NumericsSpec(Model):
     """Numerical settings of the contact solver."""
 
     cells_across: Annotated[
         int, Field(ge=8, le=4096, description="grid cells across the Hertz contact, each axis")
     ] = 64
-    box_factor: Annotated[
-        float, Field(ge=1.05, le=5.0, description="grid box half-width / Hertz semi-axis")
-    ] = 1.3
+    cells: tuple[Annotated[int, Field(ge=4, le=8192)], Annotated[int, Field(ge=4, le=8192)]] | (
+        None
+    ) = Field(
+        None,
+        description="explicit grid [nx, ny] over the box, instead of cells_across",
+    )
+    box_factor: BoxFactor | tuple[BoxFactor, BoxFactor] = Field(
+        1.3, description="grid box half-width / Hertz semi-axis, or [along x, along y]"
+    )
     tolerance: Annotated[
         float, Field(gt=0.0, le=1e-3, description="relative pressure change to stop the CG")
     ] = 1e-8
@@ -138,6 +147,14 @@ class TCRSpec(Model):
         "mean_cap", description="gap-thickness model L_g (T6 = mean_cap)"
     )
     gap_factor: Annotated[float, Field(gt=0, description="multiplier on L_g")] = 1.0
+    rebin: bool = Field(
+        True,
+        description="re-bin the pressure onto Δ_f cells (false: evaluate on the solver grid)",
+    )
+    partial_cells: Literal["contact_area", "full_cell"] = Field(
+        "contact_area",
+        description="apparent area of a cell on the patch edge: its part in contact, or Δ_f²",
+    )
     load_threshold: Annotated[
         float, Field(ge=0, lt=1, description="cells below this × the peak load are skipped")
     ] = 1e-8

@@ -1,9 +1,289 @@
-"""Case section ``[thermal]``: what the temperature-field model needs beyond the screw."""
+"""Case section ``[thermal]``: what the temperature-field model needs beyond the screw.
+
+The thermal model (issue #4; contact-tcr.md §9) is a screw shaft with its support bearings and a
+nut assembly (one nut, or two nuts with a spacer) on it. Every dimensional value is SI (m, s,
+K, W, N·m, W/(m² K), m² K/W) or a string with a unit (``"1000 mm"``, ``"20 degC"``,
+``"1.5 h"``). A bare number for a temperature is kelvin, so write ambient temperatures as
+``"20 degC"``.
+
+Only ``[thermal]`` is needed; every key has a default. Geometry defaults scale with the pitch
+diameter d_m of ``[screw]`` (shaft Ø = d_m, nut Ø = 1.75 d_m, nut length = 2.5 d_m).
+"""
 
 from __future__ import annotations
 
-from ballscrew.case.base import Model
+from functools import partial
+from typing import Annotated, Any, Literal
+
+from pydantic import BeforeValidator, Field, model_validator
+
+from ballscrew.case.base import Model, quantity
+from ballscrew.units import SI_UNITS, registry, to_si
+
+#: Units of the kinds this section needs that :data:`ballscrew.units.SI_UNITS` lacks.
+_EXTRA_UNITS: dict[str, str] = {
+    "time": "s",
+    "heat_transfer_coefficient": "W/(m^2*K)",
+    "area_resistance": "m^2*K/W",
+    "kinematic_viscosity": "m^2/s",
+    "temperature_difference": "K",
+}
+
+
+def _to_unit(value: object, kind: str) -> float:
+    """:func:`ballscrew.units.to_si` for the kinds of :data:`_EXTRA_UNITS`."""
+    if kind in SI_UNITS:
+        return to_si(value, kind)
+    unit = _EXTRA_UNITS[kind]
+    if isinstance(value, bool) or not isinstance(value, int | float | str):
+        raise ValueError(f"expected a number or a string such as '1 {unit}'")
+    if isinstance(value, int | float):
+        return float(value)
+    ureg = registry()
+    try:
+        q = ureg.Quantity(value)
+    except Exception as exc:  # pint raises several unrelated types for bad strings
+        raise ValueError(f"cannot read {value!r} as a quantity in {unit}") from exc
+    if not hasattr(q, "to") or q.unitless:
+        return float(getattr(q, "magnitude", q))
+    try:
+        return float(q.to(unit).magnitude)
+    except Exception as exc:
+        raise ValueError(f"{value!r} is not a {kind.replace('_', ' ')} (expected {unit})") from exc
+
+
+def _quantity(kind: str, description: str, **constraints: float) -> Any:
+    """Like :func:`ballscrew.case.base.quantity`, also for the kinds of :data:`_EXTRA_UNITS`."""
+    if kind in SI_UNITS:
+        return quantity(kind, description, **constraints)
+    return Annotated[
+        float,
+        BeforeValidator(partial(_to_unit, kind=kind)),
+        Field(
+            description=description,
+            json_schema_extra={"unit": _EXTRA_UNITS[kind]},
+            **constraints,
+        ),
+    ]
+
+
+class BearingSpec(Model):
+    """One support bearing (set): its friction heat Q = M·ω (Q2), part of it into the screw.
+
+    Give either the catalogue friction ``torque`` or the Palmgren parameters (Q3: ``f0``,
+    ``viscosity``, ``mean_diameter``, ``static_load_rating``, ``axial_load``).
+    """
+
+    name: str = Field("bearing", description="label used in the report")
+    position: _quantity("length", "axial position of the bearing centre from the shaft end z = 0")
+    width: _quantity("length", "width of the shaft band the bearing heat enters", gt=0) = 0.02
+    torque: _quantity("torque", "catalogue friction torque M_be (overrides Palmgren)", ge=0) | None = (
+        None
+    )
+    f0: Annotated[
+        float, Field(gt=0, le=20, description="Palmgren f₀ (1–2 angular contact, grease/oil)")
+    ] = 2.0
+    viscosity: _quantity(
+        "kinematic_viscosity", "lubricant kinematic viscosity ν₀ at working temperature", gt=0
+    ) = 20e-6
+    mean_diameter: _quantity("length", "bearing pitch diameter d_m,be", gt=0) | None = None
+    static_load_rating: _quantity("force", "basic static load rating C₀", gt=0) | None = None
+    axial_load: _quantity("force", "axial load F_a on the bearing (its preload)", ge=0) = 0.0
+    radial_load: _quantity("force", "radial load F_r on the bearing", ge=0) = 0.0
+    f1: Annotated[
+        float | None, Field(gt=0, description="Palmgren f₁; None = 0.001 (P₀/C₀)^0.33")
+    ] = None
+    shaft_fraction: Annotated[
+        float, Field(ge=0, le=1, description="fraction of the bearing heat into the screw (Q2)")
+    ] = 0.5
+
+    @model_validator(mode="after")
+    def _torque_or_palmgren(self) -> BearingSpec:
+        if self.torque is None and (self.mean_diameter is None or self.static_load_rating is None):
+            raise ValueError(
+                "torque = None is not allowed: give the catalogue torque, or mean_diameter and "
+                "static_load_rating for the Palmgren estimate"
+            )
+        return self
+
+
+class DragTorqueSpec(Model):
+    """Friction torque of the ball screw itself, heat Q_bs = M_bs·ω (Q4)."""
+
+    source: Literal["catalogue", "given", "kinematics"] = Field(
+        "catalogue",
+        description="catalogue preload torque K·F_p·L/(2π) (Q4), a given torque, or the "
+        "kinematics model (not available yet)",
+    )
+    torque: _quantity("torque", "drag torque M_bs for source = 'given'", ge=0) | None = None
+
+    @model_validator(mode="after")
+    def _given_needs_torque(self) -> DragTorqueSpec:
+        if self.source == "given" and self.torque is None:
+            raise ValueError("torque = None is not allowed: source = 'given' needs a torque")
+        return self
+
+
+class ConvectionSpec(Model):
+    """Heat-transfer coefficients: overrides of the correlations (Q5, Q6) and the air."""
+
+    screw: _quantity("heat_transfer_coefficient", "override h of the screw surface", ge=0) | None = (
+        None
+    )
+    screw_ends: (
+        _quantity("heat_transfer_coefficient", "override h of the shaft end faces", ge=0) | None
+    ) = None
+    nut: _quantity("heat_transfer_coefficient", "override h of the nut/spacer OD", ge=0) | None = (
+        None
+    )
+    nut_ends: (
+        _quantity("heat_transfer_coefficient", "override h of the nut end faces", ge=0) | None
+    ) = None
+    temperature_difference: _quantity(
+        "temperature_difference", "surface − air ΔT used by the natural-convection correlation", gt=0
+    ) = 10.0
+    air_kinematic_viscosity: _quantity(
+        "kinematic_viscosity", "kinematic viscosity ν of air", gt=0
+    ) = 1.589e-5
+    air_conductivity: _quantity("thermal_conductivity", "thermal conductivity λ of air", gt=0) = (
+        0.0263
+    )
+    air_prandtl: Annotated[float, Field(gt=0, description="Prandtl number of air")] = 0.707
+
+
+class ContactSpec(Model):
+    """Thermal path across the balls between screw and nut (contact-tcr.md §7, A4)."""
+
+    source: Literal["tcr", "given"] = Field(
+        "tcr",
+        description="'tcr': R of each nut from the fractal TCR chain (screw_tcr); 'given': "
+        "resistance_per_area over the nut bore",
+    )
+    resistance_per_area: (
+        _quantity("area_resistance", "R″ smeared over the nut bore, for source = 'given'", gt=0)
+        | None
+    ) = None
+    constriction: bool = Field(
+        True,
+        description="add the macro-constriction of the Hertz patches into ball and raceways "
+        "(Yovanovich) in series with the micro TCR (source = 'tcr')",
+    )
+
+    @model_validator(mode="after")
+    def _given_needs_value(self) -> ContactSpec:
+        if self.source == "given" and self.resistance_per_area is None:
+            raise ValueError(
+                "resistance_per_area = None is not allowed: source = 'given' needs a value"
+            )
+        return self
+
+
+class StrokeSpec(Model):
+    """Reciprocating nut: the moving heat source (issue #4, item 4)."""
+
+    length: _quantity("length", "stroke of the nut centre (0 = stationary nut)", ge=0) = 0.0
+    feed_speed: _quantity("velocity", "nut speed; None = ω·L/(2π) from the screw speed", ge=0) | None = (
+        None
+    )
+    mode: Literal["averaged", "resolved"] = Field(
+        "averaged",
+        description="'averaged': heat and contact time-averaged over the stroke; 'resolved': "
+        "the nut position at each time step (needs time_step ≪ stroke/feed_speed)",
+    )
+
+
+class TransientSpec(Model):
+    """Implicit-Euler transient from ambient."""
+
+    duration: _quantity("time", "simulated time (the paper: 1.5 h)", gt=0) = 5400.0
+    time_step: _quantity("time", "constant time step Δt", gt=0) = 60.0
+    snapshots: Annotated[
+        int, Field(ge=1, le=1000, description="full temperature fields stored over time")
+    ] = 10
+
+    @model_validator(mode="after")
+    def _step_fits(self) -> TransientSpec:
+        if self.time_step > self.duration:
+            raise ValueError(
+                f"time_step = {self.time_step:g} is not allowed: it must not exceed "
+                f"duration = {self.duration:g} s"
+            )
+        return self
+
+
+class MeshSpec(Model):
+    """Discretisation of the axisymmetric FE model and of the axial network."""
+
+    size: _quantity("length", "target element size (both directions)", gt=0) = 0.002
+    order: Literal[1, 2] = Field(2, description="Lagrange order of the quadrilateral elements")
+    network_cell: _quantity("length", "target axial cell length of the 1-D network", gt=0) = 0.005
+
+
+class SensorSpec(Model):
+    """A named temperature sensor point, in the nut or in the screw (r, z axisymmetric)."""
+
+    name: str = Field(description="label of the sensor")
+    body: Literal["nut", "screw"] = Field(description="body the sensor is fixed to")
+    r: _quantity("length", "radius of the sensor point", ge=0)
+    z: _quantity(
+        "length", "axial position from the shaft end z = 0 (nut: at its mean position)", ge=0
+    )
 
 
 class ThermalSpec(Model):
-    """Thermal model of screw shaft, nuts, spacer and bearings (to be completed)."""
+    """Thermal model of screw shaft, nuts, spacer and bearings (contact-tcr.md §9)."""
+
+    model: Literal["axisymmetric", "network", "3d"] = Field(
+        "axisymmetric", description="default model of `ballscrew thermal`"
+    )
+    shaft_length: _quantity("length", "length of the screw shaft", gt=0) = 1.0
+    shaft_diameter: _quantity(
+        "length", "thermal diameter of the shaft; None = pitch diameter d_m", gt=0
+    ) | None = None
+    nut_outer_diameter: _quantity("length", "nut outer diameter; None = 1.75 d_m", gt=0) | None = (
+        None
+    )
+    nut_length: _quantity("length", "length of each nut; None = 2.5 d_m", gt=0) | None = None
+    spacer_length: _quantity("length", "spacer length between two nuts", ge=0) = 0.01
+    spacer_outer_diameter: (
+        _quantity("length", "spacer outer diameter; None = nut outer diameter", gt=0) | None
+    ) = None
+    nut_position: (
+        _quantity("length", "centre of the nut assembly from z = 0; None = mid-screw", ge=0)
+        | None
+    ) = None
+    ambient_temperature: _quantity(
+        "temperature", 'ambient (initial) temperature; write "20 degC"', gt=150.0, lt=700.0
+    ) = 293.15
+    screw_heat_fraction: Annotated[
+        float, Field(ge=0, le=1, description="share of the ball-screw friction heat into the screw")
+    ] = 0.5
+    thermoelastic_check: bool = Field(
+        True, description="axisymmetric FE: thermo-elastic tip displacement vs α∫ΔT dz"
+    )
+    bearings: list[BearingSpec] = Field(default_factory=list, description="support bearings")
+    drag_torque: DragTorqueSpec = DragTorqueSpec()
+    convection: ConvectionSpec = ConvectionSpec()
+    contact: ContactSpec = ContactSpec()
+    stroke: StrokeSpec = StrokeSpec()
+    transient: TransientSpec = TransientSpec()
+    mesh: MeshSpec = MeshSpec()
+    sensors: list[SensorSpec] = Field(default_factory=list, description="named sensor points")
+
+    @model_validator(mode="after")
+    def _fits_on_shaft(self) -> ThermalSpec:
+        for k, bearing in enumerate(self.bearings):
+            if not 0.0 <= bearing.position <= self.shaft_length:
+                raise ValueError(
+                    f"bearings.{k}.position = {bearing.position:g} is not allowed: it must lie "
+                    f"on the shaft, in [0, {self.shaft_length:g}] m"
+                )
+        if self.nut_position is not None and self.nut_position > self.shaft_length:
+            raise ValueError(
+                f"nut_position = {self.nut_position:g} is not allowed: it must lie on the "
+                f"shaft, in [0, {self.shaft_length:g}] m"
+            )
+        names = [s.name for s in self.sensors]
+        if len(set(names)) != len(names):
+            raise ValueError(f"sensors = {names!r} is not allowed: sensor names must be unique")
+        return self

@@ -10,7 +10,7 @@
 """
 
 from ballscrew.contact.convolution import DCFFTOperator, direct_convolution, wraparound_kernel
-from ballscrew.contact.grid import GridContactResult, solve_contact
+from ballscrew.contact.grid import GridContactResult, cell_centres, solve_contact
 from ballscrew.contact.hertz import HertzContact, hamrock_brewe, hertz
 from ballscrew.contact.influence import love_coefficient, love_coefficients
 from ballscrew.contact.polonsky_keer import solve_normal, solve_normal_displacement
@@ -21,6 +21,7 @@ __all__ = [
     "DCFFTOperator",
     "GridContactResult",
     "HertzContact",
+    "cell_centres",
     "direct_convolution",
     "hamrock_brewe",
     "hertz",

@@ -97,10 +97,12 @@ def solve_contact(
     e_star: float,
     load: float,
     cells_across: int = 64,
-    box_factor: float = 1.3,
+    box_factor: float | tuple[float, float] = 1.3,
     tol: float = 1e-8,
     max_enlargements: int = 4,
     *,
+    cells: tuple[int, int] | None = None,
+    max_iterations: int = 1000,
     edge_tolerance: float = 1e-6,
     warm_start: bool = True,
 ) -> GridContactResult:
@@ -117,20 +119,33 @@ def solve_contact(
        whose edges carry pressure get 1.5 × the cells (same spacing) and the solve is repeated, at
        most ``max_enlargements`` times; then :class:`~ballscrew.errors.BallscrewError` is raised.
 
-    ``e_star`` [Pa] composite modulus (K1), ``load`` [N], ``tol`` as in :func:`solve_normal`.
+    ``box_factor`` may differ per axis, (f_x, f_y). With ``cells = (nx, ny)`` the grid is given
+    explicitly instead: exactly nx × ny cells over the box ±f_x·a × ±f_y·b (no rounding), which
+    reproduces a published grid such as the 40 × 200 cells over ±2.6b × ±2.4a of contact-tcr.md
+    T-H3.
+
+    ``e_star`` [Pa] composite modulus (K1), ``load`` [N], ``tol`` and ``max_iterations`` as in
+    :func:`solve_normal` (non-convergence raises :class:`~ballscrew.errors.ConvergenceError`).
     """
     estimate = hertz(rx, ry, e_star, load)
     cells_across = integer_at_least("cells_across", cells_across, 2)
     max_enlargements = integer_at_least("max_enlargements", max_enlargements, 0)
-    box_factor = positive("box_factor", box_factor)
+    fx, fy = (box_factor, box_factor) if np.isscalar(box_factor) else box_factor
+    fx, fy = positive("box_factor", fx), positive("box_factor", fy)
     edge_tolerance = positive("edge_tolerance", edge_tolerance)
-    dx, dy = 2.0 * estimate.a / cells_across, 2.0 * estimate.b / cells_across
-    nx = ny = _cells(box_factor * cells_across)  # 2·box_factor·a / dx cells, the same along y
+    if cells is None:
+        dx, dy = 2.0 * estimate.a / cells_across, 2.0 * estimate.b / cells_across
+        nx, ny = _cells(fx * cells_across), _cells(fy * cells_across)
+    else:
+        nx, ny = (integer_at_least("cells", n, 2) for n in cells)
+        dx, dy = 2.0 * fx * estimate.a / nx, 2.0 * fy * estimate.b / ny
     for enlargement in range(max_enlargements + 1):
         x, y = cell_centres(nx, dx), cell_centres(ny, dy)
         gap = _sample(gap_function, x, y)
         initial = estimate.pressure(x[:, None], y[None, :]) if warm_start else None
-        solution = solve_normal(gap, dx, dy, e_star, load, tol, initial=initial)
+        solution = solve_normal(
+            gap, dx, dy, e_star, load, tol, initial=initial, max_iterations=max_iterations
+        )
         x_edge, y_edge = _edge_ratios(solution.pressure)
         if max(x_edge, y_edge) <= edge_tolerance:
             return GridContactResult(

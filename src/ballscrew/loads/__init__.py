@@ -4,7 +4,6 @@ Vectorised functions return NumPy float64 scalars for scalar inputs.
 """
 
 from ballscrew.loads.ball_load import ball_load, validate_angles, validate_balls
-from ballscrew.loads.drag_torque import preload_drag_torque
 from ballscrew.loads.double_nut import (
     NutForces,
     axial_deflection_from_approaches,
@@ -14,6 +13,7 @@ from ballscrew.loads.double_nut import (
     preload_after_wear,
     preloaded_axial_stiffness,
 )
+from ballscrew.loads.drag_torque import preload_drag_torque
 
 __all__ = [
     "NutForces",

@@ -25,6 +25,12 @@ def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarr
     return centre + (np.arange(count) - 0.5 * (count - 1)) * cell
 
 
+def _cells_text(result: ScrewTCR) -> str:
+    if result.cell_size is None:
+        return "the solver grid's cells"
+    return f"{1e6 * result.cell_size:g} µm fractal cells"
+
+
 def _contact_summary(r: RacewayTCR) -> dict[str, Any]:
     return {
         "resistance": value(r.tcr.resistance, "K/W"),
@@ -63,7 +69,7 @@ def tcr_summary(result: ScrewTCR, case: Case) -> dict[str, Any]:
         "nuts": {f"nut{n.index}": _nut_summary(n) for n in result.nuts},
         "options": {
             "variant": result.variant,
-            "cell_size": value(result.cell_size, "m"),
+            "cell_size": value(result.cell_size, "m") if result.cell_size else "solver grid",
             "gap_model": case.tcr.gap_model,
             "gap_factor": case.tcr.gap_factor,
             "cutoff_area": value(case.tcr.cutoff_area, "m^2"),
@@ -158,7 +164,7 @@ def write_screw_tcr(result: ScrewTCR, case: Case, out: str | Path) -> Path:
                             f"nut {nut.index}, {_LABEL[side]}: R_c = {r.tcr.resistance:.3g} K/W",
                             folder / f"tcr_{tag}.png",
                         ),
-                        f"Element TCR on {1e6 * result.cell_size:g} µm cells ({result.variant}).",
+                        f"Element TCR on {_cells_text(result)} ({result.variant}).",
                     )
                 )
         rows = [
@@ -178,8 +184,8 @@ def write_screw_tcr(result: ScrewTCR, case: Case, out: str | Path) -> Path:
             Section(
                 "Thermal contact resistance of the screw",
                 paragraphs=[
-                    f"Element model {result.variant} on {1e6 * result.cell_size:g} µm fractal "
-                    f"cells (D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
+                    f"Element model {result.variant} on {_cells_text(result)} "
+                    f"(D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
                     f"{case.medium.thermal_conductivity:g} W/mK). Elements in parallel per "
                     "contact, screw and nut contact in series per ball, all loaded balls of "
                     "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "

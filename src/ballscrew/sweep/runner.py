@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
+import os
 import time
 import traceback
 from collections.abc import Callable, Sequence
@@ -76,7 +77,15 @@ def _needs_run(path: Path, retry_failed: bool) -> bool:
 
 
 def _client(scheduler: str | None, workers: int | None):  # -> distributed.Client
+    # Worker processes read their log level from the environment when they import distributed.
+    quiet = "DEBUG" if log.isEnabledFor(logging.DEBUG) else "ERROR"
+    os.environ.setdefault("DASK_LOGGING__DISTRIBUTED", quiet.lower())
+    import dask
+
+    dask.config.set({"logging.distributed": quiet.lower()})
     from distributed import Client, LocalCluster
+
+    logging.getLogger("distributed").setLevel(quiet)
 
     if scheduler:
         return Client(scheduler), None

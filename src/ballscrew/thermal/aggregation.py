@@ -104,6 +104,10 @@ def _pressure_field(pressure: ArrayLike) -> NDArray[np.float64]:
     return p
 
 
+PARTIAL_CELLS = ("contact_area", "full_cell")
+"""How a fractal cell on the edge of the contact patch counts, see :func:`contact_tcr`."""
+
+
 @dataclass(frozen=True)
 class ContactTCR:
     """Thermal contact resistance of one ball–raceway contact (A1), (A4)."""
@@ -111,7 +115,7 @@ class ContactTCR:
     resistance: float
     """Contact resistance R_c = 1/Σ 1/R_ij over the loaded cells (A1), K/W."""
     apparent_area: float
-    """Apparent contact area S_c = N_loaded·Δx_f·Δy_f (A4), m²."""
+    """Apparent contact area S_c (A4): the sum of the loaded cells' apparent areas, m²."""
     loaded_cells: int
     """Number of cells that carry load above the threshold."""
     cell_size: tuple[float, float]
@@ -139,6 +143,7 @@ def contact_tcr(
     model: FractalTCRModel,
     cell_size: float | None = DEFAULT_CELL_SIZE,
     load_threshold: float = 1.0e-8,
+    partial_cells: str = "contact_area",
 ) -> ContactTCR:
     """Thermal contact resistance R_c and apparent area S_c of one contact, (A1) and (A4).
 
@@ -146,6 +151,12 @@ def contact_tcr(
        ``cell_size=None`` the solver grid itself is used (cells dx × dy).
     2. Cells whose force is below ``load_threshold``·max force are treated as unloaded (§6.3:
        "skip p_ij < 1e-8·max p").
+       A fractal cell on the edge of the patch is only partly in contact. With
+       ``partial_cells="contact_area"`` (default) its apparent area A is the part of it that
+       lies on loaded solver cells, so it carries its force at the local contact pressure and
+       S_c equals the solved contact area. With ``"full_cell"`` it counts as a full Δ_f² cell at
+       a diluted pressure: in V2 and MT such lightly loaded cells conduct best (L_g → 0 as
+       P → 0), so the result then jumps by a few per cent whenever a cell enters the patch.
     3. Element resistances R_ij (T8) for all cells at once (:func:`element_tcr`).
     4. R_c = 1/Σ 1/R_ij (A1), S_c = N_loaded·A (A4).
 
@@ -160,6 +171,8 @@ def contact_tcr(
         cell_size: fractal cell side Δ_f, m (default 8e-6 m), or None for the solver grid.
         load_threshold: relative force threshold (>= 0, < 1) below which a cell counts as
             unloaded.
+        partial_cells: apparent area of a fractal cell on the patch edge, "contact_area"
+            (the part in contact) or "full_cell" (Δ_f²); see step 2.
 
     Returns:
         :class:`ContactTCR`.
@@ -169,23 +182,32 @@ def contact_tcr(
     """
     if not (0.0 <= float(load_threshold) < 1.0):
         raise InputError("load_threshold", load_threshold, "0 <= threshold < 1 (relative)")
+    if partial_cells not in PARTIAL_CELLS:
+        raise InputError("partial_cells", partial_cells, f"one of {', '.join(PARTIAL_CELLS)}")
+    p = _pressure_field(pressure)
     if cell_size is None:
-        p = _pressure_field(pressure)
         cell = (_positive("dx", dx, "m"), _positive("dy", dy, "m"))
         forces = p * (cell[0] * cell[1])
+        in_contact = np.where(p > 0.0, cell[0] * cell[1], 0.0)
     else:
-        forces = rebin_forces(pressure, dx, dy, cell_size)
+        forces = rebin_forces(p, dx, dy, cell_size)
         cell = (float(cell_size), float(cell_size))
+        in_contact = rebin_forces((p > 0.0).astype(np.float64), dx, dy, cell_size)
     peak = float(forces.max())
     if peak <= 0.0:
         raise InputError("pressure", "all zero", "at least one cell with p > 0")
-    cell_loads = np.where(forces >= load_threshold * peak, forces, 0.0)
-    elements = element_tcr(cell_loads, cell[0] * cell[1], model)
-    loaded = cell_loads > 0.0
+    loaded = (forces >= load_threshold * peak) & (forces > 0.0)
+    cell_loads = np.where(loaded, forces, 0.0)
+    full = cell[0] * cell[1]
+    if partial_cells == "contact_area":
+        areas = np.where(loaded, np.clip(in_contact, 1e-12 * full, full), full)
+    else:
+        areas = np.full(forces.shape, full)
+    elements = element_tcr(cell_loads, areas, model)
     n_loaded = int(np.count_nonzero(loaded))
     return ContactTCR(
         resistance=float(parallel_resistance(elements.resistance[loaded])),
-        apparent_area=n_loaded * cell[0] * cell[1],
+        apparent_area=float(areas[loaded].sum()),
         loaded_cells=n_loaded,
         cell_size=cell,
         variant=model.variant,

@@ -78,6 +78,14 @@ def _positive(name: str, value: float, unit: str) -> float:
     return out
 
 
+def _positive_array(name: str, value: ArrayLike, unit: str) -> NDArray[np.float64]:
+    arr = np.asarray(value, dtype=np.float64)
+    if not np.all(np.isfinite(arr) & (arr > 0.0)):
+        bad = arr[~(np.isfinite(arr) & (arr > 0.0))].flat[0] if arr.ndim else float(arr)
+        raise InputError(name, bad, f"finite numbers > 0 {unit}")
+    return arr
+
+
 def _nonnegative_array(name: str, value: ArrayLike, unit: str) -> NDArray[np.float64]:
     arr = np.asarray(value, dtype=np.float64)
     bad = ~np.isfinite(arr) | (arr < 0.0)
@@ -250,7 +258,7 @@ def gap_thickness(
 
 
 def gap_conductance(
-    real_area: ArrayLike, thickness: ArrayLike, *, apparent_area: float, lambda_f: float
+    real_area: ArrayLike, thickness: ArrayLike, *, apparent_area: ArrayLike, lambda_f: float
 ) -> NDArray[np.float64]:
     """Conductance G_g = λ_f (A − A_r)/L_g of the interstitial medium, (T3)/(T7).
 
@@ -265,7 +273,7 @@ def gap_conductance(
     Returns:
         G_g in W/K (broadcast shape).
     """
-    area = _positive("apparent_area", apparent_area, "m²")
+    area = _positive_array("apparent_area", apparent_area, "m²")
     lam = _positive("lambda_f", lambda_f, "W/(m K)")
     a_r = _nonnegative_array("real_area", real_area, "m²")
     lg = np.asarray(thickness, dtype=np.float64)
@@ -275,7 +283,7 @@ def gap_conductance(
 
 
 def constriction_alleviation_factor(
-    real_area: ArrayLike, *, apparent_area: float
+    real_area: ArrayLike, *, apparent_area: ArrayLike
 ) -> NDArray[np.float64]:
     """Constriction-alleviation divisor (1 − √(A_r/A))^1.5 for G_s (optional, §6.4).
 
@@ -289,7 +297,7 @@ def constriction_alleviation_factor(
     Returns:
         The dimensionless divisor, same shape as ``real_area``.
     """
-    area = _positive("apparent_area", apparent_area, "m²")
+    area = _positive_array("apparent_area", apparent_area, "m²")
     ratio = np.minimum(_nonnegative_array("real_area", real_area, "m²") / area, 1.0)
     return (1.0 - np.sqrt(ratio)) ** 1.5
 
@@ -390,7 +398,7 @@ class ElementTCR:
 
     variant: str
     """Solid-conductance variant that produced the result (V2, MT or V1)."""
-    apparent_area: float
+    apparent_area: NDArray[np.float64]
     """Apparent area A of each element, m²."""
     load: NDArray[np.float64]
     """Element load P = p·A, N."""
@@ -413,7 +421,7 @@ class ElementTCR:
         return self.apparent_area * self.resistance
 
 
-def element_tcr(load: ArrayLike, apparent_area: float, model: FractalTCRModel) -> ElementTCR:
+def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRModel) -> ElementTCR:
     """Element thermal contact resistance R = 1/(G_s + G_g) for every element load, (T8).
 
     Chain per element (all elements at once, no loop): a_l from P (F15 inverted), A_r (F11,
@@ -424,14 +432,15 @@ def element_tcr(load: ArrayLike, apparent_area: float, model: FractalTCRModel) -
 
     Args:
         load: element loads P = p·A (>= 0), N; any shape.
-        apparent_area: apparent area A of one element, m².
+        apparent_area: apparent area A of the elements, m²: one value for all, or one per
+            element (broadcast against ``load``; > 0).
         model: model parameters and variant.
 
     Returns:
         :class:`ElementTCR` with per-element arrays.
     """
-    area = _positive("apparent_area", apparent_area, "m²")
     p = _nonnegative_array("load", load, "N")
+    area = np.broadcast_to(_positive_array("apparent_area", apparent_area, "m²"), p.shape)
     a_l = largest_spot_area(p, D=model.D, G=model.G, E_star=model.E_star, H=model.H)
     a_r = np.minimum(real_contact_area(a_l, D=model.D), area)
     l_g = gap_thickness(
