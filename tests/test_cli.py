@@ -56,16 +56,32 @@ def test_contact_writes_a_complete_results_folder(tmp_path, example, request):
 BAD_EDITS = [
     ('lead = "10 mm"', "", "screw.lead is missing"),
     ("[numerics]\n", "[numerics]\nspeeed = 3\n", "numerics.speeed: unknown key"),
-    ('lead = "10 mm"', 'lead = "-10 mm"', "screw.lead = '-10 mm' is not allowed: allowed range "
-     "is (0, inf) m"),
-    ("screw_conformity = 0.52", "screw_conformity = 0.5", "screw.screw_conformity = 0.5 is not "
-     "allowed"),
-    ('contact_angle = "45 deg"', 'contact_angle = "90 deg"', "screw.contact_angle = '90 deg' is "
-     "not allowed: allowed range is (0, 1.5708) rad"),
-    ('ball_diameter = "6.35 mm"', 'ball_diameter = "45 mm"', "screw.ball_diameter = 0.045 m is "
-     "not allowed: it must be smaller than pitch_diameter = 0.04 m"),
-    ("poissons_ratio = 0.3", "poissons_ratio = 0.55", "materials.ball.poissons_ratio = 0.55 is "
-     "not allowed: allowed range is (0, 0.5)"),
+    (
+        'lead = "10 mm"',
+        'lead = "-10 mm"',
+        "screw.lead = '-10 mm' is not allowed: allowed range is (0, inf) m",
+    ),
+    (
+        "screw_conformity = 0.52",
+        "screw_conformity = 0.5",
+        "screw.screw_conformity = 0.5 is not allowed",
+    ),
+    (
+        'contact_angle = "45 deg"',
+        'contact_angle = "90 deg"',
+        "screw.contact_angle = '90 deg' is not allowed: allowed range is (0, 1.5708) rad",
+    ),
+    (
+        'ball_diameter = "6.35 mm"',
+        'ball_diameter = "45 mm"',
+        "screw.ball_diameter = 0.045 m is "
+        "not allowed: it must be smaller than pitch_diameter = 0.04 m",
+    ),
+    (
+        "poissons_ratio = 0.3",
+        "poissons_ratio = 0.55",
+        "materials.ball.poissons_ratio = 0.55 is not allowed: allowed range is (0, 0.5)",
+    ),
     ('preload = "1500 N"', 'preload = "-1500 N"', "operating.preload = '-1500 N' is not allowed"),
     ('preload = "1500 N"', 'preload = "0 N"', "a double nut needs a preload > 0 N"),
     ('lead = "10 mm"', 'lead = "10 mm', "TOML syntax error"),
@@ -115,3 +131,75 @@ def test_missing_case_file(tmp_path):
 def test_version():
     result = run("--version")
     assert result.exit_code == 0 and result.output.startswith("ballscrew ")
+
+
+def test_solver_that_does_not_converge_is_an_error_with_its_residual(tmp_path, gao_case_path):
+    case_path = edited_case(
+        tmp_path, gao_case_path, "tolerance = 1e-8", "tolerance = 1e-14\nmax_iterations = 10"
+    )
+    out = tmp_path / "out"
+    result = run("contact", case_path, "--out", out)
+    assert result.exit_code == 2
+    assert "did not converge: residual" in result.output
+    assert "after 10 iterations" in result.output
+    assert not out.exists()  # no half-written results folder
+
+
+def test_tcr_command_writes_its_folder(tmp_path, gao_case_path):
+    out = tmp_path / "tcr"
+    result = run("tcr", gao_case_path, "--out", out, "--variant", "MT")
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["options"]["variant"] == "MT"
+    assert summary["options"]["cell_size"] == {"value": 8e-6, "unit": "m"}
+    assert summary["resistance"]["unit"] == "K/W"
+    assert summary["nut_forces"][0]["value"] == 1500.0
+    assert set(summary["nuts"]) == {"nut1", "nut2"}
+    with xr.open_dataset(out / "fields.nc", engine="h5netcdf") as fields:
+        assert fields["nut1_screw_element_resistance"].attrs["units"] == "K/W"
+        assert fields["nut2_nut_pressure"].attrs["units"] == "Pa"
+    assert (out / "tcr_nut1_screw.png").is_file()
+
+
+def test_bad_variant_is_refused(tmp_path, gao_case_path):
+    result = run("tcr", gao_case_path, "--out", tmp_path / "o", "--variant", "V9")
+    assert result.exit_code == 2
+    assert "variant = 'V9' is not allowed" in result.output
+
+
+@pytest.mark.parametrize(
+    ("vary", "message"),
+    [
+        ("surface.X=1:2:3", "surface.X: unknown key"),
+        ("surface.D=1.4:1.6:0", "the range is empty"),
+        ("surface.D=1.5,2.5", "surface.D = 2.5 is not allowed: allowed range is (1, 2)"),
+    ],
+)
+def test_bad_sweep_is_refused_before_any_work(tmp_path, gao_case_path, vary, message):
+    out = tmp_path / "sweep"
+    result = run("sweep", gao_case_path, "--vary", vary, "--out", out)
+    assert result.exit_code == 2
+    assert message in result.output
+    assert "Traceback" not in result.output
+    assert not (out / "points").exists()
+
+
+def test_sweep_file_runs_and_resumes(tmp_path):
+    sweep_file = tmp_path / "fig.toml"
+    sweep_file.write_text(
+        "[sweep]\n"
+        f"case = {str(Path(__file__).parents[1] / 'examples' / 'gao2019_tcr.toml')!r}\n"
+        'analysis = "tcr"\n'
+        'set = { "numerics.cells_across" = 16 }\n'
+        'vary = ["operating.axial_load=0,5000"]\n'
+    )
+    out = tmp_path / "sweep"
+    first = run("sweep", sweep_file, "--out", out, "--workers", "1")
+    assert first.exit_code == 0, first.output
+    with xr.open_dataset(out / "sweep.nc", engine="h5netcdf") as ds:
+        assert ds["F2"].values.tolist() == [1500.0, 0.0]  # nut 2 lifted off at 5000 N
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["computed_now"] == 2 and summary["failed"] == 0
+    again = run("sweep", sweep_file, "--out", out)
+    assert again.exit_code == 0
+    assert json.loads((out / "summary.json").read_text())["computed_now"] == 0

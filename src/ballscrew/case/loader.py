@@ -165,9 +165,10 @@ def describe_errors(exc: ValidationError) -> list[str]:
             where = ".".join(str(k) for k in parent) or "the case"
             lines.append(unknown_key_message(dotted, str(loc[-1]), allowed, where))
         elif kind in _BOUNDS:
+            meaning = f" ({description})" if description else ""
             lines.append(
                 f"{dotted} = {err['input']!r} is not allowed: allowed range is "
-                f"{_allowed_range(loc)}{unit_text}"
+                f"{_allowed_range(loc)}{unit_text}{meaning}"
             )
         elif kind == "literal_error":
             lines.append(
