@@ -57,6 +57,7 @@ __all__ = [
     "array_module",
     "blas_single_thread",
     "fft_threads",
+    "limited_fft_threads",
     "padded_rfft",
 ]
 
@@ -71,16 +72,48 @@ def array_module(x: Any) -> ModuleType:
     return np
 
 
-def fft_threads() -> int:
-    """Threads for the FFTs on the CPU.
+THREADED_MIN_POINTS = 512 * 512
+"""Padded transforms smaller than this run on one thread.
 
-    ``BALLSCREW_FFT_THREADS`` if set (use 1 inside process pools that already fill the cores),
-    otherwise ``os.cpu_count()`` capped at :data:`MAX_FFT_THREADS`.
+Threads gain little on small transforms, and when the cores are shared (a Dask worker per core,
+a parallel test run) a threaded FFTW plan of a small grid was measured 100-1000x slower than a
+serial one: the threads wait for each other's time slices.
+"""
+
+
+def fft_threads(points: int | None = None) -> int:
+    """Threads for an FFT of ``points`` (padded) values on the CPU.
+
+    The limit of an enclosing :func:`limited_fft_threads` block, else ``BALLSCREW_FFT_THREADS``
+    if set, else 1 below :data:`THREADED_MIN_POINTS`, else ``os.cpu_count()`` capped at
+    :data:`MAX_FFT_THREADS`.
     """
+    limit = getattr(_thread_limit, "value", None)
+    if limit is not None:
+        return limit
     env = os.environ.get("BALLSCREW_FFT_THREADS")
     if env:
         return max(1, int(env))
+    if points is not None and points < THREADED_MIN_POINTS:
+        return 1
     return max(1, min(os.cpu_count() or 1, MAX_FFT_THREADS))
+
+
+_thread_limit = threading.local()
+
+
+@contextlib.contextmanager
+def limited_fft_threads(threads: int = 1) -> Iterator[None]:
+    """Run the block with at most ``threads`` FFT threads (in the calling thread).
+
+    Sweeps run each point like this: their Dask workers already fill the cores.
+    """
+    previous = getattr(_thread_limit, "value", None)
+    _thread_limit.value = max(1, int(threads))
+    try:
+        yield
+    finally:
+        _thread_limit.value = previous
 
 
 @cache
@@ -284,15 +317,15 @@ def padded_rfft(shape: tuple[int, int], xp: ModuleType = np) -> PaddedRealFFT:
     transforms = getattr(_local, "transforms", None)
     if transforms is None:
         transforms = _local.transforms = OrderedDict()
-    key = (shape, xp.__name__)
+    key = (shape, xp.__name__, fft_threads(4 * shape[0] * shape[1]))
     transform = transforms.get(key)
     if transform is None:
         if xp is not np:
             transform = _CupyPadded(shape)
         elif pyfftw is not None:
-            transform = _FFTWPadded(shape, fft_threads())
+            transform = _FFTWPadded(shape, fft_threads(4 * shape[0] * shape[1]))
         else:
-            transform = _ScipyPadded(shape, fft_threads())
+            transform = _ScipyPadded(shape, fft_threads(4 * shape[0] * shape[1]))
         transforms[key] = transform
         if len(transforms) > CACHED_SHAPES:
             transforms.popitem(last=False)

@@ -103,3 +103,15 @@ def test_solver_runs_on_cupy_arrays():
     np.testing.assert_allclose(
         cupy.asnumpy(on_gpu.pressure), on_cpu.pressure, atol=1e-6 * reference.p0
     )
+
+
+def test_small_transforms_are_serial_and_the_limit_applies(monkeypatch):
+    monkeypatch.delenv("BALLSCREW_FFT_THREADS", raising=False)
+    assert backend.fft_threads(64 * 64) == 1
+    with backend.limited_fft_threads(1):
+        assert backend.fft_threads(4096 * 4096) == 1
+        transform = backend.padded_rfft((512, 512))
+    assert backend.fft_threads() >= 1
+    # A transform planned inside the limit is not handed out outside it (thread count is keyed).
+    if backend.fft_threads(4 * 512 * 512) > 1:
+        assert backend.padded_rfft((512, 512)) is not transform

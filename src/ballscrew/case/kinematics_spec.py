@@ -1,9 +1,102 @@
-"""Case section ``[kinematics]``: ball kinematics and the quasi-static ball balance."""
+"""Case section ``[kinematics]``: ball kinematics, quasi-static ball balance, lubrication, limits.
+
+Every key has a default, so a case without the section is valid. Physics reference:
+``kinematics-wear.md`` §2, §3, §5, §6 and §9.1.
+
+Example::
+
+    [kinematics]
+    level = 1                              # 0 static, 1 centrifugal + groove, 2 full balance
+    speed_range = ["0 rpm", "3000 rpm"]    # curves of the `kinematics` command
+    lubricant = "iso_vg_68"                # fills medium.viscosity / pressure_viscosity if unset
+    unsupported_length = "800 mm"          # enables the whirling-speed check
+    mounting = "fixed-supported"
+"""
 
 from __future__ import annotations
 
-from ballscrew.case.base import Model
+import math
+from typing import Annotated, Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from ballscrew.case.base import Model, quantity
+from ballscrew.lubrication.lubricants import LUBRICANTS
+
+Mounting = Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"]
+
+_Speed = quantity("angular_velocity", 'screw speed (rad/s; "3000 rpm" also works)', ge=0)
 
 
 class KinematicsSpec(Model):
-    """Options of the kinematics model (to be completed)."""
+    """Options of the kinematics, ball-balance, lubrication and drag-torque models."""
+
+    level: Literal[0, 1, 2] = Field(
+        0,
+        description="ball balance: 0 static load (E1.6), 1 centrifugal force + groove geometry "
+        "(E3.5), 2 full balance with traction, EHL rolling resistance, gyroscopic moment (E3.6)",
+    )
+    speed_range: tuple[_Speed, _Speed] | None = Field(
+        None,
+        description="lowest and highest screw speed of the curves vs speed; None = 0 to the "
+        "larger of the case speed and the d·n-limit speed",
+    )
+    speed_points: Annotated[
+        int, Field(ge=2, le=500, description="number of speeds on the curves vs speed")
+    ] = 13
+    lubricant: str | None = Field(
+        None,
+        description="named lubricant (ballscrew.lubrication.LUBRICANTS) for medium values that "
+        "are not given; None = [medium] only",
+    )
+    boundary_friction: Annotated[
+        float, Field(ge=0.0, le=1.0, description="μ_b on the asperity-borne pressure (E3.3)")
+    ] = 0.1
+    limiting_shear: Annotated[
+        float,
+        Field(ge=0.0, le=1.0, description="limiting shear stress / pressure of the film, τ_L/p"),
+    ] = 0.07
+    micro_contact_size: quantity(
+        "length", "side √ΔA of the fractal micro-contact cell; σ from (E5.3) with L_s = √ΔA", gt=0
+    ) = 10e-6
+    traction_cells: Annotated[
+        int, Field(ge=8, le=512, description="cells per axis of the traction grid (Level 2)")
+    ] = 32
+    unsupported_length: (
+        quantity("length", "unsupported screw length between bearings (whirling check)", gt=0)
+        | None
+    ) = None
+    mounting: Mounting = Field(
+        "fixed-supported", description="end fixity of the screw shaft for the whirling speed"
+    )
+    root_diameter: quantity("length", "screw root diameter; None = groove bottom", gt=0) | None = (
+        None
+    )
+    critical_speed_factor: Annotated[
+        float, Field(gt=0.0, le=1.0, description="allowed fraction of the whirling speed")
+    ] = 0.8
+    dn_limit: Annotated[
+        float,
+        Field(gt=0.0, description="d·n limit, pitch diameter [mm] × speed [rpm]"),
+    ] = 70_000.0
+    speed_warnings: bool = Field(
+        True, description="warn when the speed exceeds the whirling-speed or d·n limit"
+    )
+
+    @field_validator("lubricant")
+    @classmethod
+    def _known_lubricant(cls, name: str | None) -> str | None:
+        if name is not None and name not in LUBRICANTS:
+            raise ValueError(f"unknown lubricant; known: {', '.join(sorted(LUBRICANTS))}")
+        return name
+
+    @model_validator(mode="after")
+    def _range_increases(self) -> KinematicsSpec:
+        if self.speed_range is not None:
+            low, high = self.speed_range
+            if not (math.isfinite(high) and high > low):
+                raise ValueError(
+                    f"speed_range = ({low:g}, {high:g}) rad/s is not allowed: the highest speed "
+                    "must exceed the lowest"
+                )
+        return self

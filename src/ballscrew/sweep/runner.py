@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from ballscrew.backend import limited_fft_threads
 from ballscrew.case import Case
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
 
@@ -41,10 +42,14 @@ class PointRecord:
 
 
 def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> PointRecord:
-    """Run one point, catching any exception into the record (runs on a worker)."""
+    """Run one point, catching any exception into the record (runs on a worker).
+
+    FFTs run single-threaded: the sweep's parallelism is its workers, one per core.
+    """
     start = time.perf_counter()
     try:
-        results = {k: (float(v), u) for k, (v, u) in analysis(case).items()}
+        with limited_fft_threads(1):
+            results = {k: (float(v), u) for k, (v, u) in analysis(case).items()}
         error = None
     except Exception as exc:  # a failed point must not kill the sweep
         results, error = None, f"{type(exc).__name__}: {exc}"

@@ -1,0 +1,201 @@
+"""Parameters of the ball model of one case: geometry, elastic constants, lubricant, roughness.
+
+Built once per case by :func:`ball_model`; every solver of the package takes it. Hertz
+quantities at load Q are scaled from the unit-load solution (a, b ∝ Q^(1/3), δ ∝ Q^(2/3)).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any, Literal
+
+from ballscrew.contact import hertz
+from ballscrew.contact.hertz import HertzContact
+from ballscrew.errors import InputError
+from ballscrew.fractal.yan_komvopoulos import surface_dimension
+from ballscrew.geometry import RacewayCurvature, ScrewGeometry, raceway_curvature
+from ballscrew.kinematics.frames import BallFrame, ball_frame
+from ballscrew.kinematics.inertia import ball_inertia, ball_mass
+from ballscrew.kinematics.sliding import deformed_radius
+from ballscrew.lubrication import (
+    AsperitySurface,
+    FilmThickness,
+    LoadSharing,
+    ehl_rolling_resistance,
+    hamrock_dowson,
+    lubricant,
+    share_load,
+)
+
+__all__ = ["BallModel", "ball_model", "case_lubricant"]
+
+Contact = Literal["screw", "nut"]
+
+
+@dataclass(frozen=True)
+class BallModel:
+    """Everything the ball balance needs about one screw (SI)."""
+
+    geometry: ScrewGeometry
+    balls: int
+    """Loaded balls per nut Z."""
+    ball_density: float
+    e_star_screw: float
+    e_star_nut: float
+    surface: AsperitySurface
+    """Rough screw raceway at A (3-D fractal, Ds = D + 1)."""
+    viscosity: float | None = None
+    """η₀ [Pa s]; None = no lubricant data (dry contacts)."""
+    pressure_viscosity: float | None = None
+    """α_p [1/Pa]."""
+    boundary_friction: float = 0.1
+    limiting_shear: float = 0.07
+    traction_cells: int = 32
+
+    @property
+    def lubricated(self) -> bool:
+        """True when η₀ and α_p are both known."""
+        return self.viscosity is not None and self.pressure_viscosity is not None
+
+    @cached_property
+    def frame(self) -> BallFrame:
+        return ball_frame(self.geometry)
+
+    @cached_property
+    def mass(self) -> float:
+        return ball_mass(self.geometry.ball_diameter, self.ball_density)
+
+    @cached_property
+    def inertia(self) -> float:
+        return ball_inertia(self.geometry.ball_diameter, self.ball_density)
+
+    def curvature(self, contact: Contact) -> RacewayCurvature:
+        """Exact gap curvatures (G15)–(G17) at A or B (nominal contact angle)."""
+        return self._curvatures[contact]
+
+    @cached_property
+    def _curvatures(self) -> dict[str, RacewayCurvature]:
+        return {c: raceway_curvature(self.geometry, c) for c in ("screw", "nut")}
+
+    def e_star(self, contact: Contact) -> float:
+        return self.e_star_screw if contact == "screw" else self.e_star_nut
+
+    @cached_property
+    def _unit_hertz(self) -> dict[str, HertzContact]:
+        return {
+            c: hertz(self.curvature(c).rx, self.curvature(c).ry, self.e_star(c), 1.0)
+            for c in ("screw", "nut")
+        }
+
+    def hertz_constant(self, contact: Contact) -> float:
+        """K of δ = K Q^(2/3), (E1.5), m N^(−2/3) (1.513e-7 at A in REF, T1.7)."""
+        return self._unit_hertz[contact].approach
+
+    def hertz_semi_axes(self, contact: Contact, load: float) -> tuple[float, float]:
+        """Hertz semi-axes (along x = t, along y = across the groove) at load Q [m]."""
+        unit = self._unit_hertz[contact]
+        scale = max(load, 0.0) ** (1.0 / 3.0)
+        return unit.a * scale, unit.b * scale
+
+    def deformed_radius(self, contact: Contact = "screw") -> float:
+        """Harris R_d = 2 r_g r_b/(r_g + r_b) of the contact surface across the groove [m]."""
+        return deformed_radius(self.geometry.groove_radius(contact), self.geometry.ball_radius)
+
+    def film(self, load: float, speed: float, contact: Contact = "screw") -> FilmThickness | None:
+        """Hamrock–Dowson film carrying the whole load (None without lubricant or motion)."""
+        if not self.lubricated or speed == 0.0 or load <= 0.0:
+            return None
+        c = self.curvature(contact)
+        return hamrock_dowson(
+            c.rx,
+            c.ry,
+            2.0 * self.e_star(contact),
+            self.viscosity,
+            self.pressure_viscosity,
+            abs(speed),
+            load,
+        )
+
+    def sharing(self, load: float, speed: float, contact: Contact = "screw") -> LoadSharing:
+        """JGP asperity share at A (E6.4); dry (ψ = 1) without lubricant or entrainment."""
+        if not self.lubricated or speed == 0.0:
+            return LoadSharing(1.0, float(load), 0.0, None)
+        c = self.curvature(contact)
+        a, b = self.hertz_semi_axes(contact, load)
+        return share_load(
+            load,
+            c.rx,
+            c.ry,
+            self.viscosity,
+            self.pressure_viscosity,
+            abs(speed),
+            math.pi * a * b,
+            self.surface,
+        )
+
+    def rolling_resistance(self, load: float, speed: float, contact: Contact) -> float:
+        """EHL rolling-resistance magnitude F_R (E3.4) [N]; 0 without lubricant or motion."""
+        if not self.lubricated or speed == 0.0 or load <= 0.0:
+            return 0.0
+        c = self.curvature(contact)
+        return ehl_rolling_resistance(
+            c.rx,
+            c.ry,
+            2.0 * self.e_star(contact),
+            self.viscosity,
+            self.pressure_viscosity,
+            abs(speed),
+            load,
+        )
+
+
+def case_lubricant(case: Any) -> tuple[float | None, float | None]:
+    """(η₀, α_p) of a case: ``[medium]`` values, completed by ``[kinematics] lubricant``.
+
+    Raises :class:`InputError` for a viscosity ≤ 0 or a negative α_p.
+    """
+    eta = case.medium.viscosity
+    alpha = case.medium.pressure_viscosity
+    name = case.kinematics.lubricant
+    if name is not None:
+        named = lubricant(name)
+        eta = named.viscosity if eta is None else eta
+        alpha = named.pressure_viscosity if alpha is None else alpha
+    if eta is not None and not (math.isfinite(eta) and eta > 0.0):
+        raise InputError("medium.viscosity", eta, "a dynamic viscosity > 0 Pa s")
+    if alpha is not None and not (math.isfinite(alpha) and alpha >= 0.0):
+        raise InputError("medium.pressure_viscosity", alpha, "a coefficient >= 0 1/Pa")
+    return eta, alpha
+
+
+def ball_model(case: Any) -> BallModel:
+    """The :class:`BallModel` of a validated case."""
+    from ballscrew.analyses.ball_contact import contact_modulus
+
+    geometry = ScrewGeometry.from_spec(case.screw)
+    eta, alpha = case_lubricant(case)
+    spec = case.kinematics
+    e_star = contact_modulus(case, "screw")
+    hardness = case.materials.screw.hardness
+    surface = AsperitySurface(
+        Ds=surface_dimension(case.surface.D),
+        G=case.surface.G,
+        e_star=e_star,
+        hardness=hardness,
+        cell_area=spec.micro_contact_size**2,
+    )
+    return BallModel(
+        geometry=geometry,
+        balls=case.screw.balls_per_nut,
+        ball_density=case.materials.ball.density,
+        e_star_screw=e_star,
+        e_star_nut=contact_modulus(case, "nut"),
+        surface=surface,
+        viscosity=eta,
+        pressure_viscosity=alpha,
+        boundary_friction=spec.boundary_friction,
+        limiting_shear=spec.limiting_shear,
+        traction_cells=spec.traction_cells,
+    )

@@ -1,0 +1,36 @@
+"""Lubrication of the ball contacts: EHL film, rolling resistance and mixed-lubrication sharing.
+
+1. :func:`hamrock_dowson`: central and minimum film thickness of an elliptical EHL contact
+   (Hamrock & Dowson 1977; ``kinematics-wear.md`` §6.1).
+2. :func:`ehl_rolling_resistance`: hydrodynamic rolling force (Harris; (E3.4)).
+3. :func:`share_load`: Johnson–Greenwood–Poon (1972) split of the normal load between the film
+   and the fractal asperities of :mod:`ballscrew.fractal.yan_komvopoulos` (§6.2), and
+   :func:`asperity_pressure` for the per-cell asperity pressure ψ p.
+4. :data:`LUBRICANTS` / :func:`lubricant`: named oils and greases with their sources.
+"""
+
+from ballscrew.lubrication.film import FilmThickness, dimensionless_groups, hamrock_dowson
+from ballscrew.lubrication.load_sharing import (
+    AsperitySurface,
+    LoadSharing,
+    asperity_pressure,
+    load_sharing_residual,
+    share_load,
+)
+from ballscrew.lubrication.lubricants import LUBRICANTS, Lubricant, lubricant
+from ballscrew.lubrication.rolling_resistance import ehl_rolling_resistance
+
+__all__ = [
+    "LUBRICANTS",
+    "AsperitySurface",
+    "FilmThickness",
+    "LoadSharing",
+    "Lubricant",
+    "asperity_pressure",
+    "dimensionless_groups",
+    "ehl_rolling_resistance",
+    "hamrock_dowson",
+    "load_sharing_residual",
+    "lubricant",
+    "share_load",
+]

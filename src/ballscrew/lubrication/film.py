@@ -1,0 +1,109 @@
+"""Isothermal EHL film thickness of elliptical contacts (Hamrock & Dowson 1977).
+
+Hamrock, B. J. & Dowson, D. (1977), "Isothermal elastohydrodynamic lubrication of point
+contacts, Part III — fully flooded results", J. Lubr. Technol. 99:264. Physics reference:
+``kinematics-wear.md`` §6.1. SI units; E′ = 2E* is Hamrock's reduced modulus.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ballscrew.errors import InputError
+
+__all__ = ["FilmThickness", "dimensionless_groups", "hamrock_dowson"]
+
+
+def _positive(field: str, value: float, unit: str) -> float:
+    out = float(value)
+    if not (math.isfinite(out) and out > 0.0):
+        raise InputError(field, value, f"a finite number > 0 {unit}")
+    return out
+
+
+def _nonnegative(field: str, value: float, unit: str) -> float:
+    out = float(value)
+    if not (math.isfinite(out) and out >= 0.0):
+        raise InputError(field, value, f"a finite number >= 0 {unit}")
+    return out
+
+
+@dataclass(frozen=True)
+class FilmThickness:
+    """Hamrock–Dowson film thickness and the dimensionless groups it came from."""
+
+    central: float
+    """Central film thickness h_c [m]."""
+    minimum: float
+    """Minimum film thickness h_min [m]."""
+    speed_parameter: float
+    """U = η₀ u_e/(E′ R_x) [-]."""
+    materials_parameter: float
+    """Ḡ = α_p E′ [-]."""
+    load_parameter: float
+    """W = Q_f/(E′ R_x²) [-]."""
+    ellipticity: float
+    """κ_HD = 1.03 (R_y/R_x)^0.64 [-]."""
+
+
+def dimensionless_groups(
+    rx: float,
+    ry: float,
+    e_prime: float,
+    viscosity: float,
+    pressure_viscosity: float,
+    entrainment_speed: float,
+    load: float,
+) -> tuple[float, float, float, float]:
+    """(U, Ḡ, W, κ_HD) of (E6.1 inputs), Hamrock & Dowson (1977).
+
+        U = η₀ u_e/(E′ R_x),  Ḡ = α_p E′,  W = Q_f/(E′ R_x²),  κ_HD = 1.03 (R_y/R_x)^0.64
+
+    R_x is the relative radius along the entrainment (rolling) direction.
+    """
+    rx, ry = _positive("rx", rx, "m"), _positive("ry", ry, "m")
+    e_prime = _positive("e_prime", e_prime, "Pa")
+    eta = _positive("viscosity", viscosity, "Pa s")
+    alpha = _nonnegative("pressure_viscosity", pressure_viscosity, "1/Pa")
+    u_e = _nonnegative("entrainment_speed", entrainment_speed, "m/s")
+    q = _nonnegative("load", load, "N")
+    return (
+        eta * u_e / (e_prime * rx),
+        alpha * e_prime,
+        q / (e_prime * rx * rx),
+        1.03 * (ry / rx) ** 0.64,
+    )
+
+
+def hamrock_dowson(
+    rx: float,
+    ry: float,
+    e_prime: float,
+    viscosity: float,
+    pressure_viscosity: float,
+    entrainment_speed: float,
+    load: float,
+) -> FilmThickness:
+    """Central and minimum EHL film thickness of an elliptical contact, (E6.1), m.
+
+        h_c   = R_x · 2.69 U^0.67 Ḡ^0.53 W^−0.067 (1 − 0.61 e^(−0.73 κ_HD))
+        h_min = R_x · 3.63 U^0.68 Ḡ^0.49 W^−0.073 (1 − e^(−0.68 κ_HD))
+
+    Hamrock & Dowson (1977), isothermal, fully flooded. ``rx`` along the entrainment direction,
+    ``ry`` across it [m]; ``e_prime`` = E′ = 2E* [Pa]; ``viscosity`` η₀ [Pa s];
+    ``pressure_viscosity`` α_p [1/Pa]; ``entrainment_speed`` u_e [m/s] (mean rolling speed; a
+    ball screw: u_e = V, E2.8); ``load`` Q_f [N], the load the film carries. u_e = 0 gives a
+    zero film. Q_f → 0 makes the film grow without bound (W^−0.067); Q_f = 0 is rejected.
+
+    REF contact A (R_x = 2.820 mm, R_y = 34.93 mm, η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa,
+    u_e = 0.09333 m/s, Q = 39.41 N): h_c = 53.30 nm, h_min = 41.70 nm (T6.1).
+    """
+    u, g, w, k = dimensionless_groups(
+        rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, load
+    )
+    if w <= 0.0:
+        raise InputError("load", load, "a film load > 0 N (the film thickness diverges at 0)")
+    central = rx * 2.69 * u**0.67 * g**0.53 * w**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
+    minimum = rx * 3.63 * u**0.68 * g**0.49 * w**-0.073 * (1.0 - math.exp(-0.68 * k))
+    return FilmThickness(central, minimum, u, g, w, k)

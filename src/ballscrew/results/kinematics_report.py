@@ -1,0 +1,336 @@
+"""Results folder of ``ballscrew kinematics``: summary.json, fields.nc, figures and report.html."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+from matplotlib.patches import Ellipse
+
+from ballscrew.case import Case
+from ballscrew.kinematics.analysis import ContactFields, KinematicsRun
+from ballscrew.kinematics.balance import BallState
+from ballscrew.kinematics.torque import BallDrag
+from ballscrew.results.folder import results_folder
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import value, write_summary
+
+__all__ = [
+    "kinematics_fields",
+    "kinematics_summary",
+    "sliding_map",
+    "write_kinematics",
+]
+
+_RPM = 60.0 / (2.0 * math.pi)
+
+
+def _state_summary(
+    state: BallState, drag: BallDrag, balls: int, fields: ContactFields | None
+) -> dict[str, Any]:
+    out: dict[str, Any] = {
+        "flank": state.flank,
+        "nut_force": value(state.nut_force, "N"),
+        "ball_speed": value(state.ball_speed, "m/s"),
+        "orbital_speed": value(state.orbital_speed, "rad/s"),
+        "spin_screw": value(state.spin_screw, "rad/s"),
+        "spin_nut": value(state.spin_nut, "rad/s"),
+        "load_screw": value(state.load_screw, "N"),
+        "load_nut": value(state.load_nut, "N"),
+        "angle_screw": value(state.angle_screw, "rad"),
+        "angle_nut": value(state.angle_nut, "rad"),
+        "drag_torque": value(balls * drag.dissipation_torque, "N*m"),
+        "asperity_share": drag.psi,
+        "solver_iterations": state.iterations,
+    }
+    if state.level == 2:
+        out["traction_coefficient_nut"] = state.traction_coefficient_nut
+    if fields is not None:
+        film = fields.sharing.film
+        out["film_thickness_central"] = value(film.central if film else math.nan, "m")
+        out["film_thickness_minimum"] = value(film.minimum if film else math.nan, "m")
+        out["asperity_share"] = fields.sharing.psi
+        out["peak_pressure"] = value(fields.contact.solution.peak_pressure, "Pa")
+    return out
+
+
+def kinematics_summary(run: KinematicsRun, case: Case) -> dict[str, Any]:
+    """Scalars at the case speed, the curves versus speed and the options used."""
+    balls = case.screw.balls_per_nut
+    nuts = {}
+    for number, state in run.states.items():
+        fields = run.fields if number == 1 else None
+        entry = _state_summary(state, run.drags[number], balls, fields)
+        nuts[f"nut{number}"] = entry
+    sweep = run.sweep
+    return {
+        "analysis": "kinematics",
+        "case": run.case_name,
+        "level": run.level,
+        "speed": value(run.speed, "rad/s"),
+        "nuts": nuts,
+        "drag_torque": {
+            "catalogue": value(run.catalogue_torque, "N*m"),
+            "ball_model": value(run.model_torque, "N*m"),
+            "heat": value(run.model_torque * run.speed, "W"),
+        },
+        "curves": {
+            "speed": {"value": sweep.speed, "unit": "rad/s"},
+            "load_screw": {"value": sweep.load_screw, "unit": "N"},
+            "load_nut": {"value": sweep.load_nut, "unit": "N"},
+            "angle_screw": {"value": sweep.angle_screw, "unit": "rad"},
+            "angle_nut": {"value": sweep.angle_nut, "unit": "rad"},
+            "ball_speed": {"value": sweep.ball_speed, "unit": "m/s"},
+            "asperity_share": {"value": sweep.asperity_share, "unit": ""},
+            "drag_torque_operating": {"value": sweep.model_torque, "unit": "N*m"},
+            "drag_torque_no_load": {"value": run.no_load_torque, "unit": "N*m"},
+            "preload": {"value": run.preloads, "unit": "N"},
+            "drag_torque_catalogue_vs_preload": {"value": run.preload_catalogue, "unit": "N*m"},
+            "drag_torque_model_vs_preload": {"value": run.preload_model, "unit": "N*m"},
+        },
+        "options": {
+            "boundary_friction": case.kinematics.boundary_friction,
+            "limiting_shear": case.kinematics.limiting_shear,
+            "micro_contact_size": value(case.kinematics.micro_contact_size, "m"),
+            "surface": {"D": case.surface.D, "Ds": case.surface.D + 1.0},
+            "lubricated": run.lubricated,
+        },
+        "warnings": run.warnings,
+    }
+
+
+def kinematics_fields(run: KinematicsRun) -> xr.Dataset:
+    """Pressure, sliding (exact and closed form), ‖Δv‖ and asperity pressure at A, nut 1."""
+    f = run.fields
+    x, y = np.asarray(f.contact.x), np.asarray(f.contact.y)
+    dims = ("x", "y")
+
+    def var(data: np.ndarray, unit: str, name: str) -> tuple:
+        return dims, np.asarray(data, dtype=float), {"units": unit, "long_name": name}
+
+    return xr.Dataset(
+        {
+            "pressure": var(f.contact.solution.pressure, "Pa", "contact pressure at A"),
+            "sliding_x": var(f.sliding.along_x, "m/s", "sliding velocity along X_A (E2.6)"),
+            "sliding_y": var(f.sliding.along_y, "m/s", "sliding velocity along Y_A (E2.6)"),
+            "sliding_speed": var(f.sliding.speed, "m/s", "sliding speed |Δv| (E2.6)"),
+            "sliding_x_closed_form": var(f.closed_form.along_x, "m/s", "Δv_X, closed form E2.7"),
+            "sliding_y_closed_form": var(f.closed_form.along_y, "m/s", "Δv_Y, closed form E2.7"),
+            "asperity_pressure": var(f.asperity_pressure, "Pa", "asperity pressure ψ p (E6.5)"),
+        },
+        coords={
+            "x": ("x", x, {"units": "m", "long_name": "rolling direction X_A"}),
+            "y": ("y", y, {"units": "m", "long_name": "across the groove Y_A"}),
+        },
+        attrs={
+            "case": run.case_name,
+            "level": run.level,
+            "screw_speed_rad_s": f.state.screw_speed,
+            "load_screw_N": f.state.load_screw,
+            "angle_screw_rad": f.state.angle_screw,
+            "flank": f.state.flank,
+            "asperity_share": f.sharing.psi,
+        },
+    )
+
+
+def sliding_map(fields: ContactFields, title: str, path: str | Path, arrows: int = 14) -> Path:
+    """Sliding-velocity arrows over the pressure map, like Figure 4 of the wear paper."""
+    x, y = np.asarray(fields.contact.x), np.asarray(fields.contact.y)
+    pressure = np.asarray(fields.contact.solution.pressure)
+    fig, ax = plt.subplots(figsize=(6.6, 4.4), layout="constrained")
+    extent = (y[0] * 1e6, y[-1] * 1e6, x[0] * 1e6, x[-1] * 1e6)
+    image = ax.imshow(pressure * 1e-9, origin="lower", extent=extent, aspect="auto", cmap="inferno")
+    fig.colorbar(image, ax=ax, label="contact pressure [GPa]")
+    ix = np.linspace(0, x.size - 1, arrows).round().astype(int)
+    iy = np.linspace(0, y.size - 1, 2 * arrows).round().astype(int)
+    sub = np.ix_(ix, iy)
+    loaded = pressure[sub] > 0
+    yy, xx = np.meshgrid(y[iy], x[ix])
+    u = np.where(loaded, fields.sliding.along_y[sub], np.nan)
+    v = np.where(loaded, fields.sliding.along_x[sub], np.nan)
+    ax.quiver(yy * 1e6, xx * 1e6, u, v, color="cyan", angles="xy", pivot="mid", width=0.003)
+    hertz = fields.contact.hertz
+    ax.add_patch(
+        Ellipse((0, 0), 2e6 * hertz.b, 2e6 * hertz.a, fill=False, color="white", linestyle="--")
+    )
+    ax.set_xlabel("y along Y_A, across the groove [µm] (axes not to scale)")
+    ax.set_ylabel("x along X_A, rolling direction [µm]")
+    ax.set_title(title, fontsize=10)
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _loads_angles(run: KinematicsRun, path: Path) -> Path:
+    s = run.sweep
+    rpm = s.speed * _RPM
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
+    axes[0].plot(rpm, s.load_screw, "o-", ms=3, label="Q_A (screw)")
+    axes[0].plot(rpm, s.load_nut, "s--", ms=3, label="Q_B (nut)")
+    axes[0].set_ylabel("normal ball load [N]")
+    axes[1].plot(rpm, np.degrees(s.angle_screw), "o-", ms=3, label="β_A (screw)")
+    axes[1].plot(rpm, np.degrees(s.angle_nut), "s--", ms=3, label="β_B (nut)")
+    axes[1].set_ylabel("contact angle [deg]")
+    for ax in axes:
+        ax.set_xlabel("screw speed [rpm]")
+        ax.legend(fontsize=8)
+    fig.suptitle(f"Ball of nut 1 versus speed (level {run.level})", fontsize=10)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _torques(run: KinematicsRun, path: Path) -> Path:
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
+    rpm = run.drag_speeds * _RPM
+    axes[0].plot(rpm, run.no_load_torque, "o-", ms=3, label="ball model (E3.7), F_a = 0")
+    axes[0].axhline(run.catalogue_torque, color="k", ls="--", label="catalogue (E9.1)")
+    axes[0].set_xlabel("screw speed [rpm]")
+    axes[1].plot(run.preloads, run.preload_model, "o-", ms=3, label="ball model (E3.7), F_a = 0")
+    axes[1].plot(run.preloads, run.preload_catalogue, "k--", label="catalogue (E9.1)")
+    axes[1].set_xlabel("preload [N]")
+    for ax in axes:
+        ax.set_ylabel("drag torque [N m]")
+        ax.set_ylim(bottom=0)
+        ax.legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _state_rows(run: KinematicsRun) -> list[list[object]]:
+    rows = []
+    for number, st in run.states.items():
+        rows.append(
+            [
+                f"nut {number} (s = {st.flank:+d})",
+                st.nut_force,
+                st.ball_speed,
+                st.orbital_speed,
+                st.spin_screw,
+                st.spin_nut,
+                st.load_screw,
+                st.load_nut,
+                math.degrees(st.angle_screw),
+                math.degrees(st.angle_nut),
+            ]
+        )
+    return rows
+
+
+def write_kinematics(run: KinematicsRun, case: Case, out: str | Path) -> Path:
+    """Write the ``kinematics`` results folder and return its path."""
+    summary = kinematics_summary(run, case)
+    with results_folder(out) as folder:
+        write_summary(folder / "summary.json", summary)
+        kinematics_fields(run).to_netcdf(folder / "fields.nc", engine="h5netcdf")
+        figures = []
+        for tag, f in (("low", run.low), ("high", run.high)):
+            rpm = f.state.screw_speed * _RPM
+            figures.append(
+                (
+                    sliding_map(
+                        f,
+                        f"{tag} speed {rpm:.0f} rpm: Q_A = {f.state.load_screw:.2f} N, "
+                        f"β_A = {math.degrees(f.state.angle_screw):.2f}°",
+                        folder / f"sliding_{tag}_speed.png",
+                    ),
+                    f"Sliding velocity of the ball relative to the screw over the pressure at A, "
+                    f"{rpm:.0f} rpm (arrow length ∝ |Δv|, per figure).",
+                )
+            )
+        figures.append(
+            (_loads_angles(run, folder / "loads_angles_vs_speed.png"), "Q_A, Q_B, β_A, β_B.")
+        )
+        figures.append(
+            (_torques(run, folder / "drag_torque.png"), "Drag torque: ball model and catalogue.")
+        )
+        film = run.fields.sharing.film
+        sections = [
+            Section(
+                "Ball kinematics and loads at the case speed",
+                paragraphs=[
+                    f"Level {run.level} ball balance at ω_s = {run.speed:.4g} rad/s "
+                    f"({run.speed * _RPM:.4g} rpm). Nut-raceway control: no spin and no slip at "
+                    "the nut contact B; pure rolling along t at the centre of A (Level 0/1) or "
+                    "the full quasi-static balance (Level 2). Spins are relative to the raceway, "
+                    "about the contact normals pointing into the ball.",
+                    *[f"Warning: {w}" for w in run.warnings],
+                ],
+                tables=[
+                    (
+                        [
+                            "nut",
+                            "F [N]",
+                            "V [m/s]",
+                            "ω_c [rad/s]",
+                            "spin A [rad/s]",
+                            "spin B [rad/s]",
+                            "Q_A [N]",
+                            "Q_B [N]",
+                            "β_A [°]",
+                            "β_B [°]",
+                        ],
+                        _state_rows(run),
+                    )
+                ],
+            ),
+            Section(
+                "Lubrication at A (nut 1)",
+                paragraphs=[
+                    "Hamrock–Dowson film at the film-borne load, Johnson–Greenwood–Poon load "
+                    "sharing with the Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
+                    f"{case.surface.D + 1:g}, G = {case.surface.G:.3g} m, cell "
+                    f"{case.kinematics.micro_contact_size * 1e6:g} µm)."
+                    if run.lubricated
+                    else "No lubricant data: dry contact, asperity share ψ = 1.",
+                ],
+                tables=[
+                    (
+                        ["quantity", "value"],
+                        [
+                            ["h_c [nm]", film.central * 1e9 if film else "—"],
+                            ["h_min [nm]", film.minimum * 1e9 if film else "—"],
+                            ["asperity share ψ", run.fields.sharing.psi],
+                        ],
+                    )
+                ],
+            ),
+            Section(
+                "Drag torque",
+                paragraphs=[
+                    "Catalogue preload drag torque (E9.1) and the ball model: power dissipated "
+                    "by sliding at A (traction E3.3) and EHL rolling resistance (E3.4) over ω_s, "
+                    "which equals the screw torque of the ball forces (E3.7) when the balance "
+                    "includes the traction (level 2). The external load's reversible torque is "
+                    "excluded. The curves are at F_a = 0 (no-load drag torque).",
+                ],
+                tables=[
+                    (
+                        ["quantity", "value"],
+                        [
+                            ["catalogue T_p [N m]", run.catalogue_torque],
+                            ["ball model T [N m], operating point", run.model_torque],
+                            ["heat T·ω_s [W]", run.model_torque * run.speed],
+                        ],
+                    )
+                ],
+                figures=figures,
+            ),
+        ]
+        write_report(
+            folder / "report.html",
+            f"Ball kinematics, balance, lubrication and drag torque: {case.name}",
+            "ballscrew kinematics",
+            sections,
+        )
+    return Path(out).resolve()

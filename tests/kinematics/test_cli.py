@@ -1,0 +1,101 @@
+"""``ballscrew kinematics``: the results folder and one-line errors, run as a user would."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+import xarray as xr
+from typer.testing import CliRunner
+
+from ballscrew.cli import app
+
+runner = CliRunner()
+
+
+def run(*args):
+    return runner.invoke(app, [str(a) for a in args])
+
+
+def case_with(tmp_path, source, *edits):
+    text = source.read_text()
+    for old, new in edits:
+        assert old in text, old
+        text = text.replace(old, new, 1)
+    path = tmp_path / "case.toml"
+    path.write_text(text)
+    return path
+
+
+def test_writes_a_complete_results_folder(tmp_path, wear_case_path):
+    case = case_with(
+        tmp_path,
+        wear_case_path,
+        (
+            "[numerics]",
+            '[kinematics]\nlevel = 1\nspeed_range = ["0 rpm", "1500 rpm"]\nspeed_points = 4\n'
+            "\n[numerics]",
+        ),
+        ("cells_across = 64", "cells_across = 32"),
+    )
+    out = tmp_path / "out"
+    result = run("kinematics", case, "--out", out)
+    assert result.exit_code == 0, result.output
+    names = {p.name for p in out.iterdir()}
+    assert {
+        "summary.json",
+        "fields.nc",
+        "report.html",
+        "sliding_low_speed.png",
+        "sliding_high_speed.png",
+        "loads_angles_vs_speed.png",
+        "drag_torque.png",
+    } <= names
+    summary = json.loads((out / "summary.json").read_text())
+    nut = summary["nuts"]["nut1"]
+    assert summary["level"] == 1
+    assert nut["ball_speed"]["value"] == pytest.approx(0.09333, rel=2e-3)  # T2.1, β_A ≠ 45°
+    assert nut["orbital_speed"]["value"] == pytest.approx(4.652, rel=2e-3)
+    assert nut["spin_screw"]["value"] == pytest.approx(7.382, rel=1e-2)
+    assert abs(nut["spin_nut"]["value"]) < 1e-9
+    assert nut["load_screw"]["unit"] == "N" and nut["angle_nut"]["unit"] == "rad"
+    assert 0.0 < nut["asperity_share"] < 1.0
+    assert nut["film_thickness_central"]["value"] == pytest.approx(55e-9, rel=0.05)
+    torque = summary["drag_torque"]
+    assert torque["catalogue"]["value"] == pytest.approx(0.4231, rel=5e-4)  # T9.2
+    assert 0 < torque["ball_model"]["value"] < torque["catalogue"]["value"]
+    assert torque["heat"]["value"] == pytest.approx(
+        torque["ball_model"]["value"] * 10 * math.pi / 3, rel=1e-9
+    )
+    assert len(summary["curves"]["load_screw"]["value"]) == 4
+    with xr.open_dataset(out / "fields.nc", engine="h5netcdf") as fields:
+        for name in ("pressure", "sliding_x", "sliding_y", "sliding_speed", "asperity_pressure"):
+            assert fields[name].dims == ("x", "y")
+        assert fields["sliding_speed"].attrs["units"] == "m/s"
+        psi = fields.attrs["asperity_share"]
+        ratio = (fields["asperity_pressure"] / fields["pressure"]).where(fields["pressure"] > 0)
+        assert float(ratio.max()) == pytest.approx(psi, rel=1e-12)
+    assert "data:image/png;base64," in (out / "report.html").read_text()
+
+
+@pytest.mark.parametrize(
+    ("edits", "args", "message"),
+    [
+        ((), ("--speed", "-100 rpm"), "speed"),
+        ((), ("--level", "5"), "level"),
+        (
+            (('viscosity = "0.06 Pa*s"\n', ""), ('pressure_viscosity = "2.1e-8 1/Pa"\n', "")),
+            ("--level", "2"),
+            "lubricant data",
+        ),
+        ((('viscosity = "0.06 Pa*s"', 'viscosity = "0 Pa*s"'),), (), "medium.viscosity"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(tmp_path, wear_case_path, edits, args, message):
+    case = case_with(tmp_path, wear_case_path, *edits)
+    out = tmp_path / "out"
+    result = run("kinematics", case, "--out", out, *args)
+    assert result.exit_code == 2, result.output
+    assert message in result.output
+    assert not out.exists()

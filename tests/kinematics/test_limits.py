@@ -1,0 +1,68 @@
+"""Speed limits: whirling speed of the shaft, d·n limit, and how the user silences the warning."""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import pytest
+
+import ballscrew
+from ballscrew.kinematics import SpeedLimitWarning, critical_speed, groove_root_diameter
+
+from .conftest import RPM, updated
+
+
+def test_root_diameter_of_the_gothic_arch(ref_geometry):
+    # Arc of flank +1: centre at radius r_m + (r_s − r_b)cosβ, axial offset −(r_s − r_b)sinβ;
+    # on the groove centre line (axial 0) its radius is centre − √(r_s² − offset²).
+    r_s, r_b = 0.55 * 6.35e-3, 3.175e-3
+    offset = (r_s - r_b) * math.sin(math.pi / 4)
+    expected = 2 * (0.020 + (r_s - r_b) * math.cos(math.pi / 4) - math.sqrt(r_s**2 - offset**2))
+    assert groove_root_diameter(ref_geometry) == pytest.approx(expected, rel=1e-12)
+    assert expected == pytest.approx(33.478e-3, rel=1e-4)
+
+
+def test_simply_supported_shaft_is_the_textbook_value():
+    # ω = (π/l)² √(EI/(ρA)), I = πd⁴/64, A = πd²/4 (Euler–Bernoulli, pinned–pinned).
+    d, length, e, rho = 0.0335, 1.2, 206e9, 7850.0
+    textbook = (math.pi / length) ** 2 * math.sqrt(
+        e * (math.pi * d**4 / 64) / (rho * math.pi * d**2 / 4)
+    )
+    assert critical_speed(d, length, e, rho, "supported-supported") == pytest.approx(
+        textbook, rel=1e-12
+    )
+    # stiffer fixity, higher speed; λ₁² ratios of Blevins (1979)
+    ratio = critical_speed(d, length, e, rho, "fixed-fixed") / textbook
+    assert ratio == pytest.approx((4.7300 / math.pi) ** 2, rel=1e-12)
+
+
+def test_dn_warning_and_its_switch(ref_case):
+    fast = 3000 * RPM  # 40 mm × 3000 rpm = 120 000 > 70 000
+    with pytest.warns(SpeedLimitWarning, match="d·n"):
+        ballscrew.ball_kinematics(ref_case, speed=fast)
+    quiet = updated(ref_case, kinematics={"speed_warnings": False})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ballscrew.ball_kinematics(quiet, speed=fast)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", category=SpeedLimitWarning)
+        ballscrew.ball_kinematics(ref_case, speed=fast)
+
+
+def test_whirling_warning_needs_a_length(ref_case):
+    long = updated(ref_case, kinematics={"unsupported_length": 3.0, "mounting": "fixed-free"})
+    allowed = 0.8 * critical_speed(
+        groove_root_diameter(ballscrew.geometry.ScrewGeometry.from_spec(ref_case.screw)),
+        3.0,
+        206e9,
+        7850.0,
+        "fixed-free",
+    )
+    with pytest.warns(SpeedLimitWarning, match="whirling"):
+        ballscrew.ball_kinematics(long, speed=1.01 * allowed)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ballscrew.ball_kinematics(long, speed=0.99 * allowed)  # below both limits
+        ballscrew.ball_kinematics(ref_case, speed=1.01 * allowed)  # no length, no whirling check
