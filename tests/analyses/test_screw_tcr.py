@@ -108,14 +108,14 @@ def test_single_nut_carries_preload_plus_axial_load(gao_case_path):
 
 def test_rough_ball_is_refused(gao_case_path):
     case = load_case(gao_case_path, {"surface.ball": {"D": 1.5, "G": 1e-10}})
-    with pytest.raises(ballscrew.errors.InputError, match="surface.ball"):
+    with pytest.raises(ballscrew.errors.InputError, match=r"surface\.ball"):
         ballscrew.screw_tcr(case)
 
 
 def test_bad_tcr_options_are_case_errors(gao_case_path):
-    with pytest.raises(CaseError, match="tcr.variant"):
+    with pytest.raises(CaseError, match=r"tcr\.variant"):
         load_case(gao_case_path, {"tcr.variant": "V3"})
-    with pytest.raises(CaseError, match="tcr.cell_size"):
+    with pytest.raises(CaseError, match=r"tcr\.cell_size"):
         load_case(gao_case_path, {"tcr.cell_size": 0})
 
 
