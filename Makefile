@@ -18,7 +18,9 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew contact examples/gao2019_tcr.toml --out $(DEMO)/contact
 	$(VENV)/bin/ballscrew tcr examples/gao2019_tcr.toml --out $(DEMO)/tcr
 	$(VENV)/bin/ballscrew sweep examples/sweeps/fig13_tcr_vs_axial_load.toml --out $(DEMO)/fig13
-	@echo "reports: $(DEMO)/contact/report.html $(DEMO)/tcr/report.html $(DEMO)/fig13/report.html"
+	$(VENV)/bin/ballscrew thermal examples/gao2019_tcr.toml --out $(DEMO)/thermal
+	$(VENV)/bin/ballscrew kinematics examples/wear_step_stress.toml --out $(DEMO)/kinematics
+	@echo "reports in $(DEMO)/: contact, tcr, fig13, thermal, kinematics (each report.html)"
 
 ## test: create .venv, install, run the test suite
 test: $(STAMP)
@@ -28,6 +30,7 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(PY) benchmarks/bench_contact.py
 	$(PY) benchmarks/bench_tcr.py
+	$(PY) benchmarks/bench_thermal.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -15,12 +15,16 @@ __version__ = "0.1.0"
 from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.case import load_case
+from ballscrew.kinematics import ball_kinematics, drag_torque
 from ballscrew.loads import nut_forces
+from ballscrew.thermal.field import thermal_field
 
 __all__ = [
     "__version__",
+    "ball_kinematics",
     "case",
     "contact",
+    "drag_torque",
     "errors",
     "fractal",
     "geometry",
@@ -29,5 +33,6 @@ __all__ = [
     "nut_forces",
     "screw_tcr",
     "thermal",
+    "thermal_field",
     "units",
 ]

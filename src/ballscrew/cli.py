@@ -13,7 +13,7 @@ from typing import Annotated
 import typer
 
 from ballscrew import __version__
-from ballscrew.commands import contact, sweep, tcr
+from ballscrew.commands import contact, kinematics, sweep, tcr, thermal
 from ballscrew.commands._common import log
 
 app = typer.Typer(
@@ -52,6 +52,8 @@ def main(
 app.command()(contact.contact)
 app.command()(tcr.tcr)
 app.command()(sweep.sweep)
+app.command()(kinematics.kinematics)
+app.command()(thermal.thermal)
 
 if __name__ == "__main__":  # pragma: no cover
     app()

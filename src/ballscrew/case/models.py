@@ -16,6 +16,7 @@ from pydantic import Field, model_validator
 from ballscrew.case.base import Model, quantity
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
+from ballscrew.case.wear_spec import WearSpec
 
 
 class ScrewSpec(Model):
@@ -174,6 +175,7 @@ class Case(Model):
     tcr: TCRSpec = TCRSpec()
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
+    wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:

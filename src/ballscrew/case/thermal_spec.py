@@ -12,59 +12,11 @@ diameter d_m of ``[screw]`` (shaft Ø = d_m, nut Ø = 1.75 d_m, nut length = 2.5
 
 from __future__ import annotations
 
-from functools import partial
-from typing import Annotated, Any, Literal
+from typing import Annotated, Literal
 
-from pydantic import BeforeValidator, Field, model_validator
+from pydantic import Field, model_validator
 
 from ballscrew.case.base import Model, quantity
-from ballscrew.units import SI_UNITS, registry, to_si
-
-#: Units of the kinds this section needs that :data:`ballscrew.units.SI_UNITS` lacks.
-_EXTRA_UNITS: dict[str, str] = {
-    "time": "s",
-    "heat_transfer_coefficient": "W/(m^2*K)",
-    "area_resistance": "m^2*K/W",
-    "kinematic_viscosity": "m^2/s",
-    "temperature_difference": "K",
-}
-
-
-def _to_unit(value: object, kind: str) -> float:
-    """:func:`ballscrew.units.to_si` for the kinds of :data:`_EXTRA_UNITS`."""
-    if kind in SI_UNITS:
-        return to_si(value, kind)
-    unit = _EXTRA_UNITS[kind]
-    if isinstance(value, bool) or not isinstance(value, int | float | str):
-        raise ValueError(f"expected a number or a string such as '1 {unit}'")
-    if isinstance(value, int | float):
-        return float(value)
-    ureg = registry()
-    try:
-        q = ureg.Quantity(value)
-    except Exception as exc:  # pint raises several unrelated types for bad strings
-        raise ValueError(f"cannot read {value!r} as a quantity in {unit}") from exc
-    if not hasattr(q, "to") or q.unitless:
-        return float(getattr(q, "magnitude", q))
-    try:
-        return float(q.to(unit).magnitude)
-    except Exception as exc:
-        raise ValueError(f"{value!r} is not a {kind.replace('_', ' ')} (expected {unit})") from exc
-
-
-def _quantity(kind: str, description: str, **constraints: float) -> Any:
-    """Like :func:`ballscrew.case.base.quantity`, also for the kinds of :data:`_EXTRA_UNITS`."""
-    if kind in SI_UNITS:
-        return quantity(kind, description, **constraints)
-    return Annotated[
-        float,
-        BeforeValidator(partial(_to_unit, kind=kind)),
-        Field(
-            description=description,
-            json_schema_extra={"unit": _EXTRA_UNITS[kind]},
-            **constraints,
-        ),
-    ]
 
 
 class BearingSpec(Model):
@@ -75,21 +27,21 @@ class BearingSpec(Model):
     """
 
     name: str = Field("bearing", description="label used in the report")
-    position: _quantity("length", "axial position of the bearing centre from the shaft end z = 0")
-    width: _quantity("length", "width of the shaft band the bearing heat enters", gt=0) = 0.02
-    torque: _quantity("torque", "catalogue friction torque M_be (overrides Palmgren)", ge=0) | None = (
-        None
-    )
+    position: quantity("length", "axial position of the bearing centre from the shaft end z = 0")
+    width: quantity("length", "width of the shaft band the bearing heat enters", gt=0) = 0.02
+    torque: (
+        quantity("torque", "catalogue friction torque M_be (overrides Palmgren)", ge=0) | None
+    ) = None
     f0: Annotated[
         float, Field(gt=0, le=20, description="Palmgren f₀ (1–2 angular contact, grease/oil)")
     ] = 2.0
-    viscosity: _quantity(
+    viscosity: quantity(
         "kinematic_viscosity", "lubricant kinematic viscosity ν₀ at working temperature", gt=0
     ) = 20e-6
-    mean_diameter: _quantity("length", "bearing pitch diameter d_m,be", gt=0) | None = None
-    static_load_rating: _quantity("force", "basic static load rating C₀", gt=0) | None = None
-    axial_load: _quantity("force", "axial load F_a on the bearing (its preload)", ge=0) = 0.0
-    radial_load: _quantity("force", "radial load F_r on the bearing", ge=0) = 0.0
+    mean_diameter: quantity("length", "bearing pitch diameter d_m,be", gt=0) | None = None
+    static_load_rating: quantity("force", "basic static load rating C₀", gt=0) | None = None
+    axial_load: quantity("force", "axial load F_a on the bearing (its preload)", ge=0) = 0.0
+    radial_load: quantity("force", "radial load F_r on the bearing", ge=0) = 0.0
     f1: Annotated[
         float | None, Field(gt=0, description="Palmgren f₁; None = 0.001 (P₀/C₀)^0.33")
     ] = None
@@ -112,10 +64,10 @@ class DragTorqueSpec(Model):
 
     source: Literal["catalogue", "given", "kinematics"] = Field(
         "catalogue",
-        description="catalogue preload torque K·F_p·L/(2π) (Q4), a given torque, or the "
-        "kinematics model (not available yet)",
+        description="catalogue preload torque K·F_p·L/(2π) (Q4), a given torque, or the drag "
+        "torque computed by the ball kinematics model",
     )
-    torque: _quantity("torque", "drag torque M_bs for source = 'given'", ge=0) | None = None
+    torque: quantity("torque", "drag torque M_bs for source = 'given'", ge=0) | None = None
 
     @model_validator(mode="after")
     def _given_needs_torque(self) -> DragTorqueSpec:
@@ -127,25 +79,27 @@ class DragTorqueSpec(Model):
 class ConvectionSpec(Model):
     """Heat-transfer coefficients: overrides of the correlations (Q5, Q6) and the air."""
 
-    screw: _quantity("heat_transfer_coefficient", "override h of the screw surface", ge=0) | None = (
+    screw: quantity("heat_transfer_coefficient", "override h of the screw surface", ge=0) | None = (
         None
     )
     screw_ends: (
-        _quantity("heat_transfer_coefficient", "override h of the shaft end faces", ge=0) | None
+        quantity("heat_transfer_coefficient", "override h of the shaft end faces", ge=0) | None
     ) = None
-    nut: _quantity("heat_transfer_coefficient", "override h of the nut/spacer OD", ge=0) | None = (
+    nut: quantity("heat_transfer_coefficient", "override h of the nut/spacer OD", ge=0) | None = (
         None
     )
     nut_ends: (
-        _quantity("heat_transfer_coefficient", "override h of the nut end faces", ge=0) | None
+        quantity("heat_transfer_coefficient", "override h of the nut end faces", ge=0) | None
     ) = None
-    temperature_difference: _quantity(
-        "temperature_difference", "surface − air ΔT used by the natural-convection correlation", gt=0
+    temperature_difference: quantity(
+        "temperature_difference",
+        "surface − air ΔT used by the natural-convection correlation",
+        gt=0,
     ) = 10.0
-    air_kinematic_viscosity: _quantity(
+    air_kinematic_viscosity: quantity(
         "kinematic_viscosity", "kinematic viscosity ν of air", gt=0
     ) = 1.589e-5
-    air_conductivity: _quantity("thermal_conductivity", "thermal conductivity λ of air", gt=0) = (
+    air_conductivity: quantity("thermal_conductivity", "thermal conductivity λ of air", gt=0) = (
         0.0263
     )
     air_prandtl: Annotated[float, Field(gt=0, description="Prandtl number of air")] = 0.707
@@ -160,7 +114,7 @@ class ContactSpec(Model):
         "resistance_per_area over the nut bore",
     )
     resistance_per_area: (
-        _quantity("area_resistance", "R″ smeared over the nut bore, for source = 'given'", gt=0)
+        quantity("area_resistance", "R″ smeared over the nut bore, for source = 'given'", gt=0)
         | None
     ) = None
     constriction: bool = Field(
@@ -181,10 +135,10 @@ class ContactSpec(Model):
 class StrokeSpec(Model):
     """Reciprocating nut: the moving heat source (issue #4, item 4)."""
 
-    length: _quantity("length", "stroke of the nut centre (0 = stationary nut)", ge=0) = 0.0
-    feed_speed: _quantity("velocity", "nut speed; None = ω·L/(2π) from the screw speed", ge=0) | None = (
-        None
-    )
+    length: quantity("length", "stroke of the nut centre (0 = stationary nut)", ge=0) = 0.0
+    feed_speed: (
+        quantity("velocity", "nut speed; None = ω·L/(2π) from the screw speed", ge=0) | None
+    ) = None
     mode: Literal["averaged", "resolved"] = Field(
         "averaged",
         description="'averaged': heat and contact time-averaged over the stroke; 'resolved': "
@@ -195,8 +149,8 @@ class StrokeSpec(Model):
 class TransientSpec(Model):
     """Implicit-Euler transient from ambient."""
 
-    duration: _quantity("time", "simulated time (the paper: 1.5 h)", gt=0) = 5400.0
-    time_step: _quantity("time", "constant time step Δt", gt=0) = 60.0
+    duration: quantity("time", "simulated time (the paper: 1.5 h)", gt=0) = 5400.0
+    time_step: quantity("time", "constant time step Δt", gt=0) = 60.0
     snapshots: Annotated[
         int, Field(ge=1, le=1000, description="full temperature fields stored over time")
     ] = 10
@@ -214,9 +168,9 @@ class TransientSpec(Model):
 class MeshSpec(Model):
     """Discretisation of the axisymmetric FE model and of the axial network."""
 
-    size: _quantity("length", "target element size (both directions)", gt=0) = 0.002
+    size: quantity("length", "target element size (both directions)", gt=0) = 0.002
     order: Literal[1, 2] = Field(2, description="Lagrange order of the quadrilateral elements")
-    network_cell: _quantity("length", "target axial cell length of the 1-D network", gt=0) = 0.005
+    network_cell: quantity("length", "target axial cell length of the 1-D network", gt=0) = 0.005
 
 
 class SensorSpec(Model):
@@ -224,8 +178,8 @@ class SensorSpec(Model):
 
     name: str = Field(description="label of the sensor")
     body: Literal["nut", "screw"] = Field(description="body the sensor is fixed to")
-    r: _quantity("length", "radius of the sensor point", ge=0)
-    z: _quantity(
+    r: quantity("length", "radius of the sensor point", ge=0)
+    z: quantity(
         "length", "axial position from the shaft end z = 0 (nut: at its mean position)", ge=0
     )
 
@@ -236,23 +190,22 @@ class ThermalSpec(Model):
     model: Literal["axisymmetric", "network", "3d"] = Field(
         "axisymmetric", description="default model of `ballscrew thermal`"
     )
-    shaft_length: _quantity("length", "length of the screw shaft", gt=0) = 1.0
-    shaft_diameter: _quantity(
-        "length", "thermal diameter of the shaft; None = pitch diameter d_m", gt=0
-    ) | None = None
-    nut_outer_diameter: _quantity("length", "nut outer diameter; None = 1.75 d_m", gt=0) | None = (
+    shaft_length: quantity("length", "length of the screw shaft", gt=0) = 1.0
+    shaft_diameter: (
+        quantity("length", "thermal diameter of the shaft; None = pitch diameter d_m", gt=0) | None
+    ) = None
+    nut_outer_diameter: quantity("length", "nut outer diameter; None = 1.75 d_m", gt=0) | None = (
         None
     )
-    nut_length: _quantity("length", "length of each nut; None = 2.5 d_m", gt=0) | None = None
-    spacer_length: _quantity("length", "spacer length between two nuts", ge=0) = 0.01
+    nut_length: quantity("length", "length of each nut; None = 2.5 d_m", gt=0) | None = None
+    spacer_length: quantity("length", "spacer length between two nuts", ge=0) = 0.01
     spacer_outer_diameter: (
-        _quantity("length", "spacer outer diameter; None = nut outer diameter", gt=0) | None
+        quantity("length", "spacer outer diameter; None = nut outer diameter", gt=0) | None
     ) = None
     nut_position: (
-        _quantity("length", "centre of the nut assembly from z = 0; None = mid-screw", ge=0)
-        | None
+        quantity("length", "centre of the nut assembly from z = 0; None = mid-screw", ge=0) | None
     ) = None
-    ambient_temperature: _quantity(
+    ambient_temperature: quantity(
         "temperature", 'ambient (initial) temperature; write "20 degC"', gt=150.0, lt=700.0
     ) = 293.15
     screw_heat_fraction: Annotated[

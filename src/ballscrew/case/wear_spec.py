@@ -1,0 +1,108 @@
+"""Case section ``[wear]``: the fractal wear model and the load programme of a life test.
+
+Physics reference: ``kinematics-wear.md`` §7 (wear models A and C), §8 (wear strips, working
+raceway length, time integration), §9 (drag torque and the step-stress test) and §10.3 (the
+calibrated wear coefficient of the REF screw).
+
+The key names ``coefficient``, ``torque_scale``, ``initial_torque`` and ``programme`` are a
+contract with the calibration code; do not rename them.
+
+Example::
+
+    [wear]
+    model = "A"                    # Archard–fractal on plastic asperities (E7.x, default)
+    coefficient = 1.304e-4         # K, calibrated to h_max = 2.43 µm at 1.44e6 rev (§10.3)
+    stroke = "0.30 m"              # reciprocating stroke S → L_w (E8.3) [assumed]
+    torque_sampling = 4.8e4        # revolutions between drag-torque samples
+
+    [[wear.programme]]
+    axial_load = "2000 N"
+    speed = "100 rpm"
+    revolutions = 4.8e5
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import Field
+
+from ballscrew.case.base import Model, quantity
+
+
+class WearLevel(Model):
+    """One level of the load programme: constant axial load and speed for some revolutions."""
+
+    axial_load: quantity("force", "external axial working load F_a of the level (N)", ge=0)
+    speed: quantity("angular_velocity", 'screw speed ω_s (rad/s; "100 rpm" also works)', gt=0)
+    revolutions: Annotated[
+        float, Field(gt=0, description="screw revolutions of the level (dimensionless count)")
+    ]
+
+
+class WearSpec(Model):
+    """Fractal wear model, load programme and integration options of ``ballscrew wear``."""
+
+    model: Literal["A", "C"] = Field(
+        "A",
+        description="per-asperity wear volume: 'A' plastic hemispherical Archard–fractal (§7.2, "
+        "default), 'C' cap-volume fractal (§7.3, needs surface dimension D + 1 < 2.5)",
+    )
+    coefficient: Annotated[
+        float,
+        Field(
+            gt=0,
+            description="wear coefficient K (dimensionless probability per asperity encounter); "
+            "default 1.304e-4 = §10.3 calibration of the REF screw (Model A, REF grid)",
+        ),
+    ] = 1.304e-4
+    stroke: quantity("length", "reciprocating stroke S of the nut (m), sets L_w (E8.3)", gt=0) = (
+        0.30
+    )
+    max_depth_step: quantity(
+        "length", "largest growth of h_max per time step (m); the paper's 0.1 µm (§1.6)", gt=0
+    ) = 1e-7
+    torque_sampling: Annotated[
+        float,
+        Field(gt=0, description="screw revolutions between drag-torque samples (count)"),
+    ] = 4.8e4
+    torque_scale: Annotated[
+        float,
+        Field(gt=0, description="factor on the catalogue K_T = 0.05/√tanλ of (E9.1), -"),
+    ] = 1.0
+    initial_torque: (
+        quantity(
+            "torque",
+            "measured drag torque at N = 0 (N·m); if given, K_T is rescaled so T(0) matches "
+            "it (E9.3) and torque_scale is ignored",
+            gt=0,
+        )
+        | None
+    ) = None
+    programme: list[WearLevel] = Field(
+        default_factory=lambda: [
+            WearLevel(axial_load=load, speed=100.0 * 3.141592653589793 / 30.0, revolutions=4.8e5)
+            for load in (2000.0, 3000.0, 4000.0)
+        ],
+        min_length=1,
+        description="load levels run one after the other ([[wear.programme]] tables); default "
+        "the three-level step-stress test of §9.2 (2000/3000/4000 N, 100 rpm, 4.8e5 rev each)",
+    )
+    grid: tuple[
+        Annotated[int, Field(ge=4, le=1024)], Annotated[int, Field(ge=4, le=4096)]
+    ] = Field(
+        (32, 128),
+        description="contact-grid cells (along the helix x, across the groove y); fixed for the "
+        "whole run; the cell area ΔA is the fractal micro-contact cell (§10.2: 32 × 128)",
+    )
+    box_factor: Annotated[
+        float,
+        Field(
+            gt=1.0,
+            le=4.0,
+            description="grid half-widths / Hertz semi-axes at the largest ball load (§10.2: 1.4)",
+        ),
+    ] = 1.4
+    checkpoint_every: Annotated[
+        int, Field(ge=1, description="time steps between checkpoint saves (count)")
+    ] = 1

@@ -1,0 +1,360 @@
+"""2-D axisymmetric FE model (scikit-fem) of the screw shaft and the nut assembly.
+
+The (r, z) half-section is meshed with structured quadrilaterals, generated here without gmsh:
+a tensor grid for the shaft and one for the nut assembly, whose bore nodes duplicate the shaft
+surface nodes (thermal-fe-engines.md §4.1, "duplicated nodes"). The balls of each nut are the
+interface term
+    ∫_Γ h_c (T_n − T_s)(v_n − v_s) 2πr dΓ = h_c Jᵀ M_Γ J,
+with J the jump operator (+1 on a nut-bore DOF, −1 on the shaft-surface DOF it faces, found by
+coordinates) and M_Γ the bore facet mass matrix; a stroke offset of m cells pairs each bore
+DOF with the shaft DOF m·Δz further along, and the time average sums the offsets with their
+weights. Every integrand carries the axisymmetric weight 2πr. Friction heat is a flux on the
+bore (nut side) and on the faced shaft surface (screw side), normalised to the exact watts.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from numpy.typing import NDArray
+from scipy.spatial import cKDTree
+from skfem import (
+    Basis,
+    BilinearForm,
+    ElementQuad1,
+    ElementQuad2,
+    FacetBasis,
+    LinearForm,
+    MeshQuad1,
+    asm,
+)
+from skfem.helpers import dot, grad
+
+from ballscrew.errors import InputError
+from ballscrew.thermal.discretisation import Discretisation
+from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
+
+TWO_PI = 2.0 * math.pi
+
+
+@BilinearForm
+def conduction(u, v, w):
+    """∇u·∇v 2πr (multiply by λ)."""
+    return dot(grad(u), grad(v)) * TWO_PI * w.x[0]
+
+
+@BilinearForm
+def mass(u, v, w):
+    """u v 2πr (capacity ×ρc, film ×h, interface ×h_c)."""
+    return u * v * TWO_PI * w.x[0]
+
+
+@LinearForm
+def surface(v, w):
+    """v 2πr: its sum is the area; times a flux it is a load."""
+    return v * TWO_PI * w.x[0]
+
+
+@dataclass(frozen=True)
+class AxisymmetricMesh:
+    """Quadrilateral mesh of shaft and nut assembly with duplicated interface nodes."""
+
+    mesh: MeshQuad1
+    body: NDArray[np.int64]
+    """Per element: 0 shaft, 1 nut assembly."""
+    part: NDArray[np.int64]
+    """Per element: ring part index (−1 in the shaft)."""
+    r_shaft: NDArray[np.float64]
+    """Radial grid lines of the shaft [m]."""
+    r_ring: NDArray[np.float64]
+    """Radial grid lines of the nut assembly [m]."""
+    z_shaft: NDArray[np.float64]
+    """Axial grid lines of the shaft [m]."""
+    z_ring: NDArray[np.float64]
+    """Axial grid lines of the nut assembly at its mean position [m]."""
+    cells: tuple[NDArray[np.int64], NDArray[np.int64]]
+    """Element index of each (z, r) grid cell of shaft and ring (−1: no element)."""
+    facets: dict[str, NDArray[np.int64]]
+    """Boundary facets: 'shaft_surface', 'shaft_ends', 'ring_outer', 'ring_ends', 'bore<k>'."""
+
+
+def _radial_lines(a: float, b: float, size: float) -> NDArray[np.float64]:
+    return np.linspace(a, b, max(1, math.ceil((b - a) / size - 1e-9)) + 1)
+
+
+def build_mesh(problem: ThermalProblem, grid: AxialGrid, size: float) -> AxisymmetricMesh:
+    """Structured mesh: shaft on (r_shaft × grid.z), ring on (r_ring × grid.ring_z)."""
+    R = problem.shaft_radius
+    r_shaft = _radial_lines(0.0, R, size)
+    radii = sorted({p.outer_radius for p in problem.parts})
+    r_ring = np.unique(
+        np.concatenate(
+            [_radial_lines(a, b, size) for a, b in zip([R, *radii[:-1]], radii, strict=True)]
+        )
+    )
+    shaft = MeshQuad1.init_tensor(r_shaft, grid.z)
+    ring = MeshQuad1.init_tensor(r_ring, grid.ring_z)
+    centroid = ring.p[:, ring.t].mean(axis=1)
+    cell = np.clip(
+        np.floor((centroid[1] - grid.ring_z[0]) / grid.dz).astype(np.int64), 0, grid.ring_cells - 1
+    )
+    part = grid.part_of_cell[cell]
+    outer = np.array([p.outer_radius for p in problem.parts])[part]
+    keep = centroid[0] < outer
+    t_ring, part = ring.t[:, keep], part[keep]
+    used = np.unique(t_ring)
+    renumber = np.full(ring.p.shape[1], -1)
+    renumber[used] = np.arange(used.size)
+    p = np.hstack([shaft.p, ring.p[:, used]])
+    t = np.hstack([shaft.t, renumber[t_ring] + shaft.p.shape[1]])
+    mesh = MeshQuad1(p, t)
+    n_shaft = shaft.t.shape[1]
+    body = np.r_[np.zeros(n_shaft, dtype=np.int64), np.ones(t_ring.shape[1], dtype=np.int64)]
+    part_all = np.r_[np.full(n_shaft, -1), part]
+    cells = (
+        _cell_table(shaft.p[:, shaft.t].mean(axis=1), r_shaft, grid.z, np.arange(n_shaft)),
+        _cell_table(centroid[:, keep], r_ring, grid.ring_z, n_shaft + np.arange(keep.sum())),
+    )
+    return AxisymmetricMesh(
+        mesh,
+        body,
+        part_all,
+        r_shaft,
+        r_ring,
+        grid.z,
+        grid.ring_z,
+        cells,
+        _classify(mesh, body, part_all, problem),
+    )
+
+
+def _cell_table(
+    centroids: NDArray[np.float64],
+    r: NDArray[np.float64],
+    z: NDArray[np.float64],
+    elements: NDArray[np.int64],
+) -> NDArray[np.int64]:
+    """Table [iz, ir] → element of a tensor grid (−1 where no element)."""
+    table = np.full((z.size - 1, r.size - 1), -1, dtype=np.int64)
+    ir = np.searchsorted(r, centroids[0]) - 1
+    iz = np.searchsorted(z, centroids[1]) - 1
+    table[iz, ir] = elements
+    return table
+
+
+def locate(am: AxisymmetricMesh, body: str, points: NDArray[np.float64]) -> NDArray[np.int64]:
+    """Element of ``body`` ('screw' or 'nut') containing each point (2, n) (r, z)."""
+    table, r, z = (
+        (am.cells[0], am.r_shaft, am.z_shaft)
+        if body == "screw"
+        else (am.cells[1], am.r_ring, am.z_ring)
+    )
+    ir = np.clip(np.searchsorted(r, points[0]) - 1, 0, r.size - 2)
+    iz = np.clip(np.searchsorted(z, points[1]) - 1, 0, z.size - 2)
+    found = table[iz, ir]
+    if np.any(found < 0):
+        raise InputError("point", points[:, found < 0].T.tolist(), f"a point inside the {body}")
+    return found
+
+
+def probes(basis: Basis, points: NDArray[np.float64], cells: NDArray[np.int64]) -> sp.csr_matrix:
+    """Rows evaluating the FE field at ``points`` (2, n) inside the given elements."""
+    mapping = basis.mapping
+    ref = mapping.invF(points[:, :, None], tind=cells)
+    phis = np.array(
+        [basis.elem.gbasis(mapping, ref, k, tind=cells)[0] for k in range(basis.Nbfun)]
+    ).reshape(basis.Nbfun, -1)
+    rows = np.tile(np.arange(points.shape[1]), basis.Nbfun)
+    cols = basis.element_dofs[:, cells].ravel()
+    return sp.csr_matrix((phis.ravel(), (rows, cols)), shape=(points.shape[1], basis.N))
+
+
+def _classify(
+    mesh: MeshQuad1, body: NDArray[np.int64], part: NDArray[np.int64], problem: ThermalProblem
+) -> dict[str, NDArray[np.int64]]:
+    """Name the boundary facets by body and position."""
+    R, L = problem.shaft_radius, problem.shaft_length
+    tol = 1e-9 * max(L, R)
+    bf = mesh.boundary_facets()
+    ends = mesh.p[:, mesh.facets[:, bf]]  # (2 coords, 2 nodes, facets)
+    r_mid = ends[0].mean(axis=0)
+    z_mid = ends[1].mean(axis=0)
+    along_z = np.abs(ends[0, 0] - ends[0, 1]) < tol
+    elem = mesh.f2t[0, bf]
+    shaft = body[elem] == 0
+    at_r = np.abs(r_mid - R) < tol
+    facets = {
+        "shaft_surface": bf[shaft & along_z & at_r],
+        "shaft_ends": bf[shaft & ~along_z & ((np.abs(z_mid) < tol) | (np.abs(z_mid - L) < tol))],
+        "ring_outer": bf[~shaft & along_z & ~at_r],
+        "ring_ends": bf[~shaft & ~along_z],
+    }
+    bore = ~shaft & along_z & at_r
+    for k, p in enumerate(problem.parts):
+        if p.balls:
+            facets[f"bore{k}"] = bf[bore & (part[elem] == k)]
+    return facets
+
+
+def build_axisymmetric(
+    problem: ThermalProblem, size: float, order: int = 2, grid: AxialGrid | None = None
+) -> Discretisation:
+    """Assemble the axisymmetric FE model with elements of about ``size`` [m], order 1 or 2."""
+    if order not in (1, 2):
+        raise InputError("mesh.order", order, "1 or 2")
+    grid = axial_grid(problem, size) if grid is None else grid
+    am = build_mesh(problem, grid, size)
+    mesh = am.mesh
+    element = ElementQuad2() if order == 2 else ElementQuad1()
+    intorder = 2 * order + 2
+    basis = Basis(mesh, element, intorder=intorder)
+    n = basis.N
+    L = problem.shaft_length
+    conv = problem.convection
+
+    def facet_basis(name: str) -> FacetBasis:
+        return FacetBasis(mesh, element, facets=am.facets[name], intorder=intorder)
+
+    conductance = sp.csr_matrix((n, n))
+    capacity = sp.csr_matrix((n, n))
+    for b, solid in ((0, problem.shaft), (1, problem.ring)):
+        cb = Basis(mesh, element, elements=np.nonzero(am.body == b)[0], intorder=intorder)
+        conductance = conductance + solid.conductivity * asm(conduction, cb)
+        capacity = capacity + solid.heat_capacity * asm(mass, cb)
+    for name, h in (
+        ("shaft_ends", conv.screw_ends),
+        ("ring_outer", conv.nut),
+        ("ring_ends", conv.nut_ends),
+    ):
+        if h > 0.0 and am.facets[name].size:
+            conductance = conductance + h * asm(mass, facet_basis(name))
+    fb_surface = facet_basis("shaft_surface")
+
+    surface_dofs = basis.get_dofs(facets=am.facets["shaft_surface"]).all()
+    tree = cKDTree(basis.doflocs[:, surface_dofs].T)
+    interfaces = []
+    for k, part in enumerate(problem.parts):
+        if not part.balls:
+            continue
+        fb = facet_basis(f"bore{k}")
+        dofs = basis.get_dofs(facets=am.facets[f"bore{k}"]).all()
+        m_bore = asm(mass, fb)[dofs][:, dofs]
+        b_bore = asm(surface, fb)[dofs]
+        locs = basis.doflocs[:, dofs]
+        pairs = []
+        for m in grid.shifts:
+            dist, idx = tree.query(np.c_[locs[0], locs[1] + m * grid.dz])
+            if np.max(dist) > 1e-6 * grid.dz:
+                raise RuntimeError("nut bore and shaft surface DOFs do not align")  # a bug
+            pairs.append(surface_dofs[idx])
+        area = float(b_bore.sum())
+        interfaces.append((part, dofs, m_bore, b_bore, area, pairs))
+
+    bearing_load = np.zeros(n)
+    for bearing in problem.bearings:
+        lo = max(bearing.position - 0.5 * bearing.width, 0.0)
+        hi = min(bearing.position + 0.5 * bearing.width, L)
+
+        @LinearForm
+        def band(v, w, lo=lo, hi=hi):
+            inside = (w.x[1] >= lo) & (w.x[1] <= hi)
+            return inside * v * TWO_PI * w.x[0]
+
+        g = asm(band, fb_surface)
+        if not g.sum() > 0.0:
+            raise InputError(
+                f"bearings.{bearing.name}.width",
+                bearing.width,
+                f"a band wider than the mesh {size:g} m",
+            )
+        bearing_load += bearing.power * g / g.sum()
+
+    def assemble(weights: NDArray[np.float64]) -> tuple[sp.csr_matrix, NDArray[np.float64]]:
+        @BilinearForm
+        def film(u, v, w):
+            return (1.0 - grid.coverage(w.x[1], weights)) * u * v * TWO_PI * w.x[0]
+
+        a = conductance + conv.screw * asm(film, fb_surface) if conv.screw > 0 else conductance
+        f = bearing_load.copy()
+        jumps = []
+        for part, dofs, m_bore, b_bore, area, pairs in interfaces:
+            h_c = part.contact_conductance / area
+            f[dofs] += part.nut_heat / area * b_bore
+            nb = dofs.size
+            for k in np.nonzero(weights)[0]:
+                np.add.at(f, pairs[k], weights[k] * part.screw_heat / area * b_bore)
+                if h_c > 0.0:
+                    jump = sp.csr_matrix(
+                        (
+                            np.r_[np.ones(nb), -np.ones(nb)],
+                            (np.r_[np.arange(nb), np.arange(nb)], np.r_[dofs, pairs[k]]),
+                        ),
+                        shape=(nb, n),
+                    )
+                    jumps.append(weights[k] * h_c * (jump.T @ m_bore @ jump))
+        if jumps:
+            a = a + sum(jumps[1:], jumps[0])
+        return sp.csr_matrix(a), f
+
+    shaft_elements = np.nonzero(am.body == 0)[0]
+    shaft_basis = Basis(mesh, element, elements=shaft_elements, intorder=intorder)
+    elongation = problem.expansion / problem.shaft_area * asm(surface, shaft_basis)
+    sensors = _sensor_probes(problem, basis, am)
+    axis_z, axis = _axis_probes(problem, basis, am)
+    return Discretisation(
+        model="axisymmetric",
+        problem=problem,
+        grid=grid,
+        capacity=sp.csr_matrix(capacity),
+        assemble=assemble,
+        elongation=np.asarray(elongation),
+        sensors=sensors,
+        axis_z=axis_z,
+        axis=axis,
+        direct_limit=400_000,
+        extra={
+            "mesh": am,
+            "basis": basis,
+            "shaft_basis": shaft_basis,
+            "element": element,
+            "intorder": intorder,
+            "order": order,
+        },
+    )
+
+
+def _nudged(problem: ThermalProblem, body: str, r: float, z: float) -> tuple[float, float]:
+    """A point strictly inside ``body`` (the bore and shaft surface share coordinates)."""
+    R, eps = problem.shaft_radius, 1e-9 * problem.shaft_length
+    if body == "screw":
+        return min(r, R - eps), float(np.clip(z, eps, problem.shaft_length - eps))
+    start = problem.ring_centre - 0.5 * problem.ring_length
+    return max(r, R + eps), float(np.clip(z, start + eps, start + problem.ring_length - eps))
+
+
+def _sensor_probes(problem: ThermalProblem, basis: Basis, am: AxisymmetricMesh) -> sp.csr_matrix:
+    rows = [sp.csr_matrix((0, basis.N))]
+    for s in problem.sensors:
+        point = np.array(_nudged(problem, s.body, s.r, s.z))[:, None]
+        rows.append(probes(basis, point, locate(am, s.body, point)))
+    return sp.csr_matrix(sp.vstack(rows))
+
+
+def _axis_probes(
+    problem: ThermalProblem, basis: Basis, am: AxisymmetricMesh
+) -> tuple[NDArray[np.float64], sp.csr_matrix]:
+    """Rows giving the cross-section mean (2/R²)∫θ r dr at each shaft grid line (Gauss in r)."""
+    x, w = np.polynomial.legendre.leggauss(3)
+    a, b = am.r_shaft[:-1, None], am.r_shaft[1:, None]
+    rq = (0.5 * (a + b) + 0.5 * (b - a) * x).ravel()
+    wq = (0.5 * (b - a) * w).ravel() * rq * 2.0 / problem.shaft_radius**2
+    z = am.z_shaft
+    eps = 1e-9 * problem.shaft_length
+    zq = np.clip(z, eps, problem.shaft_length - eps)
+    points = np.array([np.tile(rq, zq.size), np.repeat(zq, rq.size)])
+    rows = probes(basis, points, locate(am, "screw", points))
+    weights = sp.kron(sp.identity(z.size), sp.csr_matrix(wq[None, :]))
+    return z, sp.csr_matrix(weights @ rows)

@@ -1,0 +1,116 @@
+"""Linear solves of the heat equation C dθ/dt + A θ = f: steady state and implicit Euler.
+
+Following the engine report (thermal-fe-engines.md §2–§3): a sparse LU (SuperLU, COLAMD
+ordering) up to about 60k unknowns, factorised once and reused for every step of a constant
+time step; above that smoothed-aggregation AMG preconditioned CG (pyamg). Implicit Euler with
+consistent matrices conserves energy discretely:
+    1ᵀC(θₙ − θₙ₋₁) + Δt·1ᵀAθₙ = Δt·1ᵀf,   and 1ᵀA θ is the convective loss (1ᵀK = 0).
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Callable, Hashable
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from numpy.typing import NDArray
+from scipy.sparse.linalg import splu
+
+from ballscrew.errors import ConvergenceError
+
+DIRECT_LIMIT = 60_000
+"""Largest system solved with a sparse LU by default (3-D meshes); larger ones use AMG-CG.
+2-D meshes factorise with little fill: 88k unknowns in 0.4 s, 350k in 4.5 s."""
+
+Solve = Callable[[NDArray[np.float64]], NDArray[np.float64]]
+
+
+def factorize(matrix: sp.spmatrix, rtol: float = 1e-10, direct_limit: int = DIRECT_LIMIT) -> Solve:
+    """A solver for ``matrix`` (symmetric positive definite): LU once, or AMG-CG when larger
+    than ``direct_limit`` unknowns. The AMG path raises :class:`ConvergenceError` when CG
+    misses ``rtol``.
+    """
+    matrix = sp.csc_matrix(matrix)
+    if matrix.shape[0] <= direct_limit:
+        lu = splu(matrix)
+        return lu.solve
+    import pyamg
+
+    csr = sp.csr_matrix(matrix)
+    ml = pyamg.smoothed_aggregation_solver(csr, symmetry="symmetric")
+    state: dict[str, NDArray[np.float64] | None] = {"x": None}
+
+    def solve(b: NDArray[np.float64]) -> NDArray[np.float64]:
+        residuals: list[float] = []
+        x = ml.solve(b, x0=state["x"], tol=rtol, accel="cg", maxiter=500, residuals=residuals)
+        norm_b = float(np.linalg.norm(b)) or 1.0
+        res = float(np.linalg.norm(b - csr @ x)) / norm_b
+        if not res <= 10 * rtol:
+            raise ConvergenceError("pyamg smoothed-aggregation CG", len(residuals), res, rtol)
+        state["x"] = x
+        return x
+
+    return solve
+
+
+def solve_steady(
+    conductance: sp.spmatrix, load: NDArray[np.float64], direct_limit: int = DIRECT_LIMIT
+) -> NDArray[np.float64]:
+    """Steady temperature rise θ = A⁻¹ f."""
+    return factorize(conductance, direct_limit=direct_limit)(np.asarray(load, dtype=float))
+
+
+@dataclass(frozen=True)
+class StepSystem:
+    """Conductance matrix and load vector in force during a step (may depend on the step)."""
+
+    key: Hashable
+    """Equal keys mean equal (A, f), so the factorisation is reused."""
+    conductance: sp.spmatrix
+    load: NDArray[np.float64]
+
+
+def implicit_euler(
+    capacity: sp.spmatrix,
+    time_step: float,
+    steps: int,
+    system: Callable[[int], StepSystem],
+    observe: Callable[[int, NDArray[np.float64], float], None],
+    initial: NDArray[np.float64] | None = None,
+    cache_size: int = 32,
+    direct_limit: int = DIRECT_LIMIT,
+) -> tuple[NDArray[np.float64], float, float]:
+    """March (C/Δt + Aₙ) θₙ = C θₙ₋₁/Δt + fₙ from θ₀ (ambient: 0) for ``steps`` steps.
+
+    ``system(n)`` gives (Aₙ, fₙ) of step n = 1 … steps; the matrix C/Δt + Aₙ is factorised
+    once per distinct key (LRU cache of ``cache_size``). ``observe(n, θₙ, loss)`` is called after
+    every step with the convective loss 1ᵀAₙθₙ [W]. Returns (θ_end, heat in [J], heat
+    convected [J]) for the energy balance.
+    """
+    c = sp.csr_matrix(capacity)
+    n_dof = c.shape[0]
+    theta = np.zeros(n_dof) if initial is None else np.array(initial, dtype=float)
+    cache: OrderedDict[Hashable, tuple[Solve, NDArray[np.float64]]] = OrderedDict()
+    heat_in = 0.0
+    heat_out = 0.0
+    for n in range(1, steps + 1):
+        s = system(n)
+        if s.key in cache:
+            cache.move_to_end(s.key)
+        else:
+            a = sp.csr_matrix(s.conductance)
+            cache[s.key] = (
+                factorize(c / time_step + a, rtol=1e-8, direct_limit=direct_limit),
+                np.asarray(a.sum(axis=0)).ravel(),
+            )
+            if len(cache) > cache_size:
+                cache.popitem(last=False)
+        solve, loss_row = cache[s.key]
+        theta = solve(c @ theta / time_step + s.load)
+        loss = float(loss_row @ theta)
+        heat_in += time_step * float(np.sum(s.load))
+        heat_out += time_step * loss
+        observe(n, theta, loss)
+    return theta, heat_in, heat_out
