@@ -1,0 +1,60 @@
+"""``ballscrew surface``: fractal D and G of a measured profile (CSV/text or SDF)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ballscrew.commands._common import OutOpt, log, user_errors_exit_2
+
+ProfileArg = Annotated[
+    Path,
+    typer.Argument(
+        help="measured profile: CSV/text (x, z or z only) or ISO 25178-71/BCR SDF",
+        dir_okay=False,
+        show_default=False,
+    ),
+]
+
+
+def _length(text: str | None, option: str) -> float | None:
+    from ballscrew.errors import InputError
+    from ballscrew.units import to_si
+
+    if text is None:
+        return None
+    try:
+        return to_si(text, "length")
+    except ValueError as exc:
+        raise InputError(option, text, f"a length such as '0.5 um' ({exc})") from None
+
+
+@user_errors_exit_2
+def surface(
+    profile_file: ProfileArg,
+    out: OutOpt = Path("results/surface"),
+    spacing: Annotated[
+        str | None,
+        typer.Option(help="sampling interval of a one-column text file, e.g. '0.5 um'"),
+    ] = None,
+    resolution: Annotated[
+        str | None,
+        typer.Option(help="instrument lateral resolution if coarser than the spacing"),
+    ] = None,
+    gamma: Annotated[float, typer.Option(help="W-M frequency ratio γ")] = 1.5,
+) -> None:
+    """Fractal dimension D and roughness G by power spectrum and structure function."""
+    from ballscrew.results import check_output_folder
+    from ballscrew.results.surface_report import write_surface
+    from ballscrew.surface import fractal_parameters, read_profile
+
+    check_output_folder(out)
+    profile = read_profile(profile_file, spacing=spacing)
+    fit = fractal_parameters(profile, gamma=gamma, resolution=_length(resolution, "--resolution"))
+    for f in (fit.psd, fit.structure_function):
+        if f is not None:
+            log.info("%s: D = %.4f, G = %.4g m (R² = %.4f)", f.method, f.D, f.G, f.r_squared)
+    folder = write_surface(fit, profile, out)
+    log.info("wrote %s", folder / "report.html")

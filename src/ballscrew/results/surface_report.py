@@ -1,0 +1,238 @@
+"""Results folder of ``ballscrew surface``: summary.json, log–log fit plots and report.html."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+from ballscrew.results.folder import results_folder
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import value, write_summary
+from ballscrew.surface.fit import FractalFit, SurfaceFit
+from ballscrew.surface.profile import Profile
+from ballscrew.surface.structure_function import band_limited_ratio
+
+_NAMES = {"psd": "power spectrum (F2)", "structure_function": "structure function (F4)"}
+
+
+def _fit_summary(fit: FractalFit) -> dict[str, Any]:
+    unit = "1/m" if fit.method == "psd" else "m"
+    return {
+        "D": fit.D,
+        "surface_dimension": fit.surface_dimension,
+        "G": value(fit.G, "m"),
+        "fit_range": {
+            "quantity": "frequency (cycles/m)" if fit.method == "psd" else "lag",
+            "min": value(fit.fit_range[0], unit),
+            "max": value(fit.fit_range[1], unit),
+        },
+        "D_standard_error": fit.D_stderr,
+        "lnG_standard_error": fit.lnG_stderr,
+        "r_squared": fit.r_squared,
+        "points": fit.points,
+        "profiles": fit.profiles,
+        "slope": fit.slope,
+        "intercept": fit.intercept,
+        "notes": list(fit.notes),
+    }
+
+
+def surface_summary(fit: SurfaceFit, profile: Profile) -> dict[str, Any]:
+    """Scalars of both fits and the recommended D and G, each with its unit."""
+    rows = profile.rows
+    finite = rows[np.all(np.isfinite(rows), axis=1)]
+    detrended = finite - finite.mean(axis=1, keepdims=True)
+    methods = {
+        name: _fit_summary(f)
+        for name, f in (("psd", fit.psd), ("structure_function", fit.structure_function))
+        if f is not None
+    }
+    return {
+        "analysis": "surface",
+        "source": profile.source,
+        "format": profile.metadata.get("format", ""),
+        "profiles": profile.n_profiles,
+        "profiles_used": int(finite.shape[0]),
+        "points_per_profile": profile.n_points,
+        "spacing": value(profile.spacing, "m"),
+        "sampling_length": value(profile.length, "m"),
+        "rms_height": value(float(np.sqrt(np.mean(detrended**2))), "m"),
+        "gamma": fit.recommended.gamma,
+        "recommended": {
+            "method": fit.recommended.method,
+            "D": fit.D,
+            "surface_dimension": fit.D + 1.0,
+            "G": value(fit.G, "m"),
+        },
+        "methods": methods,
+        "notes": list(fit.notes),
+        "conventions": {
+            "D": "profile fractal dimension, 1 < D < 2 (3-D surface Ds = D + 1)",
+            "psd": "one-sided, frequency in cycles/m: S = G^(2(D-1))/(2 ln γ) ω^-(5-2D)",
+            "structure_function": "C_D G^(2(D-1)) (2π τ)^(4-2D) (contact-tcr.md F4)",
+        },
+    }
+
+
+def _log_sample(x: np.ndarray, count: int = 600) -> np.ndarray:
+    index = np.unique(np.geomspace(1, x.size, count).astype(int) - 1)
+    return index
+
+
+def psd_plot(fit: SurfaceFit, path: Path) -> Path:
+    """Periodogram, log-smoothed spectrum, fitted (F2) line and the shaded fit range."""
+    assert fit.psd is not None and fit.spectrum is not None
+    f, s = fit.spectrum
+    r = fit.psd
+    fig, ax = plt.subplots(figsize=(6.4, 4.4), layout="constrained")
+    idx = _log_sample(f, 2000)
+    ax.loglog(f[idx], s[idx], color="0.75", linewidth=0.6, label="periodogram")
+    ax.loglog(r.x, r.y, "o", markersize=3, color="C0", label="log-smoothed (bias removed)")
+    ax.axvspan(*r.fit_range, color="C2", alpha=0.12, label="fit range")
+    ax.loglog(f, r.line(f), "--", color="C3", linewidth=1.0, label="fit, extended")
+    fr = np.geomspace(*r.fit_range, 50)
+    ax.loglog(fr, r.line(fr), "-", color="C3", linewidth=1.8, label="fit")
+    ax.set_xlabel("frequency ω [cycles/m]")
+    ax.set_ylabel("one-sided PSD S(ω) [m³]")
+    ax.set_title(f"PSD: D = {r.D:.4f}, G = {r.G:.3g} m, R² = {r.r_squared:.4f}", fontsize=10)
+    ax.set_ylim(max(s[s > 0].min(), r.y.min() * 1e-4), s.max() * 10)
+    ax.legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
+    """Structure function, band-corrected points, fitted (F4) line and the shaded fit range."""
+    assert fit.structure_function is not None and fit.structure is not None
+    lag, sf = fit.structure
+    r = fit.structure_function
+    fig, ax = plt.subplots(figsize=(6.4, 4.4), layout="constrained")
+    idx = _log_sample(lag)
+    ax.loglog(lag[idx], sf[idx], color="0.55", linewidth=1.0, label="structure function")
+    ax.loglog(r.x, r.y, "o", markersize=3, color="C0", label="band-corrected, smoothed")
+    ax.axvspan(*r.fit_range, color="C2", alpha=0.12, label="fit range")
+    ax.loglog(lag, r.line(lag), "--", color="C3", linewidth=1.0, label="fit (F4), extended")
+    fr = np.geomspace(*r.fit_range, 50)
+    ax.loglog(fr, r.line(fr), "-", color="C3", linewidth=1.8, label="fit (F4)")
+    if np.isfinite(r.D):
+        top = 0.5 / fit.spacing
+        keep = lag <= fit.length / 3.5
+        model = r.line(lag[keep]) * band_limited_ratio(lag[keep], r.D, 1.0 / fit.length, top)
+        ax.loglog(lag[keep], model, ":", color="k", linewidth=1.0, label="fit × band ratio")
+    ax.set_xlabel("lag τ [m]")
+    ax.set_ylabel("⟨[z(x+τ) − z(x)]²⟩ [m²]")
+    ax.set_title(
+        f"Structure function: D = {r.D:.4f}, G = {r.G:.3g} m, R² = {r.r_squared:.4f}",
+        fontsize=10,
+    )
+    ax.legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def profile_plot(profile: Profile, path: Path) -> Path:
+    """The first complete profile, heights in µm against x in mm."""
+    rows = profile.rows
+    good = np.flatnonzero(np.all(np.isfinite(rows), axis=1))
+    z = rows[good[0]] if good.size else rows[0]
+    fig, ax = plt.subplots(figsize=(8.0, 2.6), layout="constrained")
+    step = max(1, z.size // 20000)
+    ax.plot(profile.x[::step] * 1e3, z[::step] * 1e6, linewidth=0.6)
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("z [µm]")
+    ax.set_title(f"{Path(profile.source).name or 'profile'} (first complete row)", fontsize=10)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _row(fit: FractalFit) -> list[object]:
+    unit = "1/m" if fit.method == "psd" else "m"
+    return [
+        _NAMES[fit.method],
+        fit.D,
+        fit.surface_dimension,
+        fit.G,
+        f"{fit.D_stderr:.2g}" if np.isfinite(fit.D_stderr) else "–",
+        f"{fit.lnG_stderr:.2g}" if np.isfinite(fit.lnG_stderr) else "–",
+        f"{fit.fit_range[0]:.4g} – {fit.fit_range[1]:.4g} {unit}",
+        fit.r_squared,
+        fit.points,
+    ]
+
+
+def write_surface(fit: SurfaceFit, profile: Profile, out: str | Path) -> Path:
+    """Write the ``surface`` results folder and return its path."""
+    summary = surface_summary(fit, profile)
+    fits = [f for f in (fit.psd, fit.structure_function) if f is not None]
+    with results_folder(out) as folder:
+        write_summary(folder / "summary.json", summary)
+        figures = [(profile_plot(profile, folder / "profile.png"), "The measured profile.")]
+        if fit.psd is not None:
+            figures.append(
+                (
+                    psd_plot(fit, folder / "psd.png"),
+                    "PSD: periodogram (grey), the Gaussian log-smoothed spectrum that was fitted, "
+                    "the fitted line and the fit range (shaded).",
+                )
+            )
+        if fit.structure_function is not None:
+            figures.append(
+                (
+                    structure_function_plot(fit, folder / "structure_function.png"),
+                    "Structure function (grey), the band-corrected points that were fitted, the "
+                    "fitted (F4) line, the line times the band ratio, and the fit range.",
+                )
+            )
+        notes = [n for f in fits for n in f.notes] + list(fit.notes)
+        sections = [
+            Section(
+                "Fractal parameters",
+                paragraphs=[
+                    f"{profile.n_profiles} profile(s) of {profile.n_points} points at "
+                    f"Δx = {profile.spacing:.4g} m (L = {profile.length:.4g} m). Recommended: "
+                    f"D = {fit.D:.4f} (surface Ds = {fit.D + 1:.4f}), G = {fit.G:.4g} m from "
+                    f"the {_NAMES[fit.recommended.method]}.",
+                    "Conventions of contact-tcr.md §5.1: profile dimension 1 < D < 2, G in m, "
+                    "one-sided PSD in cycles/m (F2), structure function with the (2π)^(4−2D) "
+                    "factor (F4), γ = "
+                    f"{fit.recommended.gamma:g}. Fit ranges are chosen away from the sampling "
+                    "length and the Nyquist/resolution ends (see ballscrew.surface.fit). "
+                    "Standard errors (PSD) treat the profile as a Gaussian random process; "
+                    "G is ill-conditioned, d ln G/dD ≈ −ln(ω_c G)/(D − 1).",
+                    *notes,
+                ],
+                tables=[
+                    (
+                        [
+                            "method",
+                            "D",
+                            "Ds = D + 1",
+                            "G [m]",
+                            "s.e. D",
+                            "s.e. ln G",
+                            "fit range",
+                            "R²",
+                            "points",
+                        ],
+                        [_row(f) for f in fits],
+                    )
+                ],
+                figures=figures,
+            )
+        ]
+        write_report(
+            folder / "report.html",
+            f"Surface characterisation: {Path(profile.source).name}",
+            "ballscrew surface",
+            sections,
+        )
+    return Path(out).resolve()
