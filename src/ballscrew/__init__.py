@@ -18,6 +18,7 @@ from ballscrew.case import load_case
 from ballscrew.kinematics import ball_kinematics, drag_torque
 from ballscrew.loads import nut_forces
 from ballscrew.thermal.field import thermal_field
+from ballscrew.wear import wear_life
 
 __all__ = [
     "__version__",
@@ -35,4 +36,5 @@ __all__ = [
     "thermal",
     "thermal_field",
     "units",
+    "wear_life",
 ]

@@ -13,7 +13,7 @@ from typing import Annotated
 import typer
 
 from ballscrew import __version__
-from ballscrew.commands import contact, kinematics, sweep, tcr, thermal
+from ballscrew.commands import contact, kinematics, surface, sweep, tcr, thermal, wear
 from ballscrew.commands._common import log
 
 app = typer.Typer(
@@ -54,6 +54,8 @@ app.command()(tcr.tcr)
 app.command()(sweep.sweep)
 app.command()(kinematics.kinematics)
 app.command()(thermal.thermal)
+app.command()(surface.surface)
+app.command()(wear.wear)
 
 if __name__ == "__main__":  # pragma: no cover
     app()

@@ -142,3 +142,12 @@ def test_case_is_immutable(gao_case_path):
     case = load_case(gao_case_path)
     with pytest.raises(ValueError):
         case.screw.lead = 0.02
+
+
+def test_errors_inside_a_table_array_name_the_entry(wear_case_path):
+    bad_level = [{"axial_load": 2000.0, "speed": -1.0, "revolutions": 1e5}]
+    with pytest.raises(CaseError, match=r"wear\.programme\.0\.speed = -1\.0 is not allowed"):
+        load_case(wear_case_path, {"wear.programme": bad_level})
+    typo = [{"axial_load": 2000.0, "speed": 1.0, "revolutions": 1e5, "sped": 1.0}]
+    with pytest.raises(CaseError, match=r"wear\.programme\.0\.sped: unknown key"):
+        load_case(wear_case_path, {"wear.programme": typo})

@@ -101,11 +101,16 @@ def _submodel(annotation: Any) -> type[BaseModel] | None:
     return None
 
 
+def _field_keys(loc: tuple[Any, ...]) -> list[str]:
+    """The field names of an error location, without list indices (``programme.1.speed``)."""
+    return [key for key in loc if isinstance(key, str)]
+
+
 def _field_info(loc: tuple[Any, ...]) -> tuple[str, str]:
     """(description, SI unit) of the field at ``loc``, or empty strings if not found."""
     model: type[BaseModel] | None = Case
     info = None
-    for key in loc:
+    for key in _field_keys(loc):
         if model is None or key not in model.model_fields:
             return "", ""
         info = model.model_fields[key]
@@ -130,8 +135,8 @@ def _allowed_range(loc: tuple[Any, ...]) -> str:
     """The interval a numeric field accepts, from its constraints, e.g. ``(0, 1.5708)``."""
     model: type[BaseModel] | None = Case
     info = None
-    for key in loc:
-        info = model.model_fields[key] if model is not None else None
+    for key in _field_keys(loc):
+        info = model.model_fields.get(key) if model is not None else None
         model = _submodel(info.annotation) if info is not None else None
     low, high = "(-inf", "inf)"
     for constraint in info.metadata if info is not None else ():
@@ -159,8 +164,9 @@ def describe_errors(exc: ValidationError) -> list[str]:
         elif kind == "extra_forbidden":
             parent = loc[:-1]
             model: type[BaseModel] | None = Case
-            for key in parent:
-                model = _submodel(model.model_fields[key].annotation) if model else None
+            for key in _field_keys(parent):
+                field = model.model_fields.get(key) if model else None
+                model = _submodel(field.annotation) if field else None
             allowed = list(model.model_fields) if model else []
             where = ".".join(str(k) for k in parent) or "the case"
             lines.append(unknown_key_message(dotted, str(loc[-1]), allowed, where))

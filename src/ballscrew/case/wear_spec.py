@@ -88,9 +88,7 @@ class WearSpec(Model):
         description="load levels run one after the other ([[wear.programme]] tables); default "
         "the three-level step-stress test of §9.2 (2000/3000/4000 N, 100 rpm, 4.8e5 rev each)",
     )
-    grid: tuple[
-        Annotated[int, Field(ge=4, le=1024)], Annotated[int, Field(ge=4, le=4096)]
-    ] = Field(
+    grid: tuple[Annotated[int, Field(ge=4, le=1024)], Annotated[int, Field(ge=4, le=4096)]] = Field(
         (32, 128),
         description="contact-grid cells (along the helix x, across the groove y); fixed for the "
         "whole run; the cell area ΔA is the fractal micro-contact cell (§10.2: 32 × 128)",

@@ -1,0 +1,234 @@
+"""Results folder of ``ballscrew wear``: summary.json, history.nc, figures and report.html.
+
+Figures after the paper's: drag torque and preload versus revolutions with the level boundaries
+(its Figures 11–12) and the wear profile across the groove at the end of each level (its
+Figure 8). Physics reference: ``kinematics-wear.md`` §8–§10.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+
+from ballscrew.case import Case
+from ballscrew.results.folder import results_folder
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import value, write_summary
+from ballscrew.wear.life import WearLife
+
+__all__ = ["wear_history", "wear_summary", "write_wear"]
+
+
+def _provenance(case: Case) -> str:
+    default = 1.304e-4
+    spec = case.wear
+    if spec is not None and abs(spec.coefficient - default) > 1e-12:
+        return "case file [wear] coefficient"
+    return (
+        "kinematics-wear.md §10.3: calibrated so that h_max = 2.43 µm at 1.44e6 rev on the REF "
+        "screw (Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m)"
+    )
+
+
+def wear_summary(life: WearLife, case: Case) -> dict[str, Any]:
+    """Scalars of the run: final wear, contact width, preload, torque and the model options."""
+    return {
+        "analysis": "wear",
+        "case": case.name,
+        "complete": life.complete,
+        "revolutions": float(life.revolutions[-1]),
+        "max_wear_depth": value(float(life.max_wear_depth[-1]), "m"),
+        "ellipse_major_axis": value(life.ellipse_major_axis, "m"),
+        "ellipse_major_axis_unworn": value(life.ellipse_major_axis_unworn, "m"),
+        "worn_band_width": value(life.worn_band_width, "m"),
+        "initial_preload": value(float(life.preload[0]), "N"),
+        "final_preload": value(float(life.preload[-1]), "N"),
+        "initial_torque": value(float(life.friction_torque[0]), "N*m"),
+        "final_torque": value(float(life.friction_torque[-1]), "N*m"),
+        "wear_coefficient": {"value": life.coefficient, "unit": "", "source": _provenance(case)},
+        "levels": [
+            {
+                "axial_load": value(float(f), "N"),
+                "end_revolutions": float(n),
+                "max_wear_depth": value(
+                    float(np.interp(n, life.revolutions, life.max_wear_depth)), "m"
+                ),
+                "preload": value(float(np.interp(n, life.revolutions, life.preload)), "N"),
+            }
+            for f, n in zip(life.level_loads, life.level_boundaries, strict=True)
+        ],
+        "options": {
+            "model": life.model,
+            "raceway_length": value(life.raceway_length, "m"),
+            "compliance_constant": value(life.compliance, "m/N^(2/3)"),
+            "cell_area": value(life.cell_area, "m^2"),
+            "initial_psi": life.initial_psi,
+        },
+        "solver": {
+            "steps": life.steps,
+            "contact_solves": life.contact_solves,
+            "wall_time": value(life.wall_time, "s"),
+        },
+    }
+
+
+def wear_history(life: WearLife, case: Case) -> xr.Dataset:
+    """History over revolutions: wear profiles of both flanks, h_max, preload, forces, torque."""
+    step = np.arange(life.revolutions.size)
+    return xr.Dataset(
+        {
+            "revolutions": ("step", life.revolutions, {"units": "1", "long_name": "revolutions"}),
+            "max_wear_depth": ("step", life.max_wear_depth, {"units": "m"}),
+            "preload": ("step", life.preload, {"units": "N", "long_name": "preload (E1.13)"}),
+            "friction_torque": (
+                "step",
+                life.friction_torque,
+                {"units": "N m", "long_name": "no-load drag torque (E9.1)"},
+            ),
+            "nut_force": (("step", "nut"), life.nut_forces, {"units": "N"}),
+            "level": ("step", life.level, {"units": "1", "long_name": "level index (0-based)"}),
+            "torque_sample": ("step", life.sampled.astype(np.int8), {"units": "1"}),
+            "wear_depth": (
+                ("step", "flank", "y"),
+                life.profiles,
+                {"units": "m", "long_name": "wear depth across the groove"},
+            ),
+            "level_end": ("level_index", life.level_boundaries, {"units": "1"}),
+            "level_load": ("level_index", life.level_loads, {"units": "N"}),
+        },
+        coords={
+            "step": step,
+            "nut": [1, 2],
+            "flank": [1, -1],
+            "y": ("y", life.y, {"units": "m", "long_name": "across the groove"}),
+            "level_index": np.arange(life.level_loads.size),
+        },
+        attrs={"case": case.name, "model": life.model, "wear_coefficient": life.coefficient},
+    )
+
+
+def _levels(ax: Any, life: WearLife) -> None:
+    for n in life.level_boundaries[:-1]:
+        ax.axvline(n, color="0.6", ls=":", lw=1)
+
+
+def _torque_preload(life: WearLife, path: Path) -> Path:
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
+    n, t = life.torque_samples
+    axes[0].plot(life.revolutions, life.friction_torque, "-", lw=1)
+    axes[0].plot(n, t, "o", ms=3, label="sampled")
+    axes[0].set_ylabel("drag torque [N m]")
+    axes[1].plot(life.revolutions, life.preload, "-", lw=1)
+    axes[1].set_ylabel("preload [N]")
+    for ax in axes:
+        _levels(ax, life)
+        ax.set_xlabel("screw revolutions")
+        ax.set_ylim(bottom=0)
+    axes[0].legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _profiles(life: WearLife, path: Path) -> Path:
+    fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
+    for k, end in enumerate(life.level_boundaries):
+        i = int(np.argmin(np.abs(life.revolutions - end)))
+        ax.plot(1e6 * life.y, 1e6 * life.profiles[i, 0], label=f"end of level {k + 1}")
+    ax.set_xlabel("y, across the groove [µm]")
+    ax.set_ylabel("wear depth [µm]")
+    ax.legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _depth(life: WearLife, path: Path) -> Path:
+    fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
+    ax.plot(life.revolutions, 1e6 * life.max_wear_depth, "o-", ms=2)
+    _levels(ax, life)
+    ax.set_xlabel("screw revolutions")
+    ax.set_ylabel("largest wear depth h_max [µm]")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def write_wear(
+    life: WearLife, case: Case, out: str | Path, state_file: str | Path | None = None
+) -> Path:
+    """Write the ``wear`` results folder and return its path (``state_file`` copied in)."""
+    summary = wear_summary(life, case)
+    with results_folder(out) as folder:
+        write_summary(folder / "summary.json", summary)
+        wear_history(life, case).to_netcdf(folder / "history.nc", engine="h5netcdf")
+        if state_file is not None and Path(state_file).is_file():
+            (folder / "state.npz").write_bytes(Path(state_file).read_bytes())
+        figures = [
+            (
+                _torque_preload(life, folder / "torque_preload.png"),
+                "Drag torque (E9.1) and preload (E1.13) versus revolutions; dotted: level ends.",
+            ),
+            (
+                _profiles(life, folder / "wear_profiles.png"),
+                "Wear depth across the groove (flank +1) at the end of each level.",
+            ),
+            (_depth(life, folder / "max_wear_depth.png"), "Largest wear depth versus revolutions."),
+        ]
+        rows = [
+            [
+                f"level {k + 1}",
+                lv["axial_load"]["value"],
+                lv["end_revolutions"],
+                1e6 * lv["max_wear_depth"]["value"],
+                lv["preload"]["value"],
+            ]
+            for k, lv in enumerate(summary["levels"])
+        ]
+        sections = [
+            Section(
+                "Raceway wear and preload degradation",
+                paragraphs=[
+                    f"Fractal wear Model {life.model}, K = {life.coefficient:.4g} "
+                    f"({summary['wear_coefficient']['source']}); L_w = "
+                    f"{life.raceway_length:.4g} m; {life.steps} steps, "
+                    f"{life.contact_solves} contact solutions in {life.wall_time:.1f} s.",
+                    "The largest wear depth sets the preload every step (E1.13); the torque is "
+                    "the catalogue drag torque of the preload (E9.1). The running-in drop of "
+                    "the measured torque is not modelled.",
+                ],
+                tables=[
+                    (
+                        ["quantity", "value"],
+                        [
+                            ["largest wear depth [µm]", 1e6 * float(life.max_wear_depth[-1])],
+                            [
+                                "contact width, worn / unworn [µm]",
+                                f"{1e6 * life.ellipse_major_axis:.0f} / "
+                                f"{1e6 * life.ellipse_major_axis_unworn:.0f}",
+                            ],
+                            ["worn band (h > 5 % of max) [µm]", 1e6 * life.worn_band_width],
+                            [
+                                "preload, initial / final [N]",
+                                f"{life.preload[0]:.1f} / {life.preload[-1]:.1f}",
+                            ],
+                            [
+                                "torque, initial / final [N m]",
+                                f"{life.friction_torque[0]:.4f} / {life.friction_torque[-1]:.4f}",
+                            ],
+                        ],
+                    ),
+                    (["level", "F_a [N]", "end [rev]", "h_max [µm]", "F_p [N]"], rows),
+                ],
+                figures=figures,
+            )
+        ]
+        write_report(folder / "report.html", f"Wear life: {case.name}", "ballscrew wear", sections)
+    return Path(out).resolve()

@@ -1,0 +1,42 @@
+"""Fractal wear of the screw raceway and the preload/torque degradation it causes.
+
+Physics reference: ``kinematics-wear.md`` §7 (cell wear rates, Models A and C), §8 (wear strips,
+working raceway length, reciprocation, worn groove, time integration) and §9 (drag torque).
+
+1. :mod:`ballscrew.wear.rates`: cell wear rates w(p_asp, |Δv|) of Model A and Model C.
+2. :mod:`ballscrew.wear.strips`: strips W_j (E8.1), ḣ_j = Z W_j/L_w (E8.2), L_w (E8.3),
+   reciprocation (E8.4).
+3. :mod:`ballscrew.wear.profile`: the worn gap g_0 + h(y) for the next contact (E8.5).
+4. :mod:`ballscrew.wear.life`: :func:`wear_life`, the §8.2 integration with preload updates
+   (E1.13), drag torque (E9.1) and checkpoint/resume.
+"""
+
+from ballscrew.wear.life import FlankRate, WearLife, WearSetup, flank_rate, wear_life, wear_setup
+from ballscrew.wear.profile import worn_gap, worn_gap_function
+from ballscrew.wear.rates import cell_wear_rate, wear_rate_model_a, wear_rate_model_c
+from ballscrew.wear.strips import (
+    depth_per_revolution,
+    raceway_depth_rate,
+    reciprocating_rate,
+    strip_wear_speed,
+    working_raceway_length,
+)
+
+__all__ = [
+    "FlankRate",
+    "WearLife",
+    "WearSetup",
+    "cell_wear_rate",
+    "depth_per_revolution",
+    "flank_rate",
+    "raceway_depth_rate",
+    "reciprocating_rate",
+    "strip_wear_speed",
+    "wear_life",
+    "wear_rate_model_a",
+    "wear_rate_model_c",
+    "wear_setup",
+    "working_raceway_length",
+    "worn_gap",
+    "worn_gap_function",
+]

@@ -1,0 +1,645 @@
+"""Wear life of a preloaded double-nut screw: wear profile, preload and drag torque vs revolutions.
+
+The time integration of ``kinematics-wear.md`` §8.2 over the load programme of ``[wear]``:
+
+1. F_1, F_2 from the current preload and the level's axial load (E1.10–E1.11; lift-off gives
+   F_2 = 0 and no wear from that nut).
+2. For each screw flank s = ±1 and each nut force: ball load Q = F/(Z sinβ cosλ) (E1.6), the
+   Polonsky–Keer pressure on the fixed grid over the worn gap g_0 + h_s(y) (E8.5), warm-started
+   from the previous pressure of the same flank and nut; the JGP asperity share ψ at u_e = V
+   (E2.4, E2.8, E6.4) with A_n = the loaded cells' area and ΔA = the grid cell; the sliding speed
+   of (E2.7) with the curvature term; the cell wear rates of Model A or C (§7); strips (E8.1),
+   Z balls over L_w (E8.2–E8.3), reciprocation ½ F_1 + ½ F_2 (E8.4).
+3. Explicit step ΔN = min(max_depth_step / max_j ḣ_j, revolutions to the next level end or
+   torque sample); h_s += ḣ_s ΔN.
+4. Preload from the largest depth (E1.13) with C_a of the Hertz constants (E1.8); drag torque
+   T = K_T F_p L/(2π) (E9.1), K_T scaled by ``torque_scale`` or fitted to ``initial_torque``.
+
+The whole state is saved to a checkpoint file after every ``checkpoint_every`` steps; a stopped
+run resumes from its last saved step and produces the same history.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import math
+import time
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ballscrew.analyses.ball_contact import contact_modulus
+from ballscrew.case.wear_spec import WearSpec
+from ballscrew.contact import cell_centres, hertz, solve_normal
+from ballscrew.errors import InputError
+from ballscrew.fractal.yan_komvopoulos import surface_dimension
+from ballscrew.geometry import ScrewGeometry, gap_function, raceway_curvature
+from ballscrew.kinematics.model import case_lubricant
+from ballscrew.kinematics.sliding import sliding_field_closed_form
+from ballscrew.loads import (
+    ball_load,
+    nut_axial_compliance,
+    nut_forces,
+    preload_after_wear,
+    preload_drag_torque,
+)
+from ballscrew.lubrication import AsperitySurface, share_load
+from ballscrew.wear.profile import worn_gap
+from ballscrew.wear.rates import cell_wear_rate
+from ballscrew.wear.strips import (
+    depth_per_revolution,
+    raceway_depth_rate,
+    reciprocating_rate,
+    strip_wear_speed,
+    working_raceway_length,
+)
+
+__all__ = [
+    "FlankRate",
+    "GridEdgeWarning",
+    "WearLife",
+    "WearSetup",
+    "flank_rate",
+    "wear_life",
+    "wear_setup",
+]
+
+FloatArray = NDArray[np.float64]
+FLANKS: tuple[int, int] = (1, -1)
+log = logging.getLogger("ballscrew")
+_CHECKPOINT_VERSION = 1
+
+
+class GridEdgeWarning(UserWarning):
+    """The (worn) contact touches the edge of the fixed grid: the box is too small."""
+
+
+# --------------------------------------------------------------------------------- set-up
+
+
+@dataclass(frozen=True)
+class WearSetup:
+    """Everything fixed during a wear run (SI)."""
+
+    geometry: ScrewGeometry
+    spec: WearSpec
+    balls: int
+    e_star: float
+    hardness: float
+    surface: AsperitySurface
+    """Rough screw raceway; ``cell_area`` is the grid cell ΔA (σ from E5.3 with L_s = √ΔA)."""
+    viscosity: float | None
+    pressure_viscosity: float | None
+    rx: float
+    ry: float
+    x: FloatArray
+    y: FloatArray
+    dx: float
+    dy: float
+    nominal_gap: dict[int, FloatArray]
+    compliance: float
+    """C_a of (E1.8) [m N^(−2/3)]."""
+    raceway_length: float
+    """L_w of (E8.3) [m]."""
+    initial_preload: float
+    torque_factor: float
+    """Factor on the catalogue torque of (E9.1) (torque_scale or the initial-torque fit)."""
+    tolerance: float
+    max_iterations: int
+
+    @property
+    def cell_area(self) -> float:
+        return self.dx * self.dy
+
+    @property
+    def lubricated(self) -> bool:
+        return self.viscosity is not None and self.pressure_viscosity is not None
+
+    def preload(self, max_depth: float) -> float:
+        """F_p after wear h_max (E1.13) [N]."""
+        g = self.geometry
+        return float(
+            preload_after_wear(
+                self.initial_preload, self.compliance, max_depth, g.contact_angle, g.lead_angle
+            )
+        )
+
+    def torque(self, preload: float) -> float:
+        """Drag torque T = f · K_T F_p L/(2π) (E9.1, E9.3) [N m]."""
+        g = self.geometry
+        return self.torque_factor * preload_drag_torque(preload, g.lead, g.lead_angle)
+
+    def ball_load(self, nut_force: float) -> float:
+        """Q = F/(Z sinβ cosλ) (E1.6) [N]."""
+        g = self.geometry
+        return float(ball_load(nut_force, self.balls, g.contact_angle, g.lead_angle))
+
+
+def _forces(preload: float, axial_load: float) -> tuple[float, float]:
+    """(F_1, F_2) of the double nut (E1.10–E1.11); without preload F_1 = F_a, F_2 = 0."""
+    if preload <= 0.0:
+        return float(axial_load), 0.0
+    f = nut_forces(preload, axial_load)
+    return float(f[0]), float(f[1])
+
+
+def wear_setup(case: Any) -> WearSetup:
+    """Fixed grid, gaps, fractal surface, C_a, L_w and torque factor of a case with ``[wear]``."""
+    spec: WearSpec = case.wear if case.wear is not None else WearSpec()
+    if case.screw.nuts != 2:
+        raise InputError("screw.nuts", case.screw.nuts, "2 (the wear life needs a double nut)")
+    geometry = ScrewGeometry.from_spec(case.screw)
+    balls = case.screw.balls_per_nut
+    e_star = contact_modulus(case, "screw")
+    hardness = case.materials.screw.hardness
+    ca, cb = raceway_curvature(geometry, "screw"), raceway_curvature(geometry, "nut")
+    k_a = hertz(ca.rx, ca.ry, e_star, 1.0).approach
+    k_b = hertz(cb.rx, cb.ry, contact_modulus(case, "nut"), 1.0).approach
+    compliance = nut_axial_compliance(k_a, k_b, balls, geometry.contact_angle, geometry.lead_angle)
+    preload = case.operating.preload
+    if not preload > 0.0:
+        raise InputError("operating.preload", preload, "an initial preload > 0 N")
+    q_max = max(
+        float(
+            ball_load(
+                _forces(preload, lv.axial_load)[0],
+                balls,
+                geometry.contact_angle,
+                geometry.lead_angle,
+            )
+        )
+        for lv in spec.programme
+    )
+    hz = hertz(ca.rx, ca.ry, e_star, q_max)  # a along x (rolling), b along y (across)
+    nx, ny = spec.grid
+    dx, dy = 2.0 * spec.box_factor * hz.a / nx, 2.0 * spec.box_factor * hz.b / ny
+    x, y = cell_centres(nx, dx), cell_centres(ny, dy)
+    model = case.numerics.gap_model
+    gaps = {
+        s: np.asarray(
+            gap_function(geometry, "screw", flank=s, model=model)(x[:, None], y[None, :]),
+            dtype=float,
+        )
+        for s in FLANKS
+    }
+    eta, alpha = case_lubricant(case)
+    surface = AsperitySurface(
+        Ds=surface_dimension(case.surface.D),
+        G=case.surface.G,
+        e_star=e_star,
+        hardness=hardness,
+        cell_area=dx * dy,
+    )
+    length = working_raceway_length(
+        spec.stroke,
+        geometry.lead,
+        geometry.pitch_radius,
+        geometry.ball_radius,
+        geometry.contact_angle,
+    )
+    catalogue = preload_drag_torque(preload, geometry.lead, geometry.lead_angle)
+    factor = spec.torque_scale if spec.initial_torque is None else spec.initial_torque / catalogue
+    return WearSetup(
+        geometry=geometry,
+        spec=spec,
+        balls=balls,
+        e_star=e_star,
+        hardness=hardness,
+        surface=surface,
+        viscosity=eta,
+        pressure_viscosity=alpha,
+        rx=ca.rx,
+        ry=ca.ry,
+        x=x,
+        y=y,
+        dx=dx,
+        dy=dy,
+        nominal_gap=gaps,
+        compliance=compliance,
+        raceway_length=length,
+        initial_preload=preload,
+        torque_factor=factor,
+        tolerance=case.numerics.tolerance,
+        max_iterations=case.numerics.max_iterations,
+    )
+
+
+# ------------------------------------------------------------------------- one contact
+
+
+@dataclass(frozen=True)
+class FlankRate:
+    """Wear of one flank under one nut force: the contact chain of §8.2 for one ball."""
+
+    load: float
+    """Ball load Q [N]."""
+    pressure: FloatArray
+    """Pressure p [Pa] on the grid."""
+    psi: float
+    """Asperity share ψ (E6.4)."""
+    cell_rate: FloatArray
+    """Cell wear rates w [m/s]."""
+    depth_per_revolution: FloatArray
+    """Δh_j per screw revolution if this force acted all the time [m/rev]."""
+    iterations: int
+
+
+def entrainment_speed(geometry: ScrewGeometry, screw_speed: float) -> float:
+    """u_e = V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ), (E2.4), (E2.8), m/s (REF 100 rpm: 0.09333)."""
+    lam, beta = geometry.lead_angle, geometry.contact_angle
+    return (
+        0.5
+        * screw_speed
+        * (
+            geometry.pitch_radius / math.cos(lam)
+            - geometry.ball_radius * math.cos(beta) * math.cos(lam)
+        )
+    )
+
+
+def flank_rate(
+    setup: WearSetup,
+    flank: int,
+    nut_force: float,
+    screw_speed: float,
+    depth: FloatArray,
+    initial: FloatArray | None = None,
+) -> FlankRate:
+    """Wear-depth rate across the groove of ``flank`` under one nut force (§8.2 inner loop)."""
+    q = setup.ball_load(nut_force)
+    gap = worn_gap(setup.nominal_gap[flank], depth)
+    sol = solve_normal(
+        gap,
+        setup.dx,
+        setup.dy,
+        setup.e_star,
+        q,
+        setup.tolerance,
+        max_iterations=setup.max_iterations,
+        initial=initial,
+    )
+    p = np.asarray(sol.pressure, dtype=float)
+    if p[[0, -1], :].any() or p[:, [0, -1]].any():
+        warnings.warn(
+            f"the contact at Q = {q:.4g} N reaches the edge of the fixed wear grid; "
+            "increase wear.box_factor",
+            GridEdgeWarning,
+            stacklevel=2,
+        )
+    cell = setup.cell_area
+    if setup.lubricated:
+        area = float(np.count_nonzero(p > 0.0)) * cell
+        psi = share_load(
+            q,
+            setup.rx,
+            setup.ry,
+            setup.viscosity,
+            setup.pressure_viscosity,
+            entrainment_speed(setup.geometry, screw_speed),
+            area,
+            setup.surface,
+        ).psi
+    else:
+        psi = 1.0
+    speed = sliding_field_closed_form(
+        setup.geometry, screw_speed, setup.x, setup.y, flank, curvature=True
+    ).speed
+    s = setup.surface
+    w = cell_wear_rate(
+        setup.spec.model,
+        psi * p,
+        speed,
+        cell,
+        s.Ds,
+        s.G,
+        s.e_star,
+        s.hardness,
+        setup.spec.coefficient,
+        s.gamma,
+    )
+    rate = raceway_depth_rate(strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length)
+    return FlankRate(q, p, float(psi), w, depth_per_revolution(rate, screw_speed), sol.iterations)
+
+
+# ------------------------------------------------------------------------------ result
+
+
+@dataclass
+class WearLife:
+    """History of a wear run; arrays have one entry per recorded step (index 0: N = 0)."""
+
+    revolutions: FloatArray
+    """Screw revolutions N [-]."""
+    max_wear_depth: FloatArray
+    """h_max(N), largest depth over both flanks [m]."""
+    preload: FloatArray
+    """F_p(N) (E1.13) [N]."""
+    friction_torque: FloatArray
+    """Drag torque T(N) (E9.1) [N m]."""
+    nut_forces: FloatArray
+    """(F_1, F_2) at each record, under the level then running [N]; shape (n, 2)."""
+    level: NDArray[np.int64]
+    """Index of the level each record belongs to (its end for boundaries)."""
+    sampled: NDArray[np.bool_]
+    """True at the torque-sampling revolutions (multiples of ``torque_sampling``, and N = 0)."""
+    y: FloatArray
+    """Grid positions across the groove [m]."""
+    profiles: FloatArray
+    """h_s(y) [m], shape (n, 2, ny): flank +1 then −1."""
+    level_boundaries: FloatArray
+    """Cumulative revolutions at the end of each level [-]."""
+    level_loads: FloatArray
+    """Axial load of each level [N]."""
+    ellipse_major_axis: float = math.nan
+    """Extent across the groove of the loaded cells under the loaded nut of the last level at
+    the end of the run (worn groove, flank +1) [m] (E8.6)."""
+    ellipse_major_axis_unworn: float = math.nan
+    """The same on the unworn groove at the same load [m]."""
+    worn_band_width: float = math.nan
+    """Width of the band with h > 5 % of h_max on flank +1 at the end [m]."""
+    final_pressure: FloatArray | None = None
+    """Pressure under the loaded nut of the last level at the end (worn groove) [Pa]."""
+    x: FloatArray | None = None
+    contact_solves: int = 0
+    steps: int = 0
+    wall_time: float = 0.0
+    complete: bool = True
+    model: str = "A"
+    coefficient: float = math.nan
+    raceway_length: float = math.nan
+    compliance: float = math.nan
+    cell_area: float = math.nan
+    initial_psi: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def torque_samples(self) -> tuple[FloatArray, FloatArray]:
+        """(N, T) at the torque-sampling revolutions."""
+        return self.revolutions[self.sampled], self.friction_torque[self.sampled]
+
+
+# -------------------------------------------------------------------------- integration
+
+
+@dataclass
+class _State:
+    level: int
+    revolutions: float
+    depth: FloatArray  # (2, ny)
+    warm: dict[str, FloatArray]
+    records: dict[str, list[Any]]
+    solves: int
+    steps: int
+    initial_psi: dict[str, float]
+
+
+def _fingerprint(case: Any, setup: WearSetup) -> str:
+    data = {
+        "wear": setup.spec.model_dump(mode="json"),
+        "screw": case.screw.model_dump(mode="json"),
+        "surface": case.surface.model_dump(mode="json"),
+        "preload": case.operating.preload,
+        "numerics": case.numerics.model_dump(mode="json"),
+        "viscosity": setup.viscosity,
+        "pressure_viscosity": setup.pressure_viscosity,
+        "hardness": setup.hardness,
+        "e_star": setup.e_star,
+    }
+    return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
+
+
+_RECORD_KEYS = (
+    "revolutions",
+    "max_depth",
+    "preload",
+    "torque",
+    "forces",
+    "level",
+    "sampled",
+    "profiles",
+)
+
+
+def _save(path: Path, state: _State, fingerprint: str) -> None:
+    arrays: dict[str, Any] = {f"rec_{k}": np.asarray(v) for k, v in state.records.items()}
+    arrays.update({f"warm_{k}": v for k, v in state.warm.items()})
+    meta = {
+        "version": _CHECKPOINT_VERSION,
+        "fingerprint": fingerprint,
+        "level": state.level,
+        "revolutions": state.revolutions,
+        "solves": state.solves,
+        "steps": state.steps,
+        "initial_psi": state.initial_psi,
+    }
+    tmp = path.with_name(path.name + ".tmp.npz")
+    np.savez(tmp, depth=state.depth, meta=np.array(json.dumps(meta)), **arrays)
+    tmp.replace(path)
+
+
+def _load(path: Path, fingerprint: str) -> _State:
+    with np.load(path, allow_pickle=False) as data:
+        meta = json.loads(str(data["meta"]))
+        if meta.get("version") != _CHECKPOINT_VERSION or meta.get("fingerprint") != fingerprint:
+            raise InputError(
+                "checkpoint", str(path), "a checkpoint of this same case and [wear] section"
+            )
+        records = {k: list(data[f"rec_{k}"]) for k in _RECORD_KEYS}
+        warm = {k[5:]: np.array(data[k]) for k in data.files if k.startswith("warm_")}
+        return _State(
+            level=int(meta["level"]),
+            revolutions=float(meta["revolutions"]),
+            depth=np.array(data["depth"]),
+            warm=warm,
+            records=records,
+            solves=int(meta["solves"]),
+            steps=int(meta["steps"]),
+            initial_psi=dict(meta["initial_psi"]),
+        )
+
+
+def _record(state: _State, setup: WearSetup, forces: tuple[float, float], sampled: bool) -> None:
+    h_max = float(state.depth.max())
+    fp = setup.preload(h_max)
+    r = state.records
+    r["revolutions"].append(state.revolutions)
+    r["max_depth"].append(h_max)
+    r["preload"].append(fp)
+    r["torque"].append(setup.torque(fp))
+    r["forces"].append(np.array(forces))
+    r["level"].append(state.level)
+    r["sampled"].append(sampled)
+    r["profiles"].append(state.depth.copy())
+
+
+def _is_sample(revolutions: float, every: float) -> bool:
+    k = round(revolutions / every)
+    return k >= 1 and abs(revolutions - k * every) <= 1e-9 * max(revolutions, 1.0)
+
+
+def _step_rates(
+    setup: WearSetup, state: _State, preload: float, axial_load: float, speed: float
+) -> tuple[FloatArray, tuple[float, float]]:
+    """ḣ per revolution of both flanks (2, ny) under reciprocation (E8.4)."""
+    forces = _forces(preload, axial_load)
+    rates = np.zeros_like(state.depth)
+    for k, flank in enumerate(FLANKS):
+        parts: list[FloatArray | None] = []
+        for nut, force in enumerate(forces, start=1):
+            if force <= 0.0:
+                parts.append(None)
+                continue
+            key = f"{flank:+d}_{nut}"
+            out = flank_rate(setup, flank, force, speed, state.depth[k], state.warm.get(key))
+            state.warm[key] = out.pressure
+            state.solves += 1
+            state.initial_psi.setdefault(key, out.psi)
+            parts.append(out.depth_per_revolution)
+        loaded = parts[0] if parts[0] is not None else np.zeros(setup.y.size)
+        rates[k] = reciprocating_rate(loaded, parts[1])
+    return rates, forces
+
+
+def _finish(case: Any, setup: WearSetup, state: _State, complete: bool, wall: float) -> WearLife:
+    r = state.records
+    spec = setup.spec
+    loads = np.array([lv.axial_load for lv in spec.programme])
+    boundaries = np.cumsum([lv.revolutions for lv in spec.programme])
+    life = WearLife(
+        revolutions=np.asarray(r["revolutions"], dtype=float),
+        max_wear_depth=np.asarray(r["max_depth"], dtype=float),
+        preload=np.asarray(r["preload"], dtype=float),
+        friction_torque=np.asarray(r["torque"], dtype=float),
+        nut_forces=np.asarray(r["forces"], dtype=float).reshape(-1, 2),
+        level=np.asarray(r["level"], dtype=np.int64),
+        sampled=np.asarray(r["sampled"], dtype=bool),
+        y=setup.y.copy(),
+        profiles=np.asarray(r["profiles"], dtype=float),
+        level_boundaries=boundaries.astype(float),
+        level_loads=loads,
+        contact_solves=state.solves,
+        steps=state.steps,
+        wall_time=wall,
+        complete=complete,
+        model=spec.model,
+        coefficient=spec.coefficient,
+        raceway_length=setup.raceway_length,
+        compliance=setup.compliance,
+        cell_area=setup.cell_area,
+        initial_psi=dict(state.initial_psi),
+        x=setup.x.copy(),
+    )
+    if complete:
+        last = spec.programme[-1]
+        f1 = _forces(float(life.preload[-1]), last.axial_load)[0]
+        if f1 > 0.0:
+            worn = flank_rate(setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"))
+            unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y))
+            life.contact_solves += 2
+            life.ellipse_major_axis = _extent(worn.pressure, setup.dy)
+            life.ellipse_major_axis_unworn = _extent(unworn.pressure, setup.dy)
+            life.final_pressure = worn.pressure
+        life.worn_band_width = _band(state.depth[0], setup.dy)
+    return life
+
+
+def _extent(pressure: FloatArray, dy: float) -> float:
+    cols = np.flatnonzero((pressure > 0.0).any(axis=0))
+    return float((cols[-1] - cols[0] + 1) * dy) if cols.size else 0.0
+
+
+def _band(depth: FloatArray, dy: float, fraction: float = 0.05) -> float:
+    peak = float(depth.max())
+    if peak <= 0.0:
+        return 0.0
+    cols = np.flatnonzero(depth > fraction * peak)
+    return float((cols[-1] - cols[0] + 1) * dy)
+
+
+def wear_life(
+    case: Any,
+    *,
+    checkpoint: str | Path | None = None,
+    resume: bool = False,
+    max_steps: int | None = None,
+) -> WearLife:
+    """Wear, preload and drag torque over the load programme of ``case.wear`` (§8.2).
+
+    Args:
+        case: a validated case; ``case.wear`` (None = the defaults of :class:`WearSpec`: the
+            §9.2 step-stress programme with the §10.3 wear coefficient).
+        checkpoint: file (``.npz``) to save the state to after every ``checkpoint_every`` steps.
+        resume: continue from ``checkpoint`` if it exists (it must come from the same case).
+        max_steps: stop after this many time steps of this call (the result then has
+            ``complete = False``; resume it later from the checkpoint).
+
+    Returns:
+        :class:`WearLife`. REF (examples/wear_step_stress.toml, K = 1.304e-4) gives
+        h_max = 2.43 µm and F_p = 244 N at 1.44e6 rev (§10.3).
+    """
+    start = time.perf_counter()
+    setup = wear_setup(case)
+    spec = setup.spec
+    fingerprint = _fingerprint(case, setup)
+    path = None if checkpoint is None else Path(checkpoint)
+    if path is not None and resume and path.exists():
+        state = _load(path, fingerprint)
+        log.info("wear: resumed at N = %.4g rev (step %d)", state.revolutions, state.steps)
+    else:
+        state = _State(
+            0, 0.0, np.zeros((2, setup.y.size)), {}, {k: [] for k in _RECORD_KEYS}, 0, 0, {}
+        )
+        first = spec.programme[0]
+        _record(state, setup, _forces(setup.initial_preload, first.axial_load), True)
+    ends = np.cumsum([lv.revolutions for lv in spec.programme])
+    every = spec.torque_sampling
+    taken = 0
+    while state.level < len(spec.programme):
+        level = spec.programme[state.level]
+        end = float(ends[state.level])
+        if state.revolutions >= end * (1.0 - 1e-12):
+            state.level += 1
+            continue
+        if max_steps is not None and taken >= max_steps:
+            if path is not None:
+                _save(path, state, fingerprint)
+            return _finish(case, setup, state, False, time.perf_counter() - start)
+        preload = setup.preload(float(state.depth.max()))
+        rates, _ = _step_rates(setup, state, preload, level.axial_load, level.speed)
+        next_sample = (math.floor(state.revolutions / every + 1e-9) + 1) * every
+        target = min(end, next_sample)
+        peak = float(rates.max())
+        dn = target - state.revolutions
+        if peak > 0.0:
+            dn = min(dn, spec.max_depth_step / peak)
+        state.depth = state.depth + rates * dn
+        state.revolutions = target if dn >= target - state.revolutions else state.revolutions + dn
+        state.steps += 1
+        taken += 1
+        sampled = _is_sample(state.revolutions, every)
+        _record(
+            state,
+            setup,
+            _forces(setup.preload(float(state.depth.max())), level.axial_load),
+            sampled,
+        )
+        if sampled or state.revolutions >= end * (1.0 - 1e-12):
+            log.info(
+                "wear: level %d/%d N = %.4g rev  h_max = %.4g µm  F_p = %.1f N  T = %.4f N m",
+                state.level + 1,
+                len(spec.programme),
+                state.revolutions,
+                1e6 * state.records["max_depth"][-1],
+                state.records["preload"][-1],
+                state.records["torque"][-1],
+            )
+        if path is not None and state.steps % spec.checkpoint_every == 0:
+            _save(path, state, fingerprint)
+    if path is not None:
+        _save(path, state, fingerprint)
+    return _finish(case, setup, state, True, time.perf_counter() - start)

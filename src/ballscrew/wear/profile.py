@@ -1,0 +1,54 @@
+"""The worn groove seen by the next contact solution (E8.5).
+
+The raceway normal-section profile after wear is the nominal arc pushed back along its local
+normal by the wear depth h(y); since |y| ≪ r_s, y is the arc length across the groove and the
+push-back adds h(y) to the ball–raceway gap (``kinematics-wear.md`` (E8.5), (E4.8)).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ballscrew.errors import InputError
+
+__all__ = ["worn_gap", "worn_gap_function"]
+
+GapFunction = Callable[[Any, Any], Any]
+
+
+def _profile(y: ArrayLike, depth: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    yy = np.asarray(y, dtype=float)
+    hh = np.asarray(depth, dtype=float)
+    if yy.ndim != 1 or yy.shape != hh.shape or yy.size < 2 or np.any(np.diff(yy) <= 0.0):
+        raise InputError("wear profile", (yy.shape, hh.shape), "increasing y with one h per y")
+    if not (np.all(np.isfinite(hh)) and np.all(hh >= 0.0)):
+        raise InputError("wear depth", "array", "finite depths >= 0 m")
+    return yy, hh
+
+
+def worn_gap_function(gap: GapFunction, y: ArrayLike, depth: ArrayLike) -> GapFunction:
+    """Gap function of the worn groove: ``g(x, y) = g_0(x, y) + h(y)``, (E8.5), m.
+
+    ``gap`` is a nominal gap function f(x, y) (e.g. :func:`ballscrew.geometry.gap_function`);
+    h(y) is linear between the samples (y, depth) and 0 outside them (unworn raceway).
+    """
+    yy, hh = _profile(y, depth)
+
+    def gap_worn(x: Any, y_points: Any) -> Any:
+        base = np.asarray(gap(x, y_points), dtype=float)
+        return base + np.interp(np.asarray(y_points, dtype=float), yy, hh, left=0.0, right=0.0)
+
+    return gap_worn
+
+
+def worn_gap(nominal: ArrayLike, depth: ArrayLike) -> NDArray[np.float64]:
+    """Worn gap on a fixed grid: ``nominal[i, j] + depth[j]`` (axis 1 across the groove), m."""
+    g = np.asarray(nominal, dtype=float)
+    h = np.asarray(depth, dtype=float)
+    if g.ndim != 2 or h.shape != (g.shape[1],):
+        raise InputError("wear depth", h.shape, f"one depth per grid column ({g.shape[1]})")
+    return g + h[None, :]

@@ -1,0 +1,153 @@
+"""Cell wear rates of a rough fractal raceway under a smooth sliding ball (Models A and C).
+
+Each grid cell of the contact solution is a micro-contact region of apparent area ΔA carrying
+the asperity force F = p_asp ΔA (p_asp = ψ p, the film share removed, (E6.5)). The largest
+truncated area a_l follows from F_asp(a_l) = F (E5.16, Yan & Komvopoulos 1998); the cell's wear
+rate w (worn volume per unit time per unit apparent area = wear-depth speed, m/s) then follows
+from the local sliding speed |Δv| (E2.7). Physics reference: ``kinematics-wear.md`` §7.
+
+* Model A (§7.2, default): adhesive particles only at plastic asperities, hemispherical
+  particles of radius r' removed with probability K per encounter (Archard 1953):
+  ``w = K |Δv| F_p(a_l) / (3 H ΔA)``; the Archard limit ``w = K |Δv| p/(3H)`` for fully plastic
+  cells (T7.3).
+* Model C (§7.3): cap volume a'δ(a')/2 per encounter summed over all asperities (Zhou, Leu &
+  Blackmore 1993): ``w = (K|Δv|/ΔA) √π (Ds−1)/(4(5−2Ds)) δ_l a_l^(Ds−2) a_up^((5−2Ds)/2)``,
+  a_up = a_l; requires Ds < 2.5.
+
+All functions are vectorised over the grid (any array shape).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ballscrew.errors import InputError
+from ballscrew.fractal import yan_komvopoulos as yk
+
+__all__ = ["WearModel", "cell_wear_rate", "wear_rate_model_a", "wear_rate_model_c"]
+
+FloatArray = NDArray[np.float64]
+WearModel = Literal["A", "C"]
+
+
+def _check(coefficient: float, cell_area: float, hardness: float) -> None:
+    if not (math.isfinite(coefficient) and coefficient > 0.0):
+        raise InputError("coefficient", coefficient, "a wear coefficient K > 0")
+    if not (math.isfinite(cell_area) and cell_area > 0.0):
+        raise InputError("cell_area", cell_area, "a cell area ΔA > 0 m²")
+    if not (math.isfinite(hardness) and hardness > 0.0):
+        raise InputError("hardness", hardness, "a hardness H > 0 Pa")
+
+
+def _largest_area(
+    force: FloatArray, cell_area: float, Ds: float, G: float, e_star: float, hardness: float
+) -> FloatArray:
+    """a_l of the loaded cells only (F > 0), 0 elsewhere (E5.16)."""
+    a_l = np.zeros_like(force)
+    loaded = force > 0.0
+    if np.any(loaded):
+        a_l[loaded] = yk.largest_area_from_force(
+            force[loaded], cell_area, Ds, G, e_star, hardness, rtol=1e-10
+        )
+    return a_l
+
+
+def _inputs(asperity_pressure: ArrayLike, sliding_speed: ArrayLike) -> tuple[FloatArray, ...]:
+    p = np.asarray(asperity_pressure, dtype=float)
+    v = np.abs(np.asarray(sliding_speed, dtype=float))
+    if p.shape != v.shape:
+        raise InputError("sliding_speed", v.shape, f"an array of the pressure's shape {p.shape}")
+    if not (np.all(np.isfinite(p)) and np.all(p >= 0.0)):
+        raise InputError("asperity_pressure", "array", "finite pressures >= 0 Pa")
+    if not np.all(np.isfinite(v)):
+        raise InputError("sliding_speed", "array", "finite speeds")
+    return p, v
+
+
+def wear_rate_model_a(
+    asperity_pressure: ArrayLike,
+    sliding_speed: ArrayLike,
+    cell_area: float,
+    Ds: float,
+    G: float,
+    e_star: float,
+    hardness: float,
+    coefficient: float,
+    gamma: float = 1.5,
+) -> FloatArray:
+    """Model A cell wear rate ``w = K |Δv| F_p(a_l) / (3 H ΔA)``, (E7.2 / §7.2), m/s.
+
+    Per plastic asperity v = (2/3)π r'³ removed with probability K per encounter of duration
+    2r'/|Δv|, so dv/dt = (K/3) a' |Δv|; integrated over n(a') (E5.10) up to a_w = min(a_l, a_c)
+    this is K|Δv| F_p/(3HΔA) with F_p of (E5.12). Fully plastic cells give Archard's
+    w = K|Δv| p_asp/(3H) (T7.3). T7.1: Ds = 2.4, G = 1e-10 m, ΔA = 100 µm², p_asp = 500 MPa,
+    |Δv| = 2.637e-3 m/s, K = 1e-4, H = 7 GPa → w = 1.328e-9 m/s.
+
+    Args:
+        asperity_pressure: p_asp = ψ p per cell [Pa].
+        sliding_speed: local sliding speed |Δv| per cell [m/s] (sign ignored).
+        cell_area: ΔA [m²]; Ds, G [m], e_star [Pa], hardness [Pa]: the fractal raceway (§5).
+        coefficient: wear coefficient K [-].
+    """
+    _check(coefficient, cell_area, hardness)
+    p, v = _inputs(asperity_pressure, sliding_speed)
+    force = p * cell_area
+    a_l = _largest_area(force, cell_area, Ds, G, e_star, hardness)
+    _, f_plastic = yk.cell_forces(a_l, Ds, G, e_star, hardness, gamma)
+    return coefficient * v * f_plastic / (3.0 * hardness * cell_area)
+
+
+def wear_rate_model_c(
+    asperity_pressure: ArrayLike,
+    sliding_speed: ArrayLike,
+    cell_area: float,
+    Ds: float,
+    G: float,
+    e_star: float,
+    hardness: float,
+    coefficient: float,
+    gamma: float = 1.5,
+) -> FloatArray:
+    """Model C cell wear rate (cap volume, §7.3), m/s; requires Ds < 2.5.
+
+        w = (K |Δv| / ΔA) · √π (Ds−1)/(4(5−2Ds)) · δ_l · √a_l,   δ_l = δ(a_l) (E5.5)
+
+    (a_up = a_l). T7.2: the T7.1 inputs give w = 1.381e-9 m/s with δ_l = 6.246e-8 m.
+    Raises :class:`InputError` for Ds ≥ 2.5, where the sum over small asperities diverges.
+    """
+    _check(coefficient, cell_area, hardness)
+    if not Ds < 2.5:
+        raise InputError("surface dimension", Ds, "Ds = D + 1 < 2.5 for wear Model C (use Model A)")
+    p, v = _inputs(asperity_pressure, sliding_speed)
+    a_l = _largest_area(p * cell_area, cell_area, Ds, G, e_star, hardness)
+    depth = np.where(a_l > 0.0, yk.asperity_interference(a_l, Ds, G, gamma), 0.0)
+    factor = math.sqrt(math.pi) * (Ds - 1.0) / (4.0 * (5.0 - 2.0 * Ds))
+    return coefficient * v / cell_area * factor * depth * np.sqrt(a_l)
+
+
+def cell_wear_rate(
+    model: WearModel,
+    asperity_pressure: ArrayLike,
+    sliding_speed: ArrayLike,
+    cell_area: float,
+    Ds: float,
+    G: float,
+    e_star: float,
+    hardness: float,
+    coefficient: float,
+    gamma: float = 1.5,
+) -> FloatArray:
+    """Wear rate per cell of Model ``"A"`` or ``"C"``, m/s (see the two functions)."""
+    if model == "A":
+        fn = wear_rate_model_a
+    elif model == "C":
+        fn = wear_rate_model_c
+    else:
+        raise InputError("wear.model", model, "'A' or 'C'")
+    return fn(
+        asperity_pressure, sliding_speed, cell_area, Ds, G, e_star, hardness, coefficient, gamma
+    )

@@ -1,0 +1,41 @@
+"""Fixtures of the wear tests: the REF case and a coarse, short variant of it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import ballscrew
+from ballscrew.case import Case
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+REF_PATH = EXAMPLES / "wear_step_stress.toml"
+SPEED = 10.0 * 3.141592653589793 / 3.0  # 100 rpm [rad/s]
+
+
+def short_programme(revolutions: float = 1.0e5) -> list[dict[str, object]]:
+    """The three step-stress loads with ``revolutions`` each."""
+    return [
+        {"axial_load": load, "speed": SPEED, "revolutions": revolutions}
+        for load in (2000.0, 3000.0, 4000.0)
+    ]
+
+
+@pytest.fixture(scope="session")
+def ref_case() -> Case:
+    """examples/wear_step_stress.toml: the REF screw and programme (§10.2, §9.2)."""
+    return ballscrew.load_case(REF_PATH)
+
+
+@pytest.fixture(scope="session")
+def coarse_case() -> Case:
+    """REF on a 12 × 48 grid with 1e5 rev per level and 2e4 rev torque sampling (fast)."""
+    return ballscrew.load_case(
+        REF_PATH,
+        {
+            "wear.grid": [12, 48],
+            "wear.programme": short_programme(),
+            "wear.torque_sampling": 2.0e4,
+        },
+    )

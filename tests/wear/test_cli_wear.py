@@ -1,0 +1,105 @@
+"""``ballscrew wear`` run as a user would: results folder, units, interrupted run resumed."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+from typer.testing import CliRunner
+
+from ballscrew.cli import app
+from ballscrew.commands.wear import checkpoint_path
+
+from .conftest import REF_PATH
+
+runner = CliRunner()
+
+SMALL_WEAR = """[wear]
+model = "A"
+coefficient = 1.304e-4
+grid = [12, 48]
+torque_sampling = 2.5e4
+
+[[wear.programme]]
+axial_load = "2000 N"
+speed = "100 rpm"
+revolutions = 5e4
+
+[[wear.programme]]
+axial_load = "4000 N"
+speed = "100 rpm"
+revolutions = 5e4
+"""
+
+
+def small_case(tmp_path: Path) -> Path:
+    text = REF_PATH.read_text()
+    path = tmp_path / "small.toml"
+    path.write_text(text[: text.index("[wear]")] + SMALL_WEAR)
+    return path
+
+
+def test_wear_writes_a_complete_results_folder(tmp_path) -> None:
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["wear", str(small_case(tmp_path)), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    names = {p.name for p in out.iterdir()}
+    assert {"summary.json", "history.nc", "report.html", "state.npz"} <= names
+    assert {"torque_preload.png", "wear_profiles.png"} <= names
+    assert not checkpoint_path(out).exists()  # removed after success
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["analysis"] == "wear" and summary["complete"]
+    assert summary["revolutions"] == pytest.approx(1e5)
+    h = summary["max_wear_depth"]
+    assert h["unit"] == "m" and 0.0 < h["value"] < 1e-6
+    assert summary["final_preload"]["value"] < summary["initial_preload"]["value"]
+    assert summary["wear_coefficient"]["value"] == pytest.approx(1.304e-4)
+    assert "10.3" in summary["wear_coefficient"]["source"]
+    with xr.open_dataset(out / "history.nc", engine="h5netcdf") as ds:
+        assert ds["wear_depth"].attrs["units"] == "m"
+        assert ds["preload"].attrs["units"] == "N"
+        assert ds["wear_depth"].shape[1:] == (2, 48)
+        np.testing.assert_allclose(ds["max_wear_depth"].values[-1], h["value"])
+        samples = ds["revolutions"].values[ds["torque_sample"].values == 1]
+        np.testing.assert_allclose(samples, [0.0, 2.5e4, 5e4, 7.5e4, 1e5])
+
+
+def test_wear_resumes_a_stopped_run(tmp_path) -> None:
+    from ballscrew import load_case, wear_life
+
+    case_path = small_case(tmp_path)
+    out = tmp_path / "out"
+    state = checkpoint_path(out)
+    wear_life(load_case(case_path), checkpoint=state, max_steps=3)  # "stopped" run
+    result = runner.invoke(app, ["-v", "wear", str(case_path), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    fresh = wear_life(load_case(case_path))
+    with xr.open_dataset(out / "history.nc", engine="h5netcdf") as ds:
+        np.testing.assert_allclose(ds["preload"].values, fresh.preload, rtol=1e-9)
+
+
+def test_wear_bad_case_exits_2(tmp_path) -> None:
+    text = small_case(tmp_path).read_text().replace('model = "A"', 'model = "B"')
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text)
+    result = runner.invoke(app, ["wear", str(bad), "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2
+    assert "wear.model" in result.output
+
+
+def test_checkpoint_of_another_case_is_replaced(tmp_path) -> None:
+    from ballscrew import load_case, wear_life
+    from ballscrew.case import with_overrides
+
+    case_path = small_case(tmp_path)
+    out = tmp_path / "out"
+    other = with_overrides(load_case(case_path), {"wear.coefficient": 3e-4})
+    wear_life(other, checkpoint=checkpoint_path(out), max_steps=2)
+    result = runner.invoke(app, ["wear", str(case_path), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["wear_coefficient"]["value"] == pytest.approx(1.304e-4)
+    assert summary["complete"]
