@@ -20,7 +20,9 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew sweep examples/sweeps/fig13_tcr_vs_axial_load.toml --out $(DEMO)/fig13
 	$(VENV)/bin/ballscrew thermal examples/gao2019_tcr.toml --out $(DEMO)/thermal
 	$(VENV)/bin/ballscrew kinematics examples/wear_step_stress.toml --out $(DEMO)/kinematics
-	@echo "reports in $(DEMO)/: contact, tcr, fig13, thermal, kinematics (each report.html)"
+	$(VENV)/bin/ballscrew wear examples/wear_step_stress.toml --out $(DEMO)/wear
+	$(VENV)/bin/ballscrew surface examples/profiles/synthetic_wm_D1.59_G9e-10.sdf --out $(DEMO)/surface
+	@echo "reports in $(DEMO)/: contact, tcr, fig13, thermal, kinematics, wear, surface (each report.html)"
 
 ## test: create .venv, install, run the test suite
 test: $(STAMP)
@@ -31,6 +33,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_contact.py
 	$(PY) benchmarks/bench_tcr.py
 	$(PY) benchmarks/bench_thermal.py
+	$(PY) benchmarks/bench_wear.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
