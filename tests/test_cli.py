@@ -203,3 +203,26 @@ def test_sweep_file_runs_and_resumes(tmp_path):
     again = run("sweep", sweep_file, "--out", out)
     assert again.exit_code == 0
     assert json.loads((out / "summary.json").read_text())["computed_now"] == 0
+
+
+def test_calibrate_on_the_example_history(tmp_path, wear_case_path):
+    measured = Path(__file__).parents[1] / "examples" / "measured" / "step_stress_torque.csv"
+    out = tmp_path / "cal"
+    result = run(
+        "calibrate", wear_case_path, "--measured", measured, "--out", out, "--fit-torque-scale"
+    )
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    # The synthetic history was made with K = 1.3041e-4 and a torque scale of 1.15.
+    assert summary["wear_coefficient"]["value"] == pytest.approx(1.3041e-4, rel=0.05)
+    assert summary["wear_coefficient_standard_error"]["value"] > 0
+    assert summary["torque_scale"]["value"] == pytest.approx(1.15, rel=0.05)
+    assert summary["rms_residual"]["unit"] == "N*m"
+
+
+def test_calibrate_refuses_a_bad_csv(tmp_path, wear_case_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("revolutions,speed\n0,1\n1,2\n")
+    result = run("calibrate", wear_case_path, "--measured", bad, "--out", tmp_path / "o")
+    assert result.exit_code == 2
+    assert "bad.csv" in result.output and "Traceback" not in result.output

@@ -13,7 +13,16 @@ from typing import Annotated
 import typer
 
 from ballscrew import __version__
-from ballscrew.commands import contact, kinematics, surface, sweep, tcr, thermal, wear
+from ballscrew.commands import (
+    calibrate,
+    contact,
+    kinematics,
+    surface,
+    sweep,
+    tcr,
+    thermal,
+    wear,
+)
 from ballscrew.commands._common import log
 
 app = typer.Typer(
@@ -56,6 +65,7 @@ app.command()(kinematics.kinematics)
 app.command()(thermal.thermal)
 app.command()(surface.surface)
 app.command()(wear.wear)
+app.command()(calibrate.calibrate)
 
 if __name__ == "__main__":  # pragma: no cover
     app()

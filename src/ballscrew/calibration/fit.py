@@ -1,0 +1,519 @@
+"""Least-squares calibration of the wear coefficient K (and the drag-torque scale) to a test bench.
+
+Method
+------
+The wear model is an injected callable ``simulate(K) -> history`` (by default
+:func:`ballscrew.wear.wear_life` on the case with ``wear.coefficient = K``). Its history is
+interpolated linearly (``np.interp``) onto the measured revolutions, and the residuals
+
+    r_i(θ) = (m · y_model(N_i; K) − y_i) / s,      θ = (ln K [, m])
+
+are minimised with :func:`scipy.optimize.least_squares` (trust-region reflective). ``s`` is a
+fixed scale of the data (conditioning only). ``m`` multiplies the model's friction torque and is
+fitted only for torque data with ``fit_torque_scale``: the catalogue drag torque
+T_p = K_T F_p L/(2π) (kinematics-wear.md E9.1) is linear in K_T and the torque does not feed
+back into the wear, so one model run per K serves every m, and the fitted torque scale is
+``m`` times the case's ``wear.torque_scale``. This absorbs seal and lubricant drag (E9.3).
+
+K is fitted as ln K: it is positive, spans decades, and the model responds to it roughly
+multiplicatively (kinematics-wear.md §7.4: K is confounded with the stroke and the revolutions,
+so it is a calibration constant of the whole model, §10.3).
+
+Robust start: a coarse scan in ln K (one decade apart, starting at the case's K, extended
+towards lower residuals until the minimum is bracketed) picks the best decade, with m from its
+closed-form linear least-squares value at each K. Up to two surrogate steps follow (the model's
+values at the data interpolated quadratically in ln K through the three nearest runs, the
+surrogate's sum of squares minimised on a grid, one model run to check it), and least_squares
+starts from the best run, bounded to the decade either side of the scan's best K.
+The ln K column of the Jacobian is a forward difference with a fixed step (default 1e-2,
+i.e. 1 % in K), large enough to step over the numerical noise of a wear model (explicit time
+steps and iterative contact solves: about 3e-5 of the REF wear depth and preload), small enough
+for a truncation error of about 0.5 % of the column; the m column is exact. Model runs are
+cached by K, so a 1-parameter fit takes 8–12 model runs (REF torque, 2 parameters: 8).
+
+Uncertainty (Gauss–Newton / delta method; e.g. Seber & Wild, *Nonlinear Regression*, 1989,
+§2.1): with J the Jacobian of the residuals at the solution, p parameters and n points,
+
+    cov(θ) = RSS/(n − p) · (JᵀJ)⁻¹,   σ_K = K · σ_lnK,   σ_scale = scale₀ · σ_m.
+
+These are the standard errors of a correctly specified model with independent equal-variance
+noise; they do not include the model's own (structural) uncertainty.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.optimize import least_squares
+
+from ballscrew.calibration.measured import MeasuredHistory
+from ballscrew.errors import BallscrewError, ConvergenceError, InputError
+
+__all__ = [
+    "CalibrationError",
+    "CalibrationResult",
+    "WearHistory",
+    "calibrate",
+    "fit_wear_coefficient",
+    "model_values",
+]
+
+#: Attribute of the model history that each measured quantity is compared with.
+HISTORY_FIELD: dict[str, str] = {
+    "friction_torque": "friction_torque",
+    "preload": "preload",
+    "wear_depth": "max_wear_depth",
+}
+
+_LN10 = math.log(10.0)
+_K_MIN, _K_MAX = 1.0e-16, 1.0  # K is a probability per asperity encounter (§7.1)
+
+
+class CalibrationError(BallscrewError, ValueError):
+    """The measured data cannot determine the fitted parameters with this model."""
+
+
+class WearHistory(Protocol):
+    """What the calibration reads from a wear-model history (``ballscrew.wear_life``)."""
+
+    revolutions: Any
+    max_wear_depth: Any
+    preload: Any
+    friction_torque: Any
+
+
+@dataclass(frozen=True)
+class CalibrationResult:
+    """A fitted wear coefficient (and torque scale) with its uncertainty.
+
+    Attributes:
+        quantity: the measured quantity (``friction_torque``, ``preload`` or ``wear_depth``).
+        unit: its SI unit.
+        source: where the measured data came from.
+        wear_coefficient: fitted K.
+        standard_error: standard error of K (delta method from ln K).
+        torque_scale: fitted torque scale (multiplies the catalogue K_T) or the case's value
+            when it was not fitted.
+        torque_scale_error: its standard error, None when not fitted.
+        correlation: correlation of ln K and the torque scale, None when not fitted.
+        rms_residual: root-mean-square of (model − measured), SI unit of the quantity.
+        n_points: number of measured points.
+        parameters: number of fitted parameters (1 or 2).
+        evaluations: number of wear-model runs.
+        initial_coefficient: the K the scan started from.
+        revolutions: measured revolutions.
+        measured: measured values (SI).
+        fitted: the fitted model at the measured revolutions.
+        model_revolutions: revolutions of the fitted model's own history.
+        model_values: the fitted model's history of the quantity (SI).
+        scan: (K, RMS residual) of the coarse scan, in the order evaluated.
+        message: the least-squares solver's termination message.
+    """
+
+    quantity: str
+    unit: str
+    source: str
+    wear_coefficient: float
+    standard_error: float
+    torque_scale: float
+    torque_scale_error: float | None
+    correlation: float | None
+    rms_residual: float
+    n_points: int
+    parameters: int
+    evaluations: int
+    initial_coefficient: float
+    revolutions: NDArray[np.float64]
+    measured: NDArray[np.float64]
+    fitted: NDArray[np.float64]
+    model_revolutions: NDArray[np.float64]
+    model_values: NDArray[np.float64]
+    scan: tuple[tuple[float, float], ...]
+    message: str
+
+    @property
+    def relative_error(self) -> float:
+        """σ_K / K."""
+        return self.standard_error / self.wear_coefficient
+
+    @property
+    def residuals(self) -> NDArray[np.float64]:
+        """Model minus measured at the measured revolutions, SI unit."""
+        return self.fitted - self.measured
+
+
+def model_values(history: WearHistory, quantity: str) -> tuple[np.ndarray, np.ndarray]:
+    """(revolutions, values) of ``quantity`` in a model history, checked and as float arrays."""
+    field = HISTORY_FIELD[quantity]
+    rev = np.asarray(history.revolutions, dtype=np.float64).reshape(-1)
+    val = np.asarray(getattr(history, field), dtype=np.float64).reshape(-1)
+    if rev.size < 2 or rev.shape != val.shape or not np.all(np.isfinite(val)):
+        raise CalibrationError(
+            f"the wear model returned an unusable {field} history "
+            f"({rev.size} revolutions, {val.size} values, finite: {bool(np.all(np.isfinite(val)))})"
+        )
+    if np.any(np.diff(rev) < 0.0):
+        raise CalibrationError("the wear model returned revolutions that decrease")
+    return rev, val
+
+
+class _Objective:
+    """Residuals of the fit with a per-K cache of model runs."""
+
+    def __init__(
+        self,
+        simulate: Callable[[float], WearHistory],
+        data: MeasuredHistory,
+        fit_scale: bool,
+        max_evaluations: int,
+    ) -> None:
+        self.simulate = simulate
+        self.data = data
+        self.fit_scale = fit_scale
+        self.max_evaluations = max_evaluations
+        self.cache: dict[float, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        values = np.abs(data.values)
+        self.scale = float(np.max(values)) if np.max(values) > 0.0 else 1.0
+        self.best_rms = math.inf
+
+    @property
+    def evaluations(self) -> int:
+        return len(self.cache)
+
+    def run(self, ln_k: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(model at the data, model revolutions, model values) for K = exp(ln_k), cached."""
+        key = float(ln_k)
+        if key not in self.cache:
+            if len(self.cache) >= self.max_evaluations:
+                raise ConvergenceError(
+                    "calibration (least squares on ln K)", len(self.cache), self.best_rms, 0.0
+                )
+            rev, val = model_values(self.simulate(math.exp(key)), self.data.quantity)
+            last = self.data.revolutions[-1]
+            if last > rev[-1] * (1.0 + 1e-9) or self.data.revolutions[0] < rev[0]:
+                raise InputError(
+                    f"{self.data.source}: revolutions",
+                    float(last if last > rev[-1] else self.data.revolutions[0]),
+                    f"within the simulated test, {rev[0]:g} to {rev[-1]:g} rev "
+                    "(lengthen the case's load programme)",
+                )
+            at_data = np.interp(self.data.revolutions, rev, val)
+            self.cache[key] = (at_data, rev, val)
+            rms = float(np.sqrt(np.mean((at_data - self.data.values) ** 2)))
+            self.best_rms = min(self.best_rms, rms)
+        return self.cache[key]
+
+    def best_multiplier(self, model: np.ndarray) -> float:
+        """Closed-form m minimising |m·model − data|² (1 when the scale is not fitted)."""
+        if not self.fit_scale:
+            return 1.0
+        denominator = float(model @ model)
+        if denominator <= 0.0:
+            return 1.0
+        return max(float(model @ self.data.values) / denominator, 1e-12)
+
+    def residuals(self, theta: np.ndarray) -> np.ndarray:
+        model = self.run(theta[0])[0]
+        m = theta[1] if self.fit_scale else 1.0
+        return (m * model - self.data.values) / self.scale
+
+    def jacobian(self, theta: np.ndarray, step: float) -> np.ndarray:
+        """Forward difference in ln K (fixed step), exact column in m."""
+        model = self.run(theta[0])[0]
+        shifted = self.run(theta[0] + step)[0]
+        m = theta[1] if self.fit_scale else 1.0
+        columns = [m * (shifted - model) / step / self.scale]
+        if self.fit_scale:
+            columns.append(model / self.scale)
+        return np.column_stack(columns)
+
+    def rms_at(self, ln_k: float) -> tuple[float, float]:
+        """(RMS residual in SI units, best m) at K = exp(ln_k)."""
+        model = self.run(ln_k)[0]
+        m = self.best_multiplier(model)
+        return float(np.sqrt(np.mean((m * model - self.data.values) ** 2))), m
+
+
+def _scan(objective: _Objective, ln_k0: float, max_steps: int) -> tuple[float, list[float]]:
+    """Coarse scan one decade apart until the smallest RMS is bracketed; best ln K and log."""
+    lo, hi = math.log(_K_MIN), math.log(_K_MAX)
+    start = min(max(ln_k0, lo + _LN10), hi - _LN10)
+    points = {x: objective.rms_at(x)[0] for x in (start - _LN10, start, start + _LN10)}
+    for _ in range(max_steps):
+        best = min(points, key=points.__getitem__)
+        if best == min(points):
+            nxt = best - _LN10
+        elif best == max(points):
+            nxt = best + _LN10
+        else:
+            break
+        if not lo <= nxt <= hi:
+            break
+        points[nxt] = objective.rms_at(nxt)[0]
+    best = min(points, key=points.__getitem__)
+    if best in (min(points), max(points)):
+        raise CalibrationError(
+            f"the best fit lies at K = {math.exp(best):.3g}, the end of the scanned range "
+            f"{math.exp(min(points)):.3g}–{math.exp(max(points)):.3g}: the model cannot reach "
+            f"the measured {objective.data.quantity} (check the case, the units and the data)"
+        )
+    return best, sorted(points)
+
+
+def _surrogate_minimum(objective: _Objective, points: list[float]) -> float:
+    """ln K minimising the residual of a quadratic surrogate through three model runs.
+
+    The model's values at the data are interpolated, as vectors, quadratically in ln K
+    (Lagrange) through the three runs ``points``; the sum of squares of this surrogate (with
+    the best torque multiplier at each ln K) is minimised on a dense grid between the outer
+    points. No model run is spent; the model history is smooth in ln K even where the sum of
+    squares is far from a parabola (the preload saturating at 0 for large K).
+    """
+    x = np.asarray(sorted(points))
+    runs = np.stack([objective.run(v)[0] for v in x])
+    grid = np.linspace(x[0], x[-1], 801)
+    basis = np.stack(
+        [
+            (grid - x[(i + 1) % 3])
+            * (grid - x[(i + 2) % 3])
+            / ((x[i] - x[(i + 1) % 3]) * (x[i] - x[(i + 2) % 3]))
+            for i in range(3)
+        ],
+        axis=1,
+    )
+    surrogate = basis @ runs  # (grid, data)
+    y = objective.data.values
+    if objective.fit_scale:
+        norm = np.einsum("ij,ij->i", surrogate, surrogate)
+        m = np.where(norm > 0.0, surrogate @ y / np.where(norm > 0.0, norm, 1.0), 1.0)
+        surrogate = surrogate * np.maximum(m, 1e-12)[:, None]
+    sse = np.sum((surrogate - y) ** 2, axis=1)
+    return float(grid[int(np.argmin(sse))])
+
+
+def _refine(objective: _Objective, best: float, evaluated: list[float], steps: int) -> float:
+    """Up to ``steps`` surrogate steps from the scan; returns the best ln K evaluated."""
+    tried = list(evaluated)
+    for _ in range(steps):
+        nearest = sorted(tried, key=lambda v: abs(v - best))[:3]
+        candidate = _surrogate_minimum(objective, nearest)
+        if any(abs(candidate - v) < 0.01 for v in tried):
+            break
+        tried.append(candidate)
+        if objective.rms_at(candidate)[0] < objective.rms_at(best)[0]:
+            best = candidate
+        else:
+            break
+    return best
+
+
+def fit_wear_coefficient(
+    simulate: Callable[[float], WearHistory],
+    data: MeasuredHistory,
+    *,
+    initial_coefficient: float = 1.0e-4,
+    torque_scale: float = 1.0,
+    fit_torque_scale: bool = False,
+    max_evaluations: int = 40,
+    diff_step: float = 1.0e-2,
+    scan_steps: int = 6,
+    refine_steps: int = 2,
+) -> CalibrationResult:
+    """Fit K (and the torque scale) so that ``simulate(K)`` matches the measured history.
+
+    Args:
+        simulate: the wear model, K → history with ``revolutions`` and the measured quantity
+            (``friction_torque`` N·m, ``preload`` N or ``max_wear_depth`` m).
+        data: the measured history (see :func:`ballscrew.calibration.read_measured`).
+        initial_coefficient: K where the coarse scan starts (the case's value).
+        torque_scale: the torque scale the model's torques were computed with (the case's
+            ``wear.torque_scale``); the fitted scale is reported relative to 1.
+        fit_torque_scale: fit the torque scale too (friction-torque data only).
+        max_evaluations: most model runs allowed; more raises ConvergenceError.
+        diff_step: forward-difference step in ln K for the Jacobian.
+        scan_steps: most decades the scan may extend beyond its first three points.
+        refine_steps: most surrogate steps (one model run each) between scan and least squares.
+
+    Returns:
+        The fit, its standard errors and the fitted curve (see :class:`CalibrationResult`).
+
+    Raises:
+        InputError: the scale is requested for other data than torque, bad arguments, or data
+            beyond the simulated revolutions.
+        CalibrationError: too few points, an unusable model history, a best fit at the end of
+            the scan, or a Jacobian that does not determine the parameters.
+        ConvergenceError: least squares did not converge within ``max_evaluations`` runs.
+    """
+    if fit_torque_scale and data.quantity != "friction_torque":
+        raise InputError(
+            "--fit-torque-scale", True, f"only with friction_torque data (got {data.quantity})"
+        )
+    if not (math.isfinite(initial_coefficient) and _K_MIN < initial_coefficient < _K_MAX):
+        raise InputError("wear.coefficient", initial_coefficient, f"a number in ({_K_MIN}, 1)")
+    if not (math.isfinite(torque_scale) and torque_scale > 0.0):
+        raise InputError("wear.torque_scale", torque_scale, "a number > 0")
+    p = 2 if fit_torque_scale else 1
+    n = len(data)
+    if n <= p:
+        raise CalibrationError(
+            f"{data.source}: {n} points cannot determine {p} parameter(s); give at least {p + 1}"
+        )
+    objective = _Objective(simulate, data, fit_torque_scale, max_evaluations)
+    ln_k, scanned = _scan(objective, math.log(initial_coefficient), scan_steps)
+    scan = tuple((math.exp(x), objective.rms_at(x)[0]) for x in scanned)
+    start = _refine(objective, ln_k, scanned, refine_steps)
+    m0 = objective.rms_at(start)[1]
+    x0 = np.array([start, m0] if fit_torque_scale else [start])
+    lower = [ln_k - _LN10] + ([0.0] if fit_torque_scale else [])
+    upper = [ln_k + _LN10] + ([np.inf] if fit_torque_scale else [])
+    try:
+        solution = least_squares(
+            objective.residuals,
+            x0,
+            jac=lambda theta: objective.jacobian(theta, diff_step),
+            bounds=(lower, upper),
+            method="trf",
+            x_scale=np.ones(p),
+            xtol=1e-4,
+            ftol=1e-6,
+            gtol=1e-8,
+            max_nfev=max_evaluations,
+        )
+    except ConvergenceError as exc:
+        raise ConvergenceError(
+            "calibration (least squares on ln K)", exc.iterations, objective.best_rms, 0.0
+        ) from None
+    if solution.status <= 0:
+        raise ConvergenceError(
+            "calibration (least squares on ln K)",
+            int(solution.nfev),
+            objective.best_rms,
+            0.0,
+        )
+    theta = solution.x
+    if abs(theta[0] - lower[0]) < 1e-9 or abs(theta[0] - upper[0]) < 1e-9:
+        raise CalibrationError(
+            f"least squares stopped at the edge of the bracket K = {math.exp(lower[0]):.3g}–"
+            f"{math.exp(upper[0]):.3g} found by the scan (the data do not constrain K)"
+        )
+    residuals = objective.residuals(theta)
+    jac = objective.jacobian(theta, diff_step)
+    covariance = _covariance(jac, residuals, n, p, data.source)
+    k = math.exp(theta[0])
+    model_at_data, model_rev, model_val = objective.run(theta[0])
+    m = float(theta[1]) if fit_torque_scale else 1.0
+    fitted = m * model_at_data
+    curve = m * model_val
+    for arr in (fitted, curve, model_rev):
+        arr.setflags(write=False)
+    return CalibrationResult(
+        quantity=data.quantity,
+        unit=data.unit,
+        source=data.source,
+        wear_coefficient=k,
+        standard_error=k * math.sqrt(covariance[0, 0]),
+        torque_scale=torque_scale * m,
+        torque_scale_error=torque_scale * math.sqrt(covariance[1, 1]) if p == 2 else None,
+        correlation=(
+            float(covariance[0, 1] / math.sqrt(covariance[0, 0] * covariance[1, 1]))
+            if p == 2
+            else None
+        ),
+        rms_residual=float(np.sqrt(np.mean((fitted - data.values) ** 2))),
+        n_points=n,
+        parameters=p,
+        evaluations=objective.evaluations,
+        initial_coefficient=float(initial_coefficient),
+        revolutions=data.revolutions,
+        measured=data.values,
+        fitted=fitted,
+        model_revolutions=model_rev,
+        model_values=curve,
+        scan=scan,
+        message=str(solution.message),
+    )
+
+
+def _covariance(jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str) -> np.ndarray:
+    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient."""
+    _, singular, vt = np.linalg.svd(jac, full_matrices=False)
+    if (
+        singular.size < p
+        or not np.all(np.isfinite(singular))
+        or singular[-1] <= (1e-10 * max(singular[0], 1e-300))
+    ):
+        raise CalibrationError(
+            f"{source}: the measured history does not determine "
+            + (
+                "the wear coefficient"
+                if p == 1
+                else "both the wear coefficient and the torque scale"
+            )
+            + " (the model is insensitive to them over the measured revolutions; singular values "
+            + ", ".join(f"{s:.2e}" for s in singular)
+            + ")"
+        )
+    variance = float(residuals @ residuals) / (n - p)
+    return variance * (vt.T / singular**2) @ vt
+
+
+def calibrate(
+    case: Any,
+    data: MeasuredHistory,
+    *,
+    model: Callable[[Any], WearHistory] | None = None,
+    fit_torque_scale: bool = False,
+    **options: Any,
+) -> CalibrationResult:
+    """Calibrate the case's wear coefficient to a measured history.
+
+    Each model run is ``model(with_overrides(case, {"wear.coefficient": K}))``; ``model``
+    defaults to :func:`ballscrew.wear.wear_life`. The scan starts at the case's
+    ``wear.coefficient`` (1e-4 if it has none); the torque scale is taken relative to the case's
+    ``wear.torque_scale``. A ``wear.initial_torque`` of the case rescales K_T so that the
+    torque at N = 0 matches it (E9.3): the reported scale is then that effective one,
+    T_0/T_p(F_p0); when the torque scale is fitted, ``initial_torque`` is cleared for the fit.
+    ``options`` go to :func:`fit_wear_coefficient`.
+    """
+    from ballscrew.case import with_overrides
+
+    if model is None:
+        from ballscrew.wear import wear_life
+
+        model = wear_life
+    wear = getattr(case, "wear", None)
+    k0 = getattr(wear, "coefficient", None) or 1.0e-4
+    scale0 = getattr(wear, "torque_scale", None) or 1.0
+    initial_torque = getattr(wear, "initial_torque", None)
+    base: dict[str, Any] = {}
+    if initial_torque is not None:
+        if fit_torque_scale:
+            base["wear.initial_torque"] = None
+        else:
+            scale0 = _initial_torque_scale(case, float(initial_torque))
+
+    def simulate(k: float) -> WearHistory:
+        return model(with_overrides(case, {**base, "wear.coefficient": k}))
+
+    return fit_wear_coefficient(
+        simulate,
+        data,
+        initial_coefficient=float(k0),
+        torque_scale=float(scale0),
+        fit_torque_scale=fit_torque_scale,
+        **options,
+    )
+
+
+def _initial_torque_scale(case: Any, initial_torque: float) -> float:
+    """Effective K_T factor of a case whose drag torque is rescaled to T(0) (E9.1, E9.3)."""
+    from ballscrew.loads import preload_drag_torque
+
+    lead, diameter = case.screw.lead, case.screw.pitch_diameter
+    lead_angle = math.atan2(lead, math.pi * diameter)  # (G2)
+    return initial_torque / preload_drag_torque(case.operating.preload, lead, lead_angle)

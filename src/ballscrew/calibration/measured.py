@@ -1,0 +1,212 @@
+"""Measured life-test histories: a CSV of one quantity against screw revolutions.
+
+File format (``ballscrew calibrate --measured FILE.csv``)::
+
+    # optional comment lines start with '#'
+    revolutions,friction_torque [N*m]
+    0,0.4231
+    48000,0.4016
+    ...
+
+* A header row, then one row per measurement. Columns are separated by commas.
+* ``revolutions`` (screw revolutions since the start of the test, ≥ 0, strictly increasing) and
+  exactly one measured column: ``friction_torque`` (N·m), ``preload`` (N) or ``wear_depth`` (m,
+  the largest wear depth of the screw raceway). Other columns (a time stamp, a sample number)
+  are ignored.
+* A column name may carry a unit in square brackets, ``wear_depth [um]``, ``preload [kN]``; it
+  is converted to SI with :func:`ballscrew.units.to_si`. Without a unit the numbers are SI.
+
+Every problem raises :class:`ballscrew.errors.InputError` naming the file and the column.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ballscrew.errors import InputError
+from ballscrew.units import SI_UNITS, to_si
+
+__all__ = ["QUANTITIES", "MeasuredHistory", "measured_history", "read_measured"]
+
+#: Measured quantities a history may hold: column name → physical kind (see units.SI_UNITS).
+QUANTITIES: dict[str, str] = {
+    "friction_torque": "torque",
+    "preload": "force",
+    "wear_depth": "length",
+}
+
+_HEADER = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(.*)\])?\s*$")
+
+
+@dataclass(frozen=True)
+class MeasuredHistory:
+    """A measured history, in SI units.
+
+    Attributes:
+        revolutions: screw revolutions of each measurement (≥ 0, strictly increasing).
+        values: the measured quantity at each of them, SI unit.
+        quantity: ``"friction_torque"``, ``"preload"`` or ``"wear_depth"``.
+        source: where the data came from (the file name), for messages and reports.
+    """
+
+    revolutions: NDArray[np.float64]
+    values: NDArray[np.float64]
+    quantity: str
+    source: str = "measured data"
+
+    @property
+    def unit(self) -> str:
+        """SI unit of :attr:`values` (pint spelling)."""
+        return SI_UNITS[QUANTITIES[self.quantity]]
+
+    def __len__(self) -> int:
+        return int(self.revolutions.size)
+
+
+def measured_history(
+    revolutions: ArrayLike,
+    values: ArrayLike,
+    quantity: str,
+    source: str = "measured data",
+    min_points: int = 2,
+) -> MeasuredHistory:
+    """Validate arrays (SI) and return them as a read-only :class:`MeasuredHistory`.
+
+    Raises:
+        InputError: unknown quantity, shapes that differ, non-finite numbers, negative or not
+            strictly increasing revolutions, or fewer than ``min_points`` points.
+    """
+    if quantity not in QUANTITIES:
+        raise InputError(f"{source}: quantity", quantity, f"one of {', '.join(QUANTITIES)}")
+    rev = np.array(revolutions, dtype=np.float64).reshape(-1)
+    val = np.array(values, dtype=np.float64).reshape(-1)
+    if rev.shape != val.shape:
+        raise InputError(
+            f"{source}: {quantity}", f"{val.size} values", f"one per revolution count ({rev.size})"
+        )
+    for name, arr in (("revolutions", rev), (quantity, val)):
+        bad = ~np.isfinite(arr)
+        if np.any(bad):
+            row = int(np.flatnonzero(bad)[0])
+            raise InputError(f"{source}: {name} (point {row + 1})", arr[row], "a finite number")
+    if rev.size and rev[0] < 0.0:
+        raise InputError(f"{source}: revolutions (point 1)", float(rev[0]), "a count ≥ 0")
+    steps = np.diff(rev)
+    if np.any(steps <= 0.0):
+        row = int(np.flatnonzero(steps <= 0.0)[0]) + 1
+        raise InputError(
+            f"{source}: revolutions (point {row + 1})",
+            float(rev[row]),
+            f"strictly increasing revolutions (previous point: {rev[row - 1]:g})",
+        )
+    if rev.size < min_points:
+        raise InputError(
+            f"{source}: number of points",
+            int(rev.size),
+            f"at least {min_points} (more points than fitted parameters)",
+        )
+    rev.setflags(write=False)
+    val.setflags(write=False)
+    return MeasuredHistory(revolutions=rev, values=val, quantity=quantity, source=source)
+
+
+def _unit_factor(source: str, name: str, unit: str | None, kind: str) -> float:
+    """Factor that converts numbers in ``unit`` to the SI unit of ``kind`` (1 without unit)."""
+    if unit is None or not unit.strip():
+        return 1.0
+    try:
+        factor = to_si(f"1 {unit.strip()}", kind)
+    except ValueError as exc:
+        raise InputError(f"{source}: column {name!r}", f"[{unit}]", str(exc)) from None
+    if not (math.isfinite(factor) and factor > 0.0):
+        raise InputError(f"{source}: column {name!r}", f"[{unit}]", "a unit with a positive scale")
+    return factor
+
+
+def _parse_header(source: str, header: list[str]) -> dict[str, tuple[int, str | None]]:
+    """Column name → (index, unit or None)."""
+    columns: dict[str, tuple[int, str | None]] = {}
+    for index, cell in enumerate(header):
+        match = _HEADER.match(cell)
+        if match is None:
+            if not cell.strip():
+                continue
+            raise InputError(
+                f"{source}: header column {index + 1}", cell, "a name such as 'wear_depth [um]'"
+            )
+        name, unit = match.group(1), match.group(2)
+        if name in columns:
+            raise InputError(f"{source}: header", name, "each column name once")
+        columns[name] = (index, unit)
+    return columns
+
+
+def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
+    """Read a measured history from a CSV file (format in the module docstring).
+
+    Args:
+        path: the CSV file.
+        min_points: the least number of data rows accepted (the fit needs more points than
+            parameters).
+
+    Returns:
+        The history in SI units, revolutions strictly increasing.
+
+    Raises:
+        InputError: unreadable file, no header, missing ``revolutions`` column, none or more
+            than one measured column, a unit of the wrong dimension, a non-numeric or missing
+            cell, revolutions that are negative or not strictly increasing, too few rows.
+    """
+    path = Path(path)
+    source = path.name
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except OSError as exc:
+        raise InputError("--measured", str(path), f"a readable CSV file ({exc.strerror})") from None
+    except UnicodeDecodeError:
+        raise InputError("--measured", str(path), "a UTF-8 text (CSV) file") from None
+    numbered = [
+        (number, line)
+        for number, line in enumerate(text.splitlines(), start=1)
+        if line.strip() and not line.lstrip().startswith("#")
+    ]
+    if not numbered:
+        raise InputError("--measured", str(path), "a CSV file with a header row and data rows")
+    rows = list(csv.reader(line for _, line in numbered))
+    columns = _parse_header(source, rows[0])
+    if "revolutions" not in columns:
+        raise InputError(
+            f"{source}: header", ",".join(rows[0]), "a 'revolutions' column (screw revolutions)"
+        )
+    measured = [name for name in QUANTITIES if name in columns]
+    allowed = "exactly one of " + ", ".join(QUANTITIES)
+    if len(measured) != 1:
+        raise InputError(f"{source}: measured column", measured or ",".join(rows[0]), allowed)
+    quantity = measured[0]
+    rev_index, rev_unit = columns["revolutions"]
+    if rev_unit is not None and rev_unit.strip() not in ("", "rev", "revolutions", "1"):
+        raise InputError(f"{source}: column 'revolutions'", f"[{rev_unit}]", "no unit or [rev]")
+    val_index, val_unit = columns[quantity]
+    factor = _unit_factor(source, quantity, val_unit, QUANTITIES[quantity])
+    rev: list[float] = []
+    val: list[float] = []
+    for (line_number, _), row in zip(numbered[1:], rows[1:], strict=True):
+        for name, index, store in (("revolutions", rev_index, rev), (quantity, val_index, val)):
+            cell = row[index].strip() if index < len(row) else ""
+            try:
+                number = float(cell)
+            except ValueError:
+                raise InputError(
+                    f"{source}: line {line_number}, column {name!r}", cell, "a number"
+                ) from None
+            store.append(number)
+    return measured_history(
+        rev, np.asarray(val) * factor, quantity, source=source, min_points=min_points
+    )

@@ -1,0 +1,69 @@
+"""``ballscrew calibrate``: fit the wear coefficient to a measured life-test history."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+
+MeasuredOpt = Annotated[
+    Path,
+    typer.Option(
+        "--measured",
+        "-m",
+        help="CSV with a header row: 'revolutions' and one of 'friction_torque' (N*m), "
+        "'preload' (N), 'wear_depth' (m); units in brackets are converted, e.g. 'wear_depth [um]'",
+        dir_okay=False,
+        show_default=False,
+    ),
+]
+
+
+@user_errors_exit_2
+def calibrate(
+    case_file: CaseArg,
+    measured: MeasuredOpt,
+    out: OutOpt = Path("results/calibrate"),
+    fit_torque_scale: Annotated[
+        bool,
+        typer.Option(
+            "--fit-torque-scale",
+            help="also fit the drag-torque scale (friction_torque data only)",
+        ),
+    ] = False,
+) -> None:
+    """Fit the wear coefficient (and the torque scale) to a measured history."""
+    from ballscrew.calibration import calibrate as fit
+    from ballscrew.calibration import read_measured
+    from ballscrew.case import load_case
+    from ballscrew.results import check_output_folder, value
+    from ballscrew.results.calibration_report import write_calibration
+
+    case = load_case(case_file)
+    data = read_measured(measured, min_points=3 if fit_torque_scale else 2)
+    check_output_folder(out)
+    log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
+    result = fit(case, data, fit_torque_scale=fit_torque_scale)
+    log.info(
+        "K = %.4e ± %.2e, torque scale %.4g, RMS residual %.3g %s (%d model runs)",
+        result.wear_coefficient,
+        result.standard_error,
+        result.torque_scale,
+        result.rms_residual,
+        result.unit,
+        result.evaluations,
+    )
+    options: dict[str, object] = {
+        "case_file": str(case_file),
+        "measured_file": str(measured),
+        "fit_torque_scale": fit_torque_scale,
+    }
+    if case.wear is not None:  # K is confounded with these (kinematics-wear.md §7.4)
+        options["wear_model"] = case.wear.model
+        options["stroke"] = value(case.wear.stroke, "m")
+        options["programme_revolutions"] = sum(lv.revolutions for lv in case.wear.programme)
+    folder = write_calibration(result, case.name, out, options)
+    log.info("wrote %s", folder / "report.html")

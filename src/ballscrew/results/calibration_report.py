@@ -1,0 +1,176 @@
+"""Results folder of ``ballscrew calibrate``: summary.json, fit.csv, a plot and report.html."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+from ballscrew.calibration.fit import CalibrationResult
+from ballscrew.results.folder import results_folder
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import value, write_summary
+
+#: Label and display unit (name, factor from SI) of each measured quantity.
+_DISPLAY: dict[str, tuple[str, str, float]] = {
+    "friction_torque": ("friction torque", "N·m", 1.0),
+    "preload": ("preload", "N", 1.0),
+    "wear_depth": ("maximum wear depth", "µm", 1.0e6),
+}
+
+
+def calibration_summary(
+    result: CalibrationResult, case_name: str, options: dict[str, Any] | None = None
+) -> dict[str, Any]:
+    """The fit as a JSON-ready dict (keys required by issue #6 first, then diagnostics)."""
+    return {
+        "analysis": "calibrate",
+        "case": case_name,
+        "wear_coefficient": value(result.wear_coefficient, ""),
+        "wear_coefficient_standard_error": value(result.standard_error, ""),
+        "torque_scale": value(result.torque_scale, ""),
+        "rms_residual": value(result.rms_residual, result.unit),
+        "wear_coefficient_relative_error": value(result.relative_error, ""),
+        "torque_scale_standard_error": (
+            value(result.torque_scale_error, "") if result.torque_scale_error is not None else None
+        ),
+        "torque_scale_fitted": result.torque_scale_error is not None,
+        "correlation_ln_wear_coefficient_torque_scale": result.correlation,
+        "measured": {
+            "file": result.source,
+            "quantity": result.quantity,
+            "unit": result.unit,
+            "points": result.n_points,
+            "first_revolutions": float(result.revolutions[0]),
+            "last_revolutions": float(result.revolutions[-1]),
+        },
+        "fit": {
+            "method": "scipy.optimize.least_squares (trf) on ln K after a coarse decade scan",
+            "parameters": result.parameters,
+            "degrees_of_freedom": result.n_points - result.parameters,
+            "model_evaluations": result.evaluations,
+            "initial_wear_coefficient": value(result.initial_coefficient, ""),
+            "scan": [
+                {"wear_coefficient": k, "rms_residual": value(rms, result.unit)}
+                for k, rms in result.scan
+            ],
+            "message": result.message,
+        },
+        "options": options or {},
+        "note": "K is confounded with the stroke and the revolution count of the case "
+        "(kinematics-wear.md §7.4); quote it with them. Standard errors assume the model is "
+        "right and the noise independent with equal variance.",
+    }
+
+
+def fit_table(result: CalibrationResult) -> str:
+    """CSV text: revolutions, measured, model and residual (SI units)."""
+    unit = result.unit or "1"
+    lines = [f"revolutions,{result.quantity} [{unit}],model [{unit}],residual [{unit}]"]
+    for n, y, f in zip(result.revolutions, result.measured, result.fitted, strict=True):
+        lines.append(f"{n:.10g},{y:.10g},{f:.10g},{f - y:.10g}")
+    return "\n".join(lines) + "\n"
+
+
+def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
+    """Measured points and the fitted model curve against revolutions, residuals below."""
+    label, unit, factor = _DISPLAY[result.quantity]
+    fig, (ax, axr) = plt.subplots(
+        2,
+        1,
+        figsize=(6.8, 5.0),
+        sharex=True,
+        height_ratios=(3, 1),
+        layout="constrained",
+    )
+    ax.plot(
+        result.model_revolutions * 1e-6,
+        result.model_values * factor,
+        "-",
+        color="tab:blue",
+        label=f"model, K = {result.wear_coefficient:.4e} ± {result.standard_error:.2e}"
+        + (
+            f", torque scale {result.torque_scale:.4g} ± {result.torque_scale_error:.2g}"
+            if result.torque_scale_error is not None
+            else ""
+        ),
+    )
+    ax.plot(
+        result.revolutions * 1e-6,
+        result.measured * factor,
+        "o",
+        color="tab:red",
+        markersize=4,
+        label=f"measured ({result.source})",
+    )
+    ax.set_ylabel(f"{label} [{unit}]")
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8)
+    axr.axhline(0.0, color="0.5", linewidth=0.8)
+    axr.plot(result.revolutions * 1e-6, result.residuals * factor, "o", color="tab:red", ms=3)
+    axr.set_xlabel("screw revolutions [10⁶ rev]")
+    axr.set_ylabel(f"model − measured [{unit}]", fontsize=8)
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def write_calibration(
+    result: CalibrationResult,
+    case_name: str,
+    out: str | Path,
+    options: dict[str, Any] | None = None,
+) -> Path:
+    """Write the ``calibrate`` results folder (summary.json, fit.csv, fit.png, report.html)."""
+    label, unit, factor = _DISPLAY[result.quantity]
+    with results_folder(out) as folder:
+        write_summary(folder / "summary.json", calibration_summary(result, case_name, options))
+        (folder / "fit.csv").write_text(fit_table(result), encoding="utf-8")
+        figure = fit_plot(result, f"{case_name}: {label} against revolutions", folder / "fit.png")
+        rows: list[list[object]] = [
+            ["wear coefficient K", result.wear_coefficient],
+            ["standard error of K", result.standard_error],
+            ["relative standard error of K", result.relative_error],
+            [
+                "torque scale" + (" (fitted)" if result.torque_scale_error is not None else ""),
+                result.torque_scale,
+            ],
+        ]
+        if result.torque_scale_error is not None:
+            rows.append(["standard error of the torque scale", result.torque_scale_error])
+            rows.append(["correlation (ln K, torque scale)", result.correlation])
+        rows += [
+            [f"RMS residual [{unit}]", result.rms_residual * factor],
+            ["measured points", result.n_points],
+            ["model evaluations", result.evaluations],
+        ]
+        sections = [
+            Section(
+                "Calibration of the wear coefficient",
+                paragraphs=[
+                    f"The wear model of case {case_name!r} was fitted to the measured {label} "
+                    f"of {result.source} ({result.n_points} points) by nonlinear least squares on "
+                    "ln K (scipy least_squares, trust-region reflective, after a coarse scan "
+                    "one decade apart), the model history interpolated linearly onto the "
+                    "measured revolutions. Standard errors from the Jacobian at the solution: "
+                    "cov = RSS/(n − p)·(JᵀJ)⁻¹, K's by the delta method from ln K.",
+                    "K is confounded with the stroke and the revolution count of the case "
+                    "(kinematics-wear.md §7.4): quote it together with them. The standard "
+                    "errors cover measurement noise only, not the model's own uncertainty.",
+                ],
+                tables=[(["quantity", "value"], rows)],
+                figures=[(figure, f"Measured {label} and the fitted model; residuals below.")],
+            )
+        ]
+        write_report(
+            folder / "report.html",
+            f"Wear calibration: {case_name}",
+            "ballscrew calibrate",
+            sections,
+        )
+    return Path(out).resolve()

@@ -1,0 +1,93 @@
+"""summary.json, fit.csv, plot and report of ``ballscrew calibrate``; the command's plumbing."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+import typer
+from typer.testing import CliRunner
+
+import ballscrew.calibration
+from ballscrew.calibration import fit_wear_coefficient, measured_history
+from ballscrew.commands import calibrate as command
+from ballscrew.results.calibration_report import write_calibration
+
+from .conftest import MEASURED_AT, SyntheticModel, exact
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "measured" / "step_stress_torque.csv"
+REQUIRED = ("wear_coefficient", "wear_coefficient_standard_error", "torque_scale", "rms_residual")
+
+
+def test_results_folder(tmp_path: Path) -> None:
+    rng = np.random.default_rng(0)
+    clean = exact(2.0e-4, MEASURED_AT).max_wear_depth
+    data = measured_history(
+        MEASURED_AT, clean + rng.normal(0.0, 3e-8, clean.size), "wear_depth", source="b.csv"
+    )
+    result = fit_wear_coefficient(SyntheticModel(), data)
+    folder = write_calibration(result, "demo", tmp_path / "out", {"fit_torque_scale": False})
+    assert sorted(p.name for p in folder.iterdir()) == [
+        "fit.csv",
+        "fit.png",
+        "report.html",
+        "summary.json",
+    ]
+    summary = json.loads((folder / "summary.json").read_text())
+    for key in REQUIRED:
+        assert set(summary[key]) == {"value", "unit"}
+    assert summary["wear_coefficient"]["value"] == pytest.approx(result.wear_coefficient)
+    assert summary["wear_coefficient_standard_error"]["value"] == pytest.approx(
+        result.standard_error
+    )
+    assert summary["torque_scale"]["value"] == 1.0
+    assert summary["torque_scale_fitted"] is False
+    assert summary["rms_residual"]["unit"] == "m"
+    assert summary["measured"]["points"] == 31
+    assert summary["fit"]["model_evaluations"] == result.evaluations
+    table = np.loadtxt(folder / "fit.csv", delimiter=",", skiprows=1)
+    np.testing.assert_allclose(table[:, 3], table[:, 2] - table[:, 1], atol=1e-15)
+    assert "Wear calibration: demo" in (folder / "report.html").read_text()
+
+
+def test_command_writes_the_folder(
+    tmp_path: Path, wear_case_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The subcommand with the wear model replaced by the closed-form stand-in."""
+
+    def stand_in(case, data, *, fit_torque_scale=False):
+        return fit_wear_coefficient(SyntheticModel(), data, fit_torque_scale=fit_torque_scale)
+
+    monkeypatch.setattr(ballscrew.calibration, "calibrate", stand_in)
+    app = typer.Typer()
+    app.command()(command.calibrate)
+    out = tmp_path / "cal"
+    args = [str(wear_case_path), "--measured", str(EXAMPLE), "--out", str(out)]
+    run = CliRunner().invoke(app, [*args, "--fit-torque-scale"])
+    assert run.exit_code == 0, run.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["torque_scale_fitted"] is True
+    # the example was made with K = 1.3041e-4 and a torque scale of 1.15 (its header says so)
+    k, sk = (
+        summary["wear_coefficient"]["value"],
+        summary["wear_coefficient_standard_error"]["value"],
+    )
+    assert abs(k - 1.3041e-4) < 3 * sk
+    assert (
+        abs(summary["torque_scale"]["value"] - 1.15)
+        < 3 * (summary["torque_scale_standard_error"]["value"])
+    )
+    assert summary["rms_residual"]["unit"] == "N*m"
+
+    bad = tmp_path / "bad.csv"
+    bad.write_text("revolutions,preload\n0,1500\n0,1400\n")
+    run = CliRunner().invoke(app, [str(wear_case_path), "--measured", str(bad), "-o", str(out)])
+    assert run.exit_code == 2
+    assert "strictly increasing" in run.output
+    run = CliRunner().invoke(
+        app,
+        [str(wear_case_path), "--measured", str(bad).replace("bad", "none"), "-o", str(out)],
+    )
+    assert run.exit_code == 2
