@@ -2,31 +2,13 @@
 
 from __future__ import annotations
 
-import math
 from types import ModuleType
 from typing import Any
 
-import numpy as np
-
 from ballscrew.errors import InputError
+from ballscrew.validation import integer_at_least, positive
 
-
-def positive(name: str, value: float) -> float:
-    """``value`` as a float if it is finite and > 0, else :class:`InputError` naming ``name``."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise InputError(name, value, "a finite number > 0") from None
-    if not (math.isfinite(number) and number > 0.0):
-        raise InputError(name, value, "a finite number > 0")
-    return number
-
-
-def integer_at_least(name: str, value: int, minimum: int) -> int:
-    """``value`` if it is an integer ≥ ``minimum`` (bools excluded), else :class:`InputError`."""
-    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < minimum:
-        raise InputError(name, value, f"an integer ≥ {minimum}")
-    return int(value)
+__all__ = ["finite_grid", "integer_at_least", "positive"]
 
 
 def finite_grid(name: str, array: Any, xp: ModuleType) -> Any:

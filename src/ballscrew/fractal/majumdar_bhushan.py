@@ -24,6 +24,7 @@ from scipy.special import exprel
 
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.fractal.domain_extension import size_distribution_constant, validate_dimension
+from ballscrew.validation import nonnegative_array, positive
 
 __all__ = [
     "asperity_elastic_load",
@@ -41,27 +42,12 @@ __all__ = [
 ]
 
 
-def _positive(field: str, value: float) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(field, value, "a finite number > 0")
-    return out
-
-
-def _nonnegative_array(field: str, value: ArrayLike) -> NDArray[np.float64]:
-    arr = np.asarray(value, dtype=np.float64)
-    bad = ~np.isfinite(arr) | (arr < 0.0)
-    if np.any(bad):
-        raise InputError(field, arr[bad].flat[0], "finite values >= 0")
-    return arr
-
-
 def _surface(D: float, G: float, E_star: float, H: float) -> tuple[float, float, float, float]:
     return (
         validate_dimension(D),
-        _positive("G", G),
-        _positive("E_star", E_star),
-        _positive("H", H),
+        positive("G", G),
+        positive("E_star", E_star),
+        positive("H", H),
     )
 
 
@@ -94,8 +80,8 @@ def profile_rms_roughness(
         σ in m.
     """
     D = validate_dimension(D)
-    G = _positive("G", G)
-    L_u = _positive("sampling_length", sampling_length)
+    G = positive("G", G)
+    L_u = positive("sampling_length", sampling_length)
     if not float(gamma) > 1.0:
         raise InputError("gamma", gamma, "W-M frequency ratio > 1")
     if not float(highest_frequency) > 1.0 / L_u:
@@ -117,8 +103,8 @@ def asperity_interference(a: ArrayLike, *, D: float, G: float) -> NDArray[np.flo
         δ_a in m, same shape as ``a``.
     """
     D = validate_dimension(D)
-    G = _positive("G", G)
-    return G ** (D - 1.0) * _nonnegative_array("a", a) ** ((2.0 - D) / 2.0)
+    G = positive("G", G)
+    return G ** (D - 1.0) * nonnegative_array("a", a) ** ((2.0 - D) / 2.0)
 
 
 def asperity_tip_radius(a: ArrayLike, *, D: float, G: float) -> NDArray[np.float64]:
@@ -133,8 +119,8 @@ def asperity_tip_radius(a: ArrayLike, *, D: float, G: float) -> NDArray[np.float
         R_a in m, same shape as ``a``.
     """
     D = validate_dimension(D)
-    G = _positive("G", G)
-    return _nonnegative_array("a", a) ** (D / 2.0) / (math.pi**2 * G ** (D - 1.0))
+    G = positive("G", G)
+    return nonnegative_array("a", a) ** (D / 2.0) / (math.pi**2 * G ** (D - 1.0))
 
 
 def asperity_elastic_load(
@@ -152,9 +138,9 @@ def asperity_elastic_load(
         f_e in N, same shape as ``a``.
     """
     D = validate_dimension(D)
-    G = _positive("G", G)
-    E_star = _positive("E_star", E_star)
-    a_arr = _nonnegative_array("a", a)
+    G = positive("G", G)
+    E_star = positive("E_star", E_star)
+    a_arr = nonnegative_array("a", a)
     return 4.0 * math.sqrt(math.pi) / 3.0 * E_star * G ** (D - 1.0) * a_arr ** ((3.0 - D) / 2.0)
 
 
@@ -168,7 +154,7 @@ def asperity_plastic_load(a: ArrayLike, *, H: float) -> NDArray[np.float64]:
     Returns:
         f_p in N, same shape as ``a``.
     """
-    return _positive("H", H) * _nonnegative_array("a", a)
+    return positive("H", H) * nonnegative_array("a", a)
 
 
 def _log_critical_area(D: float, G: float, E_star: float, H: float) -> float:
@@ -215,10 +201,10 @@ def size_distribution(a: ArrayLike, a_l: ArrayLike, *, D: float) -> NDArray[np.f
         n(a) in m⁻² (number of spots per unit spot area), broadcast shape.
     """
     D = validate_dimension(D)
-    a_arr = _nonnegative_array("a", a)
+    a_arr = nonnegative_array("a", a)
     if np.any(a_arr == 0.0):
         raise InputError("a", 0.0, "spot areas > 0 (n(a) is singular at a = 0)")
-    al = _nonnegative_array("a_l", a_l)
+    al = nonnegative_array("a_l", a_l)
     c = size_distribution_constant(D)
     n = 0.5 * D * c * al ** (D / 2.0) * a_arr ** (-(D + 2.0) / 2.0)
     return np.where(a_arr <= al, n, 0.0)[()]
@@ -237,7 +223,7 @@ def real_contact_area(a_l: ArrayLike, *, D: float) -> NDArray[np.float64]:
         A_r in m², same shape as ``a_l``.
     """
     D = validate_dimension(D)
-    return D / (2.0 - D) * size_distribution_constant(D) * _nonnegative_array("a_l", a_l)
+    return D / (2.0 - D) * size_distribution_constant(D) * nonnegative_array("a_l", a_l)
 
 
 # --------------------------------------------------------------------------------------------
@@ -321,7 +307,7 @@ def elastic_load(
     Returns:
         P_e in N, same shape as ``a_l``.
     """
-    return _LoadLaw(D, G, E_star, H).components(_nonnegative_array("a_l", a_l))[0][()]
+    return _LoadLaw(D, G, E_star, H).components(nonnegative_array("a_l", a_l))[0][()]
 
 
 def plastic_load(
@@ -344,7 +330,7 @@ def plastic_load(
     Returns:
         P_p in N, same shape as ``a_l``.
     """
-    return _LoadLaw(D, G, E_star, H).components(_nonnegative_array("a_l", a_l))[1][()]
+    return _LoadLaw(D, G, E_star, H).components(nonnegative_array("a_l", a_l))[1][()]
 
 
 def total_load(
@@ -365,7 +351,7 @@ def total_load(
     Returns:
         P in N, same shape as ``a_l``; e.g. P(1e-12 m²) = 0.0276611 N at G = 9e-10 m, D = 1.59.
     """
-    p_e, p_p = _LoadLaw(D, G, E_star, H).components(_nonnegative_array("a_l", a_l))
+    p_e, p_p = _LoadLaw(D, G, E_star, H).components(nonnegative_array("a_l", a_l))
     return (p_e + p_p)[()]
 
 
@@ -409,7 +395,7 @@ def largest_spot_area(
         ConvergenceError: if some element has not converged after ``max_iter`` iterations.
     """
     law = _LoadLaw(D, G, E_star, H)
-    p = _nonnegative_array("load", load)
+    p = nonnegative_array("load", load)
     a_l = np.zeros_like(p)
     pos = p > 0.0
     y = np.log(p[pos])

@@ -31,6 +31,7 @@ from scipy.special import erfc, exprel
 from scipy.special import gamma as gamma_function
 
 from ballscrew.errors import InputError
+from ballscrew.validation import nonnegative_array, positive
 
 __all__ = [
     "SaturatedCellWarning",
@@ -84,26 +85,11 @@ def _dimension(Ds: float) -> float:
     return d
 
 
-def _positive(field: str, value: float) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(field, value, "a finite number > 0")
-    return out
-
-
 def _gamma(gamma: float) -> float:
     g = float(gamma)
     if not (math.isfinite(g) and g > 1.0):
         raise InputError("gamma", gamma, "a frequency density parameter > 1 (usually 1.5)")
     return g
-
-
-def _nonnegative(field: str, value: ArrayLike) -> FloatArray:
-    arr = np.asarray(value, dtype=np.float64)
-    bad = ~np.isfinite(arr) | (arr < 0.0)
-    if np.any(bad):
-        raise InputError(field, arr[bad].flat[0], "finite values >= 0")
-    return arr
 
 
 # ------------------------------------------------------------------------------ surface (§5.2)
@@ -117,7 +103,7 @@ def rms_height(Ds: float, G: float, length: float, gamma: float = 1.5) -> float:
     Summed over all frequency indices n ≥ 0. REF (Ds = 2.4, G = 1e-10 m, L_s = 10 µm):
     σ = 7.254e-8 m (T5.12).
     """
-    d, g, ls, gam = _dimension(Ds), _positive("G", G), _positive("length", length), _gamma(gamma)
+    d, g, ls, gam = _dimension(Ds), positive("G", G), positive("length", length), _gamma(gamma)
     return (
         ls ** (3.0 - d)
         * g ** (d - 2.0)
@@ -136,7 +122,7 @@ def structure_function_constant(profile_dimension: float, G: float, gamma: float
     dp = float(profile_dimension)
     if not (math.isfinite(dp) and 1.0 < dp < 2.0):
         raise InputError("D", profile_dimension, "a profile fractal dimension 1 < D < 2")
-    g, gam = _positive("G", G), _gamma(gamma)
+    g, gam = positive("G", G), _gamma(gamma)
     z = 2.0 * dp - 3.0
     # Γ(z) sin(zπ/2) = Γ(1+z) sin(zπ/2)/z, finite at z = 0.
     if abs(z) < 1e-8:
@@ -154,7 +140,7 @@ def structure_function(
     Fit log S against log τ on a measured, form-removed profile: slope m gives D_p = (4 − m)/2,
     Ds = D_p + 1, and the intercept gives G.
     """
-    tau = _nonnegative("lag", lag)
+    tau = nonnegative_array("lag", lag)
     c = structure_function_constant(profile_dimension, G, gamma)
     return c * tau ** (4.0 - 2.0 * float(profile_dimension))
 
@@ -181,10 +167,10 @@ def weierstrass_mandelbrot_surface(
     defaults to L_s/γ^17 (n_max = 17, as sampled for T5.12). ``x`` and ``y`` broadcast; the
     sum is vectorised over (m, n).
     """
-    d, g, ls, gam = _dimension(Ds), _positive("G", G), _positive("length", length), _gamma(gamma)
+    d, g, ls, gam = _dimension(Ds), positive("G", G), positive("length", length), _gamma(gamma)
     if isinstance(ridges, bool) or int(ridges) != ridges or ridges < 1:
         raise InputError("ridges", ridges, "an integer >= 1")
-    cut = ls / gam**17 if cutoff is None else _positive("cutoff", cutoff)
+    cut = ls / gam**17 if cutoff is None else positive("cutoff", cutoff)
     n_max = int(math.log(ls / cut) / math.log(gam) + 1e-9)
     gen = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
     x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
@@ -205,8 +191,8 @@ def weierstrass_mandelbrot_surface(
 
 def asperity_interference(area: ArrayLike, Ds: float, G: float, gamma: float = 1.5) -> FloatArray:
     """Interference (cap height) δ(a') = 2^(4−Ds) G^(Ds−2) (ln γ)^½ (a'/π)^((3−Ds)/2), (E5.5), m."""
-    d, g, gam = _dimension(Ds), _positive("G", G), _gamma(gamma)
-    a = _nonnegative("area", area)
+    d, g, gam = _dimension(Ds), positive("G", G), _gamma(gamma)
+    a = nonnegative_array("area", area)
     return (
         2.0 ** (4.0 - d)
         * g ** (d - 2.0)
@@ -217,7 +203,7 @@ def asperity_interference(area: ArrayLike, Ds: float, G: float, gamma: float = 1
 
 def asperity_tip_radius(area: ArrayLike, Ds: float, G: float, gamma: float = 1.5) -> FloatArray:
     """Tip radius R(a') = r'²/(2δ) of the spherical cap of base radius r' = √(a'/π), (E5.6), m."""
-    a = _nonnegative("area", area)
+    a = nonnegative_array("area", area)
     with np.errstate(divide="ignore", invalid="ignore"):
         return (a / math.pi) / (2.0 * asperity_interference(a, Ds, G, gamma))
 
@@ -230,8 +216,8 @@ def elastic_coefficient(Ds: float, G: float, E_star: float, gamma: float = 1.5) 
     from Hertz f = (4/3) E* R^½ δ^(3/2) with (E5.5)–(E5.6). Ds = 2.4, G = 1e-10 m,
     E* = 1.1319e11 Pa: C_e = 8.244e6 (T5.2).
     """
-    d, g, gam = _dimension(Ds), _positive("G", G), _gamma(gamma)
-    e = _positive("E_star", E_star)
+    d, g, gam = _dimension(Ds), positive("G", G), _gamma(gamma)
+    e = positive("E_star", E_star)
     return (
         2.0 ** ((11.0 - 2.0 * d) / 2.0)
         * math.sqrt(math.log(gam))
@@ -245,13 +231,13 @@ def asperity_elastic_force(
     area: ArrayLike, Ds: float, G: float, E_star: float, gamma: float = 1.5
 ) -> FloatArray:
     """Elastic (Hertz) force of one asperity f_e(a') = C_e a'^((4−Ds)/2), (E5.7), N."""
-    a = _nonnegative("area", area)
+    a = nonnegative_array("area", area)
     return elastic_coefficient(Ds, G, E_star, gamma) * a ** ((4.0 - _dimension(Ds)) / 2.0)
 
 
 def asperity_plastic_force(area: ArrayLike, H: float) -> FloatArray:
     """Fully plastic force of one asperity f_p(a') = H a', (E5.8), N."""
-    return _positive("H", H) * _nonnegative("area", area)
+    return positive("H", H) * nonnegative_array("area", area)
 
 
 def critical_area(Ds: float, G: float, E_star: float, H: float, gamma: float = 1.5) -> float:
@@ -263,7 +249,7 @@ def critical_area(Ds: float, G: float, E_star: float, H: float, gamma: float = 1
     (T5.1–T5.3).
     """
     d = _dimension(Ds)
-    ratio = elastic_coefficient(d, G, E_star, gamma) / _positive("H", H)
+    ratio = elastic_coefficient(d, G, E_star, gamma) / positive("H", H)
     return ratio ** (2.0 / (d - 2.0))
 
 
@@ -273,8 +259,8 @@ def critical_area(Ds: float, G: float, E_star: float, H: float, gamma: float = 1
 def size_distribution(area: ArrayLike, largest: float, Ds: float) -> FloatArray:
     """n(a') = ((Ds−1)/2) a_l^((Ds−1)/2) a'^(−(Ds+1)/2) for 0 < a' ≤ a_l, else 0, (E5.10), m⁻²."""
     d = _dimension(Ds)
-    a_l = _positive("largest", largest)
-    a = _nonnegative("area", area)
+    a_l = positive("largest", largest)
+    a = nonnegative_array("area", area)
     with np.errstate(divide="ignore"):
         n = 0.5 * (d - 1.0) * a_l ** (0.5 * (d - 1.0)) * a ** (-0.5 * (d + 1.0))
     return np.where((a > 0.0) & (a <= a_l), n, 0.0)
@@ -283,13 +269,13 @@ def size_distribution(area: ArrayLike, largest: float, Ds: float) -> FloatArray:
 def truncated_area(largest: ArrayLike, Ds: float) -> FloatArray:
     """Total truncated area A' = (Ds−1)/(3−Ds) · a_l of a cell, (E5.11), m²."""
     d = _dimension(Ds)
-    return (d - 1.0) / (3.0 - d) * _nonnegative("largest", largest)
+    return (d - 1.0) / (3.0 - d) * nonnegative_array("largest", largest)
 
 
 def max_largest_area(cell_area: float, Ds: float) -> float:
     """Physical limit of a_l, where A' = ΔA: a_l,max = (3−Ds)/(Ds−1) · ΔA, (E5.16), m²."""
     d = _dimension(Ds)
-    return (3.0 - d) / (d - 1.0) * _positive("cell_area", cell_area)
+    return (3.0 - d) / (d - 1.0) * positive("cell_area", cell_area)
 
 
 def _ratio_power(a_c: float, a_l: FloatArray, exponent: float) -> FloatArray:
@@ -313,8 +299,8 @@ def cell_forces(
     is plastic: F_e = 0, F_p = H A'.
     """
     d = _dimension(Ds)
-    a_l = _nonnegative("largest", largest)
-    h = _positive("H", H)
+    a_l = nonnegative_array("largest", largest)
+    h = positive("H", H)
     c_e = elastic_coefficient(d, G, E_star, gamma)
     a_c = critical_area(d, G, E_star, h, gamma)
     elastic_regime = a_l > a_c
@@ -343,7 +329,7 @@ def real_contact_area(
 ) -> FloatArray:
     """Real contact area A_r of a cell (elastic spots count a'/2, plastic ones a'), (E5.13), m²."""
     d = _dimension(Ds)
-    a_l = _nonnegative("largest", largest)
+    a_l = nonnegative_array("largest", largest)
     a_c = critical_area(d, G, E_star, H, gamma)
     ratio = np.minimum(_ratio_power(a_c, a_l, 0.5 * (3.0 - d)), 1.0)
     scale = (d - 1.0) / (3.0 - d) * a_l
@@ -355,7 +341,7 @@ def real_contact_area(
 
 def bearing_ratio(separation: ArrayLike, sigma: float) -> FloatArray:
     """Gaussian bearing ratio Φ(h) = ½ erfc(h/(√2 σ)), the fraction above height h, (E5.15)."""
-    s = _positive("sigma", sigma)
+    s = positive("sigma", sigma)
     return 0.5 * erfc(np.asarray(separation, dtype=float) / (math.sqrt(2.0) * s))
 
 
@@ -384,8 +370,8 @@ def largest_area_from_force(
     a_l,max = (3−Ds)/(Ds−1) ΔA (A' > ΔA) is clamped to it and a :class:`SaturatedCellWarning`
     is issued. Cells with F = 0 give a_l = 0.
     """
-    f = _nonnegative("force", force)
-    cell = _positive("cell_area", cell_area)
+    f = nonnegative_array("force", force)
+    cell = positive("cell_area", cell_area)
     limit = max_largest_area(cell, Ds)
     lo = np.full(f.shape, math.log(1e-30))
     hi = np.full(f.shape, math.log(10.0 * cell))

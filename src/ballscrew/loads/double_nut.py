@@ -20,6 +20,7 @@ from scipy.optimize import brentq
 
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.loads.ball_load import validate_angles, validate_balls
+from ballscrew.validation import positive
 
 __all__ = [
     "NutForces",
@@ -42,13 +43,6 @@ class NutForces(NamedTuple):
     """Axial force of the loaded nut 1 (the nut the external load presses on), N."""
     f2: float
     """Axial force of the unloaded nut 2, N (0 after lift-off)."""
-
-
-def _finite_positive(field: str, value: float, unit: str) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(field, value, f"a finite number > 0 {unit}")
-    return out
 
 
 def _nonnegative_array(field: str, value: ArrayLike, allowed: str) -> NDArray[np.float64]:
@@ -86,7 +80,7 @@ def nut_forces(preload: float, axial_load: float) -> NutForces:
         InputError: if preload <= 0 or axial_load < 0 (or either is not finite).
         ConvergenceError: if Brent's method fails (not expected).
     """
-    f_p = _finite_positive("preload", preload, "N")
+    f_p = positive("preload", preload, "N")
     f_a = float(axial_load)
     if not (math.isfinite(f_a) and f_a >= 0.0):
         raise InputError(
@@ -170,7 +164,7 @@ def nut_axial_compliance(
     """
     beta, alpha = validate_angles(contact_angle, lead_angle)
     n_b = validate_balls(balls)
-    k_sum = _finite_positive("k_a", k_a, "m N^-2/3") + _finite_positive("k_b", k_b, "m N^-2/3")
+    k_sum = positive("k_a", k_a, "m N^-2/3") + positive("k_b", k_b, "m N^-2/3")
     s = math.sin(beta) * math.cos(alpha)
     return k_sum / (s * (n_b * s) ** (2.0 / 3.0))
 
@@ -185,7 +179,7 @@ def nut_axial_deflection(force: ArrayLike, compliance_constant: float) -> NDArra
     Returns:
         δ_a in m, same shape as ``force``.
     """
-    c_a = _finite_positive("compliance_constant", compliance_constant, "m N^-2/3")
+    c_a = positive("compliance_constant", compliance_constant, "m N^-2/3")
     return c_a * _nonnegative_array("force", force, "finite values >= 0 N") ** (2.0 / 3.0)
 
 
@@ -216,8 +210,8 @@ def preload_after_wear(
         F_p' in N, same shape as ``max_wear_depth``; e.g. F_p0 = 1500 N, C_a = 3.749e-8,
         h_max = 1 µm → 899.7 N.
     """
-    f_p0 = _finite_positive("initial_preload", initial_preload, "N")
-    c_a = _finite_positive("compliance_constant", compliance_constant, "m N^-2/3")
+    f_p0 = positive("initial_preload", initial_preload, "N")
+    c_a = positive("compliance_constant", compliance_constant, "m N^-2/3")
     beta, alpha = validate_angles(contact_angle, lead_angle)
     h = _nonnegative_array("max_wear_depth", max_wear_depth, "finite values >= 0 m")
     delta = c_a * f_p0 ** (2.0 / 3.0) - h / (math.sin(beta) * math.cos(alpha))

@@ -11,22 +11,9 @@ import math
 from dataclasses import dataclass
 
 from ballscrew.errors import InputError
+from ballscrew.validation import nonnegative, positive
 
 __all__ = ["FilmThickness", "dimensionless_groups", "hamrock_dowson"]
-
-
-def _positive(field: str, value: float, unit: str) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(field, value, f"a finite number > 0 {unit}")
-    return out
-
-
-def _nonnegative(field: str, value: float, unit: str) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out >= 0.0):
-        raise InputError(field, value, f"a finite number >= 0 {unit}")
-    return out
 
 
 @dataclass(frozen=True)
@@ -62,12 +49,12 @@ def dimensionless_groups(
 
     R_x is the relative radius along the entrainment (rolling) direction.
     """
-    rx, ry = _positive("rx", rx, "m"), _positive("ry", ry, "m")
-    e_prime = _positive("e_prime", e_prime, "Pa")
-    eta = _positive("viscosity", viscosity, "Pa s")
-    alpha = _nonnegative("pressure_viscosity", pressure_viscosity, "1/Pa")
-    u_e = _nonnegative("entrainment_speed", entrainment_speed, "m/s")
-    q = _nonnegative("load", load, "N")
+    rx, ry = positive("rx", rx, "m"), positive("ry", ry, "m")
+    e_prime = positive("e_prime", e_prime, "Pa")
+    eta = positive("viscosity", viscosity, "Pa s")
+    alpha = nonnegative("pressure_viscosity", pressure_viscosity, "1/Pa")
+    u_e = nonnegative("entrainment_speed", entrainment_speed, "m/s")
+    q = nonnegative("load", load, "N")
     return (
         eta * u_e / (e_prime * rx),
         alpha * e_prime,

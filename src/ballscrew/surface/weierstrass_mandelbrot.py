@@ -24,6 +24,7 @@ from numpy.typing import NDArray
 from ballscrew.errors import InputError
 from ballscrew.fractal.domain_extension import validate_dimension
 from ballscrew.surface.profile import MIN_POINTS, Profile, check_spacing
+from ballscrew.validation import positive
 
 __all__ = ["check_gamma", "weierstrass_mandelbrot_profile", "wm_frequency_indices"]
 
@@ -37,13 +38,6 @@ def check_gamma(gamma: float) -> float:
     if not (math.isfinite(value) and value > 1.0):
         raise InputError("gamma", gamma, "W-M frequency ratio γ > 1 (usually 1.5)")
     return value
-
-
-def _positive(name: str, value: float) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(name, value, "a finite number > 0")
-    return out
 
 
 def wm_frequency_indices(
@@ -60,10 +54,10 @@ def wm_frequency_indices(
     γⁿ < ``frequency_max`` (default the Nyquist frequency 1/(2Δx)); frequencies in cycles/m.
     """
     g = check_gamma(gamma)
-    L = _positive("length", length)
+    L = positive("length", length)
     dx = check_spacing(spacing)
-    f_lo = 1.0 / L if frequency_min is None else _positive("frequency_min", frequency_min)
-    f_hi = 0.5 / dx if frequency_max is None else _positive("frequency_max", frequency_max)
+    f_lo = 1.0 / L if frequency_min is None else positive("frequency_min", frequency_min)
+    f_hi = 0.5 / dx if frequency_max is None else positive("frequency_max", frequency_max)
     ln_g = math.log(g)
     n1 = math.ceil(math.log(f_lo) / ln_g - 1e-9)
     n_max = math.ceil(math.log(f_hi) / ln_g - 1e-9) - 1
@@ -107,9 +101,9 @@ def weierstrass_mandelbrot_profile(
         D, G, γ, the indices n₁, n_max and the seed.
     """
     d = validate_dimension(D)
-    g_rough = _positive("G", G)
+    g_rough = positive("G", G)
     g = check_gamma(gamma)
-    L = _positive("length", length)
+    L = positive("length", length)
     dx = check_spacing(spacing)
     if isinstance(profiles, bool) or int(profiles) != profiles or profiles < 1:
         raise InputError("profiles", profiles, "an integer >= 1")

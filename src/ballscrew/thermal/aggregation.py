@@ -19,6 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
 from ballscrew.thermal.element_resistance import ElementTCR, FractalTCRModel, element_tcr
+from ballscrew.validation import positive
 
 __all__ = [
     "DEFAULT_CELL_SIZE",
@@ -35,13 +36,6 @@ __all__ = [
 
 DEFAULT_CELL_SIZE = 8.0e-6
 """Default side Δ_f of the square fractal (TCR) cells, m (§6.5 recommends 6–10 µm)."""
-
-
-def _positive(name: str, value: float, unit: str) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(name, value, f"a finite number > 0 {unit}")
-    return out
 
 
 def _overlap_weights(n_fine: int, fine: float, coarse: float) -> NDArray[np.float64]:
@@ -86,9 +80,9 @@ def rebin_forces(
         Cell forces in N, shape (⌈nx·dx/Δ_f⌉, ⌈ny·dy/Δ_f⌉).
     """
     p = _pressure_field(pressure)
-    dx = _positive("dx", dx, "m")
-    dy = _positive("dy", dy, "m")
-    delta = _positive("cell_size", cell_size, "m")
+    dx = positive("dx", dx, "m")
+    dy = positive("dy", dy, "m")
+    delta = positive("cell_size", cell_size, "m")
     wx = _overlap_weights(p.shape[0], dx, delta)
     wy = _overlap_weights(p.shape[1], dy, delta)
     return wx @ (p * (dx * dy)) @ wy.T
@@ -186,7 +180,7 @@ def contact_tcr(
         raise InputError("partial_cells", partial_cells, f"one of {', '.join(PARTIAL_CELLS)}")
     p = _pressure_field(pressure)
     if cell_size is None:
-        cell = (_positive("dx", dx, "m"), _positive("dy", dy, "m"))
+        cell = (positive("dx", dx, "m"), positive("dy", dy, "m"))
         forces = p * (cell[0] * cell[1])
         in_contact = np.where(p > 0.0, cell[0] * cell[1], 0.0)
     else:
@@ -311,7 +305,7 @@ def heater_power(voltage: ArrayLike, heater_resistance: float) -> NDArray[np.flo
     Returns:
         Q in W.
     """
-    r_h = _positive("heater_resistance", heater_resistance, "Ω")
+    r_h = positive("heater_resistance", heater_resistance, "Ω")
     return np.asarray(voltage, dtype=np.float64) ** 2 / r_h
 
 
@@ -338,7 +332,7 @@ def experimental_tcr(
         R″ in m² K/W (broadcast shape); e.g. ΔT = 3 K, S = 7.19e-6 m², U = 24 V, R_h = 48 Ω
         → 1.798e-6 m² K/W.
     """
-    s = _positive("area", area, "m²")
+    s = positive("area", area, "m²")
     q = heater_power(voltage, heater_resistance)
     if np.any(~np.isfinite(q) | (q <= 0.0)):
         raise InputError("voltage", voltage, "finite, non-zero voltages (V)")

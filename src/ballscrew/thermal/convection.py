@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ballscrew.errors import InputError
+from ballscrew.validation import positive
 
 GRAVITY = 9.81
 """Standard gravity g [m/s²]."""
@@ -33,11 +33,6 @@ class Air:
         return self.kinematic_viscosity / self.prandtl
 
 
-def _positive(name: str, value: float) -> None:
-    if not value > 0.0:
-        raise InputError(name, value, "a value > 0")
-
-
 def rotating_cylinder(diameter: float, speed: float, air: Air = Air()) -> float:
     """h of a cylinder rotating in quiescent air, Kreith (Q5).
 
@@ -47,7 +42,7 @@ def rotating_cylinder(diameter: float, speed: float, air: Air = Air()) -> float:
     for Re_ω < 4.3·10⁵, 0.7 < Pr < 670; beyond that it is extrapolated). ``speed`` ω [rad/s].
     Example (§9.2): d = 40 mm, 1000 r/min → Re = 10545, Nu = 56.97, h = 37.46 W/(m² K).
     """
-    _positive("diameter", diameter)
+    positive("diameter", diameter)
     re = abs(speed) * diameter**2 / air.kinematic_viscosity
     nu = 0.133 * re ** (2.0 / 3.0) * air.prandtl ** (1.0 / 3.0)
     return nu * air.conductivity / diameter
@@ -63,8 +58,8 @@ def horizontal_cylinder_natural(
     (Churchill & Chu, Int. J. Heat Mass Transfer 18 (1975) 1049; valid 10⁻⁵ < Ra < 10¹²).
     Example (§9.2): d = 70 mm, ΔT = 10 K → Ra = 3.14·10⁵, Nu = 10.55, h = 3.96 W/(m² K).
     """
-    _positive("diameter", diameter)
-    _positive("temperature_difference", temperature_difference)
+    positive("diameter", diameter)
+    positive("temperature_difference", temperature_difference)
     ra = (
         GRAVITY
         * temperature_difference
@@ -82,7 +77,7 @@ def flat_plate_laminar(length: float, velocity: float, air: Air = Air()) -> floa
     ``length`` L [m] along the motion, ``velocity`` v [m/s] (the feed speed n·L_lead/60).
     (Pohlhausen; Incropera & DeWitt, Eq. 7.30; laminar for Re_L < 5·10⁵.)
     """
-    _positive("length", length)
+    positive("length", length)
     re = abs(velocity) * length / air.kinematic_viscosity
     nu = 0.664 * math.sqrt(re) * air.prandtl ** (1.0 / 3.0)
     return nu * air.conductivity / length

@@ -41,6 +41,7 @@ from ballscrew.fractal import (
     size_distribution_constant,
     validate_dimension,
 )
+from ballscrew.validation import nonnegative_array, positive, positive_array
 
 __all__ = [
     "GAP_MODELS",
@@ -71,29 +72,6 @@ GAP_MODELS: tuple[str, ...] = (*_GAP_COEFFICIENTS, "two_sigma")
 """Gap-thickness models: mean_cap (T6, default), cap_clearance, interference, two_sigma (§6.4)."""
 
 
-def _positive(name: str, value: float, unit: str) -> float:
-    out = float(value)
-    if not (math.isfinite(out) and out > 0.0):
-        raise InputError(name, value, f"a finite number > 0 {unit}")
-    return out
-
-
-def _positive_array(name: str, value: ArrayLike, unit: str) -> NDArray[np.float64]:
-    arr = np.asarray(value, dtype=np.float64)
-    if not np.all(np.isfinite(arr) & (arr > 0.0)):
-        bad = arr[~(np.isfinite(arr) & (arr > 0.0))].flat[0] if arr.ndim else float(arr)
-        raise InputError(name, bad, f"finite numbers > 0 {unit}")
-    return arr
-
-
-def _nonnegative_array(name: str, value: ArrayLike, unit: str) -> NDArray[np.float64]:
-    arr = np.asarray(value, dtype=np.float64)
-    bad = ~np.isfinite(arr) | (arr < 0.0)
-    if np.any(bad):
-        raise InputError(name, arr[bad].flat[0], f"finite values >= 0 {unit}")
-    return arr
-
-
 # --------------------------------------------------------------------------------------------
 # Building blocks (T1)–(T7)
 # --------------------------------------------------------------------------------------------
@@ -109,8 +87,8 @@ def harmonic_mean_conductivity(lambda_1: float, lambda_2: float) -> float:
     Returns:
         λ_s in W/(m K).
     """
-    l1 = _positive("lambda_1", lambda_1, "W/(m K)")
-    l2 = _positive("lambda_2", lambda_2, "W/(m K)")
+    l1 = positive("lambda_1", lambda_1, "W/(m K)")
+    l2 = positive("lambda_2", lambda_2, "W/(m K)")
     return 2.0 * l1 * l2 / (l1 + l2)
 
 
@@ -124,8 +102,8 @@ def spot_conductance(a: ArrayLike, *, lambda_s: float) -> NDArray[np.float64]:
     Returns:
         g in W/K, same shape as ``a``.
     """
-    lam = _positive("lambda_s", lambda_s, "W/(m K)")
-    return 2.0 * lam * np.sqrt(_nonnegative_array("a", a, "m²") / math.pi)
+    lam = positive("lambda_s", lambda_s, "W/(m K)")
+    return 2.0 * lam * np.sqrt(nonnegative_array("a", a, "m²") / math.pi)
 
 
 def solid_conductance_v2(a_l: ArrayLike, *, D: float, lambda_s: float) -> NDArray[np.float64]:
@@ -146,9 +124,9 @@ def solid_conductance_v2(a_l: ArrayLike, *, D: float, lambda_s: float) -> NDArra
         G_s in W/K, same shape as ``a_l``.
     """
     D = validate_dimension(D)
-    lam = _positive("lambda_s", lambda_s, "W/(m K)")
+    lam = positive("lambda_s", lambda_s, "W/(m K)")
     c = size_distribution_constant(D)
-    a_arr = _nonnegative_array("a_l", a_l, "m²")
+    a_arr = nonnegative_array("a_l", a_l, "m²")
     return 2.0 * lam / math.sqrt(math.pi) * D / (D - 1.0) * c * np.sqrt(a_arr)
 
 
@@ -174,9 +152,9 @@ def solid_conductance_mt(
         G_s in W/K (broadcast shape).
     """
     D = validate_dimension(D)
-    lam = _positive("lambda_s", lambda_s, "W/(m K)")
+    lam = positive("lambda_s", lambda_s, "W/(m K)")
     a_arr, a_s = np.broadcast_arrays(
-        _nonnegative_array("a_l", a_l, "m²"), np.asarray(cutoff_area, dtype=np.float64)
+        nonnegative_array("a_l", a_l, "m²"), np.asarray(cutoff_area, dtype=np.float64)
     )
     if np.any(~np.isfinite(a_s) | (a_s <= 0.0)):
         raise InputError("cutoff_area", cutoff_area, "finite values > 0 m²")
@@ -240,9 +218,9 @@ def gap_thickness(
         InputError: unknown model, bad factor, or missing sampling length.
     """
     D = validate_dimension(D)
-    G = _positive("G", G, "m")
-    fac = _positive("factor", factor, "")
-    a_arr = _nonnegative_array("a_l", a_l, "m²")
+    G = positive("G", G, "m")
+    fac = positive("factor", factor, "")
+    a_arr = nonnegative_array("a_l", a_l, "m²")
     out = np.full(a_arr.shape, np.inf)
     loaded = a_arr > 0.0
     if model == "two_sigma":
@@ -273,9 +251,9 @@ def gap_conductance(
     Returns:
         G_g in W/K (broadcast shape).
     """
-    area = _positive_array("apparent_area", apparent_area, "m²")
-    lam = _positive("lambda_f", lambda_f, "W/(m K)")
-    a_r = _nonnegative_array("real_area", real_area, "m²")
+    area = positive_array("apparent_area", apparent_area, "m²")
+    lam = positive("lambda_f", lambda_f, "W/(m K)")
+    a_r = nonnegative_array("real_area", real_area, "m²")
     lg = np.asarray(thickness, dtype=np.float64)
     if np.any(np.isnan(lg) | (lg <= 0.0)):
         raise InputError("thickness", thickness, "values > 0 m (∞ allowed)")
@@ -297,8 +275,8 @@ def constriction_alleviation_factor(
     Returns:
         The dimensionless divisor, same shape as ``real_area``.
     """
-    area = _positive_array("apparent_area", apparent_area, "m²")
-    ratio = np.minimum(_nonnegative_array("real_area", real_area, "m²") / area, 1.0)
+    area = positive_array("apparent_area", apparent_area, "m²")
+    ratio = np.minimum(nonnegative_array("real_area", real_area, "m²") / area, 1.0)
     return (1.0 - np.sqrt(ratio)) ** 1.5
 
 
@@ -320,11 +298,11 @@ def cooper_mikic_yovanovich_conductance(
         h_c in W/(m² K), same shape as ``pressure``; e.g. λ_s = 40, m = 0.05, σ = 0.2 µm,
         p/H = 0.15 → 2.06e6 W/(m² K).
     """
-    lam = _positive("lambda_s", lambda_s, "W/(m K)")
-    m = _positive("slope", slope, "")
-    s = _positive("sigma", sigma, "m")
-    h = _positive("hardness", hardness, "Pa")
-    p = _nonnegative_array("pressure", pressure, "Pa")
+    lam = positive("lambda_s", lambda_s, "W/(m K)")
+    m = positive("slope", slope, "")
+    s = positive("sigma", sigma, "m")
+    h = positive("hardness", hardness, "Pa")
+    p = nonnegative_array("pressure", pressure, "Pa")
     return 1.25 * lam * (m / s) * (p / h) ** 0.95
 
 
@@ -373,9 +351,9 @@ class FractalTCRModel:
     def __post_init__(self) -> None:
         validate_dimension(self.D)
         for name, unit in (("G", "m"), ("E_star", "Pa"), ("H", "Pa"), ("lambda_f", "W/(m K)")):
-            _positive(name, getattr(self, name), unit)
-        _positive("cutoff_area", self.cutoff_area, "m²")
-        _positive("gap_factor", self.gap_factor, "")
+            positive(name, getattr(self, name), unit)
+        positive("cutoff_area", self.cutoff_area, "m²")
+        positive("gap_factor", self.gap_factor, "")
         if self.variant not in VARIANTS:
             raise InputError("variant", self.variant, f"one of {', '.join(VARIANTS)}")
         if self.gap_model not in GAP_MODELS:
@@ -383,7 +361,7 @@ class FractalTCRModel:
         if self.gap_model == "two_sigma":
             if self.sampling_length is None:
                 raise InputError("sampling_length", None, "a length > 0 m for 'two_sigma'")
-            _positive("sampling_length", self.sampling_length, "m")
+            positive("sampling_length", self.sampling_length, "m")
         lam = harmonic_mean_conductivity(self.lambda_1, self.lambda_2)
         object.__setattr__(self, "lambda_s", lam)
 
@@ -439,8 +417,8 @@ def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRMode
     Returns:
         :class:`ElementTCR` with per-element arrays.
     """
-    p = _nonnegative_array("load", load, "N")
-    area = np.broadcast_to(_positive_array("apparent_area", apparent_area, "m²"), p.shape)
+    p = nonnegative_array("load", load, "N")
+    area = np.broadcast_to(positive_array("apparent_area", apparent_area, "m²"), p.shape)
     a_l = largest_spot_area(p, D=model.D, G=model.G, E_star=model.E_star, H=model.H)
     a_r = np.minimum(real_contact_area(a_l, D=model.D), area)
     l_g = gap_thickness(

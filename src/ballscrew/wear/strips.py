@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
+from ballscrew.validation import positive
 
 __all__ = [
     "depth_per_revolution",
@@ -26,13 +27,6 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 
-def _positive(field: str, value: float, unit: str) -> float:
-    v = float(value)
-    if not (math.isfinite(v) and v > 0.0):
-        raise InputError(field, value, f"a finite value > 0 {unit}")
-    return v
-
-
 def strip_wear_speed(cell_rates: ArrayLike, dx: float) -> FloatArray:
     """Per-ball strip wear speed ``W_j = Σ_i w_ij Δx``, (E8.1), m²/s.
 
@@ -42,7 +36,7 @@ def strip_wear_speed(cell_rates: ArrayLike, dx: float) -> FloatArray:
     w = np.asarray(cell_rates, dtype=float)
     if w.ndim != 2:
         raise InputError("cell_rates", w.shape, "a 2-D array (along the helix, across the groove)")
-    return w.sum(axis=0) * _positive("dx", dx, "m")
+    return w.sum(axis=0) * positive("dx", dx, "m")
 
 
 def working_raceway_length(
@@ -53,9 +47,9 @@ def working_raceway_length(
     ρ_A = r_m − r_b cosβ is the radius of contact A. T8.2 (REF, S = 0.3 m): ρ_A = 17.755 mm,
     one helix turn 112.00 mm, L_w = 3.3601 m.
     """
-    s = _positive("stroke", stroke, "m")
-    lead = _positive("lead", lead, "m")
-    rho = _positive("pitch_radius", pitch_radius, "m") - _positive(
+    s = positive("stroke", stroke, "m")
+    lead = positive("lead", lead, "m")
+    rho = positive("pitch_radius", pitch_radius, "m") - positive(
         "ball_radius", ball_radius, "m"
     ) * math.cos(contact_angle)
     if not rho > 0.0:
@@ -73,14 +67,14 @@ def raceway_depth_rate(strip_speed: ArrayLike, balls: int, raceway_length: float
     return (
         int(balls)
         * np.asarray(strip_speed, dtype=float)
-        / _positive("raceway_length", raceway_length, "m")
+        / positive("raceway_length", raceway_length, "m")
     )
 
 
 def depth_per_revolution(depth_rate: ArrayLike, screw_speed: float) -> FloatArray:
     """Wear depth per screw revolution ``Δh_j = ḣ_j · 2π/ω_s``, (E8.2), m/rev."""
     return np.asarray(depth_rate, dtype=float) * (
-        2.0 * math.pi / _positive("screw_speed", screw_speed, "rad/s")
+        2.0 * math.pi / positive("screw_speed", screw_speed, "rad/s")
     )
 
 
