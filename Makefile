@@ -22,7 +22,8 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew kinematics examples/wear_step_stress.toml --out $(DEMO)/kinematics
 	$(VENV)/bin/ballscrew wear examples/wear_step_stress.toml --out $(DEMO)/wear
 	$(VENV)/bin/ballscrew surface examples/profiles/synthetic_wm_D1.59_G9e-10.sdf --out $(DEMO)/surface
-	@echo "reports in $(DEMO)/: contact, tcr, fig13, thermal, kinematics, wear, surface (each report.html)"
+	$(VENV)/bin/ballscrew index $(DEMO) --title "ballscrew demo: the reference screws"
+	@echo "report: $(DEMO)/index.html (links each analysis's own report.html)"
 
 ## test: create .venv, install, run the test suite
 test: $(STAMP)

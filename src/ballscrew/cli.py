@@ -16,6 +16,7 @@ from ballscrew import __version__
 from ballscrew.commands import (
     calibrate,
     contact,
+    index,
     kinematics,
     surface,
     sweep,
@@ -66,6 +67,7 @@ app.command()(thermal.thermal)
 app.command()(surface.surface)
 app.command()(wear.wear)
 app.command()(calibrate.calibrate)
+app.command()(index.index)
 
 if __name__ == "__main__":  # pragma: no cover
     app()
