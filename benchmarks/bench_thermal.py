@@ -8,7 +8,8 @@ axisymmetric P2 (1 mm) 45.169 °C / 104.68 µm; 1-D network (5 mm) 45.221 °C / 
 
 Tables: (1) axisymmetric FE: unknowns, assembly, steady solve, 90-step transient [s] (best of
 ``repeats``); (2) the 1-D network and a 1000-point sweep of it (steady, and steady + 90-step
-transient per point); (3) ``thermal_field`` end to end on examples/gao2019_tcr.toml.
+transient per point); (3) ``thermal_field`` end to end on examples/gao2019_tcr.toml; (4) the
+3-D hexahedral model, balls smeared over the bore and as 30 helical patches.
 
 Usage: python benchmarks/bench_thermal.py [--quick]
 """
@@ -28,6 +29,7 @@ from ballscrew.thermal.axisymmetric import build_axisymmetric
 from ballscrew.thermal.network import build_network
 from ballscrew.thermal.problem import Convection, RingPart, Solid, ThermalProblem
 from ballscrew.thermal.simulate import simulate
+from ballscrew.thermal.threed import BallPatches, build_threed
 
 STEEL = Solid(45.0, 7850.0, 460.0)
 REPORT = {"axisymmetric": (45.169, 104.68), "network": (45.221, 104.62)}
@@ -127,6 +129,37 @@ def case_table(quick: bool) -> None:
         )
 
 
+def threed_table(repeats: int, quick: bool) -> None:
+    print("\n(4) 3-D FE (scikit-fem, trilinear hexahedra, O-grid), reference screw")
+    print(
+        f"{'mesh':>24} {'unknowns':>9} {'assembly s':>11} {'steady s':>9} {'90 steps s':>11} "
+        f"{'T_max °C':>9} {'ΔL µm':>8}"
+    )
+    meshes = [(32, 3, 0.01, None)]
+    if not quick:
+        meshes += [(48, 4, 0.005, None)]
+    meshes += [(32, 3, 0.005, BallPatches(30, 0.02))]
+    problem = reference()
+    for div, layers, size, patches in meshes:
+        t_build, disc = best(
+            lambda d=div, n=layers, s=size, p=patches: build_threed(
+                problem, s, d, n, patches=None if p is None else [p]
+            ),
+            repeats,
+        )
+        runs = [simulate(disc, 5400.0, 60.0) for _ in range(repeats)]
+        sol = runs[-1]
+        t_asm = t_build + min(r.seconds["assembly"] for r in runs)
+        t_steady = min(r.seconds["steady"] for r in runs)
+        t_transient = min(r.seconds["transient"] for r in runs)
+        label = f"{div}×{layers} {size * 1e3:g} mm " + ("30 patches" if patches else "smeared")
+        print(
+            f"{label:>24} {disc.unknowns:>9d} {t_asm:>11.3f} {t_steady:>9.3f} "
+            f"{t_transient:>11.3f} {20 + sol.max_temperature_rise:>9.3f} "
+            f"{sol.elongation * 1e6:>8.2f}"
+        )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer meshes and sweep points")
@@ -135,6 +168,7 @@ def main() -> None:
     fe_table(repeats, args.quick)
     network_table(repeats, 100 if args.quick else 1000)
     case_table(args.quick)
+    threed_table(1 if args.quick else 2, args.quick)
 
 
 if __name__ == "__main__":

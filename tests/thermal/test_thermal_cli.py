@@ -81,9 +81,20 @@ def test_bad_thermal_value_exits_2(tmp_path, gao_case_path):
     assert not out.exists()
 
 
-def test_3d_model_names_the_missing_extra(tmp_path, gao_case_path):
-    result = run(
-        "thermal", coarse_case(tmp_path, gao_case_path), "--out", tmp_path / "o", "--model", "3d"
+def test_3d_model_writes_its_folder(tmp_path, gao_case_path):
+    coarse_3d = (
+        (
+            'size = "5 mm"',
+            'size = "5 mm"\nsize_3d = "20 mm"\nfar_size_3d = "60 mm"\n'
+            "divisions_3d = 16\nlayers_3d = 2",
+        ),
+        ('duration = "1.5 h"', 'duration = "900 s"'),
     )
-    assert result.exit_code == 2
-    assert "gmsh" in result.output or "3-D" in result.output
+    out = tmp_path / "o"
+    result = run(
+        "thermal", coarse_case(tmp_path, gao_case_path, coarse_3d), "--out", out, "--model", "3d"
+    )
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["model"] == "3d"
+    assert abs(summary["heat_balance"]["relative_error"]) < 1e-6

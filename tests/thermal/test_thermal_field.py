@@ -153,8 +153,6 @@ def test_constriction_limits():
 
 
 def test_model_choice_errors(case):
-    with pytest.raises(InputError, match=r"gmsh|3-D"):
-        bs.thermal_field(case, model="3d")
     with pytest.raises(InputError, match="'axisymmetric', 'network' or '3d'"):
         bs.thermal_field(case, model="fem")
 

@@ -166,11 +166,25 @@ class TransientSpec(Model):
 
 
 class MeshSpec(Model):
-    """Discretisation of the axisymmetric FE model and of the axial network."""
+    """Discretisation of the axisymmetric FE model, the axial network and the 3-D model."""
 
     size: quantity("length", "target element size (both directions)", gt=0) = 0.002
     order: Literal[1, 2] = Field(2, description="Lagrange order of the quadrilateral elements")
     network_cell: quantity("length", "target axial cell length of the 1-D network", gt=0) = 0.005
+    size_3d: quantity(
+        "length", "3-D model: axial element size over the nut and its stroke", gt=0
+    ) = 0.005
+    far_size_3d: quantity(
+        "length", "3-D model: axial element size of the shaft away from the nut", gt=0
+    ) = 0.02
+    divisions_3d: int = Field(
+        48, ge=8, multiple_of=4, description="3-D model: circumferential divisions"
+    )
+    layers_3d: int = Field(4, ge=1, description="3-D model: radial layers of the shaft O-grid")
+    helical_patches: bool = Field(
+        True,
+        description="3-D model: balls as helical contact patches (False: smeared over the bore)",
+    )
 
 
 class SensorSpec(Model):

@@ -6,12 +6,11 @@ convection (Q5/Q6), with the thermal contact resistance of the TCR chain (§7) o
 steady state, the transient from ambient, and the elongation ΔL = α∫ΔT dz (Q7).
 
 Models: ``"axisymmetric"`` (default; 2-D scikit-fem), ``"network"`` (1-D axial, milliseconds)
-and ``"3d"`` (needs the gmsh extra; not part of this release).
+and ``"3d"`` (hexahedra, helical contact patches; :mod:`~ballscrew.thermal.threed`).
 """
 
 from __future__ import annotations
 
-import importlib.util
 import math
 import time as _time
 from dataclasses import dataclass
@@ -239,31 +238,32 @@ def thermal_field(
 ) -> ThermalField:
     """Temperature field and thermal elongation of the ball screw of ``case``.
 
-    ``model``: "axisymmetric" (2-D FE, default), "network" (1-D, fast) or "3d" (needs the
-    ``ballscrew[mesh]`` gmsh extra). ``tcr``: a precomputed :func:`screw_tcr` of the same case
-    (else computed, and cached per contact input). ``transient=False`` skips the transient.
+    ``model``: "axisymmetric" (2-D FE, default), "network" (1-D, fast) or "3d" (3-D FE with
+    the balls as helical contact patches, ``[thermal.mesh]`` ``*_3d`` keys). ``tcr``: a
+    precomputed :func:`screw_tcr` of the same case (else computed, and cached per contact
+    input). ``transient=False`` skips the transient.
     """
     started = _time.perf_counter()
     if model not in MODELS:
         raise InputError("model", model, "'axisymmetric', 'network' or '3d'")
-    if model == "3d":
-        missing = importlib.util.find_spec("gmsh") is None
-        raise InputError(
-            "model",
-            "3d",
-            "'axisymmetric' or 'network': the 3-D model with helical contact patches needs the "
-            + (
-                "gmsh extra (pip install 'ballscrew[mesh]'), which is not installed"
-                if missing
-                else "3-D mesher, which this release does not include yet"
-            ),
-        )
     spec = _spec(case)
     problem, sources, convection, interfaces, speed = build_problem(case, tcr)
     if model == "network":
         from ballscrew.thermal.network import build_network
 
         disc = build_network(problem, spec.mesh.network_cell)
+    elif model == "3d":
+        from ballscrew.thermal.threed import build_threed
+
+        ms = spec.mesh
+        disc = build_threed(
+            problem,
+            ms.size_3d,
+            ms.divisions_3d,
+            ms.layers_3d,
+            ms.far_size_3d,
+            patches=ball_patches(case, problem, tcr) if ms.helical_patches else None,
+        )
     else:
         from ballscrew.thermal.axisymmetric import build_axisymmetric
 
@@ -524,6 +524,37 @@ def build_problem(
     return problem, tuple(sources), tuple(coefficients), tuple(interfaces), feed
 
 
+def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = None) -> tuple:
+    """:class:`~ballscrew.thermal.threed.BallPatches` of each part of ``problem`` (3-D model).
+
+    Loaded balls and Hertz semi-axes of the screw contact from the TCR chain (a, along the
+    rolling direction; b·cos β across the groove projected on the cylinder); with a given R″
+    the balls per nut of the case and mesh-sized patches. Spacers: None.
+    """
+    from ballscrew.thermal.threed import BallPatches
+
+    screw = case.screw
+    beta = ScrewGeometry.from_spec(screw).contact_angle
+    by_index = {}
+    if _spec(case).contact.source == "tcr":
+        tcr = tcr if tcr is not None else _cached_tcr(case)
+        by_index = {n.index: n for n in tcr.nuts}
+    out: list = []
+    k = 0
+    for part in problem.parts:
+        if not part.balls:
+            out.append(None)
+            continue
+        k += 1
+        nut = by_index.get(k)
+        if nut is None:
+            out.append(BallPatches(screw.balls_per_nut, screw.lead))
+            continue
+        h = nut.screw.contact.hertz
+        out.append(BallPatches(nut.balls, screw.lead, (h.a, h.b * math.cos(beta))))
+    return tuple(out)
+
+
 def _solid(material: Any) -> Solid:
     return Solid(material.thermal_conductivity, material.density, material.specific_heat)
 
@@ -597,6 +628,28 @@ def field_dataset(result: ThermalField) -> xr.Dataset:
             element_body=(
                 "element",
                 am.body,
+                {"long_name": "0 = screw shaft, 1 = nut assembly"},
+            ),
+            temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),
+        )
+        if t is not None:
+            data["temperature"] = (
+                ("snapshot_time", "node"),
+                amb + t.snapshots[:, nodal],
+                kelvin("temperature"),
+            )
+    elif disc.model == "3d":
+        m3 = disc.extra["mesh"]
+        nodal = disc.extra["basis"].nodal_dofs[0]
+        coords["node"] = ("node", np.arange(m3.mesh.p.shape[1]))
+        data.update(
+            node_x=("node", m3.mesh.p[0], {"units": "m"}),
+            node_y=("node", m3.mesh.p[1], {"units": "m"}),
+            node_z=("node", m3.mesh.p[2], {"units": "m", "long_name": "axial position"}),
+            element_nodes=(("element", "corner"), m3.mesh.t.T),
+            element_body=(
+                "element",
+                m3.body,
                 {"long_name": "0 = screw shaft, 1 = nut assembly"},
             ),
             temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),
