@@ -35,6 +35,7 @@ from skfem.helpers import dot, grad
 
 from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
+from ballscrew.thermal.fe_assembly import body_and_convection_matrices
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
 TWO_PI = 2.0 * math.pi
@@ -218,19 +219,9 @@ def build_axisymmetric(
     def facet_basis(name: str) -> FacetBasis:
         return FacetBasis(mesh, element, facets=am.facets[name], intorder=intorder)
 
-    conductance = sp.csr_matrix((n, n))
-    capacity = sp.csr_matrix((n, n))
-    for b, solid in ((0, problem.shaft), (1, problem.ring)):
-        cb = Basis(mesh, element, elements=np.nonzero(am.body == b)[0], intorder=intorder)
-        conductance = conductance + solid.conductivity * asm(conduction, cb)
-        capacity = capacity + solid.heat_capacity * asm(mass, cb)
-    for name, h in (
-        ("shaft_ends", conv.screw_ends),
-        ("ring_outer", conv.nut),
-        ("ring_ends", conv.nut_ends),
-    ):
-        if h > 0.0 and am.facets[name].size:
-            conductance = conductance + h * asm(mass, facet_basis(name))
+    conductance, capacity = body_and_convection_matrices(
+        basis, intorder, am.body, am.facets, problem, conduction, mass
+    )
     fb_surface = facet_basis("shaft_surface")
 
     surface_dofs = basis.get_dofs(facets=am.facets["shaft_surface"]).all()

@@ -617,39 +617,22 @@ def field_dataset(result: ThermalField) -> xr.Dataset:
                 {"units": "m", "long_name": "nut stroke offset (resolved stroke)"},
             ),
         )
-    if disc.model == "axisymmetric":
-        am = disc.extra["mesh"]
+    if disc.model in ("axisymmetric", "3d"):
+        fe_mesh = disc.extra["mesh"]
         nodal = disc.extra["basis"].nodal_dofs[0]
-        coords["node"] = ("node", np.arange(am.mesh.p.shape[1]))
-        data.update(
-            node_r=("node", am.mesh.p[0], {"units": "m", "long_name": "radius"}),
-            node_z=("node", am.mesh.p[1], {"units": "m", "long_name": "axial position"}),
-            element_nodes=(("element", "corner"), am.mesh.t.T),
-            element_body=(
-                "element",
-                am.body,
-                {"long_name": "0 = screw shaft, 1 = nut assembly"},
-            ),
-            temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),
+        node_axes = (
+            (("node_r", "radius"), ("node_z", "axial position"))
+            if disc.model == "axisymmetric"
+            else (("node_x", "x"), ("node_y", "y"), ("node_z", "axial position"))
         )
-        if t is not None:
-            data["temperature"] = (
-                ("snapshot_time", "node"),
-                amb + t.snapshots[:, nodal],
-                kelvin("temperature"),
-            )
-    elif disc.model == "3d":
-        m3 = disc.extra["mesh"]
-        nodal = disc.extra["basis"].nodal_dofs[0]
-        coords["node"] = ("node", np.arange(m3.mesh.p.shape[1]))
+        coords["node"] = ("node", np.arange(fe_mesh.mesh.p.shape[1]))
+        for row, (name, long_name) in enumerate(node_axes):
+            data[name] = ("node", fe_mesh.mesh.p[row], {"units": "m", "long_name": long_name})
         data.update(
-            node_x=("node", m3.mesh.p[0], {"units": "m"}),
-            node_y=("node", m3.mesh.p[1], {"units": "m"}),
-            node_z=("node", m3.mesh.p[2], {"units": "m", "long_name": "axial position"}),
-            element_nodes=(("element", "corner"), m3.mesh.t.T),
+            element_nodes=(("element", "corner"), fe_mesh.mesh.t.T),
             element_body=(
                 "element",
-                m3.body,
+                fe_mesh.body,
                 {"long_name": "0 = screw shaft, 1 = nut assembly"},
             ),
             temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),

@@ -60,6 +60,7 @@ from skfem.helpers import dot, grad
 from ballscrew.errors import InputError
 from ballscrew.thermal.axisymmetric import probes
 from ballscrew.thermal.discretisation import Discretisation
+from ballscrew.thermal.fe_assembly import body_and_convection_matrices
 from ballscrew.thermal.mesh3d import Mesh3D, build_mesh3d, circle_angles
 from ballscrew.thermal.problem import AxialGrid, Sensor, ThermalProblem, axial_grid
 
@@ -231,19 +232,9 @@ def build_threed(
     def facet_basis(name: str, order: int = intorder) -> FacetBasis:
         return FacetBasis(mesh, element, facets=m3.facets[name], intorder=order)
 
-    conductance = sp.csr_matrix((n, n))
-    capacity = sp.csr_matrix((n, n))
-    for b, solid in ((0, problem.shaft), (1, problem.ring)):
-        cb = Basis(mesh, element, elements=np.nonzero(m3.body == b)[0], intorder=intorder)
-        conductance = conductance + solid.conductivity * asm(conduction, cb)
-        capacity = capacity + solid.heat_capacity * asm(mass, cb)
-    for name, h in (
-        ("shaft_ends", conv.screw_ends),
-        ("ring_outer", conv.nut),
-        ("ring_ends", conv.nut_ends),
-    ):
-        if h > 0.0 and m3.facets[name].size:
-            conductance = conductance + h * asm(mass, facet_basis(name))
+    conductance, capacity = body_and_convection_matrices(
+        basis, intorder, m3.body, m3.facets, problem, conduction, mass
+    )
     fb_surface = facet_basis("shaft_surface")
 
     surface_dofs = basis.get_dofs(facets=m3.facets["shaft_surface"]).all()
