@@ -27,6 +27,7 @@ demo: $(STAMP)
 
 ## test: create .venv, install, run the test suite
 test: $(STAMP)
+	$(VENV)/bin/ruff check src tests benchmarks
 	$(PY) -m pytest -q
 
 ## bench: run the benchmarks (prints tables; not part of the tests)

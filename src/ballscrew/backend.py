@@ -96,7 +96,12 @@ def fft_threads(points: int | None = None) -> int:
         return max(1, int(env))
     if points is not None and points < THREADED_MIN_POINTS:
         return 1
-    return max(1, min(os.cpu_count() or 1, MAX_FFT_THREADS))
+    return max(1, min(_cpu_count(), MAX_FFT_THREADS))
+
+
+@cache
+def _cpu_count() -> int:
+    return os.cpu_count() or 1
 
 
 _thread_limit = threading.local()
