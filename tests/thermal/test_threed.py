@@ -18,11 +18,10 @@ import ballscrew as bs
 from ballscrew.errors import InputError
 from ballscrew.thermal.axisymmetric import build_axisymmetric
 from ballscrew.thermal.mesh3d import build_mesh3d, disc_section
-from ballscrew.thermal.problem import axial_grid
+from ballscrew.thermal.problem import Sensor, axial_grid
 from ballscrew.thermal.simulate import simulate
 from ballscrew.thermal.threed import (
     BallPatches,
-    Sensor3D,
     axial_grid_3d,
     bore_temperatures,
     build_threed,
@@ -52,8 +51,8 @@ def helical():
     sensors 1 mm outside the bore on the centre of patch 15 and opposite it (θ + π)."""
     theta, z = patch_centres(PATCHES, 0.45, 0.55, 0.75 * 0.005)  # mesh-sized patches
     sensors = (
-        Sensor3D("on patch", "nut", 0.021, float(z[15]), float(theta[15])),
-        Sensor3D("opposite", "nut", 0.021, float(z[15]), float(theta[15]) + math.pi),
+        Sensor("on patch", "nut", 0.021, float(z[15]), float(theta[15])),
+        Sensor("opposite", "nut", 0.021, float(z[15]), float(theta[15]) + math.pi),
     )
     problem = replace(ref.engine_problem(), sensors=sensors)
     return simulate(build_threed(problem, 0.005, 32, 3, patches=[PATCHES]), None)
@@ -236,3 +235,15 @@ def test_time_averaged_stroke_matches_axisymmetric():
     assert sol.heat_balance_error < 1e-9 and sol.transient.heat_balance_error < 1e-6
     assert sol.max_temperature_rise == pytest.approx(ax.max_temperature_rise, rel=2e-2)
     assert sol.elongation == pytest.approx(ax.elongation, rel=2e-2)
+
+
+def test_sensor_angle_comes_from_the_case_file(gao_case_path):
+    case = bs.load_case(
+        gao_case_path,
+        {
+            "thermal.sensors": [
+                {"name": "side", "body": "nut", "r": "30 mm", "z": "500 mm", "theta": "90 deg"}
+            ]
+        },
+    )
+    assert case.thermal.sensors[0].theta == pytest.approx(math.pi / 2)

@@ -188,7 +188,7 @@ class MeshSpec(Model):
 
 
 class SensorSpec(Model):
-    """A named temperature sensor point, in the nut or in the screw (r, z axisymmetric)."""
+    """A named temperature sensor point (r, θ, z), in the nut or in the screw."""
 
     name: str = Field(description="label of the sensor")
     body: Literal["nut", "screw"] = Field(description="body the sensor is fixed to")
@@ -196,6 +196,9 @@ class SensorSpec(Model):
     z: quantity(
         "length", "axial position from the shaft end z = 0 (nut: at its mean position)", ge=0
     )
+    theta: quantity(
+        "angle", 'angle from the x axis ("90 deg" also works); only the 3-D model reads it'
+    ) = 0.0
 
 
 class ThermalSpec(Model):

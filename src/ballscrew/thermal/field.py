@@ -519,7 +519,7 @@ def build_problem(
         bearings=tuple(bands),
         stroke=spec.stroke.length,
         expansion=mats.screw.thermal_expansion,
-        sensors=tuple(Sensor(s.name, s.body, s.r, s.z) for s in spec.sensors),
+        sensors=tuple(Sensor(s.name, s.body, s.r, s.z, s.theta) for s in spec.sensors),
     )
     return problem, tuple(sources), tuple(coefficients), tuple(interfaces), feed
 

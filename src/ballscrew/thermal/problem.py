@@ -90,7 +90,7 @@ class Convection:
 
 @dataclass(frozen=True)
 class Sensor:
-    """A temperature sensor point (r, z) fixed to the screw or to the nut."""
+    """A temperature sensor point (r, θ, z) fixed to the screw or to the nut."""
 
     name: str
     body: Literal["nut", "screw"]
@@ -98,6 +98,8 @@ class Sensor:
     """Radius [m]."""
     z: float
     """Axial position [m]; for the nut, at its mean position."""
+    theta: float = 0.0
+    """Angle from the x axis [rad]; read by the 3-D model, ignored by the axisymmetric ones."""
 
 
 @dataclass(frozen=True)

@@ -62,7 +62,7 @@ from ballscrew.thermal.axisymmetric import probes
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.fe_assembly import body_and_convection_matrices
 from ballscrew.thermal.mesh3d import Mesh3D, build_mesh3d, circle_angles
-from ballscrew.thermal.problem import AxialGrid, Sensor, ThermalProblem, axial_grid
+from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
 
 @BilinearForm
@@ -119,15 +119,6 @@ class BallPatches:
             raise InputError("lead", self.lead, "a lead > 0 m")
         if min(self.semi_axes) < 0.0:
             raise InputError("semi_axes", self.semi_axes, "semi-axes ≥ 0 m")
-
-
-@dataclass(frozen=True)
-class Sensor3D(Sensor):
-    """A sensor point (r, θ, z): the 3-D model reads it at angle ``theta``; the axisymmetric
-    models ignore θ. (A plain :class:`Sensor` is read at θ = 0.)"""
-
-    theta: float = 0.0
-    """Angle θ from the x axis [rad] (the helix starts at θ = phase at the nut's low end)."""
 
 
 def axial_grid_3d(problem: ThermalProblem, size: float, far_size: float) -> AxialGrid:
@@ -430,7 +421,7 @@ def locate(m3: Mesh3D, body: str, points: NDArray[np.float64]) -> NDArray[np.int
 
 def _sensor_point(problem: ThermalProblem, m3: Mesh3D, sensor) -> NDArray[np.float64]:
     """(x, y, z) of a sensor strictly inside its body's polygonal mesh (θ = 0 if not given)."""
-    theta = float(getattr(sensor, "theta", 0.0) or 0.0)
+    theta = sensor.theta
     R, L = problem.shaft_radius, problem.shaft_length
     eps = 1e-9 * L
     shrink = math.cos(math.pi / m3.divisions) * (1.0 - 1e-9)  # inscribed polygon
