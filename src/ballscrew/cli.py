@@ -8,7 +8,8 @@ did not converge) are one line on stderr and exit status 2, never a traceback.
 from __future__ import annotations
 
 import logging
-from typing import Annotated
+import warnings
+from typing import Annotated, TextIO
 
 import typer
 
@@ -56,6 +57,19 @@ def main(
     log.setLevel(level)
     for noisy in ("distributed", "dask"):
         logging.getLogger(noisy).setLevel(logging.DEBUG if verbose else logging.ERROR)
+    warnings.showwarning = _show_warning
+
+
+def _show_warning(
+    message: Warning | str,
+    category: type[Warning],
+    filename: str,
+    lineno: int,
+    file: TextIO | None = None,
+    line: str | None = None,
+) -> None:
+    """Warnings on the command line: one line each, without the source line."""
+    typer.echo(f"warning: {message}", err=True)
 
 
 # One line per subcommand (module ballscrew.commands.<name>, function <name>).

@@ -43,6 +43,7 @@ noise; they do not include the model's own (structural) uncertainty.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Protocol
@@ -497,17 +498,29 @@ def calibrate(
         else:
             scale0 = _initial_torque_scale(case, float(initial_torque))
 
-    def simulate(k: float) -> WearHistory:
-        return model(with_overrides(case, {**base, "wear.coefficient": k}))
+    warned: dict[float, list[warnings.WarningMessage]] = {}
 
-    return fit_wear_coefficient(
+    def simulate(k: float) -> WearHistory:
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            history = model(with_overrides(case, {**base, "wear.coefficient": k}))
+        warned[k] = seen
+        return history
+
+    result = fit_wear_coefficient(
         simulate,
         data,
         initial_coefficient=float(k0),
         torque_scale=float(scale0),
         fit_torque_scale=fit_torque_scale,
         **options,
-    )
+    )  # Warnings of the model at trial K values far from the fit are noise; re-issue only those
+    # of the run nearest the fitted K.
+    if warned:
+        nearest = min(warned, key=lambda k: abs(math.log(k / result.wear_coefficient)))
+        for w in warned[nearest]:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return result
 
 
 def _initial_torque_scale(case: Any, initial_torque: float) -> float:
