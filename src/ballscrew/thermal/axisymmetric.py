@@ -35,7 +35,12 @@ from skfem.helpers import dot, grad
 
 from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
-from ballscrew.thermal.fe_assembly import body_and_convection_matrices
+from ballscrew.thermal.fe_assembly import (
+    BoreInterface,
+    body_and_convection_matrices,
+    interface_terms,
+    twin_dofs,
+)
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
 TWO_PI = 2.0 * math.pi
@@ -234,15 +239,9 @@ def build_axisymmetric(
         dofs = basis.get_dofs(facets=am.facets[f"bore{k}"]).all()
         m_bore = asm(mass, fb)[dofs][:, dofs]
         b_bore = asm(surface, fb)[dofs]
-        locs = basis.doflocs[:, dofs]
-        pairs = []
-        for m in grid.shifts:
-            dist, idx = tree.query(np.c_[locs[0], locs[1] + m * grid.dz])
-            if np.max(dist) > 1e-6 * grid.dz:
-                raise RuntimeError("nut bore and shaft surface DOFs do not align")  # a bug
-            pairs.append(surface_dofs[idx])
-        area = float(b_bore.sum())
-        interfaces.append((part, dofs, m_bore, b_bore, area, pairs))
+        area = float(b_bore.sum())  # smeared balls: uniform density 1/A_bore
+        pairs = twin_dofs(tree, surface_dofs, basis.doflocs[:, dofs], grid.shifts, grid.dz)
+        interfaces.append((part, BoreInterface(dofs, pairs, m_bore / area, b_bore / area)))
 
     bearing_load = np.zeros(n)
     for bearing in problem.bearings:
@@ -269,25 +268,13 @@ def build_axisymmetric(
             return (1.0 - grid.coverage(w.x[1], weights)) * u * v * TWO_PI * w.x[0]
 
         a = conductance + conv.screw * asm(film, fb_surface) if conv.screw > 0 else conductance
-        f = bearing_load.copy()
-        jumps = []
-        for part, dofs, m_bore, b_bore, area, pairs in interfaces:
-            h_c = part.contact_conductance / area
-            f[dofs] += part.nut_heat / area * b_bore
-            nb = dofs.size
-            for k in np.nonzero(weights)[0]:
-                np.add.at(f, pairs[k], weights[k] * part.screw_heat / area * b_bore)
-                if h_c > 0.0:
-                    jump = sp.csr_matrix(
-                        (
-                            np.r_[np.ones(nb), -np.ones(nb)],
-                            (np.r_[np.arange(nb), np.arange(nb)], np.r_[dofs, pairs[k]]),
-                        ),
-                        shape=(nb, n),
-                    )
-                    jumps.append(weights[k] * h_c * (jump.T @ m_bore @ jump))
-        if jumps:
-            a = a + sum(jumps[1:], jumps[0])
+        couplings = [
+            (bore, p.contact_conductance, p.nut_heat, p.screw_heat) for p, bore in interfaces
+        ]
+        jumps, f = interface_terms(n, couplings, weights)
+        f += bearing_load
+        if jumps is not None:
+            a = a + jumps
         return sp.csr_matrix(a), f
 
     shaft_elements = np.nonzero(am.body == 0)[0]

@@ -1,5 +1,8 @@
 """Matrices shared by the finite-element thermal models (axisymmetric and 3-D).
 
+Body conduction and capacity, convection, and the ball-contact coupling between the nut bore and
+the screw surface over the stroke.
+
 Both models hold the screw shaft (body 0) and the nut assembly (body 1) in one scikit-fem mesh,
 each with its own conductivity and heat capacity, and lose heat by convection on the tagged end
 and outer faces. Only their weak forms differ (2πr weighting in the axisymmetric one).
@@ -7,11 +10,13 @@ and outer faces. Only their weak forms differ (2πr weighting in the axisymmetri
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 from numpy.typing import NDArray
+from scipy.spatial import cKDTree
 from skfem import Basis, BilinearForm, FacetBasis, asm
 
 from ballscrew.thermal.problem import ThermalProblem
@@ -49,3 +54,73 @@ def body_and_convection_matrices(
             face = FacetBasis(mesh, element, facets=facets[name], intorder=intorder)
             conductance = conductance + h * asm(mass, face)
     return conductance, capacity
+
+
+@dataclass(frozen=True)
+class BoreInterface:
+    """The nut bore of one nut, ready for the contact coupling of :func:`interface_terms`.
+
+    ``mass`` and ``load`` are the bore's facet mass matrix and load vector weighted by a density
+    that integrates to 1 over the bore (uniform 1/A_bore when the balls are smeared, or one
+    patch per ball), so a conductance in W/K and heat flows in W apply to them directly.
+    """
+
+    dofs: NDArray[np.int64]
+    """Nut-side bore DOFs."""
+    pairs: list[NDArray[np.int64]]
+    """Screw-surface twin of each bore DOF, one array per stroke offset."""
+    mass: sp.csr_matrix
+    """Weighted facet mass matrix on the bore DOFs, ∫ ρ u v dΓ."""
+    load: NDArray[np.float64]
+    """Weighted facet load on the bore DOFs, ∫ ρ v dΓ (sums to 1)."""
+
+
+def twin_dofs(
+    tree: cKDTree,
+    surface_dofs: NDArray[np.int64],
+    bore_locations: NDArray[np.float64],
+    shifts: NDArray[np.int64],
+    dz: float,
+) -> list[NDArray[np.int64]]:
+    """The screw-surface DOF facing each nut-bore DOF, for every stroke offset m·dz.
+
+    ``tree`` indexes the screw-surface DOF locations; ``bore_locations`` has the axial
+    coordinate in its last row. Duplicated interface nodes coincide exactly, so a mismatch is a
+    meshing bug.
+    """
+    pairs = []
+    for m in shifts:
+        shifted = bore_locations.copy()
+        shifted[-1] += m * dz
+        dist, idx = tree.query(shifted.T)
+        if np.max(dist) > 1e-6 * dz:
+            raise RuntimeError("nut bore and shaft surface DOFs do not align")  # a bug
+        pairs.append(surface_dofs[idx])
+    return pairs
+
+
+def interface_terms(
+    n: int,
+    couplings: Sequence[tuple[BoreInterface, float, float, float]],
+    weights: NDArray[np.float64],
+) -> tuple[sp.csr_matrix | None, NDArray[np.float64]]:
+    """Contact coupling and contact heat of the nuts, averaged over the stroke offsets.
+
+    For each (bore, conductance G [W/K], nut-side heat [W], screw-side heat [W]) and each
+    offset k of weight w_k the jump term w_k·G·Jᵀ M J couples bore DOF i to its screw twin
+    (J = +1 on the bore, −1 on the twin), the nut-side heat goes into the bore and w_k of the
+    screw-side heat into the twins. Returns (sum of the jump terms or None, load vector).
+    """
+    f = np.zeros(n)
+    jumps = []
+    for bore, conductance, nut_heat, screw_heat in couplings:
+        f[bore.dofs] += nut_heat * bore.load
+        nb = bore.dofs.size
+        rows = np.r_[np.arange(nb), np.arange(nb)]
+        for k in np.nonzero(weights)[0]:
+            np.add.at(f, bore.pairs[k], weights[k] * screw_heat * bore.load)
+            if conductance > 0.0:
+                values = np.r_[np.ones(nb), -np.ones(nb)]
+                jump = sp.csr_matrix((values, (rows, np.r_[bore.dofs, bore.pairs[k]])), (nb, n))
+                jumps.append(weights[k] * conductance * (jump.T @ bore.mass @ jump))
+    return (sum(jumps[1:], jumps[0]) if jumps else None), f

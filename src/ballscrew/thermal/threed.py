@@ -60,7 +60,12 @@ from skfem.helpers import dot, grad
 from ballscrew.errors import InputError
 from ballscrew.thermal.axisymmetric import probes
 from ballscrew.thermal.discretisation import Discretisation
-from ballscrew.thermal.fe_assembly import body_and_convection_matrices
+from ballscrew.thermal.fe_assembly import (
+    BoreInterface,
+    body_and_convection_matrices,
+    interface_terms,
+    twin_dofs,
+)
 from ballscrew.thermal.mesh3d import Mesh3D, build_mesh3d, circle_angles
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
@@ -273,17 +278,11 @@ def build_threed(
             }
         m_bore = asm(weighted_mass, fb, c=density)[dofs][:, dofs]
         b_bore = np.asarray(asm(weighted_load, fb, c=density))[dofs]
-        locs = basis.doflocs[:, dofs]
-        pairs = []
-        for m in grid.shifts:
-            dist, idx = tree.query(np.c_[locs[0], locs[1], locs[2] + m * grid.dz])
-            if np.max(dist) > 1e-6 * grid.dz:
-                raise RuntimeError("nut bore and shaft surface DOFs do not align")  # a bug
-            pairs.append(surface_dofs[idx])
+        pairs = twin_dofs(tree, surface_dofs, basis.doflocs[:, dofs], grid.shifts, grid.dz)
         info["dofs"] = dofs
         info["pairs"] = pairs
         patch_info.append(info)
-        interfaces.append((part, dofs, m_bore, b_bore, pairs))
+        interfaces.append((part, BoreInterface(dofs, pairs, m_bore, b_bore)))
 
     bearing_load = np.zeros(n)
     for bearing in problem.bearings:
@@ -307,25 +306,13 @@ def build_threed(
             return (1.0 - grid.coverage(w.x[2], weights)) * u * v
 
         a = conductance + conv.screw * asm(film, fb_surface) if conv.screw > 0 else conductance
-        f = bearing_load.copy()
-        jumps = []
-        for part, dofs, m_bore, b_bore, pairs in interfaces:
-            g_c = part.contact_conductance
-            f[dofs] += part.nut_heat * b_bore
-            nb = dofs.size
-            for k in np.nonzero(weights)[0]:
-                np.add.at(f, pairs[k], weights[k] * part.screw_heat * b_bore)
-                if g_c > 0.0:
-                    jump = sp.csr_matrix(
-                        (
-                            np.r_[np.ones(nb), -np.ones(nb)],
-                            (np.r_[np.arange(nb), np.arange(nb)], np.r_[dofs, pairs[k]]),
-                        ),
-                        shape=(nb, n),
-                    )
-                    jumps.append(weights[k] * g_c * (jump.T @ m_bore @ jump))
-        if jumps:
-            a = a + sum(jumps[1:], jumps[0])
+        couplings = [
+            (bore, p.contact_conductance, p.nut_heat, p.screw_heat) for p, bore in interfaces
+        ]
+        jumps, f = interface_terms(n, couplings, weights)
+        f += bearing_load
+        if jumps is not None:
+            a = a + jumps
         return sp.csr_matrix(a), f
 
     shaft_elements = np.nonzero(m3.body == 0)[0]
