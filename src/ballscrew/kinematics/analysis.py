@@ -135,8 +135,14 @@ def run_kinematics(
         low_speed = omega if omega > 0 else float(positive.min()) if positive.size else 1.0
         high_speed = float(max(speeds.max(), low_speed))
         _, f1, s1 = nut_loads(case)[0]
-        low = contact_fields(case, model, solve_ball(model, low_speed, f1, s1, lvl))
-        high = contact_fields(case, model, solve_ball(model, high_speed, f1, s1, lvl))
+
+        def nut1_fields(speed: float) -> ContactFields:
+            """Nut 1 at ``speed``: the case-speed solution when it is the same problem."""
+            if speed == omega:
+                return fields
+            return contact_fields(case, model, solve_ball(model, speed, f1, s1, lvl))
+
+        low, high = nut1_fields(low_speed), nut1_fields(high_speed)
         sweep = speed_sweep(case, speeds, lvl)
         free = _no_load(case)
         no_load = np.array([_model_torque(model, free, float(w), lvl) for w in speeds])
