@@ -13,9 +13,9 @@ thermal contact resistance and parameter sweeps, in SI units throughout.
 __version__ = "0.1.0"
 
 from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units
+from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.case import load_case
-from ballscrew.kinematics import ball_kinematics, drag_torque
 from ballscrew.loads import nut_forces
 from ballscrew.thermal.field import thermal_field
 from ballscrew.wear import wear_life

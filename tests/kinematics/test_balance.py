@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 import ballscrew
+from ballscrew.analyses.kinematics import ball_model
 from ballscrew.errors import InputError
-from ballscrew.kinematics import ball_drag, ball_model, solve_ball
+from ballscrew.kinematics import ball_drag, solve_ball
 
 from .conftest import RPM, updated
 
@@ -177,7 +178,7 @@ def test_level2_standstill_is_the_slow_limit(ref_case):
 
 
 def test_bad_input_before_any_work(ref_case, monkeypatch):
-    import ballscrew.kinematics.api as api
+    import ballscrew.analyses.kinematics as api
 
     def forbidden(*args, **kwargs):
         raise AssertionError("work started before the input was checked")

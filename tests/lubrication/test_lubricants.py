@@ -4,10 +4,16 @@ from __future__ import annotations
 
 import pytest
 
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import load_case
 from ballscrew.errors import InputError
-from ballscrew.kinematics.model import case_lubricant
 from ballscrew.lubrication import LUBRICANTS, lubricant
+
+
+def case_lubricant(case):
+    """(η₀, α_p) of a case, as every analysis sees them."""
+    lubrication = ScrewParameters.from_case(case).lubrication
+    return lubrication.viscosity, lubrication.pressure_viscosity
 
 
 def test_iso_grades_follow_iso_3448_midpoints():

@@ -170,7 +170,8 @@ def test_drag_torque_sources(case, tcr):
     balls = [s for s in given.sources if "balls" in s.name]
     assert sum(s.torque for s in balls) == pytest.approx(0.2)
     assert sum(s.heat for s in balls) == pytest.approx(0.2 * 1000 * RPM)
-    kinematics = pytest.importorskip("ballscrew.kinematics.api")
+    from ballscrew.analyses import kinematics
+
     computed = bs.thermal_field(
         with_overrides(case, {"thermal.drag_torque.source": "kinematics"}),
         "network",

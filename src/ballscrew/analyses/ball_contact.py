@@ -1,26 +1,22 @@
 """Contact of one ball with the screw raceway (A) and the nut raceway (B).
 
-The chain of the contact-tcr reference (§1–§4, §8.1): case → screw geometry → axial force on the
-loaded nut → ball load Q (Q1) → exact (or quadratic) raceway gap → Polonsky–Keer on DC-FFT,
-with the exact elliptical Hertz and Hamrock–Brewe solutions alongside for comparison.
+case → :class:`ScrewParameters` → axial force on the loaded nut → ball load Q → exact (or
+quadratic) raceway gap → Polonsky–Keer on DC-FFT, with the exact elliptical Hertz and
+Hamrock–Brewe solutions alongside for comparison (theory manual: *Geometry*, *Contact*).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 
+from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.case import Case, NumericsSpec
 from ballscrew.contact import hamrock_brewe, hertz, solve_contact
-from ballscrew.contact.elastic import composite_modulus
 from ballscrew.contact.hertz import HertzContact
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
-from ballscrew.loads import ball_load, nut_forces
-
-Side = Literal["screw", "nut"]
-SIDES: tuple[Side, Side] = ("screw", "nut")
 
 
 @dataclass(frozen=True)
@@ -78,22 +74,6 @@ class BallContacts:
         return self.screw if side == "screw" else self.nut
 
 
-def contact_modulus(case: Case, side: Side) -> float:
-    """E* of the ball against the screw or nut material (K1)."""
-    ball, race = case.materials.ball, getattr(case.materials, side)
-    return composite_modulus(
-        ball.youngs_modulus, ball.poissons_ratio, race.youngs_modulus, race.poissons_ratio
-    )
-
-
-def loaded_nut_force(case: Case) -> float:
-    """Axial force on the loaded nut: (P1)–(P3) for a double nut, F_p + F_a for a single one."""
-    op = case.operating
-    if case.screw.nuts == 2:
-        return nut_forces(op.preload, op.axial_load)[0]
-    return op.preload + op.axial_load
-
-
 def solve_raceway_contact(
     geometry: ScrewGeometry,
     side: Side,
@@ -139,14 +119,17 @@ def solve_raceway_contact(
 
 def solve_ball_contacts(case: Case) -> BallContacts:
     """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads."""
-    geometry = ScrewGeometry.from_spec(case.screw)
-    force = loaded_nut_force(case)
-    q = ball_load(force, case.screw.balls_per_nut, geometry.contact_angle, geometry.lead_angle)
+    params = ScrewParameters.from_case(case)
+    nut = params.loaded_nut
     contacts = {
-        side: solve_raceway_contact(geometry, side, q, contact_modulus(case, side), case.numerics)
+        side: solve_raceway_contact(
+            params.geometry, side, nut.ball_load, params.contact_modulus(side), case.numerics
+        )
         for side in SIDES
     }
-    return BallContacts(case, geometry, force, q, contacts["screw"], contacts["nut"])
+    return BallContacts(
+        case, params.geometry, nut.force, nut.ball_load, contacts["screw"], contacts["nut"]
+    )
 
 
 def contact_scalars(case: Case) -> dict[str, tuple[float, str]]:

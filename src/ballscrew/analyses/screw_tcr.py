@@ -1,9 +1,9 @@
-"""Thermal contact resistance of a (double-nut) ball screw, Gao, Wang & Liu (2019).
+"""Thermal contact resistance of a (double-nut) ball screw, after Gao, Wang & Liu (2019).
 
-The chain of contact-tcr.md §7.1: nut forces under preload and axial load (P1)–(P3) → ball load
-(Q1) → contact pressure at the screw (A) and nut (B) contacts → fractal element resistances on
-Δ_f cells (§5–§6) → elements in parallel (A1), screw and nut contact in series per ball (A2),
-balls and nuts in parallel (A3) → unit-area value R″ = R·S (A4).
+Nut forces under preload and axial load → ball load → contact pressure at the screw (A) and nut
+(B) contacts → fractal element resistances on Δ_f cells → elements in parallel, screw and nut
+contact in series per ball, balls and nuts in parallel → unit-area value R″ = R·S (theory
+manual: *Contact resistance*).
 
 Every ball of a nut carries the same load (the paper's assumption). The two nuts load opposite
 flanks; the flank mirrors the gap (h₋₁(x, y) = h₊₁(−x, −y)) and leaves the resistance unchanged,
@@ -14,19 +14,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
-from ballscrew.analyses.ball_contact import (
-    SIDES,
-    RacewayContact,
-    Side,
-    contact_modulus,
-    solve_raceway_contact,
-)
-from ballscrew.case import Case
+from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
+from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
+from ballscrew.case import Case, TCRSpec
 from ballscrew.errors import InputError
-from ballscrew.geometry import ScrewGeometry
-from ballscrew.loads import ball_load, nut_forces, preloaded_axial_stiffness
+from ballscrew.loads import preloaded_axial_stiffness
 from ballscrew.thermal import (
     ContactTCR,
     FractalTCRModel,
@@ -112,22 +104,25 @@ class ScrewTCR:
         return self.resistance * self.apparent_area
 
 
-def tcr_model(case: Case, side: Side, variant: str | None = None) -> FractalTCRModel:
-    """Fractal TCR parameters of the ball against the ``side`` raceway, from the case."""
-    if case.surface.ball is not None:
+def tcr_model(
+    params: ScrewParameters, options: TCRSpec, side: Side, variant: str | None = None
+) -> FractalTCRModel:
+    """Fractal TCR parameters of the ball against the ``side`` raceway.
+
+    ``variant`` overrides the element model of ``options`` (the case's ``[tcr]``).
+    """
+    if not params.smooth_ball:
         raise InputError(
             "surface.ball", "rough", "absent (smooth ball): the TCR chain models the raceway only"
         )
-    ball, race = case.materials.ball, getattr(case.materials, side)
-    options = case.tcr
     return FractalTCRModel(
-        D=case.surface.D,
-        G=case.surface.G,
-        E_star=contact_modulus(case, side),
-        H=min(ball.hardness, race.hardness),
-        lambda_1=ball.thermal_conductivity,
-        lambda_2=race.thermal_conductivity,
-        lambda_f=case.medium.thermal_conductivity,
+        D=params.D,
+        G=params.G,
+        E_star=params.contact_modulus(side),
+        H=params.hardness(side),
+        lambda_1=params.ball.thermal_conductivity,
+        lambda_2=params.material(side).thermal_conductivity,
+        lambda_f=params.lubrication.thermal_conductivity,
         variant=variant or options.variant,
         cutoff_area=options.cutoff_area,
         gap_model=options.gap_model,
@@ -135,26 +130,22 @@ def tcr_model(case: Case, side: Side, variant: str | None = None) -> FractalTCRM
     )
 
 
-def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
-    """Thermal contact resistance of the ball screw of ``case`` (contact-tcr.md §7.1).
+def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
+    """Thermal contact resistance of the ball screw of ``case``.
 
-    ``variant`` picks the element model (V2, MT or V1); ``None`` takes ``case.tcr.variant``.
-    Contacts of equal side and ball load are solved once (both nuts share them at zero axial
-    load).
+    ``variant`` picks the element model (V2, MT or V1); ``None`` (default) takes the case's
+    ``[tcr] variant``. Contacts of equal side and ball load are solved once (both nuts share
+    them at zero axial load).
     """
-    geometry = ScrewGeometry.from_spec(case.screw)
-    op = case.operating
-    if case.screw.nuts == 2:
-        forces = tuple(float(f) for f in nut_forces(op.preload, op.axial_load))
-    else:
-        forces = (op.preload + op.axial_load, 0.0)
-    models = {side: tcr_model(case, side, variant) for side in SIDES}
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
+    models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}
     solved: dict[tuple[Side, float], RacewayTCR] = {}
 
     def raceway(side: Side, load: float, flank: int) -> RacewayTCR:
         if (side, load) not in solved:
             contact = solve_raceway_contact(
-                geometry, side, load, contact_modulus(case, side), case.numerics, flank
+                geometry, side, load, params.contact_modulus(side), case.numerics, flank
             )
             sol = contact.solution
             tcr = contact_tcr(
@@ -169,38 +160,36 @@ def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
             solved[side, load] = RacewayTCR(contact, tcr)
         return solved[side, load]
 
-    projection = np.sin(geometry.contact_angle) * np.cos(geometry.lead_angle)
     nuts = []
-    for index, force in enumerate(forces, start=1):
-        if force <= 0.0:
-            continue  # a lifted-off (or absent) nut carries nothing
-        q = ball_load(force, case.screw.balls_per_nut, geometry.contact_angle, geometry.lead_angle)
-        flank = 1 if index == 1 else -1
-        screw_side, nut_side = raceway("screw", q, flank), raceway("nut", q, flank)
+    for nut in params.nuts:
+        if not nut.loaded:
+            continue  # a lifted-off nut carries nothing
+        screw_side = raceway("screw", nut.ball_load, nut.flank)
+        nut_side = raceway("nut", nut.ball_load, nut.flank)
         approach = screw_side.contact.solution.approach + nut_side.contact.solution.approach
         nuts.append(
             NutTCR(
-                index=index,
-                force=force,
-                ball_load=q,
-                balls=case.screw.balls_per_nut,
+                index=nut.index,
+                force=nut.force,
+                ball_load=nut.ball_load,
+                balls=params.balls_per_nut,
                 screw=screw_side,
                 nut=nut_side,
-                axial_deflection=approach / projection,
+                axial_deflection=approach / params.axial_projection,
             )
         )
     return ScrewTCR(
         case_name=case.name,
         variant=models["screw"].variant,
         cell_size=case.tcr.cell_size if case.tcr.rebin else None,
-        nut_forces=forces,
+        nut_forces=params.nut_forces,
         nuts=tuple(nuts),
     )
 
 
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
     """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units."""
-    result = screw_tcr(case, variant=None)
+    result = screw_tcr(case)
     scalars = {
         "resistance": (result.resistance, "K/W"),
         "resistance_per_area": (result.resistance_per_area, "m^2*K/W"),

@@ -25,9 +25,9 @@ def kinematics(
     """Ball speeds, spins, loads and contact angles, film, asperity share and drag torque."""
     import warnings
 
+    from ballscrew.analyses.kinematics import run_kinematics
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
-    from ballscrew.kinematics.analysis import run_kinematics
     from ballscrew.kinematics.limits import SpeedLimitWarning
     from ballscrew.results import check_output_folder
     from ballscrew.results.kinematics_report import write_kinematics

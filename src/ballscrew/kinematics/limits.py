@@ -16,8 +16,6 @@ category=SpeedLimitWarning)``.
 from __future__ import annotations
 
 import math
-import warnings
-from typing import Any
 
 from ballscrew.errors import InputError
 from ballscrew.geometry import ScrewGeometry
@@ -25,11 +23,9 @@ from ballscrew.geometry import ScrewGeometry
 __all__ = [
     "MOUNTING_EIGENVALUES",
     "SpeedLimitWarning",
-    "check_speed_limits",
     "critical_speed",
     "dn_value",
     "groove_root_diameter",
-    "speed_limit_messages",
 ]
 
 MOUNTING_EIGENVALUES: dict[str, float] = {
@@ -85,41 +81,3 @@ def critical_speed(
 def dn_value(pitch_diameter: float, speed: float) -> float:
     """d·n = pitch diameter [mm] × speed [rpm] (speed given in rad/s, diameter in m)."""
     return pitch_diameter * 1e3 * speed * 60.0 / (2.0 * math.pi)
-
-
-def speed_limit_messages(case: Any, speed: float) -> list[str]:
-    """Why ``speed`` [rad/s] is too high for the case's screw (empty when it is not)."""
-    spec = case.kinematics
-    geometry = ScrewGeometry.from_spec(case.screw)
-    messages = []
-    dn = dn_value(geometry.pitch_diameter, speed)
-    if dn > spec.dn_limit:
-        messages.append(
-            f"speed {speed:.4g} rad/s gives d·n = {dn:.0f} mm·rpm above the limit "
-            f"{spec.dn_limit:.0f} ([kinematics] dn_limit)"
-        )
-    if spec.unsupported_length is not None:
-        root = spec.root_diameter or groove_root_diameter(geometry)
-        material = case.materials.screw
-        allowed = spec.critical_speed_factor * critical_speed(
-            root, spec.unsupported_length, material.youngs_modulus, material.density, spec.mounting
-        )
-        if speed > allowed:
-            messages.append(
-                f"speed {speed:.4g} rad/s exceeds {spec.critical_speed_factor:g} × the whirling "
-                f"speed of the screw shaft = {allowed:.4g} rad/s ({spec.mounting}, "
-                f"l = {spec.unsupported_length:g} m, d_r = {root:g} m)"
-            )
-    return messages
-
-
-def check_speed_limits(case: Any, speed: float, *, stacklevel: int = 3) -> list[str]:
-    """Warn (:class:`SpeedLimitWarning`) for each speed limit ``speed`` exceeds; return them.
-
-    Silent when ``[kinematics] speed_warnings = false``.
-    """
-    messages = speed_limit_messages(case, speed)
-    if case.kinematics.speed_warnings:
-        for message in messages:
-            warnings.warn(message, SpeedLimitWarning, stacklevel=stacklevel)
-    return messages

@@ -1,6 +1,7 @@
 """Parameters of the ball model of one case: geometry, elastic constants, lubricant, roughness.
 
-Built once per case by :func:`ball_model`; every solver of the package takes it. Hertz
+Built once per case by ``ballscrew.analyses.kinematics.ball_model``; every solver of the
+package takes it. Hertz
 quantities at load Q are scaled from the unit-load solution (a, b ∝ Q^(1/3), δ ∝ Q^(2/3)).
 """
 
@@ -9,12 +10,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any, Literal
+from typing import Literal
 
 from ballscrew.contact import hertz
 from ballscrew.contact.hertz import HertzContact
-from ballscrew.errors import InputError
-from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, raceway_curvature
 from ballscrew.kinematics.frames import BallFrame, ball_frame
 from ballscrew.kinematics.inertia import ball_inertia, ball_mass
@@ -25,11 +24,10 @@ from ballscrew.lubrication import (
     LoadSharing,
     ehl_rolling_resistance,
     hamrock_dowson,
-    lubricant,
     share_load,
 )
 
-__all__ = ["BallModel", "ball_model", "case_lubricant"]
+__all__ = ["BallModel"]
 
 Contact = Literal["screw", "nut"]
 
@@ -149,53 +147,3 @@ class BallModel:
             abs(speed),
             load,
         )
-
-
-def case_lubricant(case: Any) -> tuple[float | None, float | None]:
-    """(η₀, α_p) of a case: ``[medium]`` values, completed by ``[kinematics] lubricant``.
-
-    Raises :class:`InputError` for a viscosity ≤ 0 or a negative α_p.
-    """
-    eta = case.medium.viscosity
-    alpha = case.medium.pressure_viscosity
-    name = case.kinematics.lubricant
-    if name is not None:
-        named = lubricant(name)
-        eta = named.viscosity if eta is None else eta
-        alpha = named.pressure_viscosity if alpha is None else alpha
-    if eta is not None and not (math.isfinite(eta) and eta > 0.0):
-        raise InputError("medium.viscosity", eta, "a dynamic viscosity > 0 Pa s")
-    if alpha is not None and not (math.isfinite(alpha) and alpha >= 0.0):
-        raise InputError("medium.pressure_viscosity", alpha, "a coefficient >= 0 1/Pa")
-    return eta, alpha
-
-
-def ball_model(case: Any) -> BallModel:
-    """The :class:`BallModel` of a validated case."""
-    from ballscrew.analyses.ball_contact import contact_modulus
-
-    geometry = ScrewGeometry.from_spec(case.screw)
-    eta, alpha = case_lubricant(case)
-    spec = case.kinematics
-    e_star = contact_modulus(case, "screw")
-    hardness = case.materials.screw.hardness
-    surface = AsperitySurface(
-        Ds=surface_dimension(case.surface.D),
-        G=case.surface.G,
-        e_star=e_star,
-        hardness=hardness,
-        cell_area=spec.micro_contact_size**2,
-    )
-    return BallModel(
-        geometry=geometry,
-        balls=case.screw.balls_per_nut,
-        ball_density=case.materials.ball.density,
-        e_star_screw=e_star,
-        e_star_nut=contact_modulus(case, "nut"),
-        surface=surface,
-        viscosity=eta,
-        pressure_viscosity=alpha,
-        boundary_friction=spec.boundary_friction,
-        limiting_shear=spec.limiting_shear,
-        traction_cells=spec.traction_cells,
-    )

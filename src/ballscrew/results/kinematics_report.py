@@ -14,8 +14,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.patches import Ellipse
 
+from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
 from ballscrew.case import Case
-from ballscrew.kinematics.analysis import ContactFields, KinematicsRun
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
 from ballscrew.results.folder import results_folder

@@ -361,14 +361,8 @@ def build_problem(
     )
     dt = spec.drag_torque
     if dt.source == "kinematics":
-        try:
-            from ballscrew.kinematics.api import computed_drag_torque
-        except ImportError:
-            raise InputError(
-                "thermal.drag_torque.source",
-                "kinematics",
-                "'catalogue' or 'given': the kinematics model is not installed",
-            ) from None
+        from ballscrew.analyses.kinematics import computed_drag_torque
+
         torque, method = float(computed_drag_torque(case)), "kinematics model (ball drag)"
     elif dt.source == "given":
         torque, method = float(dt.torque), "given"

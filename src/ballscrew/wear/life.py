@@ -34,13 +34,12 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ballscrew.analyses.ball_contact import contact_modulus
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import cell_centres, hertz, solve_normal
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import ScrewGeometry, gap_function, raceway_curvature
-from ballscrew.kinematics.model import case_lubricant
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.loads import (
     ball_load,
@@ -154,13 +153,14 @@ def wear_setup(case: Any) -> WearSetup:
     spec: WearSpec = case.wear if case.wear is not None else WearSpec()
     if case.screw.nuts != 2:
         raise InputError("screw.nuts", case.screw.nuts, "2 (the wear life needs a double nut)")
-    geometry = ScrewGeometry.from_spec(case.screw)
-    balls = case.screw.balls_per_nut
-    e_star = contact_modulus(case, "screw")
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
+    balls = params.balls_per_nut
+    e_star = params.contact_modulus("screw")
     hardness = case.materials.screw.hardness
     ca, cb = raceway_curvature(geometry, "screw"), raceway_curvature(geometry, "nut")
     k_a = hertz(ca.rx, ca.ry, e_star, 1.0).approach
-    k_b = hertz(cb.rx, cb.ry, contact_modulus(case, "nut"), 1.0).approach
+    k_b = hertz(cb.rx, cb.ry, params.contact_modulus("nut"), 1.0).approach
     compliance = nut_axial_compliance(k_a, k_b, balls, geometry.contact_angle, geometry.lead_angle)
     preload = case.operating.preload
     if not preload > 0.0:
@@ -188,7 +188,7 @@ def wear_setup(case: Any) -> WearSetup:
         )
         for s in FLANKS
     }
-    eta, alpha = case_lubricant(case)
+    eta, alpha = params.lubrication.viscosity, params.lubrication.pressure_viscosity
     surface = AsperitySurface(
         Ds=surface_dimension(case.surface.D),
         G=case.surface.G,

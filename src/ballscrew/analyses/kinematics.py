@@ -1,0 +1,446 @@
+"""The kinematics analysis of one case: ball state, drag torques, contact fields and curves.
+
+Composes :mod:`ballscrew.kinematics`, the contact solver and :mod:`ballscrew.lubrication`
+(theory manual: *Kinematics*, *Lubrication*). The Python API other code relies on:
+
+* :func:`ball_kinematics` ``(case, speed=None, level=None)`` → :class:`BallState` with
+  ``ball_speed``, ``orbital_speed``, ``spin_screw``, ``spin_nut``, ``load_screw``, ``load_nut``,
+  ``angle_screw``, ``angle_nut``; ``None`` takes the case's speed and ``[kinematics] level``;
+* :func:`drag_torque` ``(case, preload=None)`` → catalogue preload drag torque, N m;
+* :func:`computed_drag_torque` ``(case, speed=None)`` → drag torque of the ball model, N m, at
+  the case's balance level; the heat it makes is T·ω_s (used by the thermal model);
+* :func:`run_kinematics` ``(case, speed=None, level=None)`` → everything the ``ballscrew
+  kinematics`` results folder shows.
+
+Inputs are checked before any work: speed < 0, an unknown level, level 2 without lubricant data
+are :class:`~ballscrew.errors.InputError`; a speed above the whirling or d·n limit is a
+:class:`~ballscrew.kinematics.limits.SpeedLimitWarning`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ballscrew.analyses.ball_contact import solve_raceway_contact
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.case import Case
+from ballscrew.errors import InputError
+from ballscrew.fractal.yan_komvopoulos import surface_dimension
+from ballscrew.kinematics.balance import LEVELS, BallState, solve_ball
+from ballscrew.kinematics.limits import (
+    SpeedLimitWarning,
+    critical_speed,
+    dn_value,
+    groove_root_diameter,
+)
+from ballscrew.kinematics.model import BallModel
+from ballscrew.kinematics.sliding import SlidingField, sliding_field, sliding_field_closed_form
+from ballscrew.kinematics.torque import BallDrag, ball_drag
+from ballscrew.loads import preload_drag_torque
+from ballscrew.lubrication import AsperitySurface, LoadSharing, asperity_pressure
+
+__all__ = [
+    "ContactFields",
+    "KinematicsRun",
+    "SpeedSweep",
+    "ball_kinematics",
+    "ball_model",
+    "check_speed_limits",
+    "computed_drag_torque",
+    "contact_fields",
+    "curve_speeds",
+    "drag_torque",
+    "nut_loads",
+    "prepare",
+    "run_kinematics",
+    "speed_limit_messages",
+    "speed_sweep",
+]
+
+FloatArray = NDArray[np.float64]
+
+
+def _speed(case: Case, speed: float | None) -> float:
+    value = case.operating.speed if speed is None else speed
+    try:
+        omega = float(value)
+    except (TypeError, ValueError):
+        raise InputError("speed", value, "a screw speed >= 0 rad/s") from None
+    if not (math.isfinite(omega) and omega >= 0.0):
+        raise InputError("speed", value, "a screw speed >= 0 rad/s")
+    return omega
+
+
+def _level(case: Case, level: int | None) -> int:
+    value = case.kinematics.level if level is None else level
+    if isinstance(value, bool) or value not in LEVELS:
+        raise InputError("level", value, "0 (static), 1 (centrifugal + groove) or 2 (full)")
+    return int(value)
+
+
+def prepare(
+    case: Case, speeds: float | FloatArray | list[float], level: int | None
+) -> tuple[BallModel, int]:
+    """Validate speeds and level, warn about speed limits, and build the ball model.
+
+    Every check runs before any computation (level 2 needs lubricant data).
+    """
+    values = [_speed(case, float(s)) for s in np.atleast_1d(np.asarray(speeds, dtype=float))]
+    lvl = _level(case, level)
+    model = ball_model(case)
+    if lvl == 2 and not model.lubricated:
+        raise InputError(
+            "medium.viscosity",
+            case.medium.viscosity,
+            "lubricant data for level 2: viscosity and pressure_viscosity in [medium], or "
+            "[kinematics] lubricant",
+        )
+    if values:
+        check_speed_limits(case, max(values), stacklevel=4)
+    return model, lvl
+
+
+def nut_loads(case: Case, preload: float | None = None) -> list[tuple[int, float, int]]:
+    """(nut number, axial force, flank) of each nut, from :class:`ScrewParameters`.
+
+    Nut 1 carries F_1 on flank s = +1 and nut 2 carries F_2 on s = −1; a single nut carries
+    F_p + F_a on s = +1. ``preload`` overrides the case's.
+    """
+    fp = case.operating.preload if preload is None else float(preload)
+    if not (math.isfinite(fp) and fp >= 0.0):
+        raise InputError("preload", preload, "a force >= 0 N")
+    if case.screw.nuts == 2 and fp <= 0.0:
+        raise InputError("preload", fp, "a preload > 0 N for a double nut")
+    params = ScrewParameters.from_case(case).with_loads(preload=fp)
+    return [(n.index, n.force, n.flank) for n in params.nuts]
+
+
+def ball_kinematics(
+    case: Case, speed: float | None = None, level: int | None = None, *, nut: int = 1
+) -> BallState:
+    """Kinematics and loads of a ball of ``nut`` (1 = loaded nut) at screw speed ``speed``.
+
+    ``speed`` [rad/s] defaults to ``operating.speed``; ``level`` 0, 1 or 2 defaults to the
+    case's ``[kinematics] level``. The result has ``ball_speed`` (m/s, ball centre relative to
+    the nut), ``orbital_speed`` (rad/s), ``spin_screw`` / ``spin_nut`` (rad/s, relative spin
+    about the contact normals Z_A, Z_B pointing into the ball), ``load_screw`` / ``load_nut`` (N)
+    and ``angle_screw`` / ``angle_nut`` (rad).
+    """
+    omega = _speed(case, speed)
+    model, lvl = prepare(case, omega, level)
+    loads = {number: (force, flank) for number, force, flank in nut_loads(case)}
+    if nut not in loads:
+        raise InputError("nut", nut, f"one of {sorted(loads)} for this screw")
+    force, flank = loads[nut]
+    return solve_ball(model, omega, force, flank, lvl)
+
+
+def drag_torque(case: Case, preload: float | None = None) -> float:
+    """Catalogue preload drag torque T_p = K F_p L/(2π), K = 0.05/√tanλ, N m.
+
+    ``preload`` [N] defaults to the case's. The 40 × 10 reference screw at F_p = 1500 N:
+    0.4231 N m.
+    """
+    fp = case.operating.preload if preload is None else preload
+    geometry = ScrewParameters.from_case(case).geometry
+    return preload_drag_torque(fp, geometry.lead, geometry.lead_angle)
+
+
+def _model_torque(
+    model: BallModel, case: Case, omega: float, level: int, preload: float | None = None
+) -> float:
+    total = 0.0
+    for _, force, flank in nut_loads(case, preload):
+        if force > 0.0:
+            state = solve_ball(model, omega, force, flank, level)
+            total += model.balls * ball_drag(model, state).dissipation_torque
+    return total
+
+
+def computed_drag_torque(
+    case: Case,
+    speed: float | None = None,
+    *,
+    level: int | None = None,
+    preload: float | None = None,
+) -> float:
+    """Drag torque of the screw from the ball model, N m (heat: T·ω_s).
+
+    Sum over the loaded balls of every nut of the power dissipated by sliding at A (traction
+    E3.3, JGP share E6.4) and by EHL rolling resistance at A and B (E3.4), over ω_s. With the
+    full balance (level 2) this is exactly the torque (E3.7) of the ball forces on the screw at
+    fixed nut force; at levels 0/1 the traction is not part of the balance and the dissipation is
+    the consistent measure. ``speed`` defaults to ``operating.speed`` (0 gives the ω → 0⁺ limit,
+    the dry breakaway value), ``level`` to ``[kinematics] level``, ``preload`` to the case's.
+    The external load's reversible torque F_a L/2π is not included.
+    """
+    omega = _speed(case, speed)
+    model, lvl = prepare(case, omega, level)
+    return _model_torque(model, case, omega, lvl, preload)
+
+
+def curve_speeds(case: Case) -> FloatArray:
+    """Speeds of the curves vs speed: ``[kinematics] speed_range`` or 0 … max(case, d·n limit)."""
+    spec = case.kinematics
+    if spec.speed_range is not None:
+        low, high = spec.speed_range
+    else:
+        geometry = ScrewParameters.from_case(case).geometry
+        dn_speed = spec.dn_limit / dn_value(geometry.pitch_diameter, 1.0)
+        low, high = 0.0, max(case.operating.speed, dn_speed)
+    return np.linspace(low, high, spec.speed_points)
+
+
+@dataclass(frozen=True)
+class SpeedSweep:
+    """Loads, angles, speeds and torques of a ball of nut 1 versus screw speed."""
+
+    speed: FloatArray
+    """Screw speeds ω_s [rad/s]."""
+    level: int
+    load_screw: FloatArray
+    load_nut: FloatArray
+    angle_screw: FloatArray
+    angle_nut: FloatArray
+    ball_speed: FloatArray
+    orbital_speed: FloatArray
+    spin_screw: FloatArray
+    asperity_share: FloatArray
+    """ψ at A (1 without lubricant)."""
+    film_thickness: FloatArray
+    """h_c at A at the film-borne load [m] (NaN without lubricant)."""
+    model_torque: FloatArray
+    """Ball-model drag torque (all nuts) [N m]."""
+    catalogue_torque: float
+    """E9.1 at the case's preload [N m]."""
+
+
+def speed_sweep(
+    case: Case, speeds: FloatArray | None = None, level: int | None = None
+) -> SpeedSweep:
+    """Ball of nut 1 and the drag torque at each speed (default :func:`curve_speeds`)."""
+    omegas = curve_speeds(case) if speeds is None else np.asarray(speeds, dtype=float)
+    model, lvl = prepare(case, omegas, level)
+    _, force, flank = nut_loads(case)[0]
+    rows = []
+    for omega in omegas:  # one quasi-static solve per speed
+        state = solve_ball(model, float(omega), force, flank, lvl)
+        sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
+        rows.append(
+            (
+                state.load_screw,
+                state.load_nut,
+                state.angle_screw,
+                state.angle_nut,
+                state.ball_speed,
+                state.orbital_speed,
+                state.spin_screw,
+                sharing.psi,
+                sharing.separation if sharing.film is not None else math.nan,
+                _model_torque(model, case, float(omega), lvl),
+            )
+        )
+    cols = np.array(rows, dtype=float).T
+    return SpeedSweep(omegas, lvl, *cols, catalogue_torque=drag_torque(case))
+
+
+def ball_model(case: Case) -> BallModel:
+    """The :class:`BallModel` of a validated case."""
+    params = ScrewParameters.from_case(case)
+    spec = case.kinematics
+    e_star = params.contact_modulus("screw")
+    surface = AsperitySurface(
+        Ds=surface_dimension(params.D),
+        G=params.G,
+        e_star=e_star,
+        hardness=params.screw.hardness,
+        cell_area=spec.micro_contact_size**2,
+    )
+    return BallModel(
+        geometry=params.geometry,
+        balls=params.balls_per_nut,
+        ball_density=params.ball.density,
+        e_star_screw=e_star,
+        e_star_nut=params.contact_modulus("nut"),
+        surface=surface,
+        viscosity=params.lubrication.viscosity,
+        pressure_viscosity=params.lubrication.pressure_viscosity,
+        boundary_friction=spec.boundary_friction,
+        limiting_shear=spec.limiting_shear,
+        traction_cells=spec.traction_cells,
+    )
+
+
+def speed_limit_messages(case: Case, speed: float) -> list[str]:
+    """Why ``speed`` [rad/s] is too high for the case's screw (empty when it is not)."""
+    spec = case.kinematics
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
+    messages = []
+    dn = dn_value(geometry.pitch_diameter, speed)
+    if dn > spec.dn_limit:
+        messages.append(
+            f"speed {speed:.4g} rad/s gives d·n = {dn:.0f} mm·rpm above the limit "
+            f"{spec.dn_limit:.0f} ([kinematics] dn_limit)"
+        )
+    if spec.unsupported_length is not None:
+        root = spec.root_diameter or groove_root_diameter(geometry)
+        material = params.screw
+        allowed = spec.critical_speed_factor * critical_speed(
+            root, spec.unsupported_length, material.youngs_modulus, material.density, spec.mounting
+        )
+        if speed > allowed:
+            messages.append(
+                f"speed {speed:.4g} rad/s exceeds {spec.critical_speed_factor:g} × the whirling "
+                f"speed of the screw shaft = {allowed:.4g} rad/s ({spec.mounting}, "
+                f"l = {spec.unsupported_length:g} m, d_r = {root:g} m)"
+            )
+    return messages
+
+
+def check_speed_limits(case: Case, speed: float, *, stacklevel: int = 3) -> list[str]:
+    """Warn (:class:`SpeedLimitWarning`) for each speed limit ``speed`` exceeds; return them.
+
+    Silent when ``[kinematics] speed_warnings = false``.
+    """
+    messages = speed_limit_messages(case, speed)
+    if case.kinematics.speed_warnings:
+        for message in messages:
+            warnings.warn(message, SpeedLimitWarning, stacklevel=stacklevel)
+    return messages
+
+
+@dataclass(frozen=True)
+class ContactFields:
+    """Fields over the contact A of one ball at one speed, on the contact-solver grid."""
+
+    state: BallState
+    contact: Any
+    """:class:`ballscrew.analyses.ball_contact.RacewayContact` at Q_A, β_A."""
+    sliding: SlidingField
+    """Exact sliding field (E2.6) of the state's motion."""
+    closed_form: SlidingField
+    """Closed form (E2.7) of the Level-0 motion, for comparison."""
+    sharing: LoadSharing
+    asperity_pressure: FloatArray
+    """ψ p (E6.5) [Pa]."""
+
+
+def contact_fields(case: Case, model: BallModel, state: BallState) -> ContactFields:
+    """Pressure, sliding and asperity pressure at A for ``state`` (one contact solve)."""
+    geometry = dataclasses.replace(model.geometry, contact_angle=state.angle_screw)
+    contact = solve_raceway_contact(
+        geometry, "screw", state.load_screw, model.e_star_screw, case.numerics, flank=state.flank
+    )
+    x, y = np.asarray(contact.x), np.asarray(contact.y)
+    sliding = sliding_field(state.motion, x, y, radius=model.deformed_radius("screw"))
+    closed = sliding_field_closed_form(
+        model.geometry, state.screw_speed, x, y, state.flank, curvature=True
+    )
+    sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
+    pressure = np.asarray(contact.solution.pressure)
+    return ContactFields(
+        state, contact, sliding, closed, sharing, asperity_pressure(pressure, sharing.psi)
+    )
+
+
+@dataclass(frozen=True)
+class KinematicsRun:
+    """Everything the ``kinematics`` results folder shows."""
+
+    case_name: str
+    level: int
+    speed: float
+    """Case speed ω_s [rad/s]."""
+    states: dict[int, BallState]
+    """Ball of each loaded nut at the case speed."""
+    drags: dict[int, BallDrag]
+    fields: ContactFields
+    """Nut 1 at the case speed."""
+    low: ContactFields
+    high: ContactFields
+    sweep: SpeedSweep
+    """Nut 1 versus speed, at the operating loads."""
+    drag_speeds: FloatArray
+    no_load_torque: FloatArray
+    """Ball-model drag torque at F_a = 0 versus speed [N m]."""
+    preloads: FloatArray
+    preload_catalogue: FloatArray
+    preload_model: FloatArray
+    """Ball-model drag torque at F_a = 0 and the case speed versus preload [N m]."""
+    catalogue_torque: float
+    model_torque: float
+    """Ball-model drag torque at the operating point [N m]."""
+    lubricated: bool
+    warnings: list[str]
+
+
+def _no_load(case: Case) -> Any:
+    return case.model_copy(
+        update={"operating": case.operating.model_copy(update={"axial_load": 0.0})}
+    )
+
+
+def run_kinematics(
+    case: Case, speed: float | None = None, level: int | None = None
+) -> KinematicsRun:
+    """Run the analysis (all checks first, see :func:`prepare`)."""
+    omega = case.operating.speed if speed is None else float(speed)
+    speeds = curve_speeds(case)
+    model, lvl = prepare(case, np.append(speeds, omega), level)
+    messages = speed_limit_messages(case, float(max(omega, speeds.max())))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SpeedLimitWarning)
+        states, drags = {}, {}
+        for number, force, flank in nut_loads(case):
+            if force > 0.0:
+                states[number] = solve_ball(model, omega, force, flank, lvl)
+                drags[number] = ball_drag(model, states[number])
+        fields = contact_fields(case, model, states[1])
+        positive = speeds[speeds > 0]
+        low_speed = omega if omega > 0 else float(positive.min()) if positive.size else 1.0
+        high_speed = float(max(speeds.max(), low_speed))
+        _, f1, s1 = nut_loads(case)[0]
+
+        def nut1_fields(speed: float) -> ContactFields:
+            """Nut 1 at ``speed``: the case-speed solution when it is the same problem."""
+            if speed == omega:
+                return fields
+            return contact_fields(case, model, solve_ball(model, speed, f1, s1, lvl))
+
+        low, high = nut1_fields(low_speed), nut1_fields(high_speed)
+        sweep = speed_sweep(case, speeds, lvl)
+        free = _no_load(case)
+        no_load = np.array([_model_torque(model, free, float(w), lvl) for w in speeds])
+        preloads = case.operating.preload * np.linspace(0.25, 2.0, 8)
+        preload_model = np.array(
+            [_model_torque(model, free, omega, lvl, preload=float(fp)) for fp in preloads]
+        )
+    model_torque = sum(model.balls * d.dissipation_torque for d in drags.values())
+    return KinematicsRun(
+        case_name=case.name,
+        level=lvl,
+        speed=omega,
+        states=states,
+        drags=drags,
+        fields=fields,
+        low=low,
+        high=high,
+        sweep=sweep,
+        drag_speeds=speeds,
+        no_load_torque=no_load,
+        preloads=preloads,
+        preload_catalogue=np.array([drag_torque(case, float(fp)) for fp in preloads]),
+        preload_model=preload_model,
+        catalogue_torque=drag_torque(case),
+        model_torque=float(model_torque),
+        lubricated=model.lubricated,
+        warnings=messages,
+    )

@@ -1,0 +1,217 @@
+"""The physical parameters of one case, built once: :class:`ScrewParameters`.
+
+Every analysis starts here. A validated :class:`~ballscrew.case.Case` holds what the user wrote;
+:class:`ScrewParameters` holds what the physics needs, derived once and in one place: the screw
+geometry, the composite moduli E* of the ball against each raceway, the hardness, the fractal
+roughness, the lubricant (the ``[medium]`` values completed by a named lubricant), and the nuts
+with their axial forces and loaded flanks. The physics packages never see the case; they take
+these numbers and small frozen dataclasses.
+
+The nut forces of a spacer-preloaded double nut follow from equal Hertz deflection of the two
+nuts, F1^(2/3) + F2^(2/3) = 2 F_p^(2/3) with F1 − F2 = F_a (Hertz point contacts, rigid bodies;
+lift-off of nut 2 at F_a = 2^(3/2) F_p), see the theory manual, *Loads*. A single nut carries
+F_p + F_a on its one flank.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+from ballscrew.case import Case
+from ballscrew.contact.elastic import composite_modulus
+from ballscrew.geometry import ScrewGeometry
+from ballscrew.loads import ball_load, nut_forces
+from ballscrew.lubrication import lubricant
+
+__all__ = ["SIDES", "Lubrication", "Material", "NutLoad", "ScrewParameters", "Side"]
+
+Side = Literal["screw", "nut"]
+"""The raceway a ball touches: 'screw' (contact A) or 'nut' (contact B)."""
+SIDES: tuple[Side, Side] = ("screw", "nut")
+
+
+@dataclass(frozen=True)
+class Material:
+    """Mechanical and thermal properties of one part (SI)."""
+
+    youngs_modulus: float
+    """E [Pa]."""
+    poissons_ratio: float
+    """ν [-]."""
+    hardness: float
+    """Indentation hardness H [Pa]."""
+    yield_strength: float
+    """σ_y [Pa]."""
+    thermal_conductivity: float
+    """λ [W/(m K)]."""
+    density: float
+    """ρ [kg/m³]."""
+    specific_heat: float
+    """c_p [J/(kg K)]."""
+    thermal_expansion: float
+    """α_T [1/K]."""
+
+
+@dataclass(frozen=True)
+class NutLoad:
+    """One nut of the screw and the axial force it carries."""
+
+    index: int
+    """1 = the nut the axial load presses on, 2 = the one it unloads."""
+    force: float
+    """Axial force on the nut [N] (0 once lifted off)."""
+    flank: int
+    """Loaded flank of the groove: +1 for nut 1, −1 for nut 2."""
+    ball_load: float
+    """Normal load of each of its balls, Q = F/(Z sinβ cosα) [N]."""
+
+    @property
+    def loaded(self) -> bool:
+        """True while the nut's balls touch both raceways."""
+        return self.force > 0.0
+
+
+@dataclass(frozen=True)
+class Lubrication:
+    """The interstitial medium and, where known, its EHL properties at the inlet."""
+
+    name: str
+    thermal_conductivity: float
+    """λ_f of the medium between the asperities [W/(m K)]."""
+    viscosity: float | None
+    """Inlet dynamic viscosity η₀ [Pa s]; None = no lubricant data (dry contacts)."""
+    pressure_viscosity: float | None
+    """Barus coefficient α_p [1/Pa]; None = unknown."""
+
+    @property
+    def lubricated(self) -> bool:
+        """True when η₀ and α_p are both known."""
+        return self.viscosity is not None and self.pressure_viscosity is not None
+
+
+@dataclass(frozen=True)
+class ScrewParameters:
+    """Everything the physics needs about the screw of one case, in SI units.
+
+    Build it with :meth:`from_case`; :meth:`with_loads` gives the same screw at another preload
+    or axial load (the nut forces are recomputed, nothing else).
+    """
+
+    name: str
+    geometry: ScrewGeometry
+    balls_per_nut: int
+    nut_count: int
+    """1 (single nut) or 2 (spacer-preloaded double nut)."""
+    preload: float
+    """Preload F_p [N]."""
+    axial_load: float
+    """External axial load F_a ≥ 0 [N]; it loads nut 1 and unloads nut 2."""
+    speed: float
+    """Screw speed ω [rad/s]."""
+    ball: Material
+    screw: Material
+    nut: Material
+    D: float
+    """Profile fractal dimension of the raceways, 1 < D < 2."""
+    G: float
+    """Fractal roughness of the raceways [m]."""
+    smooth_ball: bool
+    """True when the case gives no ball roughness."""
+    lubrication: Lubrication
+    nuts: tuple[NutLoad, ...]
+    """Every nut of the screw, loaded or lifted off, nut 1 first."""
+
+    @classmethod
+    def from_case(cls, case: Case) -> ScrewParameters:
+        """The parameters of a validated case."""
+        spec, op = case.screw, case.operating
+        geometry = ScrewGeometry.from_spec(spec)
+        medium = case.medium
+        eta, alpha = medium.viscosity, medium.pressure_viscosity
+        if case.kinematics.lubricant is not None:
+            named = lubricant(case.kinematics.lubricant)
+            eta = named.viscosity if eta is None else eta
+            alpha = named.pressure_viscosity if alpha is None else alpha
+        params = cls(
+            name=case.name,
+            geometry=geometry,
+            balls_per_nut=spec.balls_per_nut,
+            nut_count=spec.nuts,
+            preload=op.preload,
+            axial_load=op.axial_load,
+            speed=op.speed,
+            ball=Material(**case.materials.ball.model_dump()),
+            screw=Material(**case.materials.screw.model_dump()),
+            nut=Material(**case.materials.nut.model_dump()),
+            D=case.surface.D,
+            G=case.surface.G,
+            smooth_ball=case.surface.ball is None,
+            lubrication=Lubrication(medium.name, medium.thermal_conductivity, eta, alpha),
+            nuts=(),
+        )
+        return params.with_loads()
+
+    def with_loads(
+        self, preload: float | None = None, axial_load: float | None = None
+    ) -> ScrewParameters:
+        """The same screw at ``preload`` and ``axial_load`` [N] (None = unchanged)."""
+        fp = self.preload if preload is None else float(preload)
+        fa = self.axial_load if axial_load is None else float(axial_load)
+        if self.nut_count == 2:
+            forces = tuple(float(f) for f in nut_forces(fp, fa))
+        else:
+            forces = (fp + fa,)
+        g = self.geometry
+        nuts = tuple(
+            NutLoad(
+                index=k,
+                force=force,
+                flank=1 if k == 1 else -1,
+                ball_load=float(ball_load(force, self.balls_per_nut, g.contact_angle, g.lead_angle))
+                if force > 0.0
+                else 0.0,
+            )
+            for k, force in enumerate(forces, start=1)
+        )
+        return dataclasses.replace(self, preload=fp, axial_load=fa, nuts=nuts)
+
+    @property
+    def nut_forces(self) -> tuple[float, float]:
+        """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
+        forces = [n.force for n in self.nuts]
+        return forces[0], forces[1] if len(forces) > 1 else 0.0
+
+    @property
+    def loaded_nut(self) -> NutLoad:
+        """Nut 1, the one the axial load presses on."""
+        return self.nuts[0]
+
+    def material(self, side: Side) -> Material:
+        """Material of the screw or the nut."""
+        return self.screw if side == "screw" else self.nut
+
+    def contact_modulus(self, side: Side) -> float:
+        """Composite modulus E* of the ball against the ``side`` raceway [Pa].
+
+        1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (Johnson 1985, §4.2).
+        """
+        race = self.material(side)
+        return composite_modulus(
+            self.ball.youngs_modulus,
+            self.ball.poissons_ratio,
+            race.youngs_modulus,
+            race.poissons_ratio,
+        )
+
+    def hardness(self, side: Side) -> float:
+        """Hardness of the softer of ball and ``side`` raceway [Pa]."""
+        return min(self.ball.hardness, self.material(side).hardness)
+
+    @property
+    def axial_projection(self) -> float:
+        """sinβ cosα: axial share of a normal contact approach (ball load → nut force)."""
+        g = self.geometry
+        return math.sin(g.contact_angle) * math.cos(g.lead_angle)
