@@ -15,9 +15,9 @@ __version__ = "0.1.0"
 from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.screw_tcr import screw_tcr
+from ballscrew.analyses.thermal import thermal_field
 from ballscrew.case import load_case
 from ballscrew.loads import nut_forces
-from ballscrew.thermal.field import thermal_field
 from ballscrew.wear import wear_life
 
 __all__ = [

@@ -20,15 +20,14 @@ def thermal(
     ] = None,
 ) -> None:
     """Steady and transient temperatures, sensors and thermal elongation (needs [thermal])."""
+    from ballscrew.analyses.thermal import thermal_field
     from ballscrew.case import load_case
     from ballscrew.results import check_output_folder
     from ballscrew.results.thermal_report import write_thermal
-    from ballscrew.thermal.field import thermal_field
 
     case = load_case(case_file)
     check_output_folder(out)
-    chosen = model or (case.thermal.model if case.thermal is not None else "axisymmetric")
-    result = thermal_field(case, model=chosen)
+    result = thermal_field(case, model=model)
     log.info(
         "max rise %.3g K, elongation %.4g um, heat %.4g W (%s, %d unknowns)",
         result.max_temperature_rise,

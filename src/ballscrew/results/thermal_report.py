@@ -13,10 +13,10 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.tri import Triangulation
 
+from ballscrew.analyses.thermal import ThermalField
 from ballscrew.results.folder import results_folder
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
-from ballscrew.thermal.field import ThermalField
 
 CELSIUS = 273.15
 

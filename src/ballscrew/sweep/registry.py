@@ -11,8 +11,8 @@ from ballscrew.sweep.runner import Analysis
 ANALYSES: dict[str, str] = {
     "contact": "ballscrew.analyses.ball_contact:contact_scalars",
     "tcr": "ballscrew.analyses.screw_tcr:tcr_scalars",
-    "thermal": "ballscrew.thermal.field:thermal_scalars",
-    "thermal-fe": "ballscrew.thermal.field:thermal_fe_scalars",
+    "thermal": "ballscrew.analyses.thermal:thermal_scalars",
+    "thermal-fe": "ballscrew.analyses.thermal:thermal_fe_scalars",
 }
 
 

@@ -7,7 +7,7 @@ Temperature field (§9, issue #4): heat sources (Q2–Q4) in :mod:`.heat_sources
 (Q5, Q6) in :mod:`.convection`, the smeared ball contact in :mod:`.constriction`, the problem
 in :mod:`.problem`, the 1-D network in :mod:`.network`, the 2-D axisymmetric scikit-fem model
 in :mod:`.axisymmetric` (imported on use), solves in :mod:`.simulate`, elongation (Q7) in
-:mod:`.elongation`; ``ballscrew.thermal_field(case)`` composes them.
+:mod:`.elongation`; ``ballscrew.analyses.thermal`` composes them for a case.
 """
 
 from ballscrew.thermal.aggregation import (

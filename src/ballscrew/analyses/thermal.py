@@ -1,9 +1,9 @@
-"""``thermal_field(case)``: temperature field and thermal elongation of the ball screw (issue #4).
+"""``thermal_field(case)``: temperature field and thermal elongation of the ball screw.
 
-The application of Gao, Wang & Liu (2019) §5 (contact-tcr.md §9): screw shaft, nut(s) and
-spacer, heated by the support bearings (Q2/Q3) and the ball screw's friction (Q4), cooled by
-convection (Q5/Q6), with the thermal contact resistance of the TCR chain (§7) on the balls;
-steady state, the transient from ambient, and the elongation ΔL = α∫ΔT dz (Q7).
+After Gao, Wang & Liu (2019), §5: screw shaft, nut(s) and spacer, heated by the support bearings
+and the ball screw's friction, cooled by convection, with the thermal contact resistance of the
+TCR chain on the balls; steady state, the transient from ambient, and the elongation
+ΔL = α∫ΔT dz (theory manual: *Thermal*).
 
 Models: ``"axisymmetric"`` (default; 2-D scikit-fem), ``"network"`` (1-D axial, milliseconds)
 and ``"3d"`` (hexahedra, helical contact patches; :mod:`~ballscrew.thermal.threed`).
@@ -19,12 +19,12 @@ from typing import Any, Literal
 import numpy as np
 import xarray as xr
 
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.errors import InputError
-from ballscrew.geometry import ScrewGeometry
-from ballscrew.loads import nut_forces, preload_drag_torque
+from ballscrew.loads import preload_drag_torque
 from ballscrew.thermal.constriction import ball_contact_constriction
 from ballscrew.thermal.convection import (
     Air,
@@ -231,22 +231,23 @@ class ThermalField:
 
 def thermal_field(
     case: Case,
-    model: ModelName = "axisymmetric",
+    model: ModelName | None = None,
     *,
     tcr: ScrewTCR | None = None,
     transient: bool = True,
 ) -> ThermalField:
     """Temperature field and thermal elongation of the ball screw of ``case``.
 
-    ``model``: "axisymmetric" (2-D FE, default), "network" (1-D, fast) or "3d" (3-D FE with
-    the balls as helical contact patches, ``[thermal.mesh]`` ``*_3d`` keys). ``tcr``: a
-    precomputed :func:`screw_tcr` of the same case (else computed, and cached per contact
-    input). ``transient=False`` skips the transient.
+    ``model``: "axisymmetric" (2-D FE), "network" (1-D, fast) or "3d" (3-D FE with the balls as
+    helical contact patches, ``[thermal.mesh]`` ``*_3d`` keys); ``None`` takes the case's
+    ``[thermal] model``. ``tcr``: a precomputed :func:`screw_tcr` of the same case (else
+    computed, and cached per contact input). ``transient=False`` skips the transient.
     """
     started = _time.perf_counter()
+    spec = _spec(case)
+    model = spec.model if model is None else model
     if model not in MODELS:
         raise InputError("model", model, "'axisymmetric', 'network' or '3d'")
-    spec = _spec(case)
     problem, sources, convection, interfaces, speed = build_problem(case, tcr)
     if model == "network":
         from ballscrew.thermal.network import build_network
@@ -319,7 +320,7 @@ def _cached_tcr(case: Case) -> ScrewTCR:
     if key not in _TCR_CACHE:
         if len(_TCR_CACHE) >= 32:
             _TCR_CACHE.pop(next(iter(_TCR_CACHE)))
-        _TCR_CACHE[key] = screw_tcr(case, variant=None)
+        _TCR_CACHE[key] = screw_tcr(case)
     return _TCR_CACHE[key]
 
 
@@ -347,18 +348,15 @@ def build_problem(
         if not value > shaft_d:
             raise InputError(f"thermal.{name}", value, f"a diameter > the shaft's {shaft_d:g} m")
     omega = op.speed
-    geometry = ScrewGeometry.from_spec(screw)
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
     lead = screw.lead
     feed = spec.stroke.feed_speed
     feed = abs(omega) * lead / (2 * math.pi) if feed is None else feed
     length = spec.shaft_length
 
-    # heat of the ball screw (Q4), split between the nuts by their forces
-    forces = (
-        tuple(float(f) for f in nut_forces(op.preload, op.axial_load))
-        if screw.nuts == 2
-        else (op.preload + op.axial_load,)
-    )
+    # heat of the ball screw, split between the nuts by their forces
+    forces = tuple(n.force for n in params.nuts)
     dt = spec.drag_torque
     if dt.source == "kinematics":
         from ballscrew.analyses.kinematics import computed_drag_torque
@@ -528,7 +526,7 @@ def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = Non
     from ballscrew.thermal.threed import BallPatches
 
     screw = case.screw
-    beta = ScrewGeometry.from_spec(screw).contact_angle
+    beta = ScrewParameters.from_case(case).geometry.contact_angle
     by_index = {}
     if _spec(case).contact.source == "tcr":
         tcr = tcr if tcr is not None else _cached_tcr(case)
