@@ -192,7 +192,8 @@ def test_gap_function_models() -> None:
     np.testing.assert_array_equal(quadratic(x, y), gap_quadratic(REFERENCE, "nut", x, y))
     with pytest.raises(InputError) as info:
         gap_function(REFERENCE, "nut", model="hertz")
-    assert info.value.field == "model"
+    assert info.value.field == "numerics.gap_model"
+    assert "exact, quadratic" in str(info.value)
 
 
 def test_ball_height_is_the_sphere() -> None:

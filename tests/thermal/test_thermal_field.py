@@ -153,7 +153,7 @@ def test_constriction_limits():
 
 
 def test_model_choice_errors(case):
-    with pytest.raises(InputError, match="'axisymmetric', 'network' or '3d'"):
+    with pytest.raises(InputError, match=r"thermal.model = 'fem'.*axisymmetric, network, 3d"):
         bs.thermal_field(case, model="fem")
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 import time as _time
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 import xarray as xr
@@ -34,6 +34,7 @@ from ballscrew.thermal.convection import (
 )
 from ballscrew.thermal.elongation import displacement_profile, thermoelastic_elongation
 from ballscrew.thermal.heat_sources import friction_heat, nut_heat_shares, palmgren_torque
+from ballscrew.thermal.models import THERMAL_MODELS, MeshOptions, build_model
 from ballscrew.thermal.problem import (
     BandHeat,
     Convection,
@@ -43,9 +44,6 @@ from ballscrew.thermal.problem import (
     ThermalProblem,
 )
 from ballscrew.thermal.simulate import Solution, simulate, time_to_fraction
-
-MODELS = ("axisymmetric", "network", "3d")
-ModelName = Literal["axisymmetric", "network", "3d"]
 
 
 @dataclass(frozen=True)
@@ -231,7 +229,7 @@ class ThermalField:
 
 def thermal_field(
     case: Case,
-    model: ModelName | None = None,
+    model: str | None = None,
     *,
     tcr: ScrewTCR | None = None,
     transient: bool = True,
@@ -245,30 +243,20 @@ def thermal_field(
     """
     started = _time.perf_counter()
     spec = _spec(case)
-    model = spec.model if model is None else model
-    if model not in MODELS:
-        raise InputError("model", model, "'axisymmetric', 'network' or '3d'")
+    model = THERMAL_MODELS.check(spec.model if model is None else model)
     problem, sources, convection, interfaces, speed = build_problem(case, tcr)
-    if model == "network":
-        from ballscrew.thermal.network import build_network
-
-        disc = build_network(problem, spec.mesh.network_cell)
-    elif model == "3d":
-        from ballscrew.thermal.threed import build_threed
-
-        ms = spec.mesh
-        disc = build_threed(
-            problem,
-            ms.size_3d,
-            ms.divisions_3d,
-            ms.layers_3d,
-            ms.far_size_3d,
-            patches=ball_patches(case, problem, tcr) if ms.helical_patches else None,
-        )
-    else:
-        from ballscrew.thermal.axisymmetric import build_axisymmetric
-
-        disc = build_axisymmetric(problem, spec.mesh.size, spec.mesh.order)
+    ms = spec.mesh
+    mesh = MeshOptions(
+        size=ms.size,
+        order=ms.order,
+        network_cell=ms.network_cell,
+        size_3d=ms.size_3d,
+        far_size_3d=ms.far_size_3d,
+        divisions_3d=ms.divisions_3d,
+        layers_3d=ms.layers_3d,
+    )
+    patches = ball_patches(case, problem, tcr) if model == "3d" and ms.helical_patches else None
+    disc = build_model(model, problem, mesh, patches)
     tr = spec.transient
     solution = simulate(
         disc,
@@ -674,7 +662,7 @@ def field_dataset(result: ThermalField) -> xr.Dataset:
     )
 
 
-def thermal_scalars(case: Case, model: ModelName = "network") -> dict[str, tuple[float, str]]:
+def thermal_scalars(case: Case, model: str = "network") -> dict[str, tuple[float, str]]:
     """Sweepable steady-state scalars of :func:`thermal_field` with their units.
 
     The 1-D network by default: milliseconds per point, so sweeps of thousands of points fit in

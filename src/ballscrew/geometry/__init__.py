@@ -13,6 +13,7 @@ from ballscrew.geometry.curvature import (
     rolling_curvature,
 )
 from ballscrew.geometry.gap import (
+    GAP_MODELS,
     RacewayPoint,
     ball_height,
     gap_exact,
@@ -32,6 +33,7 @@ from ballscrew.geometry.raceway import (
 from ballscrew.geometry.screw import ScrewGeometry, Side, as_geometry, lead_angle
 
 __all__ = [
+    "GAP_MODELS",
     "ContactFrame",
     "RacewayCurvature",
     "RacewayPoint",

@@ -14,7 +14,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
-from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -24,8 +23,8 @@ from ballscrew.geometry.curvature import raceway_curvature
 from ballscrew.geometry.helix import FloatArray
 from ballscrew.geometry.raceway import contact_frame
 from ballscrew.geometry.screw import ScrewGeometry, Side, flank_sign, side_sign
+from ballscrew.registry import Registry
 
-GapModel = Literal["exact", "quadratic"]
 GapFunction = Callable[[ArrayLike, ArrayLike], FloatArray]
 
 _TOLERANCE = 1e-12
@@ -131,6 +130,13 @@ def project_onto_raceway(
     )
 
 
+GAP_MODELS: Registry[Callable[..., FloatArray]] = Registry(
+    "raceway gap model", "numerics.gap_model"
+)
+"""Raceway gap models: ``exact`` (Newton projection) and ``quadratic`` (Hertz)."""
+
+
+@GAP_MODELS.register("exact", "exact gap by Newton projection onto the swept raceway")
 def gap_exact(
     geometry: ScrewGeometry, side: Side, x: ArrayLike, y: ArrayLike, flank: int = 1
 ) -> FloatArray:
@@ -144,6 +150,7 @@ def gap_exact(
     return z_ball - project_onto_raceway(geometry, side, x, y, flank).z
 
 
+@GAP_MODELS.register("quadratic", "quadratic (Hertz) gap with the exact Hessian")
 def gap_quadratic(
     geometry: ScrewGeometry, side: Side, x: ArrayLike, y: ArrayLike, flank: int = 1
 ) -> FloatArray:
@@ -159,13 +166,9 @@ def gap_quadratic(
 
 
 def gap_function(
-    geometry: ScrewGeometry, side: Side, flank: int = 1, model: GapModel = "exact"
+    geometry: ScrewGeometry, side: Side, flank: int = 1, model: str = "exact"
 ) -> GapFunction:
-    """Vectorised h(x, y) for the contact solver's grid: ``model`` is "exact" or "quadratic"."""
+    """Vectorised h(x, y) for the contact solver's grid; ``model`` names a :data:`GAP_MODELS`."""
     side_sign(side)
     flank_sign(flank)
-    if model == "exact":
-        return partial(gap_exact, geometry, side, flank=flank)
-    if model == "quadratic":
-        return partial(gap_quadratic, geometry, side, flank=flank)
-    raise InputError("model", model, "'exact' or 'quadratic'")
+    return partial(GAP_MODELS[model], geometry, side, flank=flank)

@@ -34,6 +34,7 @@ from ballscrew.thermal.convection import (
     rotating_cylinder,
 )
 from ballscrew.thermal.element_resistance import (
+    ELEMENT_MODELS,
     GAP_MODELS,
     VARIANTS,
     ElementTCR,
@@ -60,6 +61,7 @@ from ballscrew.thermal.heat_sources import (
     nut_heat_shares,
     palmgren_torque,
 )
+from ballscrew.thermal.models import THERMAL_MODELS, MeshOptions, build_model
 from ballscrew.thermal.network import build_network
 from ballscrew.thermal.problem import (
     AxialGrid,
@@ -75,7 +77,9 @@ from ballscrew.thermal.simulate import Solution, Transient, simulate, time_to_fr
 
 __all__ = [
     "DEFAULT_CELL_SIZE",
+    "ELEMENT_MODELS",
     "GAP_MODELS",
+    "THERMAL_MODELS",
     "VARIANTS",
     "Air",
     "AxialGrid",
@@ -84,6 +88,7 @@ __all__ = [
     "Convection",
     "ElementTCR",
     "FractalTCRModel",
+    "MeshOptions",
     "PalmgrenTorque",
     "RingPart",
     "Sensor",
@@ -93,6 +98,7 @@ __all__ = [
     "Transient",
     "axial_grid",
     "ball_contact_constriction",
+    "build_model",
     "build_network",
     "constriction_alleviation_factor",
     "contact_tcr",

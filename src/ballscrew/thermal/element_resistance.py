@@ -28,6 +28,7 @@ as P → 0, so G_g → ∞ and R → 0 for vanishing load; in V2 the unit-area R
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -41,6 +42,7 @@ from ballscrew.fractal import (
     size_distribution_constant,
     validate_dimension,
 )
+from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative_array, positive, positive_array
 
 __all__ = [
@@ -60,8 +62,11 @@ __all__ = [
     "spot_conductance",
 ]
 
-VARIANTS: tuple[str, ...] = ("V2", "MT", "V1")
-"""Element conductance variants: V2 (default, T5, [REC]), MT (T2a), V1 (one equivalent spot)."""
+SolidConductance = Callable[
+    [NDArray[np.float64], NDArray[np.float64], "FractalTCRModel"], NDArray[np.float64]
+]
+ELEMENT_MODELS: Registry[SolidConductance] = Registry("element TCR model", "tcr.variant")
+"""Solid-spot conductance G_s(a_l, A_r, model) of an element: V2, MT, V1 (registered below)."""
 
 _GAP_COEFFICIENTS: dict[str, float] = {
     "mean_cap": 2.0 / math.pi,
@@ -179,6 +184,33 @@ def solid_conductance_v1(real_area: ArrayLike, *, lambda_s: float) -> NDArray[np
         G_s in W/K, same shape as ``real_area``.
     """
     return spot_conductance(real_area, lambda_s=lambda_s)
+
+
+@ELEMENT_MODELS.register("V2", "reconstructed spot conductance at the largest spot (default)")
+def _element_v2(
+    a_l: NDArray[np.float64], _: NDArray[np.float64], model: FractalTCRModel
+) -> NDArray[np.float64]:
+    return solid_conductance_v2(a_l, D=model.D, lambda_s=model.lambda_s)
+
+
+@ELEMENT_MODELS.register("MT", "Majumdar–Tien spot network with a lower cut-off a_s")
+def _element_mt(
+    a_l: NDArray[np.float64], _: NDArray[np.float64], model: FractalTCRModel
+) -> NDArray[np.float64]:
+    return solid_conductance_mt(
+        a_l, D=model.D, lambda_s=model.lambda_s, cutoff_area=model.cutoff_area
+    )
+
+
+@ELEMENT_MODELS.register("V1", "one equivalent spot of the real contact area")
+def _element_v1(
+    _: NDArray[np.float64], a_r: NDArray[np.float64], model: FractalTCRModel
+) -> NDArray[np.float64]:
+    return solid_conductance_v1(a_r, lambda_s=model.lambda_s)
+
+
+VARIANTS: tuple[str, ...] = ELEMENT_MODELS.names
+"""Element conductance variants: V2 (default, T5, [REC]), MT (T2a), V1 (one equivalent spot)."""
 
 
 def gap_thickness(
@@ -354,8 +386,7 @@ class FractalTCRModel:
             positive(name, getattr(self, name), unit)
         positive("cutoff_area", self.cutoff_area, "m²")
         positive("gap_factor", self.gap_factor, "")
-        if self.variant not in VARIANTS:
-            raise InputError("variant", self.variant, f"one of {', '.join(VARIANTS)}")
+        ELEMENT_MODELS.check(self.variant)
         if self.gap_model not in GAP_MODELS:
             raise InputError("gap_model", self.gap_model, f"one of {', '.join(GAP_MODELS)}")
         if self.gap_model == "two_sigma":
@@ -429,14 +460,7 @@ def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRMode
         factor=model.gap_factor,
         sampling_length=model.sampling_length,
     )
-    if model.variant == "V2":
-        g_s = solid_conductance_v2(a_l, D=model.D, lambda_s=model.lambda_s)
-    elif model.variant == "MT":
-        g_s = solid_conductance_mt(
-            a_l, D=model.D, lambda_s=model.lambda_s, cutoff_area=model.cutoff_area
-        )
-    else:
-        g_s = solid_conductance_v1(a_r, lambda_s=model.lambda_s)
+    g_s = ELEMENT_MODELS[model.variant](np.asarray(a_l), a_r, model)
     loaded = p > 0.0
     if model.constriction_alleviation:
         divisor = constriction_alleviation_factor(a_r, apparent_area=area)

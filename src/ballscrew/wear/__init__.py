@@ -13,7 +13,7 @@ working raceway length, reciprocation, worn groove, time integration) and §9 (d
 
 from ballscrew.wear.life import FlankRate, WearLife, WearSetup, flank_rate, wear_life, wear_setup
 from ballscrew.wear.profile import worn_gap, worn_gap_function
-from ballscrew.wear.rates import cell_wear_rate, wear_rate_model_a, wear_rate_model_c
+from ballscrew.wear.rates import WEAR_LAWS, cell_wear_rate, wear_rate_model_a, wear_rate_model_c
 from ballscrew.wear.strips import (
     depth_per_revolution,
     raceway_depth_rate,
@@ -23,6 +23,7 @@ from ballscrew.wear.strips import (
 )
 
 __all__ = [
+    "WEAR_LAWS",
     "FlankRate",
     "WearLife",
     "WearSetup",

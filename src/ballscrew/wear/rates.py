@@ -20,18 +20,20 @@ All functions are vectorised over the grid (any array shape).
 from __future__ import annotations
 
 import math
-from typing import Literal
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
 from ballscrew.fractal import yan_komvopoulos as yk
+from ballscrew.registry import Registry
 
-__all__ = ["WearModel", "cell_wear_rate", "wear_rate_model_a", "wear_rate_model_c"]
+__all__ = ["WEAR_LAWS", "cell_wear_rate", "wear_rate_model_a", "wear_rate_model_c"]
 
 FloatArray = NDArray[np.float64]
-WearModel = Literal["A", "C"]
+WEAR_LAWS: Registry[Callable[..., NDArray[np.float64]]] = Registry("wear law", "wear.model")
+"""Cell wear-rate laws: Model ``A`` (plastic asperities) and ``C`` (see each function)."""
 
 
 def _check(coefficient: float, cell_area: float, hardness: float) -> None:
@@ -68,6 +70,7 @@ def _inputs(asperity_pressure: ArrayLike, sliding_speed: ArrayLike) -> tuple[Flo
     return p, v
 
 
+@WEAR_LAWS.register("A", "Archard wear of the plastically deformed fractal asperities")
 def wear_rate_model_a(
     asperity_pressure: ArrayLike,
     sliding_speed: ArrayLike,
@@ -101,6 +104,7 @@ def wear_rate_model_a(
     return coefficient * v * f_plastic / (3.0 * hardness * cell_area)
 
 
+@WEAR_LAWS.register("C", "wear by the cap volume of the largest asperity (needs Ds < 2.5)")
 def wear_rate_model_c(
     asperity_pressure: ArrayLike,
     sliding_speed: ArrayLike,
@@ -130,7 +134,7 @@ def wear_rate_model_c(
 
 
 def cell_wear_rate(
-    model: WearModel,
+    model: str,
     asperity_pressure: ArrayLike,
     sliding_speed: ArrayLike,
     cell_area: float,
@@ -141,13 +145,7 @@ def cell_wear_rate(
     coefficient: float,
     gamma: float = 1.5,
 ) -> FloatArray:
-    """Wear rate per cell of Model ``"A"`` or ``"C"``, m/s (see the two functions)."""
-    if model == "A":
-        fn = wear_rate_model_a
-    elif model == "C":
-        fn = wear_rate_model_c
-    else:
-        raise InputError("wear.model", model, "'A' or 'C'")
-    return fn(
+    """Wear rate per cell of the registered law ``model`` (:data:`WEAR_LAWS`), m/s."""
+    return WEAR_LAWS[model](
         asperity_pressure, sliding_speed, cell_area, Ds, G, e_star, hardness, coefficient, gamma
     )
