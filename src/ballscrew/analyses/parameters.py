@@ -18,19 +18,15 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass
-from typing import Literal
 
 from ballscrew.case import Case
 from ballscrew.contact.elastic import composite_modulus
 from ballscrew.geometry import ScrewGeometry
+from ballscrew.geometry.screw import SIDES, Side
 from ballscrew.loads import ball_load, nut_forces
 from ballscrew.lubrication import lubricant
 
 __all__ = ["SIDES", "Lubrication", "Material", "NutLoad", "ScrewParameters", "Side"]
-
-Side = Literal["screw", "nut"]
-"""The raceway a ball touches: 'screw' (contact A) or 'nut' (contact B)."""
-SIDES: tuple[Side, Side] = ("screw", "nut")
 
 
 @dataclass(frozen=True)

@@ -15,6 +15,8 @@ from typing import Literal
 from ballscrew.errors import InputError
 
 Side = Literal["screw", "nut"]
+"""The raceway a ball touches: 'screw' (contact A) or 'nut' (contact B)."""
+SIDES: tuple[Side, Side] = ("screw", "nut")
 """Which raceway a contact belongs to: ``"screw"`` (contact A) or ``"nut"`` (contact B)."""
 
 

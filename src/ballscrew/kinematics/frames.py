@@ -19,13 +19,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.geometry import ScrewGeometry, frenet_frame
-from ballscrew.geometry.screw import flank_sign
+from ballscrew.geometry.screw import Side, flank_sign
 
 __all__ = [
     "BallFrame",
@@ -36,7 +35,6 @@ __all__ = [
 ]
 
 FloatArray = NDArray[np.float64]
-Contact = Literal["screw", "nut"]
 
 
 @dataclass(frozen=True)
@@ -73,7 +71,7 @@ def ball_frame(geometry: ScrewGeometry) -> BallFrame:
     )
 
 
-def contact_vector(frame: BallFrame, angle: float, flank: int, contact: Contact) -> FloatArray:
+def contact_vector(frame: BallFrame, angle: float, flank: int, contact: Side) -> FloatArray:
     """Unit vector e_k from the ball centre to contact A (``"screw"``) or B (``"nut"``), §2.1."""
     s = flank_sign(flank)
     e = math.cos(angle) * frame.n + s * math.sin(angle) * frame.b

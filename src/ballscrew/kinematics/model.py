@@ -10,11 +10,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Literal
 
 from ballscrew.contact import hertz
 from ballscrew.contact.hertz import HertzContact
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, raceway_curvature
+from ballscrew.geometry.screw import SIDES, Side
 from ballscrew.kinematics.frames import BallFrame, ball_frame
 from ballscrew.kinematics.inertia import ball_inertia, ball_mass
 from ballscrew.kinematics.sliding import deformed_radius
@@ -28,8 +28,6 @@ from ballscrew.lubrication import (
 )
 
 __all__ = ["BallModel"]
-
-Contact = Literal["screw", "nut"]
 
 
 @dataclass(frozen=True)
@@ -69,39 +67,39 @@ class BallModel:
     def inertia(self) -> float:
         return ball_inertia(self.geometry.ball_diameter, self.ball_density)
 
-    def curvature(self, contact: Contact) -> RacewayCurvature:
+    def curvature(self, contact: Side) -> RacewayCurvature:
         """Exact gap curvatures (G15)–(G17) at A or B (nominal contact angle)."""
         return self._curvatures[contact]
 
     @cached_property
     def _curvatures(self) -> dict[str, RacewayCurvature]:
-        return {c: raceway_curvature(self.geometry, c) for c in ("screw", "nut")}
+        return {c: raceway_curvature(self.geometry, c) for c in SIDES}
 
-    def e_star(self, contact: Contact) -> float:
+    def e_star(self, contact: Side) -> float:
         return self.e_star_screw if contact == "screw" else self.e_star_nut
 
     @cached_property
     def _unit_hertz(self) -> dict[str, HertzContact]:
         return {
             c: hertz(self.curvature(c).rx, self.curvature(c).ry, self.e_star(c), 1.0)
-            for c in ("screw", "nut")
+            for c in SIDES
         }
 
-    def hertz_constant(self, contact: Contact) -> float:
+    def hertz_constant(self, contact: Side) -> float:
         """K of δ = K Q^(2/3), (E1.5), m N^(−2/3) (1.513e-7 at A in REF, T1.7)."""
         return self._unit_hertz[contact].approach
 
-    def hertz_semi_axes(self, contact: Contact, load: float) -> tuple[float, float]:
+    def hertz_semi_axes(self, contact: Side, load: float) -> tuple[float, float]:
         """Hertz semi-axes (along x = t, along y = across the groove) at load Q [m]."""
         unit = self._unit_hertz[contact]
         scale = max(load, 0.0) ** (1.0 / 3.0)
         return unit.a * scale, unit.b * scale
 
-    def deformed_radius(self, contact: Contact = "screw") -> float:
+    def deformed_radius(self, contact: Side = "screw") -> float:
         """Harris R_d = 2 r_g r_b/(r_g + r_b) of the contact surface across the groove [m]."""
         return deformed_radius(self.geometry.groove_radius(contact), self.geometry.ball_radius)
 
-    def film(self, load: float, speed: float, contact: Contact = "screw") -> FilmThickness | None:
+    def film(self, load: float, speed: float, contact: Side = "screw") -> FilmThickness | None:
         """Hamrock–Dowson film carrying the whole load (None without lubricant or motion)."""
         if not self.lubricated or speed == 0.0 or load <= 0.0:
             return None
@@ -116,7 +114,7 @@ class BallModel:
             load,
         )
 
-    def sharing(self, load: float, speed: float, contact: Contact = "screw") -> LoadSharing:
+    def sharing(self, load: float, speed: float, contact: Side = "screw") -> LoadSharing:
         """JGP asperity share at A (E6.4); dry (ψ = 1) without lubricant or entrainment."""
         if not self.lubricated or speed == 0.0:
             return LoadSharing(1.0, float(load), 0.0, None)
@@ -133,7 +131,7 @@ class BallModel:
             self.surface,
         )
 
-    def rolling_resistance(self, load: float, speed: float, contact: Contact) -> float:
+    def rolling_resistance(self, load: float, speed: float, contact: Side) -> float:
         """EHL rolling-resistance magnitude F_R (E3.4) [N]; 0 without lubricant or motion."""
         if not self.lubricated or speed == 0.0 or load <= 0.0:
             return 0.0

@@ -1,0 +1,123 @@
+"""The one result protocol every analysis returns, and the descriptor of an analysis.
+
+A result is immutable and knows how to present itself:
+
+* :meth:`AnalysisResult.summary` — scalars, each ``{"value": …, "unit": …}`` in SI (nested
+  dictionaries allowed); ``summary.json`` is this plus the warnings and the inputs;
+* :meth:`AnalysisResult.to_xarray` — fields and histories with ``units`` attributes, one
+  dataset or a mapping ``file stem → dataset``;
+* :meth:`AnalysisResult.figures` — :class:`Figure` objects that draw a PNG on demand;
+* :meth:`AnalysisResult.report` — the report's :class:`Section` objects;
+* :attr:`AnalysisResult.inputs` — the resolved case, each value with its unit;
+* :attr:`AnalysisResult.warnings` — what the user must know about the numbers.
+
+The generic writer (:func:`ballscrew.results.write_results`) turns any such object into a
+results folder; an :class:`Analysis` descriptor ties an analysis to the command line, the
+sweeps and the index page.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol, runtime_checkable
+
+import xarray as xr
+
+from ballscrew.registry import Registry
+
+__all__ = [
+    "ANALYSES",
+    "Analysis",
+    "AnalysisResult",
+    "Figure",
+    "Section",
+    "Table",
+    "quantity",
+]
+
+
+def quantity(number: float, unit: str) -> dict[str, Any]:
+    """A summary scalar with its SI unit, e.g. ``{"value": 1.35e9, "unit": "Pa"}``."""
+    return {"value": float(number), "unit": unit}
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A figure of a result: ``draw(path)`` writes the PNG to ``path`` and returns it."""
+
+    name: str
+    """File stem of the PNG (``pressure_screw`` → ``pressure_screw.png``)."""
+    caption: str
+    draw: Callable[[Path], Path]
+
+
+@dataclass(frozen=True)
+class Table:
+    """A report table: a header row and rows of cells (floats are printed to 6 digits)."""
+
+    header: tuple[str, ...]
+    rows: tuple[tuple[object, ...], ...]
+
+
+@dataclass(frozen=True)
+class Section:
+    """One report section: a heading, paragraphs, tables and figures (in that order)."""
+
+    title: str
+    paragraphs: tuple[str, ...] = ()
+    tables: tuple[Table, ...] = ()
+    figures: tuple[str, ...] = ()
+    """Names of the result's :class:`Figure` objects shown in this section."""
+
+
+@runtime_checkable
+class AnalysisResult(Protocol):
+    """What every analysis returns (see the module docstring)."""
+
+    @property
+    def analysis(self) -> str:
+        """Name of the analysis that produced the result (``"contact"``, ``"tcr"``, …)."""
+
+    @property
+    def title(self) -> str:
+        """Title of the report."""
+
+    @property
+    def inputs(self) -> Mapping[str, Any]:
+        """The resolved inputs, each value with its unit."""
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """Warnings about the numbers, one line each."""
+
+    def summary(self) -> dict[str, Any]:
+        """Scalars with their SI units."""
+
+    def to_xarray(self) -> xr.Dataset | Mapping[str, xr.Dataset]:
+        """Fields and histories with units."""
+
+    def figures(self) -> Sequence[Figure]:
+        """The figures of the report."""
+
+    def report(self) -> Sequence[Section]:
+        """The sections of the report, after the inputs and the warnings."""
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """Descriptor of an analysis: what the command line, sweeps and the index know of it."""
+
+    name: str
+    """Command and sweep name (``ballscrew NAME``, ``--analysis NAME``)."""
+    title: str
+    """One line for help texts."""
+    scalars: Callable[[Any], dict[str, tuple[float, str]]] | None = None
+    """Sweepable scalars of a case, ``name → (value, SI unit)``; None = not sweepable."""
+    headlines: tuple[str, ...] = field(default_factory=tuple)
+    """Dotted ``summary.json`` keys the index page shows for a results folder."""
+
+
+ANALYSES: Registry[Analysis] = Registry("analysis", "--analysis")
+"""Every analysis of the package, by name (filled by :mod:`ballscrew.analyses.catalog`)."""

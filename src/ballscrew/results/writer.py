@@ -1,0 +1,90 @@
+"""The one writer of results folders: any :class:`~ballscrew.analyses.result.AnalysisResult`.
+
+A results folder holds
+
+* ``summary.json`` — the result's scalars (SI, each with its unit), its warnings and the
+  resolved inputs;
+* ``<stem>.nc`` — the result's xarray datasets (NetCDF, ``units`` attributes);
+* ``<figure>.png`` — its figures;
+* ``report.html`` — one self-contained page: the inputs, the warnings, then the result's own
+  sections with their figures embedded;
+* ``case.toml`` — the case file as the user gave it (when there is one) and ``inputs.json``,
+  the case as resolved (every default filled in, SI values with units).
+
+The folder appears complete or not at all (:func:`~ballscrew.results.folder.results_folder`).
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import xarray as xr
+
+from ballscrew.analyses.result import AnalysisResult
+from ballscrew.case.inputs import input_rows
+from ballscrew.results.folder import results_folder
+from ballscrew.results.report import Section, write_report
+from ballscrew.results.summary import write_summary
+
+__all__ = ["write_results"]
+
+
+def _datasets(result: AnalysisResult) -> Mapping[str, xr.Dataset]:
+    data = result.to_xarray()
+    return {"fields": data} if isinstance(data, xr.Dataset) else data
+
+
+def _inputs_section(inputs: Mapping[str, Any]) -> Section:
+    rows = [[key, value, unit] for key, value, unit in input_rows(dict(inputs))]
+    return Section(
+        "Inputs",
+        paragraphs=["The case as it ran: every value, defaults included (SI units)."],
+        tables=[(["input", "value", "unit"], rows)],
+    )
+
+
+def _warnings_section(warnings: tuple[str, ...]) -> Section:
+    if not warnings:
+        return Section("Warnings", paragraphs=["None."])
+    return Section("Warnings", paragraphs=list(warnings))
+
+
+def write_results(
+    result: AnalysisResult, out: str | Path, case_file: str | Path | None = None
+) -> Path:
+    """Write the results folder of ``result`` at ``out`` and return its path.
+
+    ``case_file``: the case file as given, copied into the folder as ``case.toml``.
+    """
+    with results_folder(out) as folder:
+        summary = {
+            "analysis": result.analysis,
+            **result.summary(),
+            "warnings": list(result.warnings),
+            "inputs": dict(result.inputs),
+        }
+        write_summary(folder / "summary.json", summary)
+        (folder / "inputs.json").write_text(
+            json.dumps(dict(result.inputs), indent=2, ensure_ascii=False) + "\n", encoding="utf-8"
+        )
+        if case_file is not None:
+            shutil.copyfile(case_file, folder / "case.toml")
+        for stem, dataset in _datasets(result).items():
+            dataset.to_netcdf(folder / f"{stem}.nc", engine="h5netcdf")
+        drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
+        sections = [_inputs_section(result.inputs), _warnings_section(tuple(result.warnings))]
+        for s in result.report():
+            sections.append(
+                Section(
+                    s.title,
+                    paragraphs=list(s.paragraphs),
+                    tables=[(list(t.header), [list(r) for r in t.rows]) for t in s.tables],
+                    figures=[drawn[name] for name in s.figures],
+                )
+            )
+        write_report(folder / "report.html", result.title, f"ballscrew {result.analysis}", sections)
+    return Path(out).resolve()
