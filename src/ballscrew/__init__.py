@@ -12,7 +12,17 @@ thermal contact resistance and parameter sweeps, in SI units throughout.
 
 __version__ = "0.1.0"
 
-from ballscrew import case, contact, errors, fractal, geometry, loads, thermal, units
+from ballscrew import (
+    case,
+    contact,
+    contact_resistance,
+    errors,
+    fractal,
+    geometry,
+    loads,
+    thermal,
+    units,
+)
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
@@ -25,6 +35,7 @@ __all__ = [
     "ball_kinematics",
     "case",
     "contact",
+    "contact_resistance",
     "drag_torque",
     "errors",
     "fractal",

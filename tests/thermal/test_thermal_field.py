@@ -10,11 +10,11 @@ import xarray as xr
 
 import ballscrew as bs
 from ballscrew.case import CaseError, with_overrides
-from ballscrew.errors import InputError
-from ballscrew.thermal.constriction import (
+from ballscrew.contact_resistance.constriction import (
     elliptic_constriction_resistance,
     smeared_conductance,
 )
+from ballscrew.errors import InputError
 
 RPM = 2 * math.pi / 60
 FAST = {"thermal.mesh.size": "5 mm", "thermal.transient.time_step": "300 s"}

@@ -17,15 +17,15 @@ from dataclasses import dataclass
 from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.case import Case, TCRSpec
-from ballscrew.errors import InputError
-from ballscrew.loads import preloaded_axial_stiffness
-from ballscrew.thermal import (
+from ballscrew.contact_resistance import (
     ContactTCR,
     FractalTCRModel,
     contact_tcr,
     parallel_resistance,
     series_resistance,
 )
+from ballscrew.errors import InputError
+from ballscrew.loads import preloaded_axial_stiffness
 
 
 @dataclass(frozen=True)

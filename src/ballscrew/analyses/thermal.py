@@ -23,9 +23,9 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
+from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.errors import InputError
 from ballscrew.loads import preload_drag_torque
-from ballscrew.thermal.constriction import ball_contact_constriction
 from ballscrew.thermal.convection import (
     Air,
     flat_plate_laminar,

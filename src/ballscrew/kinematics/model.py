@@ -81,8 +81,7 @@ class BallModel:
     @cached_property
     def _unit_hertz(self) -> dict[str, HertzContact]:
         return {
-            c: hertz(self.curvature(c).rx, self.curvature(c).ry, self.e_star(c), 1.0)
-            for c in SIDES
+            c: hertz(self.curvature(c).rx, self.curvature(c).ry, self.e_star(c), 1.0) for c in SIDES
         }
 
     def hertz_constant(self, contact: Side) -> float:

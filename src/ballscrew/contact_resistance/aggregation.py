@@ -17,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ballscrew.contact_resistance.element import ElementTCR, FractalTCRModel, element_tcr
 from ballscrew.errors import InputError
-from ballscrew.thermal.element_resistance import ElementTCR, FractalTCRModel, element_tcr
 from ballscrew.validation import positive
 
 __all__ = [

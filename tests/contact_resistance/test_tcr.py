@@ -5,8 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew.errors import InputError
-from ballscrew.thermal import (
+from ballscrew.contact_resistance import (
     VARIANTS,
     FractalTCRModel,
     constriction_alleviation_factor,
@@ -25,6 +24,7 @@ from ballscrew.thermal import (
     solid_conductance_v2,
     unit_area_resistance,
 )
+from ballscrew.errors import InputError
 
 E_STAR = 206e9 / (2 * (1 - 0.3**2))
 H = 6.5e9
