@@ -224,3 +224,13 @@ def test_disk_full_keeps_the_previous_results(tmp_path) -> None:
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
     assert _run_of(out) == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["run"]
+
+
+def test_index_never_replaces_an_index_html_of_your_own(tmp_path) -> None:
+    _write(tmp_path / "run", 1, "contact")
+    assert runner.invoke(app, ["index", str(tmp_path)]).exit_code == 0
+    assert runner.invoke(app, ["index", str(tmp_path)]).exit_code == 0  # its own page again
+    (tmp_path / "index.html").write_text("<h1>my page</h1>")
+    result = runner.invoke(app, ["index", str(tmp_path)])
+    assert result.exit_code == 2 and "index.html of your own" in result.output
+    assert (tmp_path / "index.html").read_text() == "<h1>my page</h1>"
