@@ -163,6 +163,7 @@ def test_leftovers_of_a_killed_swap_are_tidied(tmp_path) -> None:
     out.rename(tmp_path / ".run.old-abc")  # killed after setting the old folder aside
     (tmp_path / ".run.partial-def").mkdir()
     (tmp_path / ".run.partial-def" / "summary.json").write_text("{}")
+    (tmp_path / ".run.wear-state.npz.ghi.tmp").write_bytes(b"PK")  # a checkpoint half-written
     (tmp_path / "other.partial-x").mkdir()  # not ours
     with claim_output(out):
         assert _run_of(out) == 1
@@ -234,3 +235,18 @@ def test_index_never_replaces_an_index_html_of_your_own(tmp_path) -> None:
     result = runner.invoke(app, ["index", str(tmp_path)])
     assert result.exit_code == 2 and "index.html of your own" in result.output
     assert (tmp_path / "index.html").read_text() == "<h1>my page</h1>"
+
+
+def test_a_large_netcdf_is_not_started_without_room(tmp_path, monkeypatch) -> None:
+    from collections import namedtuple
+
+    usage = namedtuple("usage", "total used free")
+    monkeypatch.setattr(folder_module, "IN_MEMORY_BYTES", 0)
+    monkeypatch.setattr(folder_module.shutil, "disk_usage", lambda path: usage(1, 1, 10))
+    dataset = xr.Dataset({"p": (("x",), [1.0, 2.0])})
+    with (
+        pytest.raises(ResultsWriteError, match="No space left"),
+        results_folder(tmp_path / "r") as f,
+    ):
+        folder_module.write_netcdf(dataset, f / "fields.nc")
+    assert list(tmp_path.iterdir()) == []

@@ -11,6 +11,7 @@ A file ballscrew did not write is never deleted or overwritten.
 from __future__ import annotations
 
 import ctypes
+import errno
 import json
 import os
 import shutil
@@ -49,6 +50,13 @@ class ResultsWriteError(BallscrewError):
 
     def __init__(self, out: Path, exc: OSError) -> None:
         super().__init__(f"cannot write the results {out}: {exc.strerror or exc}")
+
+
+IN_MEMORY_BYTES = 256 << 20
+"""Largest dataset written to NetCDF through memory rather than by HDF5 on the disk [B]."""
+
+_UMASK = os.umask(0o022)
+os.umask(_UMASK)
 
 
 @dataclass(frozen=True)
@@ -292,11 +300,13 @@ def atomic_file(path: Path) -> Iterator[Path]:
     The temporary file is created with ``O_EXCL`` (never through a planted link) and removed on
     failure; the final rename replaces a link at ``path`` instead of writing through it.
     """
-    fd, name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    hidden = path.name if path.name.startswith(".") else f".{path.name}"
+    fd, name = tempfile.mkstemp(prefix=f"{hidden}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
     tmp = Path(name)
     try:
         yield tmp
+        tmp.chmod(0o666 & ~_UMASK)  # as an ordinary new file, not mkstemp's 0600
         os.replace(tmp, path)
     except BaseException:
         tmp.unlink(missing_ok=True)
@@ -306,12 +316,17 @@ def atomic_file(path: Path) -> Iterator[Path]:
 def write_netcdf(dataset: Any, path: Path) -> Path:
     """Write an xarray Dataset to ``path`` (NetCDF-4/HDF5) through a temporary file.
 
-    The file is built in memory and written with plain file I/O: HDF5 writing to a full disk
-    can crash the process, a plain write raises :class:`OSError` instead.
+    HDF5 writing to a full disk can crash the process, so a file of up to
+    :data:`IN_MEMORY_BYTES` is built in memory and written with plain file I/O (which raises
+    :class:`OSError`); a larger one is written by HDF5 only if the disk has twice its size free.
     """
-    data = dataset.to_netcdf(engine="h5netcdf")
     with atomic_file(path) as tmp:
-        tmp.write_bytes(data)
+        if dataset.nbytes <= IN_MEMORY_BYTES:
+            tmp.write_bytes(dataset.to_netcdf(engine="h5netcdf"))
+        elif shutil.disk_usage(path.parent).free < 2 * dataset.nbytes:
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
+        else:
+            dataset.to_netcdf(tmp, engine="h5netcdf")
     return path
 
 
@@ -387,7 +402,8 @@ def prepare_sweep_folder(out: Path) -> None:
         marker.get("command") != "sweep" or marker.get("version") != __version__
     ):
         for name in _files(out):
-            (out / name).unlink()
+            if _owned(name, marker):
+                (out / name).unlink()
         marker = None
     with writing(out):
         (out / "points").mkdir(parents=True, exist_ok=True)

@@ -11,7 +11,6 @@ The local cluster listens on the loopback interface only.
 
 from __future__ import annotations
 
-import copy
 import hashlib
 import json
 import logging
@@ -105,12 +104,9 @@ def _client(scheduler: str | None, workers: int | None):  # -> distributed.Clien
     logging.getLogger("distributed").setLevel(quiet)
 
     if scheduler:
-        config = copy.deepcopy(dask.config.config)
-        try:
-            return Client(scheduler, timeout=CONNECT_TIMEOUT), None
+        try:  # not the default client: a failed one would stay registered as the default
+            return Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False), None
         except Exception as exc:  # any failure to reach it is the address's
-            dask.config.config.clear()  # a failed Client leaves its settings behind
-            dask.config.config.update(config)
             reason = (str(exc).splitlines() or [type(exc).__name__])[0][:200]
             raise InputError(
                 "--scheduler",
