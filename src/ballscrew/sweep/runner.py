@@ -156,7 +156,7 @@ def run_sweep(
             futures = {
                 client.submit(run_point, analysis, cases[i], points[i], pure=False): i for i in todo
             }
-            for future in as_completed(futures):
+            for future in as_completed(futures, loop=client.loop):
                 i = futures[future]
                 _save(folder / f"{keys[i]}.json", future.result())
                 done += 1
