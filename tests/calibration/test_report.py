@@ -30,6 +30,7 @@ def test_results_folder(tmp_path: Path) -> None:
     result = fit_wear_coefficient(SyntheticModel(), data)
     folder = write_calibration(result, "demo", tmp_path / "out", {"fit_torque_scale": False})
     assert sorted(p.name for p in folder.iterdir()) == [
+        ".ballscrew-results.json",  # the marker naming the files ballscrew wrote
         "fit.csv",
         "fit.png",
         "report.html",

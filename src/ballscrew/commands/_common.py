@@ -16,6 +16,14 @@ CaseArg = Annotated[
     Path, typer.Argument(help="case file (TOML)", dir_okay=False, show_default=False)
 ]
 OutOpt = Annotated[Path, typer.Option("--out", "-o", help="results folder to write")]
+ForceOpt = Annotated[
+    bool,
+    typer.Option(
+        "--force",
+        help="replace a results folder of another command or ballscrew version "
+        "(a file ballscrew did not write is never replaced)",
+    ),
+]
 
 log = logging.getLogger("ballscrew")
 

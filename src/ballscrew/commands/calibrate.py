@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
 
 MeasuredOpt = Annotated[
     Path,
@@ -34,36 +34,38 @@ def calibrate(
             help="also fit the drag-torque scale (friction_torque data only)",
         ),
     ] = False,
+    force: ForceOpt = False,
 ) -> None:
     """Fit the wear coefficient (and the torque scale) to a measured history."""
     from ballscrew.calibration import calibrate as fit
     from ballscrew.calibration import read_measured
     from ballscrew.case import load_case
-    from ballscrew.results import check_output_folder, value
+    from ballscrew.results import claim_output, value
     from ballscrew.results.calibration_report import write_calibration
 
     case = load_case(case_file)
     data = read_measured(measured, min_points=3 if fit_torque_scale else 2)
-    check_output_folder(out)
-    log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
-    result = fit(case, data, fit_torque_scale=fit_torque_scale)
-    log.info(
-        "K = %.4e ± %.2e, torque scale %.4g, RMS residual %.3g %s (%d model runs)",
-        result.wear_coefficient,
-        result.standard_error,
-        result.torque_scale,
-        result.rms_residual,
-        result.unit,
-        result.evaluations,
-    )
-    options: dict[str, object] = {
-        "case_file": str(case_file),
-        "measured_file": str(measured),
-        "fit_torque_scale": fit_torque_scale,
-    }
-    if case.wear is not None:  # K is confounded with these (kinematics-wear.md §7.4)
-        options["wear_model"] = case.wear.model
-        options["stroke"] = value(case.wear.stroke, "m")
-        options["programme_revolutions"] = sum(lv.revolutions for lv in case.wear.programme)
-    folder = write_calibration(result, case.name, out, options)
-    log.info("wrote %s", folder / "report.html")
+    inputs = [case_file, measured]
+    with claim_output(out, command="calibrate", force=force, inputs=inputs):
+        log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
+        result = fit(case, data, fit_torque_scale=fit_torque_scale)
+        log.info(
+            "K = %.4e ± %.2e, torque scale %.4g, RMS residual %.3g %s (%d model runs)",
+            result.wear_coefficient,
+            result.standard_error,
+            result.torque_scale,
+            result.rms_residual,
+            result.unit,
+            result.evaluations,
+        )
+        options: dict[str, object] = {
+            "case_file": str(case_file),
+            "measured_file": str(measured),
+            "fit_torque_scale": fit_torque_scale,
+        }
+        if case.wear is not None:  # K is confounded with these (kinematics-wear.md §7.4)
+            options["wear_model"] = case.wear.model
+            options["stroke"] = value(case.wear.stroke, "m")
+            options["programme_revolutions"] = sum(lv.revolutions for lv in case.wear.programme)
+        folder = write_calibration(result, case.name, out, options)
+        log.info("wrote %s", folder / "report.html")

@@ -4,19 +4,21 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
 
 
 @user_errors_exit_2
-def contact(case_file: CaseArg, out: OutOpt = Path("results/contact")) -> None:
+def contact(
+    case_file: CaseArg, out: OutOpt = Path("results/contact"), force: ForceOpt = False
+) -> None:
     """Solve the screw-side and nut-side contact of one ball of the loaded nut."""
     from ballscrew.analyses.ball_contact import solve_ball_contacts
     from ballscrew.case import load_case
-    from ballscrew.results import check_output_folder
+    from ballscrew.results import claim_output
     from ballscrew.results.contact_report import write_ball_contacts
 
     case = load_case(case_file)
-    check_output_folder(out)
-    result = solve_ball_contacts(case)
-    folder = write_ball_contacts(result, out)
+    with claim_output(out, command="contact", force=force, inputs=[case_file]):
+        result = solve_ball_contacts(case)
+        folder = write_ball_contacts(result, out)
     log.info("wrote %s", folder / "report.html")

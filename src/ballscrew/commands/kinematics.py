@@ -7,13 +7,14 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
 
 
 @user_errors_exit_2
 def kinematics(
     case_file: CaseArg,
     out: OutOpt = Path("results/kinematics"),
+    force: ForceOpt = False,
     level: Annotated[
         int | None, typer.Option(help="ball balance level 0, 1 or 2 (default: the case's)")
     ] = None,
@@ -29,7 +30,7 @@ def kinematics(
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
     from ballscrew.kinematics.limits import SpeedLimitWarning
-    from ballscrew.results import check_output_folder
+    from ballscrew.results import claim_output
     from ballscrew.results.kinematics_report import write_kinematics
     from ballscrew.units import to_si
 
@@ -40,23 +41,23 @@ def kinematics(
             omega = to_si(float(speed) if _is_number(speed) else speed, "angular_velocity")
         except ValueError as exc:
             raise InputError("--speed", speed, str(exc)) from None
-    check_output_folder(out)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", SpeedLimitWarning)
-        result = run_kinematics(case, level=level, speed=omega)
-    for item in caught:
-        if issubclass(item.category, SpeedLimitWarning):
-            log.warning("warning: %s", item.message)
-    nut = result.states[1]
-    log.info(
-        "V = %.4g m/s, Q_A = %.4g N, Q_B = %.4g N, T = %.4g N m (catalogue %.4g N m)",
-        nut.ball_speed,
-        nut.load_screw,
-        nut.load_nut,
-        result.model_torque,
-        result.catalogue_torque,
-    )
-    folder = write_kinematics(result, case, out)
+    with claim_output(out, command="kinematics", force=force, inputs=[case_file]):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", SpeedLimitWarning)
+            result = run_kinematics(case, level=level, speed=omega)
+        for item in caught:
+            if issubclass(item.category, SpeedLimitWarning):
+                log.warning("warning: %s", item.message)
+        nut = result.states[1]
+        log.info(
+            "V = %.4g m/s, Q_A = %.4g N, Q_B = %.4g N, T = %.4g N m (catalogue %.4g N m)",
+            nut.ball_speed,
+            nut.load_screw,
+            nut.load_nut,
+            result.model_torque,
+            result.catalogue_torque,
+        )
+        folder = write_kinematics(result, case, out)
     log.info("wrote %s", folder / "report.html")
 
 

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import ForceOpt, OutOpt, log, user_errors_exit_2
 
 ProfileArg = Annotated[
     Path,
@@ -44,17 +44,20 @@ def surface(
         typer.Option(help="instrument lateral resolution if coarser than the spacing"),
     ] = None,
     gamma: Annotated[float, typer.Option(help="W-M frequency ratio γ")] = 1.5,
+    force: ForceOpt = False,
 ) -> None:
     """Fractal dimension D and roughness G by power spectrum and structure function."""
-    from ballscrew.results import check_output_folder
+    from ballscrew.results import claim_output
     from ballscrew.results.surface_report import write_surface
     from ballscrew.surface import fractal_parameters, read_profile
 
-    check_output_folder(out)
-    profile = read_profile(profile_file, spacing=spacing)
-    fit = fractal_parameters(profile, gamma=gamma, resolution=_length(resolution, "--resolution"))
-    for f in (fit.psd, fit.structure_function):
-        if f is not None:
-            log.info("%s: D = %.4f, G = %.4g m (R² = %.4f)", f.method, f.D, f.G, f.r_squared)
-    folder = write_surface(fit, profile, out)
+    with claim_output(out, command="surface", force=force, inputs=[profile_file]):
+        profile = read_profile(profile_file, spacing=spacing)
+        fit = fractal_parameters(
+            profile, gamma=gamma, resolution=_length(resolution, "--resolution")
+        )
+        for f in (fit.psd, fit.structure_function):
+            if f is not None:
+                log.info("%s: D = %.4f, G = %.4g m (R² = %.4f)", f.method, f.D, f.G, f.r_squared)
+        folder = write_surface(fit, profile, out)
     log.info("wrote %s", folder / "report.html")

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import ForceOpt, OutOpt, log, user_errors_exit_2
 
 
 @user_errors_exit_2
@@ -30,9 +30,11 @@ def sweep(
     retry_failed: Annotated[
         bool, typer.Option(help="recompute points that failed in an earlier run")
     ] = False,
+    force: ForceOpt = False,
 ) -> None:
     """Run an analysis over a grid of case values on Dask; re-runs skip finished points."""
     from ballscrew.case import CaseError, load_case
+    from ballscrew.results.folder import claim_output, prepare_sweep_folder
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
     from ballscrew.sweep.registry import get_analysis
@@ -48,29 +50,14 @@ def sweep(
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     function = get_analysis(name)
-    folder = check_sweep_folder(out)
 
     def progress(done: int, total: int) -> None:
         log.info("sweep: %d/%d points done", done, total)
 
-    dataset, computed = run_sweep(
-        case, axes, function, name, folder, scheduler, workers, progress, retry_failed
-    )
-    write_sweep(dataset, folder, computed)
+    with claim_output(out, command="sweep", force=force, inputs=[case_file]) as folder:
+        prepare_sweep_folder(folder)
+        dataset, computed = run_sweep(
+            case, axes, function, name, folder, scheduler, workers, progress, retry_failed
+        )
+        write_sweep(dataset, folder, computed)
     log.info("wrote %s", folder / "report.html")
-
-
-def check_sweep_folder(out: Path) -> Path:
-    """A sweep writes in place (to resume): the folder must be new, empty or an earlier sweep."""
-    from ballscrew.errors import InputError
-    from ballscrew.results import check_output_folder
-
-    out = out.expanduser().resolve()
-    if (out / "points").is_dir():
-        return out
-    out = check_output_folder(out)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise InputError("--out", str(out), f"a writable folder ({exc.strerror})") from None
-    return out

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
 
 
 @user_errors_exit_2
@@ -17,16 +17,17 @@ def tcr(
     variant: Annotated[
         str | None, typer.Option(help="element model V2, MT or V1 (default: the case's)")
     ] = None,
+    force: ForceOpt = False,
 ) -> None:
     """Thermal contact resistance of every contact, each nut and the whole screw."""
     from ballscrew.analyses.screw_tcr import screw_tcr
     from ballscrew.case import load_case
-    from ballscrew.results import check_output_folder
+    from ballscrew.results import claim_output
     from ballscrew.results.tcr_report import write_screw_tcr
 
     case = load_case(case_file)
-    check_output_folder(out)
-    result = screw_tcr(case, variant=variant)
-    log.info("R = %.4g K/W, R'' = %.4g m^2K/W", result.resistance, result.resistance_per_area)
-    folder = write_screw_tcr(result, case, out)
+    with claim_output(out, command="tcr", force=force, inputs=[case_file]):
+        result = screw_tcr(case, variant=variant)
+        log.info("R = %.4g K/W, R'' = %.4g m^2K/W", result.resistance, result.resistance_per_area)
+        folder = write_screw_tcr(result, case, out)
     log.info("wrote %s", folder / "report.html")

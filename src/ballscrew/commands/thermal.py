@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
 
 
 @user_errors_exit_2
@@ -18,23 +18,24 @@ def thermal(
         str | None,
         typer.Option(help="axisymmetric, network or 3d (default: the case's thermal.model)"),
     ] = None,
+    force: ForceOpt = False,
 ) -> None:
     """Steady and transient temperatures, sensors and thermal elongation (needs [thermal])."""
     from ballscrew.analyses.thermal import thermal_field
     from ballscrew.case import load_case
-    from ballscrew.results import check_output_folder
+    from ballscrew.results import claim_output
     from ballscrew.results.thermal_report import write_thermal
 
     case = load_case(case_file)
-    check_output_folder(out)
-    result = thermal_field(case, model=model)
-    log.info(
-        "max rise %.3g K, elongation %.4g um, heat %.4g W (%s, %d unknowns)",
-        result.max_temperature_rise,
-        result.elongation * 1e6,
-        result.heat_input,
-        result.model,
-        result.unknowns,
-    )
-    folder = write_thermal(result, out)
+    with claim_output(out, command="thermal", force=force, inputs=[case_file]):
+        result = thermal_field(case, model=model)
+        log.info(
+            "max rise %.3g K, elongation %.4g um, heat %.4g W (%s, %d unknowns)",
+            result.max_temperature_rise,
+            result.elongation * 1e6,
+            result.heat_input,
+            result.model,
+            result.unknowns,
+        )
+        folder = write_thermal(result, out)
     log.info("wrote %s", folder / "report.html")

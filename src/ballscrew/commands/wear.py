@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
 
 
 def checkpoint_path(out: Path) -> Path:
@@ -27,34 +27,36 @@ def wear(
             help="continue a stopped run from its checkpoint beside the results folder",
         ),
     ] = True,
+    force: ForceOpt = False,
 ) -> None:
     """Wear profile of the screw raceway, preload and drag torque versus revolutions."""
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
-    from ballscrew.results import check_output_folder
+    from ballscrew.results import claim_output
+    from ballscrew.results.folder import writing
     from ballscrew.results.wear_report import write_wear
     from ballscrew.wear import wear_life
 
     case = load_case(case_file)
-    check_output_folder(out)
-    state = checkpoint_path(out)
-    if not resume and state.exists():
-        state.unlink()
-    try:
-        life = wear_life(case, checkpoint=state, resume=resume)
-    except InputError as exc:
-        if exc.field != "checkpoint":
-            raise
-        log.warning("the checkpoint %s is from another case; starting afresh", state)
-        state.unlink()
-        life = wear_life(case, checkpoint=state)
-    log.info(
-        "h_max = %.4g µm, F_p = %.1f N, T = %.4f N m after %.4g rev",
-        1e6 * life.max_wear_depth[-1],
-        life.preload[-1],
-        life.friction_torque[-1],
-        life.revolutions[-1],
-    )
-    folder = write_wear(life, case, out, state_file=state)
-    state.unlink(missing_ok=True)
-    log.info("wrote %s", folder / "report.html")
+    with claim_output(out, command="wear", force=force, inputs=[case_file]) as path, writing(path):
+        state = checkpoint_path(out)
+        if not resume:
+            state.unlink(missing_ok=True)
+        try:
+            life = wear_life(case, checkpoint=state, resume=resume)
+        except InputError as exc:
+            if exc.field != "checkpoint":
+                raise
+            log.warning("the checkpoint %s is from another case; starting afresh", state)
+            state.unlink(missing_ok=True)
+            life = wear_life(case, checkpoint=state)
+        log.info(
+            "h_max = %.4g µm, F_p = %.1f N, T = %.4f N m after %.4g rev",
+            1e6 * life.max_wear_depth[-1],
+            life.preload[-1],
+            life.friction_torque[-1],
+            life.revolutions[-1],
+        )
+        folder = write_wear(life, case, out, state_file=state)
+        state.unlink(missing_ok=True)
+        log.info("wrote %s", folder / "report.html")

@@ -10,7 +10,7 @@ import xarray as xr
 
 from ballscrew.analyses.ball_contact import SIDES, BallContacts, RacewayContact
 from ballscrew.results import plots
-from ballscrew.results.folder import results_folder
+from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -138,7 +138,7 @@ def write_ball_contacts(result: BallContacts, out: str | Path) -> Path:
     case = result.case
     with results_folder(out) as folder:
         write_summary(folder / "summary.json", summary)
-        contact_fields(result).to_netcdf(folder / "fields.nc", engine="h5netcdf")
+        write_netcdf(contact_fields(result), folder / "fields.nc")
         figures = []
         for side in SIDES:
             c = result.contact(side)

@@ -18,7 +18,7 @@ from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
 from ballscrew.case import Case
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
-from ballscrew.results.folder import results_folder
+from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -232,7 +232,7 @@ def write_kinematics(run: KinematicsRun, case: Case, out: str | Path) -> Path:
     summary = kinematics_summary(run, case)
     with results_folder(out) as folder:
         write_summary(folder / "summary.json", summary)
-        kinematics_fields(run).to_netcdf(folder / "fields.nc", engine="h5netcdf")
+        write_netcdf(kinematics_fields(run), folder / "fields.nc")
         figures = []
         for tag, f in (("low", run.low), ("high", run.high)):
             rpm = f.state.screw_speed * _RPM

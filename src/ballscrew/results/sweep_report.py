@@ -11,7 +11,14 @@ import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
-from ballscrew.results.folder import SUMMARY_NAME
+from ballscrew.results.folder import (
+    SUMMARY_NAME,
+    SWEEP_PATTERNS,
+    atomic_file,
+    write_marker,
+    write_netcdf,
+    writing,
+)
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import write_summary
 
@@ -22,7 +29,7 @@ def _label(da: xr.DataArray, name: str) -> str:
 
 
 def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
-    """Line plot over the first swept key; one line per value of the second, if any."""
+    """Line plot over the first swept key; one line per value of the second, if any (PNG)."""
     da = ds[name]
     dims = list(da.dims)
     fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
@@ -39,7 +46,8 @@ def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
     ax.set_xlabel(_label(x, dims[0]))
     ax.set_ylabel(_label(da, name))
     ax.grid(alpha=0.3)
-    fig.savefig(path, dpi=110)
+    with atomic_file(path) as tmp:
+        fig.savefig(tmp, dpi=110, format="png")
     plt.close(fig)
     return path
 
@@ -47,10 +55,18 @@ def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
 def write_sweep(ds: xr.Dataset, folder: Path, computed: int) -> Path:
     """Write sweep.nc, one plot per result, summary.json and report.html into ``folder``.
 
-    ``folder`` also holds the per-point store (``points/``), so it is written in place.
+    ``folder`` also holds the per-point store (``points/``), so it is written in place, each
+    file through a temporary file; a failed write raises :class:`ResultsWriteError`.
     """
     folder = Path(folder)
-    ds.to_netcdf(folder / "sweep.nc", engine="h5netcdf")
+    with writing(folder):
+        _write_files(ds, folder, computed)
+        write_marker(folder, "sweep", SWEEP_PATTERNS)
+    return folder
+
+
+def _write_files(ds: xr.Dataset, folder: Path, computed: int) -> None:
+    write_netcdf(ds, folder / "sweep.nc")
     names = [n for n in ds.data_vars if n not in ("error", "failed")]
     figures = [
         (plot_variable(ds, n, folder / f"sweep_{n}.png"), f"{n} over the sweep") for n in names
@@ -64,20 +80,17 @@ def write_sweep(ds: xr.Dataset, folder: Path, computed: int) -> Path:
         ]
         for idx in failed
     ]
-    write_summary(
-        folder / SUMMARY_NAME,
-        {
-            "analysis": ds.attrs["analysis"],
-            "case": ds.attrs["case"],
-            "points": int(ds.attrs["points"]),
-            "computed_now": computed,
-            "failed": len(failures),
-            "axes": {
-                d: {"values": ds[d].values, "unit": ds[d].attrs.get("units", "")} for d in dims
-            },
-            "failures": failures,
-        },
-    )
+    summary = {
+        "analysis": ds.attrs["analysis"],
+        "case": ds.attrs["case"],
+        "points": int(ds.attrs["points"]),
+        "computed_now": computed,
+        "failed": len(failures),
+        "axes": {d: {"values": ds[d].values, "unit": ds[d].attrs.get("units", "")} for d in dims},
+        "failures": failures,
+    }
+    with atomic_file(folder / SUMMARY_NAME) as tmp:
+        write_summary(tmp, summary)
     sections = [
         Section(
             "Sweep",
@@ -89,10 +102,10 @@ def write_sweep(ds: xr.Dataset, folder: Path, computed: int) -> Path:
             figures=figures,
         )
     ]
-    write_report(
-        folder / "report.html",
-        f"Sweep: {ds.attrs['case']}",
-        f"ballscrew sweep --analysis {ds.attrs['analysis']}",
-        sections,
-    )
-    return folder
+    with atomic_file(folder / "report.html") as tmp:
+        write_report(
+            tmp,
+            f"Sweep: {ds.attrs['case']}",
+            f"ballscrew sweep --analysis {ds.attrs['analysis']}",
+            sections,
+        )

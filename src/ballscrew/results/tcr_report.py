@@ -12,7 +12,7 @@ from ballscrew.analyses.ball_contact import SIDES
 from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR, ScrewTCR
 from ballscrew.case import Case
 from ballscrew.results import plots
-from ballscrew.results.folder import results_folder
+from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -135,7 +135,7 @@ def write_screw_tcr(result: ScrewTCR, case: Case, out: str | Path) -> Path:
     with results_folder(out) as folder:
         write_summary(folder / "summary.json", summary)
         fields = tcr_fields(result)
-        fields.to_netcdf(folder / "fields.nc", engine="h5netcdf")
+        write_netcdf(fields, folder / "fields.nc")
         figures = []
         for nut in result.nuts:
             for side in SIDES:

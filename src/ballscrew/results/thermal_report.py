@@ -14,7 +14,7 @@ import numpy as np
 from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.thermal import ThermalField
-from ballscrew.results.folder import results_folder
+from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -397,7 +397,7 @@ def write_thermal(result: ThermalField, out: str | Path) -> Path:
     summary = thermal_summary(result)
     with results_folder(out) as folder:
         write_summary(folder / "summary.json", summary)
-        result.to_xarray().to_netcdf(folder / "fields.nc", engine="h5netcdf")
+        write_netcdf(result.to_xarray(), folder / "fields.nc")
         figures = [
             (
                 temperature_map(result, folder / "temperature_map.png"),

@@ -18,7 +18,7 @@ import numpy as np
 import xarray as xr
 
 from ballscrew.case import Case
-from ballscrew.results.folder import results_folder
+from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 from ballscrew.wear.life import WearLife
@@ -168,7 +168,7 @@ def write_wear(
     summary = wear_summary(life, case)
     with results_folder(out) as folder:
         write_summary(folder / "summary.json", summary)
-        wear_history(life, case).to_netcdf(folder / "history.nc", engine="h5netcdf")
+        write_netcdf(wear_history(life, case), folder / "history.nc")
         if state_file is not None and Path(state_file).is_file():
             (folder / "state.npz").write_bytes(Path(state_file).read_bytes())
         figures = [

@@ -4,6 +4,9 @@ Each point runs ``analysis(case) -> {name: (value, unit)}`` on a Dask worker: a 
 by default, or any running scheduler given by address. A point that raises is recorded with
 its error and does not stop the sweep. Finished points are stored one JSON file each under
 ``points/``, so re-running into the same folder computes only what is missing.
+
+A scheduler given by address is trusted: Dask exchanges pickled functions and results with it.
+The local cluster listens on the loopback interface only.
 """
 
 from __future__ import annotations
@@ -23,9 +26,14 @@ import xarray as xr
 
 from ballscrew.backend import limited_fft_threads
 from ballscrew.case import Case
+from ballscrew.errors import InputError
+from ballscrew.results.folder import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
 
 log = logging.getLogger(__name__)
+
+#: How long connecting to a scheduler given by address may take.
+CONNECT_TIMEOUT = "5s"
 
 #: An analysis maps a validated case to named scalars with their SI units.
 Analysis = Callable[[Case], dict[str, tuple[float, str]]]
@@ -64,9 +72,8 @@ def point_key(analysis_name: str, case: Case) -> str:
 
 
 def _save(path: Path, record: PointRecord) -> None:
-    scratch = path.with_suffix(".tmp")
-    scratch.write_text(json.dumps(record.__dict__))
-    scratch.replace(path)
+    with atomic_file(path) as scratch:
+        scratch.write_text(json.dumps(record.__dict__))
 
 
 def _load(path: Path) -> PointRecord:
@@ -78,7 +85,11 @@ def _load(path: Path) -> PointRecord:
 def _needs_run(path: Path, retry_failed: bool) -> bool:
     if not path.is_file():
         return True
-    return retry_failed and _load(path).error is not None
+    try:
+        record = _load(path)
+    except (OSError, ValueError, KeyError, TypeError, IndexError):
+        return True  # unreadable: computed again
+    return retry_failed and record.error is not None
 
 
 def _client(scheduler: str | None, workers: int | None):  # -> distributed.Client
@@ -93,7 +104,15 @@ def _client(scheduler: str | None, workers: int | None):  # -> distributed.Clien
     logging.getLogger("distributed").setLevel(quiet)
 
     if scheduler:
-        return Client(scheduler), None
+        try:  # not the default client: a failed one would stay registered as the default
+            return Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False), None
+        except Exception as exc:  # any failure to reach it is the address's
+            reason = (str(exc).splitlines() or [type(exc).__name__])[0][:200]
+            raise InputError(
+                "--scheduler",
+                scheduler,
+                f"the address of a running Dask scheduler, e.g. tcp://host:8786 ({reason})",
+            ) from None
     cluster = LocalCluster(
         n_workers=workers,
         threads_per_worker=1,
@@ -137,7 +156,7 @@ def run_sweep(
             futures = {
                 client.submit(run_point, analysis, cases[i], points[i], pure=False): i for i in todo
             }
-            for future in as_completed(futures):
+            for future in as_completed(futures, loop=client.loop):
                 i = futures[future]
                 _save(folder / f"{keys[i]}.json", future.result())
                 done += 1

@@ -49,6 +49,7 @@ from ballscrew.loads import (
     preload_drag_torque,
 )
 from ballscrew.lubrication import AsperitySurface, share_load
+from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
 from ballscrew.wear.profile import worn_gap
 from ballscrew.wear.rates import cell_wear_rate
 from ballscrew.wear.strips import (
@@ -428,6 +429,7 @@ _RECORD_KEYS = (
 def _save(path: Path, state: _State, fingerprint: str) -> None:
     arrays: dict[str, Any] = {f"rec_{k}": np.asarray(v) for k, v in state.records.items()}
     arrays.update({f"warm_{k}": v for k, v in state.warm.items()})
+    arrays["depth"] = state.depth
     meta = {
         "version": _CHECKPOINT_VERSION,
         "fingerprint": fingerprint,
@@ -437,30 +439,45 @@ def _save(path: Path, state: _State, fingerprint: str) -> None:
         "steps": state.steps,
         "initial_psi": state.initial_psi,
     }
-    tmp = path.with_name(path.name + ".tmp.npz")
-    np.savez(tmp, depth=state.depth, meta=np.array(json.dumps(meta)), **arrays)
-    tmp.replace(path)
+    save_checkpoint(path, meta, arrays)
 
 
-def _load(path: Path, fingerprint: str) -> _State:
-    with np.load(path, allow_pickle=False) as data:
-        meta = json.loads(str(data["meta"]))
-        if meta.get("version") != _CHECKPOINT_VERSION or meta.get("fingerprint") != fingerprint:
-            raise InputError(
-                "checkpoint", str(path), "a checkpoint of this same case and [wear] section"
-            )
-        records = {k: list(data[f"rec_{k}"]) for k in _RECORD_KEYS}
-        warm = {k[5:]: np.array(data[k]) for k in data.files if k.startswith("warm_")}
-        return _State(
+def _load(path: Path, fingerprint: str, ny: int) -> _State | None:
+    """The saved state, or None (with a warning) if the checkpoint is missing or unsound."""
+    loaded = load_checkpoint(path)
+    if loaded is None:
+        return None
+    meta, data = loaded
+    if meta.get("version") != _CHECKPOINT_VERSION:
+        return ignore_checkpoint(path, f"format version {meta.get('version')!r}")
+    if meta.get("fingerprint") != fingerprint:
+        raise InputError(
+            "checkpoint", str(path), "a checkpoint of this same case and [wear] section"
+        )
+    try:
+        state = _State(
             level=int(meta["level"]),
             revolutions=float(meta["revolutions"]),
-            depth=np.array(data["depth"]),
-            warm=warm,
-            records=records,
+            depth=np.asarray(data["depth"], dtype=float),
+            warm={k[5:]: v for k, v in data.items() if k.startswith("warm_")},
+            records={k: list(data[f"rec_{k}"]) for k in _RECORD_KEYS},
             solves=int(meta["solves"]),
             steps=int(meta["steps"]),
             initial_psi=dict(meta["initial_psi"]),
         )
+    except (KeyError, TypeError, ValueError):
+        return ignore_checkpoint(path, "entries are missing")
+    lengths = {len(v) for v in state.records.values()}
+    sound = (
+        state.depth.shape == (2, ny)
+        and np.isfinite(state.depth).all()
+        and len(lengths) == 1
+        and lengths != {0}
+        and data["rec_profiles"].shape[1:] == (2, ny)
+        and 0 <= state.revolutions < math.inf
+        and state.level >= 0
+    )
+    return state if sound else ignore_checkpoint(path, "its arrays do not fit this case")
 
 
 def _record(state: _State, setup: WearSetup, forces: tuple[float, float], sampled: bool) -> None:
@@ -587,8 +604,8 @@ def wear_life(
     spec = setup.spec
     fingerprint = _fingerprint(case, setup)
     path = None if checkpoint is None else Path(checkpoint)
-    if path is not None and resume and path.exists():
-        state = _load(path, fingerprint)
+    state = _load(path, fingerprint, setup.y.size) if path is not None and resume else None
+    if state is not None:
         log.info("wear: resumed at N = %.4g rev (step %d)", state.revolutions, state.steps)
     else:
         state = _State(
