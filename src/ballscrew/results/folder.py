@@ -28,6 +28,7 @@ from filelock import FileLock, Timeout
 
 from ballscrew import __version__
 from ballscrew.errors import BallscrewError, InputError
+from ballscrew.files import atomic_file
 
 #: The file whose presence marks a folder as a finished ballscrew results folder.
 SUMMARY_NAME = "summary.json"
@@ -55,8 +56,6 @@ class ResultsWriteError(BallscrewError):
 IN_MEMORY_BYTES = 256 << 20
 """Largest dataset written to NetCDF through memory rather than by HDF5 on the disk [B]."""
 
-_UMASK = os.umask(0o022)
-os.umask(_UMASK)
 
 
 @dataclass(frozen=True)
@@ -291,26 +290,6 @@ def writing(out: Path) -> Iterator[None]:
         raise
     except OSError as exc:
         raise ResultsWriteError(out, exc) from None
-
-
-@contextmanager
-def atomic_file(path: Path) -> Iterator[Path]:
-    """Yield a unique temporary path beside ``path`` that replaces ``path`` on success.
-
-    The temporary file is created with ``O_EXCL`` (never through a planted link) and removed on
-    failure; the final rename replaces a link at ``path`` instead of writing through it.
-    """
-    hidden = path.name if path.name.startswith(".") else f".{path.name}"
-    fd, name = tempfile.mkstemp(prefix=f"{hidden}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    tmp = Path(name)
-    try:
-        yield tmp
-        tmp.chmod(0o666 & ~_UMASK)  # as an ordinary new file, not mkstemp's 0600
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
 
 
 def write_netcdf(dataset: Any, path: Path) -> Path:

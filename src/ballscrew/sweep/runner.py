@@ -27,7 +27,7 @@ import xarray as xr
 from ballscrew.backend import limited_fft_threads
 from ballscrew.case import Case
 from ballscrew.errors import InputError
-from ballscrew.results.folder import atomic_file
+from ballscrew.files import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
 
 log = logging.getLogger(__name__)

@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from ballscrew.results.folder import atomic_file
+from ballscrew.files import atomic_file
 
 
 class CheckpointWarning(UserWarning):
