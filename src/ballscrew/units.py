@@ -144,6 +144,10 @@ def _convert(magnitude: float, unit: pint.Unit, kind: str) -> float:
     """``magnitude`` in ``unit`` as a float in the SI unit of ``kind`` (dimension checked)."""
     ureg = registry()
     target = ureg.parse_units(SI_UNITS[kind])
+    if kind != "dimensionless" and any(
+        ureg.get_root_units(name)[1] == ureg.dimensionless for name in unit._units
+    ):
+        raise pint.DimensionalityError(unit, target)  # %, ppm: no scale for a dimensional value
     factor = _frequency_as_speed(unit, kind)
     if ureg.get_root_units(unit)[1] != ureg.get_root_units(target)[1] and factor == 1.0:
         raise pint.DimensionalityError(unit, target)

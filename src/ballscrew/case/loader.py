@@ -264,12 +264,6 @@ def field_spec(loc: tuple[Any, ...] | list[Any]) -> FieldSpec:
     )
 
 
-def _field_info(loc: tuple[Any, ...]) -> tuple[str, str]:
-    """(description, SI unit) of the field at ``loc``, or empty strings if not found."""
-    spec = field_spec(loc)
-    return spec.description, spec.unit
-
-
 def unknown_key_message(dotted: str, key: str, allowed: list[str], where: str) -> str:
     """'unknown key' line with the nearest allowed spelling."""
     near = difflib.get_close_matches(key, allowed, n=1)
