@@ -128,7 +128,7 @@ def parse_quantity(text: str) -> tuple[float, pint.Unit | None]:
     try:
         unit = registry().parse_units(unit_text)
     except Exception as exc:  # pint raises several unrelated types for unknown names
-        raise ValueError(f"unknown unit {match[2].strip()!r}") from exc
+        raise ValueError(f"unknown unit {_short(match[2].strip())}") from exc
     return magnitude, unit
 
 

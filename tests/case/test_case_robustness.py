@@ -12,6 +12,7 @@ from ballscrew.case import Case, CaseError, case_from_dict, load_case
 from ballscrew.case.loader import (
     MAX_FILE_BYTES,
     MAX_NESTING,
+    MAX_PROBLEMS,
     _allowed_range,
     _members,
     _submodel,
@@ -196,3 +197,11 @@ def test_quantity_fields_have_the_right_kind() -> None:
     }
     for loc, kind in kinds.items():
         assert field_spec(loc).kind == kind, loc
+
+
+def test_thousands_of_problems_are_summarised(gao_case_path: Path) -> None:
+    sensors = [_sensor(math.nan)["thermal"]["sensors"][0] | {"name": str(i)} for i in range(100)]
+    with pytest.raises(CaseError) as info:
+        load_case(gao_case_path, {"thermal": {"sensors": sensors}})
+    lines = str(info.value).splitlines()
+    assert len(lines) == MAX_PROBLEMS + 1 and lines[-1].endswith("and 80 more problems")

@@ -297,21 +297,32 @@ def _allowed_range(loc: tuple[Any, ...]) -> str:
 
 _TYPE_ERRORS = ("_type", "_parsing")
 
+#: Most problems listed in one error (the rest are counted).
+MAX_PROBLEMS = 20
+
+
+def _prefixes(dotted: str) -> list[str]:
+    """``dotted`` and each of its parents: ``a.b.c``, ``a.b``, ``a``."""
+    parts = dotted.split(".")
+    return [".".join(parts[:n]) for n in range(len(parts), 0, -1)]
+
 
 def _union_duplicates(errors: list[dict[str, Any]]) -> set[int]:
-    """Indices of type errors of one union member when another error of that field says more."""
+    """Indices of type errors of one union member when another error of that field says more.
+
+    Kept instead: any other kind of error of the field or one of its items, else the first
+    type error.
+    """
     fields = [field_spec(tuple(err["loc"])).dotted for err in errors]
-
-    def better(j: int, i: int) -> bool:
-        related = fields[j] == fields[i] or fields[j].startswith(fields[i] + ".")
-        return related and (j < i or not errors[j]["type"].endswith(_TYPE_ERRORS))
-
-    return {
-        i
-        for i, err in enumerate(errors)
-        if err["type"].endswith(_TYPE_ERRORS)
-        and any(better(j, i) for j in range(len(errors)) if j != i)
-    }
+    is_type = [err["type"].endswith(_TYPE_ERRORS) for err in errors]
+    better = {p for f, t in zip(fields, is_type, strict=True) if not t for p in _prefixes(f)}
+    skip, seen = set(), set()
+    for i, field in enumerate(fields):
+        if is_type[i]:
+            if field in better or field in seen:
+                skip.add(i)
+            seen.update(_prefixes(field))
+    return skip
 
 
 def _range_text(loc: tuple[Any, ...], spec: FieldSpec) -> str:
@@ -356,4 +367,8 @@ def describe_errors(exc: ValidationError) -> list[str]:
     """One readable line per pydantic error: field, value and allowed range."""
     errors = list(exc.errors())
     skip = _union_duplicates(errors)
-    return [_describe(err) for i, err in enumerate(errors) if i not in skip]
+    kept = [err for i, err in enumerate(errors) if i not in skip]
+    lines = [_describe(err) for err in kept[:MAX_PROBLEMS]]
+    if len(kept) > MAX_PROBLEMS:
+        lines.append(f"... and {len(kept) - MAX_PROBLEMS} more problems")
+    return lines
