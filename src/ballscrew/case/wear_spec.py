@@ -128,6 +128,10 @@ class WearSpec(Model):
             description="grid half-widths / Hertz semi-axes at the largest ball load (§10.2: 1.4)",
         ),
     ] = 1.4
+    checkpoint_every: Annotated[
+        int,
+        Field(ge=1, le=1_000_000_000, description="time steps between checkpoint saves (count)"),
+    ] = 1
 
     @model_validator(mode="after")
     def _few_enough_samples(self) -> WearSpec:
@@ -139,8 +143,3 @@ class WearSpec(Model):
                 f"samples; use torque_sampling ≥ {total / MAX_TORQUE_SAMPLES:g}"
             )
         return self
-
-    checkpoint_every: Annotated[
-        int,
-        Field(ge=1, le=1_000_000_000, description="time steps between checkpoint saves (count)"),
-    ] = 1
