@@ -7,8 +7,10 @@ import time
 from pathlib import Path
 
 import pytest
+from typer.testing import CliRunner
 
 from ballscrew.case import CaseError, load_case
+from ballscrew.cli import app
 from ballscrew.sweep import grid_points, parse_axis, run_sweep
 from ballscrew.sweep.axes import MAX_AXIS_POINTS
 
@@ -63,3 +65,12 @@ def test_bad_axis_values_are_refused_at_once(text: str) -> None:
     with pytest.raises(CaseError, match="--vary"):
         parse_axis(text)
     assert time.perf_counter() - start < 0.5
+
+
+def test_the_sweep_command_refuses_a_repeated_vary_key(gao_case_path: Path, tmp_path: Path):
+    vary = ["--vary", "surface.D=1.4,1.5", "--vary", "surface.D=1.5,1.6"]
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["sweep", str(gao_case_path), *vary, "--out", str(out)])
+    assert result.exit_code == 2
+    assert "surface.D: the key is varied twice" in result.output
+    assert not (out / "points").exists()
