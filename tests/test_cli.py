@@ -59,7 +59,7 @@ BAD_EDITS = [
     (
         'lead = "10 mm"',
         'lead = "-10 mm"',
-        "screw.lead = '-10 mm' is not allowed: allowed range is (0, inf) m",
+        "screw.lead = '-10 mm' is not allowed: allowed range is (0, 1] m",
     ),
     (
         "screw_conformity = 0.52",

@@ -2,11 +2,23 @@
 
 Inside the package every quantity is a float in SI units. Case files may give a number (taken as
 SI) or a string with a unit (``"10 mm"``, ``"1000 rpm"``, ``"45 deg"``); :func:`to_si` converts
-such strings through pint, checking that the dimension is the expected one.
+such strings, checking that the dimension is the expected one.
+
+A string is read as ONE finite decimal number followed by ONE unit expression: unit names joined
+by ``*``, ``/``, spaces and parentheses, with small integer exponents (``W/(m^2*K)``, ``1/Pa``).
+There is never arithmetic on numbers, so no string can hang the reader or overflow.
+
+Dimensions are checked strictly, with the angle as a dimension of its own: a dimensionless unit
+(``%``, ``ppm``) is no length, ``"45 deg deg"`` is no angle. For a rotational speed a frequency
+(``Hz``, ``1/s``) means revolutions per second; for a temperature difference ``degC`` and
+``degF`` mean a difference (``"10 degC"`` = 10 K), for an absolute temperature a point on the
+scale (``"20 degC"`` = 293.15 K).
 """
 
 from __future__ import annotations
 
+import math
+import re
 from functools import cache
 
 import pint
@@ -37,6 +49,18 @@ SI_UNITS: dict[str, str] = {
     "dimensionless": "",
 }
 
+#: Longest quantity string read (longer ones are refused before parsing).
+MAX_LENGTH = 200
+
+#: Deepest nesting of parentheses in a unit expression.
+MAX_DEPTH = 3
+
+_NUMBER = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d{1,4})?)(.*)", re.DOTALL)
+_TOKEN = re.compile(
+    r"\s*(?:(?P<name>°?[^\W\d]+|%)|(?P<one>1(?=\s*/))|(?P<power>\^|\*\*)\s*(?P<exp>[+-]?[1-9])"
+    r"(?![\d.])|(?P<op>[*/·])|(?P<open>\()|(?P<close>\)))"
+)
+
 
 @cache
 def registry() -> pint.UnitRegistry:
@@ -46,31 +70,130 @@ def registry() -> pint.UnitRegistry:
     return ureg
 
 
+def _expected(kind: str) -> str:
+    """Text naming the SI unit of ``kind`` in error messages."""
+    return SI_UNITS[kind] or "no unit"
+
+
+def _short(value: object) -> str:
+    """``repr(value)`` cut to a length that fits in a one-line message."""
+    text = repr(value)
+    return text if len(text) <= 60 else f"{text[:57]}..."
+
+
+def _check_unit_syntax(text: str) -> str:
+    """``text`` in pint spelling after checking it is a plain unit expression (no numbers)."""
+    depth, previous, pos, pieces = 0, "op", 0, []
+    while pos < len(text.rstrip()):
+        match = _TOKEN.match(text, pos)
+        if match is None:
+            raise ValueError(f"unexpected {text[pos:].strip()!r}")
+        token = match.lastgroup if match.lastgroup != "exp" else "power"
+        if token == "power" and previous not in ("name", "close"):
+            raise ValueError("an exponent must follow a unit name or ')'")
+        depth += {"open": 1, "close": -1}.get(token, 0)
+        if not 0 <= depth <= MAX_DEPTH:
+            raise ValueError(f"unbalanced or too deeply nested parentheses (at most {MAX_DEPTH})")
+        if token == "name":
+            pieces.append(" " + ("percent" if match["name"] == "%" else match["name"]))
+        elif token == "power":
+            pieces.append(f"**{match['exp']}")
+        elif token == "op":
+            pieces.append("*" if match["op"] == "·" else match["op"])
+        else:
+            pieces.append(" " + match[0].strip())
+        previous, pos = token, match.end()
+    if depth:
+        raise ValueError("unbalanced parentheses")
+    unit = "".join(pieces).strip()
+    return f"1{unit}" if unit.startswith("/") else unit
+
+
+def parse_quantity(text: str) -> tuple[float, pint.Unit | None]:
+    """Split ``text`` into a finite number and a pint unit (None when there is no unit).
+
+    Raises ``ValueError`` for anything but one decimal number followed by one unit expression.
+    """
+    if len(text) > MAX_LENGTH:
+        raise ValueError(f"longer than {MAX_LENGTH} characters")
+    match = _NUMBER.fullmatch(text)
+    if match is None:
+        raise ValueError("it must be a number followed by a unit, e.g. '10 mm'")
+    magnitude = float(match[1])
+    if not math.isfinite(magnitude):
+        raise ValueError(f"the number {match[1]} is not finite")
+    unit_text = _check_unit_syntax(match[2])
+    if not unit_text:
+        return magnitude, None
+    try:
+        unit = registry().parse_units(unit_text)
+    except Exception as exc:  # pint raises several unrelated types for unknown names
+        raise ValueError(f"unknown unit {_short(match[2].strip())}") from exc
+    return magnitude, unit
+
+
+def _frequency_as_speed(unit: pint.Unit, kind: str) -> float:
+    """2π when ``unit`` is a frequency given for a rotational speed (revolutions per time)."""
+    if kind != "angular_velocity":
+        return 1.0
+    _, root = registry().get_root_units(unit)
+    return 2.0 * math.pi if root == registry().parse_units("1/s") else 1.0
+
+
+def _convert(magnitude: float, unit: pint.Unit, kind: str) -> float:
+    """``magnitude`` in ``unit`` as a float in the SI unit of ``kind`` (dimension checked)."""
+    ureg = registry()
+    target = ureg.parse_units(SI_UNITS[kind])
+    if kind != "dimensionless" and any(
+        ureg.get_root_units(name)[1] == ureg.dimensionless for name in unit._units
+    ):
+        raise pint.DimensionalityError(unit, target)  # %, ppm: no scale for a dimensional value
+    factor = _frequency_as_speed(unit, kind)
+    if ureg.get_root_units(unit)[1] != ureg.get_root_units(target)[1] and factor == 1.0:
+        raise pint.DimensionalityError(unit, target)
+    quantity = ureg.Quantity(magnitude * factor, unit)
+    if kind == "temperature_difference":
+        quantity = quantity - ureg.Quantity(0.0, unit)
+    return float(quantity.to(target if factor == 1.0 else "1/s").magnitude)
+
+
 def to_si(value: object, kind: str) -> float:
     """Convert ``value`` to a float in the SI unit of ``kind``.
 
-    Numbers are returned unchanged (already SI). Strings are parsed by pint and must have the
-    dimension of ``kind``; a bare number in a string is taken as SI. Raises ``ValueError`` with
-    a message that names the expected unit when the string cannot be parsed or has the wrong
-    dimension.
+    Numbers are returned unchanged (already SI) if finite. Strings are one number and one unit
+    (see the module docstring) and must have the dimension of ``kind``; a bare number in a
+    string is taken as SI. Raises ``ValueError`` with a message that names the expected unit
+    when the value cannot be read, has the wrong dimension or is not finite.
     """
-    if isinstance(value, bool):
-        raise ValueError(f"expected a number or a quantity in {SI_UNITS[kind] or 'no unit'}")
+    unit_name = _expected(kind)
+    if isinstance(value, bool) or not isinstance(value, int | float | str):
+        raise ValueError(f"expected a number or a string such as '10 {SI_UNITS[kind]}'")
     if isinstance(value, int | float):
-        return float(value)
-    if not isinstance(value, str):
-        raise ValueError(f"expected a number or a string such as '10 {SI_UNITS[kind] or ''}'")
-    unit = SI_UNITS[kind]
+        try:
+            number = float(value)
+        except OverflowError:
+            number = math.inf
+        if not math.isfinite(number):
+            raise ValueError(f"{_short(value)} is not a finite number (in {unit_name})")
+        return number
     try:
-        quantity = registry().Quantity(value)
-    except Exception as exc:  # pint raises several unrelated types for bad strings
-        raise ValueError(f"cannot read {value!r} as a quantity in {unit or 'no unit'}") from exc
-    if not isinstance(quantity, pint.Quantity) or quantity.unitless:
-        return float(getattr(quantity, "magnitude", quantity))
+        magnitude, unit = parse_quantity(value)
+    except ValueError as exc:
+        raise ValueError(
+            f"cannot read {_short(value)} as a quantity in {unit_name}: {exc}"
+        ) from None
+    if unit is None:
+        return magnitude
     try:
-        return float(quantity.to(unit).magnitude)
-    except pint.DimensionalityError as exc:
+        result = _convert(magnitude, unit, kind)
+    except pint.DimensionalityError:
         noun = kind.replace("_", " ")
         article = "an" if noun[0] in "aeiou" else "a"
-        expected = unit or "no unit"
-        raise ValueError(f"{value!r} is not {article} {noun} (expected {expected})") from exc
+        raise ValueError(
+            f"{_short(value)} is not {article} {noun} (expected {unit_name})"
+        ) from None
+    except (pint.PintError, ArithmeticError):
+        result = math.nan
+    if not math.isfinite(result):
+        raise ValueError(f"{_short(value)} cannot be expressed as a finite number of {unit_name}")
+    return result

@@ -50,7 +50,7 @@ def test_override_accepts_unit_strings_and_returns_new_case(gao_case_path):
 @pytest.mark.parametrize(
     ("key", "value", "expected"),
     [
-        ("screw.lead", -0.01, "screw.lead = -0.01 is not allowed: allowed range is (0, inf) m"),
+        ("screw.lead", -0.01, "screw.lead = -0.01 is not allowed: allowed range is (0, 1] m"),
         ("screw.ball_diameter", 0.0, "screw.ball_diameter = 0.0 is not allowed"),
         (
             "screw.screw_conformity",
@@ -79,7 +79,7 @@ def test_override_accepts_unit_strings_and_returns_new_case(gao_case_path):
         ("operating.preload", -1500.0, "operating.preload = -1500.0 is not allowed"),
         ("operating.axial_load", -10.0, "operating.axial_load = -10.0 is not allowed"),
         ("surface.D", 2.0, "surface.D = 2.0 is not allowed: allowed range is (1, 2)"),
-        ("surface.G", -1e-9, "surface.G = -1e-09 is not allowed: allowed range is (0, inf) m"),
+        ("surface.G", -1e-9, "surface.G = -1e-09 is not allowed: allowed range is (0, 0.001] m"),
         ("screw.lead", "10 kg", "screw.lead: '10 kg' is not a length (expected m)"),
         ("screw.nuts", 3, "screw.nuts = 3 is not allowed: it must be one of 1 or 2"),
         ("numerics.gap_model", "cubic", "numerics.gap_model = 'cubic'"),

@@ -9,17 +9,26 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
 from ballscrew.units import SI_UNITS, to_si
 
+#: Highest screw speed a case accepts, rad/s (about 10⁶ rpm, far above any ball screw).
+MAX_SPEED = 1e5
+
 
 def quantity(kind: str, description: str, **constraints: float) -> Any:
-    """An annotated float field that accepts SI numbers or unit strings of ``kind``."""
+    """An annotated float field that accepts finite SI numbers or unit strings of ``kind``."""
+    extra = {"unit": SI_UNITS[kind], "kind": kind}
     return Annotated[
         float,
         BeforeValidator(partial(to_si, kind=kind)),
-        Field(description=description, json_schema_extra={"unit": SI_UNITS[kind]}, **constraints),
+        Field(description=description, json_schema_extra=extra, **constraints),
     ]
 
 
 class Model(BaseModel):
-    """Base of every case section: unknown keys are rejected, instances are immutable."""
+    """Base of every case section: unknown keys are rejected, instances are immutable.
 
-    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+    No float field accepts inf or NaN.
+    """
+
+    model_config = ConfigDict(
+        extra="forbid", frozen=True, validate_default=True, allow_inf_nan=False
+    )

@@ -20,12 +20,14 @@ from typing import Annotated, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from ballscrew.case.base import Model, quantity
+from ballscrew.case.base import MAX_SPEED, Model, quantity
 from ballscrew.lubrication.lubricants import LUBRICANTS
 
 Mounting = Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"]
 
-_Speed = quantity("angular_velocity", 'screw speed (rad/s; "3000 rpm" also works)', ge=0)
+_Speed = quantity(
+    "angular_velocity", 'screw speed (rad/s; "3000 rpm" also works)', ge=0, le=MAX_SPEED
+)
 
 
 class KinematicsSpec(Model):
@@ -57,27 +59,32 @@ class KinematicsSpec(Model):
         Field(ge=0.0, le=1.0, description="limiting shear stress / pressure of the film, τ_L/p"),
     ] = 0.07
     micro_contact_size: quantity(
-        "length", "side √ΔA of the fractal micro-contact cell; σ from (E5.3) with L_s = √ΔA", gt=0
+        "length",
+        "side √ΔA of the fractal micro-contact cell; σ from (E5.3) with L_s = √ΔA",
+        gt=0,
+        le=1e-2,
     ) = 10e-6
     traction_cells: Annotated[
         int, Field(ge=8, le=512, description="cells per axis of the traction grid (Level 2)")
     ] = 32
     unsupported_length: (
-        quantity("length", "unsupported screw length between bearings (whirling check)", gt=0)
+        quantity(
+            "length", "unsupported screw length between bearings (whirling check)", gt=0, le=100.0
+        )
         | None
     ) = None
     mounting: Mounting = Field(
         "fixed-supported", description="end fixity of the screw shaft for the whirling speed"
     )
-    root_diameter: quantity("length", "screw root diameter; None = groove bottom", gt=0) | None = (
-        None
-    )
+    root_diameter: (
+        quantity("length", "screw root diameter; None = groove bottom", gt=0, le=5.0) | None
+    ) = None
     critical_speed_factor: Annotated[
         float, Field(gt=0.0, le=1.0, description="allowed fraction of the whirling speed")
     ] = 0.8
     dn_limit: Annotated[
         float,
-        Field(gt=0.0, description="d·n limit, pitch diameter [mm] × speed [rpm]"),
+        Field(gt=0.0, le=1e8, description="d·n limit, pitch diameter [mm] × speed [rpm]"),
     ] = 70_000.0
     speed_warnings: bool = Field(
         True, description="warn when the speed exceeds the whirling-speed or d·n limit"

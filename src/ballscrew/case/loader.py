@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import copy
 import difflib
+import os
+import stat
 import tomllib
 from collections.abc import Mapping
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from types import UnionType
+from typing import Annotated, Any, Union, get_args, get_origin
 
 from pydantic import BaseModel, ValidationError
 
@@ -32,22 +36,85 @@ def load_case(path: str | Path, overrides: Mapping[str, Any] | None = None) -> C
     line per problem, each naming the field, the value and the allowed range.
     """
     path = Path(path)
+    raw = read_toml(path, "case file")
+    raw.setdefault("name", path.stem)
+    return case_from_dict(raw, overrides, source=str(path))
+
+
+#: Largest TOML file read (a case is a few kB).
+MAX_FILE_BYTES = 1 << 20
+
+#: Deepest nesting of tables and arrays in a TOML file (a case needs about 5).
+MAX_NESTING = 32
+
+_BOMS = {b"\xff\xfe": "UTF-16", b"\xfe\xff": "UTF-16"}
+
+
+def read_toml(path: str | Path, what: str = "case file") -> dict[str, Any]:
+    """The tables of the TOML file ``path``; one-line :class:`CaseError` naming it if unreadable.
+
+    The file must be a regular file of at most :data:`MAX_FILE_BYTES` in UTF-8 (a leading byte
+    order mark is skipped) nested at most :data:`MAX_NESTING` levels deep.
+    """
+    path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        if not stat.S_ISREG(os.stat(path).st_mode):  # a FIFO or device could block or never end
+            raise CaseError([f"the {what} is not a regular file"], str(path))
+        with path.open("rb") as file:
+            data = file.read(MAX_FILE_BYTES + 1)
     except OSError as exc:
-        raise CaseError([f"cannot read the case file ({exc.strerror})"], str(path)) from None
+        raise CaseError([f"cannot read the {what} ({exc.strerror})"], str(path)) from None
+    if len(data) > MAX_FILE_BYTES:
+        raise CaseError([f"the {what} is larger than {MAX_FILE_BYTES} bytes"], str(path))
+    return _parse_toml(_decode(data, path, what), path, what)
+
+
+def _decode(data: bytes, path: Path, what: str) -> str:
+    """``data`` as UTF-8 text without a byte order mark."""
+    if data[:2] in _BOMS:
+        raise CaseError([f"the {what} is UTF-16 text; save it as UTF-8"], str(path))
+    try:
+        return data.decode("utf-8").removeprefix("\ufeff")
+    except UnicodeDecodeError as exc:
+        problem = f"the {what} is not UTF-8 text (byte {exc.start + 1}); save it as UTF-8"
+        raise CaseError([problem], str(path)) from None
+
+
+def _parse_toml(text: str, path: Path, what: str) -> dict[str, Any]:
+    """Parse TOML ``text``, refusing syntax errors and too deep nesting."""
+    too_deep = CaseError([f"the {what} is nested deeper than {MAX_NESTING} levels"], str(path))
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CaseError([f"TOML syntax error: {exc}"], str(path)) from None
-    raw.setdefault("name", path.stem)
-    return case_from_dict(raw, overrides, source=str(path))
+    except RecursionError:
+        raise too_deep from None
+    if _depth(raw) > MAX_NESTING:
+        raise too_deep
+    return raw
+
+
+def _depth(value: Any) -> int:
+    """Nesting depth of dicts and lists in ``value`` (0 for a scalar), without recursion."""
+    deepest, stack = 0, [(value, 0)]
+    while stack:
+        node, depth = stack.pop()
+        children = (
+            node.values() if isinstance(node, dict) else node if isinstance(node, list) else None
+        )
+        if children is not None:
+            deepest = max(deepest, depth + 1)
+            if depth + 1 <= MAX_NESTING:
+                stack.extend((child, depth + 1) for child in children)
+    return deepest
 
 
 def case_from_dict(
     raw: Mapping[str, Any], overrides: Mapping[str, Any] | None = None, source: str = "case"
 ) -> Case:
     """Validate a case given as nested dictionaries (as read from TOML)."""
+    if not isinstance(raw, Mapping):
+        raise CaseError([f"expected tables of keys, not {type(raw).__name__}"], source)
     data = apply_overrides(raw, overrides or {}, source)
     try:
         return Case.model_validate(data)
@@ -64,8 +131,13 @@ def apply_overrides(
     raw: Mapping[str, Any], overrides: Mapping[str, Any], source: str = "case"
 ) -> dict[str, Any]:
     """Copy of ``raw`` with each dotted key of ``overrides`` set. The key must name a field."""
+    if not isinstance(overrides, Mapping):
+        problem = f"overrides must map dotted keys to values, not {type(overrides).__name__}"
+        raise CaseError([problem], source)
     data = copy.deepcopy(dict(raw))
     for dotted, value in overrides.items():
+        if not isinstance(dotted, str):
+            raise CaseError([f"override key {dotted!r} is not a dotted key string"], source)
         keys = dotted.split(".")
         check_field_path(keys, source)
         node = data
@@ -101,24 +173,95 @@ def _submodel(annotation: Any) -> type[BaseModel] | None:
     return None
 
 
-def _field_keys(loc: tuple[Any, ...]) -> list[str]:
-    """The field names of an error location, without list indices (``programme.1.speed``)."""
-    return [key for key in loc if isinstance(key, str)]
+@dataclass(frozen=True)
+class FieldSpec:
+    """What the case model says about the value at one error location."""
+
+    description: str = ""
+    unit: str = ""
+    kind: str = ""
+    constraints: tuple[Any, ...] = ()
+    dotted: str = ""
+    annotation: Any = None
 
 
-def _field_info(loc: tuple[Any, ...]) -> tuple[str, str]:
-    """(description, SI unit) of the field at ``loc``, or empty strings if not found."""
-    model: type[BaseModel] | None = Case
-    info = None
-    for key in _field_keys(loc):
-        if model is None or key not in model.model_fields:
-            return "", ""
-        info = model.model_fields[key]
-        model = _submodel(info.annotation)
+def _members(annotation: Any) -> list[Any]:
+    """The non-None members of a union annotation (``[annotation]`` when it is no union)."""
+    if get_origin(annotation) in (Union, UnionType):
+        return [arg for arg in get_args(annotation) if arg is not type(None)]
+    return [annotation]
+
+
+def _pick_member(annotation: Any, tag: str) -> Any:
+    """The member of a union that pydantic names ``tag`` in an error location."""
+    members = _members(annotation)
+    for member in members:
+        origin = get_origin(member)
+        if (origin in (tuple, list)) == tag.startswith(("tuple", "list")):
+            return member
+    return members[0]
+
+
+def _element(annotation: Any, index: int) -> Any:
+    """The annotation of item ``index`` of a tuple or list annotation."""
+    for member in _members(annotation):
+        args = get_args(member)
+        if get_origin(member) is tuple and args:
+            return args[-2 if args[-1] is Ellipsis else min(index, len(args) - 1)]
+        if get_origin(member) is list and args:
+            return args[0]
+    return annotation
+
+
+def _metadata(annotation: Any) -> list[Any]:
+    """Constraint and FieldInfo objects inside ``annotation`` (through ``X | None``)."""
+    members = _members(annotation)
+    if len(members) != 1:
+        return []
+    if get_origin(members[0]) is Annotated:
+        base, *meta = get_args(members[0])
+        found = []
+        for item in meta:
+            found += [item, *getattr(item, "metadata", ())]
+        return found + _metadata(base)
+    return []
+
+
+def field_spec(loc: tuple[Any, ...] | list[Any]) -> FieldSpec:
+    """Description, unit, kind and constraints of the field at an error location ``loc``.
+
+    ``loc`` may hold list or tuple indices and pydantic's union member tags; ``dotted`` is the
+    field as the user wrote it (tags left out). An unknown key gives a spec with ``dotted`` only.
+    """
+    info, annotation, keys = None, Case, []
+    for key in loc:
+        model = _submodel(annotation)
+        if isinstance(key, int):
+            annotation = _element(annotation, key)
+        elif model is not None and key in model.model_fields:
+            info = model.model_fields[key]
+            annotation = info.annotation
+        elif len(_members(annotation)) > 1:
+            annotation = _pick_member(annotation, str(key))
+            continue
+        else:
+            info, annotation = None, None
+        keys.append(str(key))
     if info is None:
-        return "", ""
-    extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
-    return info.description or "", str(extra.get("unit", ""))
+        return FieldSpec(dotted=".".join(keys), annotation=annotation)
+    found = [info, *info.metadata, *_metadata(annotation)]
+    extra: dict[str, Any] = {}
+    for item in found:
+        if isinstance(getattr(item, "json_schema_extra", None), dict):
+            extra = {**item.json_schema_extra, **extra}
+    return FieldSpec(
+        description=info.description or "",
+        unit=str(extra.get("unit", "")),
+        kind=str(extra.get("kind", "")),
+        constraints=tuple(item for item in found if _bound_attrs(item)),
+        dotted=".".join(keys),
+        annotation=annotation,
+    )
 
 
 def unknown_key_message(dotted: str, key: str, allowed: list[str], where: str) -> str:
@@ -128,66 +271,104 @@ def unknown_key_message(dotted: str, key: str, allowed: list[str], where: str) -
     return f"{dotted}: unknown key{hint}; allowed in {where}: {', '.join(allowed)}"
 
 
-_BOUNDS = {"greater_than", "greater_than_equal", "less_than", "less_than_equal"}
+_BOUNDS = {"greater_than", "greater_than_equal", "less_than", "less_than_equal", "finite_number"}
+
+
+def _bound_attrs(item: Any) -> dict[str, float]:
+    """The bounds (gt, ge, lt, le) that one constraint object sets."""
+    return {
+        a: getattr(item, a) for a in ("gt", "ge", "lt", "le") if getattr(item, a, None) is not None
+    }
 
 
 def _allowed_range(loc: tuple[Any, ...]) -> str:
     """The interval a numeric field accepts, from its constraints, e.g. ``(0, 1.5708)``."""
-    model: type[BaseModel] | None = Case
-    info = None
-    for key in _field_keys(loc):
-        info = model.model_fields.get(key) if model is not None else None
-        model = _submodel(info.annotation) if info is not None else None
     low, high = "(-inf", "inf)"
-    for constraint in info.metadata if info is not None else ():
+    for constraint in field_spec(loc).constraints:
+        bounds = _bound_attrs(constraint)
         for attr, fmt in (("gt", "({:.6g}"), ("ge", "[{:.6g}")):
-            if getattr(constraint, attr, None) is not None:
-                low = fmt.format(getattr(constraint, attr))
+            if attr in bounds:
+                low = fmt.format(bounds[attr])
         for attr, fmt in (("lt", "{:.6g})"), ("le", "{:.6g}]")):
-            if getattr(constraint, attr, None) is not None:
-                high = fmt.format(getattr(constraint, attr))
+            if attr in bounds:
+                high = fmt.format(bounds[attr])
     return f"{low}, {high}"
+
+
+_TYPE_ERRORS = ("_type", "_parsing")
+
+#: Most problems listed in one error (the rest are counted).
+MAX_PROBLEMS = 20
+
+
+def _prefixes(dotted: str) -> list[str]:
+    """``dotted`` and each of its parents: ``a.b.c``, ``a.b``, ``a``."""
+    parts = dotted.split(".")
+    return [".".join(parts[:n]) for n in range(len(parts), 0, -1)]
+
+
+def _union_duplicates(errors: list[dict[str, Any]]) -> set[int]:
+    """Indices of type errors of one union member when another error of that field says more.
+
+    Kept instead: any other kind of error of the field or one of its items, else the first
+    type error.
+    """
+    fields = [field_spec(tuple(err["loc"])).dotted for err in errors]
+    is_type = [err["type"].endswith(_TYPE_ERRORS) for err in errors]
+    better = {p for f, t in zip(fields, is_type, strict=True) if not t for p in _prefixes(f)}
+    skip, seen = set(), set()
+    for i, field in enumerate(fields):
+        if is_type[i]:
+            if field in better or field in seen:
+                skip.add(i)
+            seen.update(_prefixes(field))
+    return skip
+
+
+def _range_text(loc: tuple[Any, ...], spec: FieldSpec) -> str:
+    """'allowed range is … unit (description)' for a numeric field."""
+    unit_text = f" {spec.unit}" if spec.unit else ""
+    meaning = f" ({spec.description})" if spec.description else ""
+    return f"allowed range is {_allowed_range(loc)}{unit_text}{meaning}"
+
+
+def _describe(err: dict[str, Any]) -> str:
+    """One readable line for one pydantic error."""
+    loc = tuple(k for k in err["loc"] if not isinstance(k, int) or k >= 0)
+    spec = field_spec(loc)
+    dotted = spec.dotted or ".".join(str(k) for k in loc)
+    kind = err["type"]
+    if kind == "missing":
+        unit = f", in {spec.unit}" if spec.unit else ""
+        what = f" ({spec.description}{unit})" if spec.description else ""
+        return f"{dotted} is missing{what}"
+    if kind == "extra_forbidden":
+        parent = field_spec(loc[:-1])
+        model = _submodel(parent.annotation)
+        allowed = list(model.model_fields) if model else []
+        return unknown_key_message(dotted, str(loc[-1]), allowed, parent.dotted or "the case")
+    if kind in _BOUNDS:
+        return f"{dotted} = {err['input']!r} is not allowed: {_range_text(loc, spec)}"
+    if kind == "literal_error":
+        expected = err["ctx"]["expected"]
+        return f"{dotted} = {err['input']!r} is not allowed: it must be one of {expected}"
+    if kind == "value_error":
+        message = str(err["ctx"]["error"])
+        if " = " in message:  # a model validator naming its own field
+            return f"{dotted}.{message}" if dotted else message
+        if spec.constraints or spec.kind:
+            return f"{dotted}: {message}; {_range_text(loc, spec)}"
+        return f"{dotted}: {message}"
+    value = f" = {err['input']!r}" if "input" in err and loc else ""
+    return f"{dotted or 'case'}{value}: {err['msg']}"
 
 
 def describe_errors(exc: ValidationError) -> list[str]:
     """One readable line per pydantic error: field, value and allowed range."""
-    lines = []
-    for err in exc.errors():
-        loc = tuple(k for k in err["loc"] if not isinstance(k, int) or k >= 0)
-        dotted = ".".join(str(k) for k in loc)
-        kind = err["type"]
-        description, unit = _field_info(loc)
-        unit_text = f" {unit}" if unit else ""
-        if kind == "missing":
-            what = f" ({description}{', in ' + unit if unit else ''})" if description else ""
-            lines.append(f"{dotted} is missing{what}")
-        elif kind == "extra_forbidden":
-            parent = loc[:-1]
-            model: type[BaseModel] | None = Case
-            for key in _field_keys(parent):
-                field = model.model_fields.get(key) if model else None
-                model = _submodel(field.annotation) if field else None
-            allowed = list(model.model_fields) if model else []
-            where = ".".join(str(k) for k in parent) or "the case"
-            lines.append(unknown_key_message(dotted, str(loc[-1]), allowed, where))
-        elif kind in _BOUNDS:
-            meaning = f" ({description})" if description else ""
-            lines.append(
-                f"{dotted} = {err['input']!r} is not allowed: allowed range is "
-                f"{_allowed_range(loc)}{unit_text}{meaning}"
-            )
-        elif kind == "literal_error":
-            lines.append(
-                f"{dotted} = {err['input']!r} is not allowed: it must be one of "
-                f"{err['ctx']['expected']}"
-            )
-        elif kind == "value_error":
-            message = str(err["ctx"]["error"])
-            if " = " in message:  # a model validator naming its own field
-                lines.append(f"{dotted}.{message}" if dotted else message)
-            else:
-                lines.append(f"{dotted}: {message}")
-        else:
-            value = f" = {err['input']!r}" if "input" in err and loc else ""
-            lines.append(f"{dotted or 'case'}{value}: {err['msg']}")
+    errors = list(exc.errors())
+    skip = _union_duplicates(errors)
+    kept = [err for i, err in enumerate(errors) if i not in skip]
+    lines = [_describe(err) for err in kept[:MAX_PROBLEMS]]
+    if len(kept) > MAX_PROBLEMS:
+        lines.append(f"... and {len(kept) - MAX_PROBLEMS} more problems")
     return lines

@@ -13,7 +13,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from ballscrew.case.base import Model, quantity
+from ballscrew.case.base import MAX_SPEED, Model, quantity
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
@@ -22,9 +22,9 @@ from ballscrew.case.wear_spec import WearSpec
 class ScrewSpec(Model):
     """Catalogue geometry of the screw and its nut(s)."""
 
-    pitch_diameter: quantity("length", "ball-centre (pitch-circle) diameter d_m", gt=0)
-    lead: quantity("length", "lead L (axial advance per screw revolution)", gt=0)
-    ball_diameter: quantity("length", "ball diameter D_b", gt=0)
+    pitch_diameter: quantity("length", "ball-centre (pitch-circle) diameter d_m", gt=0, le=5.0)
+    lead: quantity("length", "lead L (axial advance per screw revolution)", gt=0, le=1.0)
+    ball_diameter: quantity("length", "ball diameter D_b", gt=0, le=1.0)
     screw_conformity: Annotated[
         float, Field(gt=0.5, lt=1.0, description="screw groove radius / ball diameter f_s")
     ]
@@ -53,14 +53,16 @@ class ScrewSpec(Model):
 class MaterialSpec(Model):
     """Mechanical and thermal properties of one part (ball, screw or nut)."""
 
-    youngs_modulus: quantity("pressure", "Young's modulus E", gt=0)
+    youngs_modulus: quantity("pressure", "Young's modulus E", gt=0, le=1e13)
     poissons_ratio: Annotated[float, Field(gt=0.0, lt=0.5, description="Poisson's ratio ν")]
-    hardness: quantity("pressure", "indentation hardness H of the surface", gt=0)
-    yield_strength: quantity("pressure", "yield strength σ_y", gt=0)
-    thermal_conductivity: quantity("thermal_conductivity", "thermal conductivity λ", gt=0)
-    density: quantity("density", "density ρ", gt=0)
-    specific_heat: quantity("specific_heat", "specific heat capacity c_p", gt=0)
-    thermal_expansion: quantity("expansion", "linear thermal expansion coefficient α_T", ge=0)
+    hardness: quantity("pressure", "indentation hardness H of the surface", gt=0, le=1e12)
+    yield_strength: quantity("pressure", "yield strength σ_y", gt=0, le=1e12)
+    thermal_conductivity: quantity("thermal_conductivity", "thermal conductivity λ", gt=0, le=1e4)
+    density: quantity("density", "density ρ", gt=0, le=1e5)
+    specific_heat: quantity("specific_heat", "specific heat capacity c_p", gt=0, le=1e5)
+    thermal_expansion: quantity(
+        "expansion", "linear thermal expansion coefficient α_T", ge=0, le=1e-2
+    )
 
 
 class Materials(Model):
@@ -75,7 +77,7 @@ class FractalSurface(Model):
     """Weierstrass–Mandelbrot description of a rough surface (profile dimension)."""
 
     D: Annotated[float, Field(gt=1.0, lt=2.0, description="profile fractal dimension D")]
-    G: quantity("length", "fractal roughness G", gt=0)
+    G: quantity("length", "fractal roughness G", gt=0, le=1e-3)
 
 
 class SurfaceSpec(FractalSurface):
@@ -88,21 +90,28 @@ class MediumSpec(Model):
     """The interstitial medium between the asperities: lubricant, grease or air."""
 
     name: str = Field("mineral oil", description="what the medium is, for the report")
-    thermal_conductivity: quantity("thermal_conductivity", "conductivity λ_f of the medium", gt=0)
-    viscosity: quantity("viscosity", "dynamic viscosity η₀ at the inlet", gt=0) | None = None
+    thermal_conductivity: quantity(
+        "thermal_conductivity", "conductivity λ_f of the medium", gt=0, le=1e4
+    )
+    viscosity: quantity("viscosity", "dynamic viscosity η₀ at the inlet", gt=0, le=1e9) | None = (
+        None
+    )
     pressure_viscosity: (
-        quantity("inverse_pressure", "Barus pressure–viscosity coefficient α_p", ge=0) | None
+        quantity("inverse_pressure", "Barus pressure–viscosity coefficient α_p", ge=0, le=1e-6)
+        | None
     ) = None
 
 
 class OperatingSpec(Model):
     """Operating point: preload, external axial load and screw speed."""
 
-    preload: quantity("force", "preload F_p of the nut(s)", ge=0)
+    preload: quantity("force", "preload F_p of the nut(s)", ge=0, le=1e8)
     axial_load: quantity(
-        "force", "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2)", ge=0
+        "force", "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2)", ge=0, le=1e8
     ) = 0.0
-    speed: quantity("angular_velocity", 'screw speed ω (rad/s; "1000 rpm" also works)', ge=0) = 0.0
+    speed: quantity(
+        "angular_velocity", 'screw speed ω (rad/s; "1000 rpm" also works)', ge=0, le=MAX_SPEED
+    ) = 0.0
 
 
 BoxFactor = Annotated[float, Field(ge=1.05, le=5.0)]
@@ -140,14 +149,16 @@ class TCRSpec(Model):
     variant: Literal["V2", "MT", "V1"] = Field(
         "V2", description="element solid conductance: V2 (default, reconstruction), MT or V1"
     )
-    cell_size: quantity("length", "fractal cell size Δ_f the pressure is re-binned onto", gt=0) = (
-        8e-6
+    cell_size: quantity(
+        "length", "fractal cell size Δ_f the pressure is re-binned onto", gt=0, le=1e-2
+    ) = 8e-6
+    cutoff_area: quantity("area", "lower spot-area cut-off a_s of variant MT", gt=0, le=1e-4) = (
+        1e-16
     )
-    cutoff_area: quantity("area", "lower spot-area cut-off a_s of variant MT", gt=0) = 1e-16
     gap_model: Literal["mean_cap", "cap_clearance", "interference", "two_sigma"] = Field(
         "mean_cap", description="gap-thickness model L_g (T6 = mean_cap)"
     )
-    gap_factor: Annotated[float, Field(gt=0, description="multiplier on L_g")] = 1.0
+    gap_factor: Annotated[float, Field(gt=0, le=1e3, description="multiplier on L_g")] = 1.0
     rebin: bool = Field(
         True,
         description="re-bin the pressure onto Δ_f cells (false: evaluate on the solver grid)",

@@ -12,11 +12,21 @@ diameter d_m of ``[screw]`` (shaft Ø = d_m, nut Ø = 1.75 d_m, nut length = 2.5
 
 from __future__ import annotations
 
+import math
 from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import Model, quantity
+
+#: Longest shaft, stroke or position a thermal model accepts, m.
+MAX_LENGTH = 100.0
+
+#: Largest heat-transfer coefficient, W/(m² K) (boiling water is about 1e5).
+MAX_H = 1e6
+
+#: Longest simulated time or time step, s (a year).
+MAX_TIME = 3.2e7
 
 
 class BearingSpec(Model):
@@ -27,23 +37,36 @@ class BearingSpec(Model):
     """
 
     name: str = Field("bearing", description="label used in the report")
-    position: quantity("length", "axial position of the bearing centre from the shaft end z = 0")
-    width: quantity("length", "width of the shaft band the bearing heat enters", gt=0) = 0.02
+    position: quantity(
+        "length",
+        "axial position of the bearing centre from the shaft end z = 0",
+        ge=0,
+        le=MAX_LENGTH,
+    )
+    width: quantity(
+        "length", "width of the shaft band the bearing heat enters", gt=0, le=MAX_LENGTH
+    ) = 0.02
     torque: (
-        quantity("torque", "catalogue friction torque M_be (overrides Palmgren)", ge=0) | None
+        quantity("torque", "catalogue friction torque M_be (overrides Palmgren)", ge=0, le=1e5)
+        | None
     ) = None
     f0: Annotated[
         float, Field(gt=0, le=20, description="Palmgren f₀ (1–2 angular contact, grease/oil)")
     ] = 2.0
     viscosity: quantity(
-        "kinematic_viscosity", "lubricant kinematic viscosity ν₀ at working temperature", gt=0
+        "kinematic_viscosity",
+        "lubricant kinematic viscosity ν₀ at working temperature",
+        gt=0,
+        le=1.0,
     ) = 20e-6
-    mean_diameter: quantity("length", "bearing pitch diameter d_m,be", gt=0) | None = None
-    static_load_rating: quantity("force", "basic static load rating C₀", gt=0) | None = None
-    axial_load: quantity("force", "axial load F_a on the bearing (its preload)", ge=0) = 0.0
-    radial_load: quantity("force", "radial load F_r on the bearing", ge=0) = 0.0
+    mean_diameter: (
+        quantity("length", "bearing pitch diameter d_m,be", gt=0, le=MAX_LENGTH) | None
+    ) = None
+    static_load_rating: quantity("force", "basic static load rating C₀", gt=0, le=1e9) | None = None
+    axial_load: quantity("force", "axial load F_a on the bearing (its preload)", ge=0, le=1e9) = 0.0
+    radial_load: quantity("force", "radial load F_r on the bearing", ge=0, le=1e9) = 0.0
     f1: Annotated[
-        float | None, Field(gt=0, description="Palmgren f₁; None = 0.001 (P₀/C₀)^0.33")
+        float | None, Field(gt=0, le=1, description="Palmgren f₁; None = 0.001 (P₀/C₀)^0.33")
     ] = None
     shaft_fraction: Annotated[
         float, Field(ge=0, le=1, description="fraction of the bearing heat into the screw (Q2)")
@@ -67,7 +90,7 @@ class DragTorqueSpec(Model):
         description="catalogue preload torque K·F_p·L/(2π) (Q4), a given torque, or the drag "
         "torque computed by the ball kinematics model",
     )
-    torque: quantity("torque", "drag torque M_bs for source = 'given'", ge=0) | None = None
+    torque: quantity("torque", "drag torque M_bs for source = 'given'", ge=0, le=1e5) | None = None
 
     @model_validator(mode="after")
     def _given_needs_torque(self) -> DragTorqueSpec:
@@ -79,30 +102,35 @@ class DragTorqueSpec(Model):
 class ConvectionSpec(Model):
     """Heat-transfer coefficients: overrides of the correlations (Q5, Q6) and the air."""
 
-    screw: quantity("heat_transfer_coefficient", "override h of the screw surface", ge=0) | None = (
-        None
-    )
-    screw_ends: (
-        quantity("heat_transfer_coefficient", "override h of the shaft end faces", ge=0) | None
+    screw: (
+        quantity("heat_transfer_coefficient", "override h of the screw surface", ge=0, le=MAX_H)
+        | None
     ) = None
-    nut: quantity("heat_transfer_coefficient", "override h of the nut/spacer OD", ge=0) | None = (
-        None
-    )
+    screw_ends: (
+        quantity("heat_transfer_coefficient", "override h of the shaft end faces", ge=0, le=MAX_H)
+        | None
+    ) = None
+    nut: (
+        quantity("heat_transfer_coefficient", "override h of the nut/spacer OD", ge=0, le=MAX_H)
+        | None
+    ) = None
     nut_ends: (
-        quantity("heat_transfer_coefficient", "override h of the nut end faces", ge=0) | None
+        quantity("heat_transfer_coefficient", "override h of the nut end faces", ge=0, le=MAX_H)
+        | None
     ) = None
     temperature_difference: quantity(
         "temperature_difference",
-        "surface − air ΔT used by the natural-convection correlation",
+        'surface − air ΔT used by the natural-convection correlation ("10 degC" = 10 K)',
         gt=0,
+        le=1000.0,
     ) = 10.0
     air_kinematic_viscosity: quantity(
-        "kinematic_viscosity", "kinematic viscosity ν of air", gt=0
+        "kinematic_viscosity", "kinematic viscosity ν of air", gt=0, le=1.0
     ) = 1.589e-5
-    air_conductivity: quantity("thermal_conductivity", "thermal conductivity λ of air", gt=0) = (
-        0.0263
-    )
-    air_prandtl: Annotated[float, Field(gt=0, description="Prandtl number of air")] = 0.707
+    air_conductivity: quantity(
+        "thermal_conductivity", "thermal conductivity λ of air", gt=0, le=10.0
+    ) = 0.0263
+    air_prandtl: Annotated[float, Field(gt=0, le=1e5, description="Prandtl number of air")] = 0.707
 
 
 class ContactSpec(Model):
@@ -114,7 +142,9 @@ class ContactSpec(Model):
         "resistance_per_area over the nut bore",
     )
     resistance_per_area: (
-        quantity("area_resistance", "R″ smeared over the nut bore, for source = 'given'", gt=0)
+        quantity(
+            "area_resistance", "R″ smeared over the nut bore, for source = 'given'", gt=0, le=1.0
+        )
         | None
     ) = None
     constriction: bool = Field(
@@ -135,9 +165,12 @@ class ContactSpec(Model):
 class StrokeSpec(Model):
     """Reciprocating nut: the moving heat source (issue #4, item 4)."""
 
-    length: quantity("length", "stroke of the nut centre (0 = stationary nut)", ge=0) = 0.0
+    length: quantity(
+        "length", "stroke of the nut centre (0 = stationary nut)", ge=0, le=MAX_LENGTH
+    ) = 0.0
     feed_speed: (
-        quantity("velocity", "nut speed; None = ω·L/(2π) from the screw speed", ge=0) | None
+        quantity("velocity", "nut speed; None = ω·L/(2π) from the screw speed", ge=0, le=100.0)
+        | None
     ) = None
     mode: Literal["averaged", "resolved"] = Field(
         "averaged",
@@ -149,8 +182,10 @@ class StrokeSpec(Model):
 class TransientSpec(Model):
     """Implicit-Euler transient from ambient."""
 
-    duration: quantity("time", "simulated time (the paper: 1.5 h)", gt=0) = 5400.0
-    time_step: quantity("time", "constant time step Δt", gt=0) = 60.0
+    duration: quantity(
+        "time", "simulated time (the paper: 1.5 h; at most a year)", gt=0, le=MAX_TIME
+    ) = 5400.0
+    time_step: quantity("time", "constant time step Δt", gt=0, le=MAX_TIME) = 60.0
     snapshots: Annotated[
         int, Field(ge=1, le=1000, description="full temperature fields stored over time")
     ] = 10
@@ -168,19 +203,23 @@ class TransientSpec(Model):
 class MeshSpec(Model):
     """Discretisation of the axisymmetric FE model, the axial network and the 3-D model."""
 
-    size: quantity("length", "target element size (both directions)", gt=0) = 0.002
+    size: quantity("length", "target element size (both directions)", gt=0, le=1.0) = 0.002
     order: Literal[1, 2] = Field(2, description="Lagrange order of the quadrilateral elements")
-    network_cell: quantity("length", "target axial cell length of the 1-D network", gt=0) = 0.005
+    network_cell: quantity(
+        "length", "target axial cell length of the 1-D network", gt=0, le=1.0
+    ) = 0.005
     size_3d: quantity(
-        "length", "3-D model: axial element size over the nut and its stroke", gt=0
+        "length", "3-D model: axial element size over the nut and its stroke", gt=0, le=1.0
     ) = 0.005
     far_size_3d: quantity(
-        "length", "3-D model: axial element size of the shaft away from the nut", gt=0
+        "length", "3-D model: axial element size of the shaft away from the nut", gt=0, le=1.0
     ) = 0.02
     divisions_3d: int = Field(
-        48, ge=8, multiple_of=4, description="3-D model: circumferential divisions"
+        48, ge=8, le=1024, multiple_of=4, description="3-D model: circumferential divisions"
     )
-    layers_3d: int = Field(4, ge=1, description="3-D model: radial layers of the shaft O-grid")
+    layers_3d: int = Field(
+        4, ge=1, le=64, description="3-D model: radial layers of the shaft O-grid"
+    )
     helical_patches: bool = Field(
         True,
         description="3-D model: balls as helical contact patches (False: smeared over the bore)",
@@ -192,12 +231,18 @@ class SensorSpec(Model):
 
     name: str = Field(description="label of the sensor")
     body: Literal["nut", "screw"] = Field(description="body the sensor is fixed to")
-    r: quantity("length", "radius of the sensor point", ge=0)
+    r: quantity("length", "radius of the sensor point", ge=0, le=MAX_LENGTH)
     z: quantity(
-        "length", "axial position from the shaft end z = 0 (nut: at its mean position)", ge=0
+        "length",
+        "axial position from the shaft end z = 0 (nut: at its mean position)",
+        ge=0,
+        le=MAX_LENGTH,
     )
     theta: quantity(
-        "angle", 'angle from the x axis ("90 deg" also works); only the 3-D model reads it'
+        "angle",
+        'angle from the x axis ("90 deg" also works); only the 3-D model reads it',
+        ge=-2 * math.pi,
+        le=2 * math.pi,
     ) = 0.0
 
 
@@ -207,20 +252,26 @@ class ThermalSpec(Model):
     model: Literal["axisymmetric", "network", "3d"] = Field(
         "axisymmetric", description="default model of `ballscrew thermal`"
     )
-    shaft_length: quantity("length", "length of the screw shaft", gt=0) = 1.0
+    shaft_length: quantity("length", "length of the screw shaft", gt=0, le=MAX_LENGTH) = 1.0
     shaft_diameter: (
-        quantity("length", "thermal diameter of the shaft; None = pitch diameter d_m", gt=0) | None
+        quantity("length", "thermal diameter of the shaft; None = pitch diameter d_m", gt=0, le=5.0)
+        | None
     ) = None
-    nut_outer_diameter: quantity("length", "nut outer diameter; None = 1.75 d_m", gt=0) | None = (
-        None
-    )
-    nut_length: quantity("length", "length of each nut; None = 2.5 d_m", gt=0) | None = None
-    spacer_length: quantity("length", "spacer length between two nuts", ge=0) = 0.01
+    nut_outer_diameter: (
+        quantity("length", "nut outer diameter; None = 1.75 d_m", gt=0, le=5.0) | None
+    ) = None
+    nut_length: (
+        quantity("length", "length of each nut; None = 2.5 d_m", gt=0, le=MAX_LENGTH) | None
+    ) = None
+    spacer_length: quantity("length", "spacer length between two nuts", ge=0, le=MAX_LENGTH) = 0.01
     spacer_outer_diameter: (
-        quantity("length", "spacer outer diameter; None = nut outer diameter", gt=0) | None
+        quantity("length", "spacer outer diameter; None = nut outer diameter", gt=0, le=5.0) | None
     ) = None
     nut_position: (
-        quantity("length", "centre of the nut assembly from z = 0; None = mid-screw", ge=0) | None
+        quantity(
+            "length", "centre of the nut assembly from z = 0; None = mid-screw", ge=0, le=MAX_LENGTH
+        )
+        | None
     ) = None
     ambient_temperature: quantity(
         "temperature", 'ambient (initial) temperature; write "20 degC"', gt=150.0, lt=700.0

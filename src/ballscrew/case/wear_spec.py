@@ -25,18 +25,31 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from ballscrew.case.base import Model, quantity
+from ballscrew.case.base import MAX_SPEED, Model, quantity
+
+#: Most screw revolutions of one level (a very long life test is about 1e9).
+MAX_REVOLUTIONS = 1e12
+
+#: Most drag-torque samples over the whole programme.
+MAX_TORQUE_SAMPLES = 1e6
 
 
 class WearLevel(Model):
     """One level of the load programme: constant axial load and speed for some revolutions."""
 
-    axial_load: quantity("force", "external axial working load F_a of the level (N)", ge=0)
-    speed: quantity("angular_velocity", 'screw speed ω_s (rad/s; "100 rpm" also works)', gt=0)
+    axial_load: quantity("force", "external axial working load F_a of the level (N)", ge=0, le=1e8)
+    speed: quantity(
+        "angular_velocity", 'screw speed ω_s (rad/s; "100 rpm" also works)', gt=0, le=MAX_SPEED
+    )
     revolutions: Annotated[
-        float, Field(gt=0, description="screw revolutions of the level (dimensionless count)")
+        float,
+        Field(
+            gt=0,
+            le=MAX_REVOLUTIONS,
+            description="screw revolutions of the level (dimensionless count, at most 1e12)",
+        ),
     ]
 
 
@@ -52,23 +65,36 @@ class WearSpec(Model):
         float,
         Field(
             gt=0,
-            description="wear coefficient K (dimensionless probability per asperity encounter); "
+            lt=1,
+            description="wear coefficient K (dimensionless probability per asperity encounter, "
+            "below 1); "
             "default 1.304e-4 = §10.3 calibration of the REF screw (Model A, REF grid)",
         ),
     ] = 1.304e-4
-    stroke: quantity("length", "reciprocating stroke S of the nut (m), sets L_w (E8.3)", gt=0) = (
-        0.30
-    )
+    stroke: quantity(
+        "length",
+        "reciprocating stroke S of the nut (m, 1 mm to 100 m), sets L_w (E8.3)",
+        ge=1e-3,
+        le=100.0,
+    ) = 0.30
     max_depth_step: quantity(
-        "length", "largest growth of h_max per time step (m); the paper's 0.1 µm (§1.6)", gt=0
+        "length",
+        "largest growth of h_max per time step (m, 1 nm to 0.1 mm); the paper's 0.1 µm (§1.6)",
+        ge=1e-9,
+        le=1e-4,
     ) = 1e-7
     torque_sampling: Annotated[
         float,
-        Field(gt=0, description="screw revolutions between drag-torque samples (count)"),
+        Field(
+            ge=1,
+            le=MAX_REVOLUTIONS,
+            description="screw revolutions between drag-torque samples (count, ≥ 1; at most "
+            f"{MAX_TORQUE_SAMPLES:.0e} samples over the programme)",
+        ),
     ] = 4.8e4
     torque_scale: Annotated[
         float,
-        Field(gt=0, description="factor on the catalogue K_T = 0.05/√tanλ of (E9.1), -"),
+        Field(gt=0, le=1e3, description="factor on the catalogue K_T = 0.05/√tanλ of (E9.1), -"),
     ] = 1.0
     initial_torque: (
         quantity(
@@ -76,6 +102,7 @@ class WearSpec(Model):
             "measured drag torque at N = 0 (N·m); if given, K_T is rescaled so T(0) matches "
             "it (E9.3) and torque_scale is ignored",
             gt=0,
+            le=1e5,
         )
         | None
     ) = None
@@ -102,5 +129,17 @@ class WearSpec(Model):
         ),
     ] = 1.4
     checkpoint_every: Annotated[
-        int, Field(ge=1, description="time steps between checkpoint saves (count)")
+        int,
+        Field(ge=1, le=1_000_000_000, description="time steps between checkpoint saves (count)"),
     ] = 1
+
+    @model_validator(mode="after")
+    def _few_enough_samples(self) -> WearSpec:
+        total = sum(level.revolutions for level in self.programme)
+        if total / self.torque_sampling > MAX_TORQUE_SAMPLES:
+            raise ValueError(
+                f"torque_sampling = {self.torque_sampling:g} is not allowed: the programme's "
+                f"{total:g} revolutions would give more than {MAX_TORQUE_SAMPLES:.0e} drag-torque "
+                f"samples; use torque_sampling ≥ {total / MAX_TORQUE_SAMPLES:g}"
+            )
+        return self

@@ -38,7 +38,7 @@ def kinematics(
     omega = None
     if speed is not None:
         try:
-            omega = to_si(float(speed) if _is_number(speed) else speed, "angular_velocity")
+            omega = to_si(speed, "angular_velocity")
         except ValueError as exc:
             raise InputError("--speed", speed, str(exc)) from None
     with claim_output(out, command="kinematics", force=force, inputs=[case_file]):
@@ -59,11 +59,3 @@ def kinematics(
         )
         folder = write_kinematics(result, case, out)
     log.info("wrote %s", folder / "report.html")
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
