@@ -222,7 +222,11 @@ def test_checkpoint_resume_gives_the_same_history(coarse_case, coarse_life, tmp_
     done = wear_life(coarse_case, checkpoint=state, resume=True)
     assert done.complete and done.steps == coarse_life.steps
     for name in ("revolutions", "max_wear_depth", "preload", "friction_torque", "profiles"):
-        np.testing.assert_allclose(getattr(done, name), getattr(coarse_life, name), rtol=1e-9)
+        # FFTW may pick other plans after a resume: rounding differs at 1e-9 of the largest value
+        expected = getattr(coarse_life, name)
+        np.testing.assert_allclose(
+            getattr(done, name), expected, rtol=1e-9, atol=1e-9 * np.abs(expected).max()
+        )
     assert done.contact_solves == coarse_life.contact_solves
 
 
