@@ -26,9 +26,9 @@ from ballscrew import (
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
+from ballscrew.analyses.wear import wear_life
 from ballscrew.case import load_case
 from ballscrew.loads import nut_forces
-from ballscrew.wear import wear_life
 
 __all__ = [
     "__version__",

@@ -91,9 +91,6 @@ def test_real_wear_model_on_the_example(case) -> None:
     the §10.3 REF regression at the level ends; the real model reproduces §10.3 within ±3 %, so
     K and the scale must come back within a few per cent.
     """
-    wear = pytest.importorskip("ballscrew.wear")
-    if not hasattr(wear, "wear_life"):
-        pytest.skip("ballscrew.wear.wear_life is not available")
     data = read_measured(EXAMPLE)
     result = calibrate(case, data, fit_torque_scale=True)
     assert result.wear_coefficient == pytest.approx(1.3041e-4, rel=0.08)

@@ -11,9 +11,9 @@ import pytest
 from typer.testing import CliRunner
 
 import ballscrew
+from ballscrew.analyses.wear import wear_life
 from ballscrew.cli import app
 from ballscrew.commands.wear import checkpoint_path
-from ballscrew.wear import wear_life
 from ballscrew.wear.checkpoint import CheckpointWarning, load_checkpoint, save_checkpoint
 
 from .conftest import REF_PATH, SPEED

@@ -10,10 +10,11 @@ import numpy as np
 import pytest
 
 import ballscrew
+from ballscrew.analyses.wear import wear_life, wear_setup
 from ballscrew.case import with_overrides
 from ballscrew.errors import InputError
 from ballscrew.loads import nut_forces
-from ballscrew.wear import flank_rate, wear_life, wear_setup
+from ballscrew.wear import flank_rate
 from ballscrew.wear.life import GridEdgeWarning
 
 SPEED = 10.0 * math.pi / 3.0

@@ -58,6 +58,6 @@ def test_case_without_wear_section_uses_defaults(tmp_path) -> None:
     path.write_text(body[: body.index("[wear]")])
     case = ballscrew.load_case(path)
     assert case.wear is None
-    from ballscrew.wear import wear_setup
+    from ballscrew.analyses.wear import wear_setup
 
     assert wear_setup(case).spec.coefficient == pytest.approx(1.304e-4)

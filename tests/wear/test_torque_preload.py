@@ -6,8 +6,8 @@ import math
 
 import pytest
 
+from ballscrew.analyses.wear import wear_setup
 from ballscrew.case import with_overrides
-from ballscrew.wear import wear_setup
 
 
 def test_t1_8_compliance_and_t1_12_preload_after_wear(ref_case) -> None:

@@ -4,7 +4,7 @@
    or wear depth against screw revolutions (header row; units in brackets are converted).
 2. ``result = calibrate(case, data)`` fits the wear coefficient K (and, with
    ``fit_torque_scale=True`` on torque data, the drag-torque scale) by nonlinear least squares on
-   ln K, running :func:`ballscrew.wear.wear_life` on the case for each trial K.
+   ln K, running :func:`ballscrew.wear_life` on the case for each trial K.
    :func:`fit_wear_coefficient` is the same fit with any model callable ``K -> history``.
 3. ``result.wear_coefficient``, ``result.standard_error``, ``result.torque_scale`` and
    ``result.rms_residual`` are the fit; ``ballscrew.results.calibration_report`` writes it.

@@ -3,7 +3,7 @@
 Method
 ------
 The wear model is an injected callable ``simulate(K) -> history`` (by default
-:func:`ballscrew.wear.wear_life` on the case with ``wear.coefficient = K``). Its history is
+:func:`ballscrew.wear_life` on the case with ``wear.coefficient = K``). Its history is
 interpolated linearly (``np.interp``) onto the measured revolutions, and the residuals
 
     r_i(θ) = (m · y_model(N_i; K) − y_i) / s,      θ = (ln K [, m])
@@ -474,7 +474,7 @@ def calibrate(
     """Calibrate the case's wear coefficient to a measured history.
 
     Each model run is ``model(with_overrides(case, {"wear.coefficient": K}))``; ``model``
-    defaults to :func:`ballscrew.wear.wear_life`. The scan starts at the case's
+    defaults to :func:`ballscrew.wear_life`. The scan starts at the case's
     ``wear.coefficient`` (1e-4 if it has none); the torque scale is taken relative to the case's
     ``wear.torque_scale``. A ``wear.initial_torque`` of the case rescales K_T so that the
     torque at N = 0 matches it (E9.3): the reported scale is then that effective one,
@@ -484,7 +484,7 @@ def calibrate(
     from ballscrew.case import with_overrides
 
     if model is None:
-        from ballscrew.wear import wear_life
+        from ballscrew.analyses.wear import wear_life
 
         model = wear_life
     wear = getattr(case, "wear", None)

@@ -5,8 +5,9 @@ from __future__ import annotations
 from functools import partial
 from typing import Annotated, Any
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field
 
+from ballscrew.registry import Registry
 from ballscrew.units import SI_UNITS, to_si
 
 #: Highest screw speed a case accepts, rad/s (about 10⁶ rpm, far above any ball screw).
@@ -20,6 +21,21 @@ def quantity(kind: str, description: str, **constraints: float) -> Any:
         float,
         BeforeValidator(partial(to_si, kind=kind)),
         Field(description=description, json_schema_extra=extra, **constraints),
+    ]
+
+
+def model_choice(registry: Registry[Any], description: str) -> Any:
+    """A string field naming one model of ``registry``; the allowed names come from it."""
+
+    def check(name: str) -> str:
+        if name not in registry:
+            raise ValueError(f"{name!r} is not allowed: it must be one of {', '.join(registry)}")
+        return name
+
+    return Annotated[
+        str,
+        AfterValidator(check),
+        Field(description=description, json_schema_extra={"enum": list(registry)}),
     ]
 
 

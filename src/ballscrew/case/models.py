@@ -13,10 +13,12 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from ballscrew.case.base import MAX_SPEED, Model, quantity
+from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
+from ballscrew.contact_resistance.element import ELEMENT_MODELS
+from ballscrew.geometry.gap import GAP_MODELS
 
 
 class ScrewSpec(Model):
@@ -138,17 +140,17 @@ class NumericsSpec(Model):
     max_iterations: Annotated[
         int, Field(ge=10, le=100_000, description="CG iteration limit before it is an error")
     ] = 2000
-    gap_model: Literal["exact", "quadratic"] = Field(
-        "exact", description="raceway gap: exact Newton projection or quadratic (Hertz) form"
-    )
+    gap_model: model_choice(
+        GAP_MODELS, "raceway gap: exact Newton projection or quadratic (Hertz) form"
+    ) = "exact"
 
 
 class TCRSpec(Model):
     """Options of the fractal thermal-contact-resistance model (contact-tcr.md §6)."""
 
-    variant: Literal["V2", "MT", "V1"] = Field(
-        "V2", description="element solid conductance: V2 (default, reconstruction), MT or V1"
-    )
+    variant: model_choice(
+        ELEMENT_MODELS, "element solid conductance: V2 (default, reconstruction), MT or V1"
+    ) = "V2"
     cell_size: quantity(
         "length", "fractal cell size Δ_f the pressure is re-binned onto", gt=0, le=1e-2
     ) = 8e-6

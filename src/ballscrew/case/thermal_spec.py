@@ -17,7 +17,8 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from ballscrew.case.base import Model, quantity
+from ballscrew.case.base import Model, model_choice, quantity
+from ballscrew.thermal.models import THERMAL_MODELS
 
 #: Longest shaft, stroke or position a thermal model accepts, m.
 MAX_LENGTH = 100.0
@@ -249,9 +250,7 @@ class SensorSpec(Model):
 class ThermalSpec(Model):
     """Thermal model of screw shaft, nuts, spacer and bearings (contact-tcr.md §9)."""
 
-    model: Literal["axisymmetric", "network", "3d"] = Field(
-        "axisymmetric", description="default model of `ballscrew thermal`"
-    )
+    model: model_choice(THERMAL_MODELS, "default model of `ballscrew thermal`") = "axisymmetric"
     shaft_length: quantity("length", "length of the screw shaft", gt=0, le=MAX_LENGTH) = 1.0
     shaft_diameter: (
         quantity("length", "thermal diameter of the shaft; None = pitch diameter d_m", gt=0, le=5.0)

@@ -23,11 +23,12 @@ Example::
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from ballscrew.case.base import MAX_SPEED, Model, quantity
+from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.wear.rates import WEAR_LAWS
 
 #: Most screw revolutions of one level (a very long life test is about 1e9).
 MAX_REVOLUTIONS = 1e12
@@ -56,11 +57,11 @@ class WearLevel(Model):
 class WearSpec(Model):
     """Fractal wear model, load programme and integration options of ``ballscrew wear``."""
 
-    model: Literal["A", "C"] = Field(
-        "A",
-        description="per-asperity wear volume: 'A' plastic hemispherical Archard–fractal (§7.2, "
-        "default), 'C' cap-volume fractal (§7.3, needs surface dimension D + 1 < 2.5)",
-    )
+    model: model_choice(
+        WEAR_LAWS,
+        "per-asperity wear volume: 'A' plastic hemispherical Archard–fractal (default), "
+        "'C' cap-volume fractal (needs surface dimension D + 1 < 2.5)",
+    ) = "A"
     coefficient: Annotated[
         float,
         Field(

@@ -30,12 +30,12 @@ def wear(
     force: ForceOpt = False,
 ) -> None:
     """Wear profile of the screw raceway, preload and drag torque versus revolutions."""
+    from ballscrew.analyses.wear import wear_life
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
     from ballscrew.results import claim_output
     from ballscrew.results.folder import writing
     from ballscrew.results.wear_report import write_wear
-    from ballscrew.wear import wear_life
 
     case = load_case(case_file)
     with claim_output(out, command="wear", force=force, inputs=[case_file]) as path, writing(path):

@@ -57,7 +57,6 @@ IN_MEMORY_BYTES = 256 << 20
 """Largest dataset written to NetCDF through memory rather than by HDF5 on the disk [B]."""
 
 
-
 @dataclass(frozen=True)
 class _Claim:
     command: str | None

@@ -21,8 +21,6 @@ run resumes from its last saved step and produces the same history.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import logging
 import math
 import time
@@ -34,16 +32,12 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.case.wear_spec import WearSpec
-from ballscrew.contact import cell_centres, hertz, solve_normal
+from ballscrew.contact import solve_normal
 from ballscrew.errors import InputError
-from ballscrew.fractal.yan_komvopoulos import surface_dimension
-from ballscrew.geometry import ScrewGeometry, gap_function, raceway_curvature
+from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.loads import (
     ball_load,
-    nut_axial_compliance,
     nut_forces,
     preload_after_wear,
     preload_drag_torque,
@@ -51,13 +45,13 @@ from ballscrew.loads import (
 from ballscrew.lubrication import AsperitySurface, share_load
 from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
 from ballscrew.wear.profile import worn_gap
+from ballscrew.wear.programme import WearOptions
 from ballscrew.wear.rates import cell_wear_rate
 from ballscrew.wear.strips import (
     depth_per_revolution,
     raceway_depth_rate,
     reciprocating_rate,
     strip_wear_speed,
-    working_raceway_length,
 )
 
 __all__ = [
@@ -66,8 +60,8 @@ __all__ = [
     "WearLife",
     "WearSetup",
     "flank_rate",
-    "wear_life",
-    "wear_setup",
+    "integrate_wear",
+    "nut_force_pair",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -88,7 +82,7 @@ class WearSetup:
     """Everything fixed during a wear run (SI)."""
 
     geometry: ScrewGeometry
-    spec: WearSpec
+    spec: WearOptions
     balls: int
     e_star: float
     hardness: float
@@ -141,94 +135,12 @@ class WearSetup:
         return float(ball_load(nut_force, self.balls, g.contact_angle, g.lead_angle))
 
 
-def _forces(preload: float, axial_load: float) -> tuple[float, float]:
+def nut_force_pair(preload: float, axial_load: float) -> tuple[float, float]:
     """(F_1, F_2) of the double nut (E1.10–E1.11); without preload F_1 = F_a, F_2 = 0."""
     if preload <= 0.0:
         return float(axial_load), 0.0
     f = nut_forces(preload, axial_load)
     return float(f[0]), float(f[1])
-
-
-def wear_setup(case: Any) -> WearSetup:
-    """Fixed grid, gaps, fractal surface, C_a, L_w and torque factor of a case with ``[wear]``."""
-    spec: WearSpec = case.wear if case.wear is not None else WearSpec()
-    if case.screw.nuts != 2:
-        raise InputError("screw.nuts", case.screw.nuts, "2 (the wear life needs a double nut)")
-    params = ScrewParameters.from_case(case)
-    geometry = params.geometry
-    balls = params.balls_per_nut
-    e_star = params.contact_modulus("screw")
-    hardness = case.materials.screw.hardness
-    ca, cb = raceway_curvature(geometry, "screw"), raceway_curvature(geometry, "nut")
-    k_a = hertz(ca.rx, ca.ry, e_star, 1.0).approach
-    k_b = hertz(cb.rx, cb.ry, params.contact_modulus("nut"), 1.0).approach
-    compliance = nut_axial_compliance(k_a, k_b, balls, geometry.contact_angle, geometry.lead_angle)
-    preload = case.operating.preload
-    if not preload > 0.0:
-        raise InputError("operating.preload", preload, "an initial preload > 0 N")
-    q_max = max(
-        float(
-            ball_load(
-                _forces(preload, lv.axial_load)[0],
-                balls,
-                geometry.contact_angle,
-                geometry.lead_angle,
-            )
-        )
-        for lv in spec.programme
-    )
-    hz = hertz(ca.rx, ca.ry, e_star, q_max)  # a along x (rolling), b along y (across)
-    nx, ny = spec.grid
-    dx, dy = 2.0 * spec.box_factor * hz.a / nx, 2.0 * spec.box_factor * hz.b / ny
-    x, y = cell_centres(nx, dx), cell_centres(ny, dy)
-    model = case.numerics.gap_model
-    gaps = {
-        s: np.asarray(
-            gap_function(geometry, "screw", flank=s, model=model)(x[:, None], y[None, :]),
-            dtype=float,
-        )
-        for s in FLANKS
-    }
-    eta, alpha = params.lubrication.viscosity, params.lubrication.pressure_viscosity
-    surface = AsperitySurface(
-        Ds=surface_dimension(case.surface.D),
-        G=case.surface.G,
-        e_star=e_star,
-        hardness=hardness,
-        cell_area=dx * dy,
-    )
-    length = working_raceway_length(
-        spec.stroke,
-        geometry.lead,
-        geometry.pitch_radius,
-        geometry.ball_radius,
-        geometry.contact_angle,
-    )
-    catalogue = preload_drag_torque(preload, geometry.lead, geometry.lead_angle)
-    factor = spec.torque_scale if spec.initial_torque is None else spec.initial_torque / catalogue
-    return WearSetup(
-        geometry=geometry,
-        spec=spec,
-        balls=balls,
-        e_star=e_star,
-        hardness=hardness,
-        surface=surface,
-        viscosity=eta,
-        pressure_viscosity=alpha,
-        rx=ca.rx,
-        ry=ca.ry,
-        x=x,
-        y=y,
-        dx=dx,
-        dy=dy,
-        nominal_gap=gaps,
-        compliance=compliance,
-        raceway_length=length,
-        initial_preload=preload,
-        torque_factor=factor,
-        tolerance=case.numerics.tolerance,
-        max_iterations=case.numerics.max_iterations,
-    )
 
 
 # ------------------------------------------------------------------------- one contact
@@ -399,21 +311,6 @@ class _State:
     initial_psi: dict[str, float]
 
 
-def _fingerprint(case: Any, setup: WearSetup) -> str:
-    data = {
-        "wear": setup.spec.model_dump(mode="json"),
-        "screw": case.screw.model_dump(mode="json"),
-        "surface": case.surface.model_dump(mode="json"),
-        "preload": case.operating.preload,
-        "numerics": case.numerics.model_dump(mode="json"),
-        "viscosity": setup.viscosity,
-        "pressure_viscosity": setup.pressure_viscosity,
-        "hardness": setup.hardness,
-        "e_star": setup.e_star,
-    }
-    return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
-
-
 _RECORD_KEYS = (
     "revolutions",
     "max_depth",
@@ -503,7 +400,7 @@ def _step_rates(
     setup: WearSetup, state: _State, preload: float, axial_load: float, speed: float
 ) -> tuple[FloatArray, tuple[float, float]]:
     """ḣ per revolution of both flanks (2, ny) under reciprocation (E8.4)."""
-    forces = _forces(preload, axial_load)
+    forces = nut_force_pair(preload, axial_load)
     rates = np.zeros_like(state.depth)
     for k, flank in enumerate(FLANKS):
         parts: list[FloatArray | None] = []
@@ -522,7 +419,7 @@ def _step_rates(
     return rates, forces
 
 
-def _finish(case: Any, setup: WearSetup, state: _State, complete: bool, wall: float) -> WearLife:
+def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> WearLife:
     r = state.records
     spec = setup.spec
     loads = np.array([lv.axial_load for lv in spec.programme])
@@ -553,7 +450,7 @@ def _finish(case: Any, setup: WearSetup, state: _State, complete: bool, wall: fl
     )
     if complete:
         last = spec.programme[-1]
-        f1 = _forces(float(life.preload[-1]), last.axial_load)[0]
+        f1 = nut_force_pair(float(life.preload[-1]), last.axial_load)[0]
         if f1 > 0.0:
             worn = flank_rate(setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"))
             unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y))
@@ -578,31 +475,26 @@ def _band(depth: FloatArray, dy: float, fraction: float = 0.05) -> float:
     return float((cols[-1] - cols[0] + 1) * dy)
 
 
-def wear_life(
-    case: Any,
+def integrate_wear(
+    setup: WearSetup,
+    fingerprint: str,
     *,
     checkpoint: str | Path | None = None,
     resume: bool = False,
     max_steps: int | None = None,
 ) -> WearLife:
-    """Wear, preload and drag torque over the load programme of ``case.wear`` (§8.2).
+    """Wear, preload and drag torque over the load programme of ``setup``.
 
     Args:
-        case: a validated case; ``case.wear`` (None = the defaults of :class:`WearSpec`: the
-            §9.2 step-stress programme with the §10.3 wear coefficient).
+        setup: the fixed inputs of the run.
+        fingerprint: identifies the inputs; a checkpoint of other inputs is refused.
         checkpoint: file (``.npz``) to save the state to after every ``checkpoint_every`` steps.
-        resume: continue from ``checkpoint`` if it exists (it must come from the same case).
+        resume: continue from ``checkpoint`` if it exists (it must come from the same inputs).
         max_steps: stop after this many time steps of this call (the result then has
             ``complete = False``; resume it later from the checkpoint).
-
-    Returns:
-        :class:`WearLife`. REF (examples/wear_step_stress.toml, K = 1.304e-4) gives
-        h_max = 2.43 µm and F_p = 244 N at 1.44e6 rev (§10.3).
     """
     start = time.perf_counter()
-    setup = wear_setup(case)
     spec = setup.spec
-    fingerprint = _fingerprint(case, setup)
     path = None if checkpoint is None else Path(checkpoint)
     state = _load(path, fingerprint, setup.y.size) if path is not None and resume else None
     if state is not None:
@@ -612,7 +504,7 @@ def wear_life(
             0, 0.0, np.zeros((2, setup.y.size)), {}, {k: [] for k in _RECORD_KEYS}, 0, 0, {}
         )
         first = spec.programme[0]
-        _record(state, setup, _forces(setup.initial_preload, first.axial_load), True)
+        _record(state, setup, nut_force_pair(setup.initial_preload, first.axial_load), True)
     ends = np.cumsum([lv.revolutions for lv in spec.programme])
     every = spec.torque_sampling
     taken = 0
@@ -625,7 +517,7 @@ def wear_life(
         if max_steps is not None and taken >= max_steps:
             if path is not None:
                 _save(path, state, fingerprint)
-            return _finish(case, setup, state, False, time.perf_counter() - start)
+            return _finish(setup, state, False, time.perf_counter() - start)
         preload = setup.preload(float(state.depth.max()))
         rates, _ = _step_rates(setup, state, preload, level.axial_load, level.speed)
         next_sample = (math.floor(state.revolutions / every + 1e-9) + 1) * every
@@ -642,7 +534,7 @@ def wear_life(
         _record(
             state,
             setup,
-            _forces(setup.preload(float(state.depth.max())), level.axial_load),
+            nut_force_pair(setup.preload(float(state.depth.max())), level.axial_load),
             sampled,
         )
         if sampled or state.revolutions >= end * (1.0 - 1e-12):
@@ -659,4 +551,4 @@ def wear_life(
             _save(path, state, fingerprint)
     if path is not None:
         _save(path, state, fingerprint)
-    return _finish(case, setup, state, True, time.perf_counter() - start)
+    return _finish(setup, state, True, time.perf_counter() - start)

@@ -1,0 +1,179 @@
+"""The wear life of a case: wear profile, preload and drag torque over the load programme.
+
+Composes :mod:`ballscrew.wear` (time integration, wear laws, strips), the contact solver and
+the lubrication model for the ``[wear]`` section of a case (theory manual: *Wear*).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+from pathlib import Path
+
+import numpy as np
+
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.case import Case
+from ballscrew.case.wear_spec import WearSpec
+from ballscrew.contact import cell_centres, hertz
+from ballscrew.errors import InputError
+from ballscrew.fractal.yan_komvopoulos import surface_dimension
+from ballscrew.geometry import gap_function, raceway_curvature
+from ballscrew.loads import ball_load, nut_axial_compliance, preload_drag_torque
+from ballscrew.lubrication import AsperitySurface
+from ballscrew.wear.life import FLANKS, WearLife, WearSetup, integrate_wear, nut_force_pair
+from ballscrew.wear.programme import WearLevel, WearOptions
+from ballscrew.wear.strips import working_raceway_length
+
+__all__ = ["fingerprint", "wear_life", "wear_options", "wear_setup"]
+
+
+def wear_options(case: Case) -> WearOptions:
+    """The ``[wear]`` section of ``case`` (its defaults when absent) as plain SI values."""
+    spec = case.wear if case.wear is not None else WearSpec()
+    return WearOptions(
+        model=spec.model,
+        coefficient=spec.coefficient,
+        stroke=spec.stroke,
+        max_depth_step=spec.max_depth_step,
+        torque_sampling=spec.torque_sampling,
+        torque_scale=spec.torque_scale,
+        initial_torque=spec.initial_torque,
+        programme=tuple(
+            WearLevel(lv.axial_load, lv.speed, lv.revolutions) for lv in spec.programme
+        ),
+        grid=tuple(spec.grid),
+        box_factor=spec.box_factor,
+        checkpoint_every=spec.checkpoint_every,
+    )
+
+
+def wear_setup(case: Case) -> WearSetup:
+    """Fixed grid, gaps, fractal surface, C_a, L_w and torque factor of a case with ``[wear]``."""
+    spec = wear_options(case)
+    if case.screw.nuts != 2:
+        raise InputError("screw.nuts", case.screw.nuts, "2 (the wear life needs a double nut)")
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
+    balls = params.balls_per_nut
+    e_star = params.contact_modulus("screw")
+    hardness = case.materials.screw.hardness
+    ca, cb = raceway_curvature(geometry, "screw"), raceway_curvature(geometry, "nut")
+    k_a = hertz(ca.rx, ca.ry, e_star, 1.0).approach
+    k_b = hertz(cb.rx, cb.ry, params.contact_modulus("nut"), 1.0).approach
+    compliance = nut_axial_compliance(k_a, k_b, balls, geometry.contact_angle, geometry.lead_angle)
+    preload = case.operating.preload
+    if not preload > 0.0:
+        raise InputError("operating.preload", preload, "an initial preload > 0 N")
+    q_max = max(
+        float(
+            ball_load(
+                nut_force_pair(preload, lv.axial_load)[0],
+                balls,
+                geometry.contact_angle,
+                geometry.lead_angle,
+            )
+        )
+        for lv in spec.programme
+    )
+    hz = hertz(ca.rx, ca.ry, e_star, q_max)  # a along x (rolling), b along y (across)
+    nx, ny = spec.grid
+    dx, dy = 2.0 * spec.box_factor * hz.a / nx, 2.0 * spec.box_factor * hz.b / ny
+    x, y = cell_centres(nx, dx), cell_centres(ny, dy)
+    model = case.numerics.gap_model
+    gaps = {
+        s: np.asarray(
+            gap_function(geometry, "screw", flank=s, model=model)(x[:, None], y[None, :]),
+            dtype=float,
+        )
+        for s in FLANKS
+    }
+    eta, alpha = params.lubrication.viscosity, params.lubrication.pressure_viscosity
+    surface = AsperitySurface(
+        Ds=surface_dimension(case.surface.D),
+        G=case.surface.G,
+        e_star=e_star,
+        hardness=hardness,
+        cell_area=dx * dy,
+    )
+    length = working_raceway_length(
+        spec.stroke,
+        geometry.lead,
+        geometry.pitch_radius,
+        geometry.ball_radius,
+        geometry.contact_angle,
+    )
+    catalogue = preload_drag_torque(preload, geometry.lead, geometry.lead_angle)
+    factor = spec.torque_scale if spec.initial_torque is None else spec.initial_torque / catalogue
+    return WearSetup(
+        geometry=geometry,
+        spec=spec,
+        balls=balls,
+        e_star=e_star,
+        hardness=hardness,
+        surface=surface,
+        viscosity=eta,
+        pressure_viscosity=alpha,
+        rx=ca.rx,
+        ry=ca.ry,
+        x=x,
+        y=y,
+        dx=dx,
+        dy=dy,
+        nominal_gap=gaps,
+        compliance=compliance,
+        raceway_length=length,
+        initial_preload=preload,
+        torque_factor=factor,
+        tolerance=case.numerics.tolerance,
+        max_iterations=case.numerics.max_iterations,
+    )
+
+
+def fingerprint(case: Case, setup: WearSetup) -> str:
+    """Hash of every input of the wear run (a checkpoint must come from the same inputs)."""
+    data = {
+        "wear": dataclasses.asdict(setup.spec),
+        "screw": case.screw.model_dump(mode="json"),
+        "surface": case.surface.model_dump(mode="json"),
+        "preload": case.operating.preload,
+        "numerics": case.numerics.model_dump(mode="json"),
+        "viscosity": setup.viscosity,
+        "pressure_viscosity": setup.pressure_viscosity,
+        "hardness": setup.hardness,
+        "e_star": setup.e_star,
+    }
+    return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
+
+
+def wear_life(
+    case: Case,
+    *,
+    checkpoint: str | Path | None = None,
+    resume: bool = False,
+    max_steps: int | None = None,
+) -> WearLife:
+    """Wear, preload and drag torque over the load programme of ``case.wear``.
+
+    Args:
+        case: a validated case; ``case.wear`` (None = the defaults of the ``[wear]`` section:
+            the three-level step-stress programme with the calibrated wear coefficient).
+        checkpoint: file (``.npz``) to save the state to after every ``checkpoint_every`` steps.
+        resume: continue from ``checkpoint`` if it exists (it must come from the same case).
+        max_steps: stop after this many time steps of this call (the result then has
+            ``complete = False``; resume it later from the checkpoint).
+
+    Returns:
+        :class:`~ballscrew.wear.WearLife`. The step-stress example
+        (examples/wear_step_stress.toml, K = 1.304e-4) gives h_max = 2.43 µm and F_p = 244 N at
+        1.44e6 rev.
+    """
+    setup = wear_setup(case)
+    return integrate_wear(
+        setup,
+        fingerprint(case, setup),
+        checkpoint=checkpoint,
+        resume=resume,
+        max_steps=max_steps,
+    )
