@@ -14,7 +14,7 @@ Configuration (environment variables):
 * ``BALLSCREW_MAX_STEPS``: the most time steps of a wear or thermal transient run and the most
   points of a sweep. Default: 1 000 000.
 * ``BALLSCREW_MAX_WORK``: the most contact-grid cell solves of a wear run (grid cells × contact
-  solves), which bounds its run time (about 3e4 cell solves per second on one core). Default:
+  solves), which bounds its run time (about 3e4 to 1e5 cell solves per second and core). Default:
   100 000 000.
 """
 
