@@ -199,9 +199,6 @@ def test_cli_refuses_and_writes_nothing(tmp_path, gao):
         out = tmp_path / "out"
         result = runner.invoke(app, [*args, "--out", str(out)])
         assert result.exit_code == 2, result.output
-        assert (
-            result.output.startswith("error: ")
-            and "budget" in result.output
-            or "limit" in result.output
-        )
+        assert result.output.startswith("error: ")
+        assert "budget" in result.output or "limit" in result.output
         assert not out.exists()

@@ -99,7 +99,7 @@ def test_undetermined_fit_refused():
 
 def test_check_determined():
     fit_module._check_determined("x", "K", 1e-4, 0.9e-4)
-    with pytest.raises(CalibrationError, match="1.3e-05 ± 7.4e\\+25"):
+    with pytest.raises(CalibrationError, match=r"1.3e-05 ± 7.4e\+25"):
         fit_module._check_determined("x", "K", 1.3e-5, 7.4e25)
 
 

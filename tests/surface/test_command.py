@@ -10,7 +10,7 @@ import typer
 from typer.testing import CliRunner
 
 from ballscrew.commands.surface import surface
-from ballscrew.surface import weierstrass_mandelbrot_profile, write_sdf, write_text_profile
+from ballscrew.surface import weierstrass_mandelbrot_profile, write_sdf
 
 app = typer.Typer()
 app.command()(surface)
