@@ -149,8 +149,8 @@ def test_insensitive_model_is_reported() -> None:
 
 
 def test_unreachable_data_are_reported() -> None:
-    """Wear depths of 1 m are beyond any K ≤ 1 of the model."""
-    data = measured_history(MEASURED_AT, 1.0 + MEASURED_AT * 1e-6, "wear_depth")
+    """A preload above the initial 1500 N is beyond any K of the model (wear only lowers it)."""
+    data = measured_history(MEASURED_AT, 3000.0 + MEASURED_AT * 1e-6, "preload")
     with pytest.raises(CalibrationError, match="cannot reach"):
         fit_wear_coefficient(SyntheticModel(), data)
 

@@ -10,7 +10,7 @@ import typer
 from typer.testing import CliRunner
 
 from ballscrew.commands.surface import surface
-from ballscrew.surface import weierstrass_mandelbrot_profile, write_sdf, write_text_profile
+from ballscrew.surface import weierstrass_mandelbrot_profile, write_sdf
 
 app = typer.Typer()
 app.command()(surface)
@@ -42,9 +42,8 @@ def test_surface_writes_summary_plots_and_report(tmp_path: Path) -> None:
 
 def test_one_column_text_file_with_spacing_option(tmp_path: Path) -> None:
     p = weierstrass_mandelbrot_profile(1.5, 1e-10, 2**13 * 1e-6, 1e-6, seed=5)
-    src = write_text_profile(tmp_path / "p.csv", p)
-    zonly = tmp_path / "z.txt"
-    zonly.write_text("\n".join(line.split(",")[1] for line in src.read_text().splitlines()[3:]))
+    zonly = tmp_path / "z.txt"  # heights in m: a bare column carries no unit
+    zonly.write_text("\n".join(repr(float(h)) for h in p.heights))
     result = runner.invoke(
         app, ["surface", str(zonly), "--out", str(tmp_path / "o"), "--spacing", "1 um"]
     )

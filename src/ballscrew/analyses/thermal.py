@@ -21,6 +21,7 @@ import xarray as xr
 
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.budget import check_memory
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
@@ -43,7 +44,7 @@ from ballscrew.thermal.problem import (
     Solid,
     ThermalProblem,
 )
-from ballscrew.thermal.simulate import Solution, simulate, time_to_fraction
+from ballscrew.thermal.simulate import Solution, check_transient, simulate, time_to_fraction
 
 
 @dataclass(frozen=True)
@@ -244,7 +245,10 @@ def thermal_field(
     started = _time.perf_counter()
     spec = _spec(case)
     model = THERMAL_MODELS.check(spec.model if model is None else model)
+    if transient:  # the step count before any work; the history's memory once the mesh is known
+        check_transient(None, spec.transient.duration, spec.transient.time_step)
     problem, sources, convection, interfaces, speed = build_problem(case, tcr)
+    _check_mesh(spec, problem, model)
     ms = spec.mesh
     mesh = MeshOptions(
         size=ms.size,
@@ -285,6 +289,30 @@ def thermal_field(
         elongation_thermoelastic=thermoelastic,
         seconds=_time.perf_counter() - started,
     )
+
+
+def _check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
+    """Refuse (naming the mesh key) a mesh whose matrices would not fit the memory budget.
+
+    Unknowns: the shaft length and the largest outer radius over the element size (times the
+    element order) for the axisymmetric model, axial planes × divisions × (layers + 6) for the
+    3-D model, one per cell for the network; about 2 KiB (2-D, network) or 4 KiB (3-D) per
+    unknown for the sparse matrices and a direct factorisation.
+    """
+    ms = spec.mesh
+    length = problem.shaft_length
+    if model == "network":
+        field, value, per = "thermal.mesh.network_cell", ms.network_cell, 2048.0
+        unknowns = length / ms.network_cell + 1.0
+    elif model == "3d":
+        field, value, per = "thermal.mesh.size_3d", ms.size_3d, 4096.0
+        planes = (problem.ring_length + problem.stroke) / ms.size_3d + length / ms.far_size_3d
+        unknowns = (planes + 1.0) * ms.divisions_3d * (ms.layers_3d + 6.0)
+    else:
+        field, value, per = "thermal.mesh.size", ms.size, 2048.0
+        radius = max(part.outer_radius for part in problem.parts)
+        unknowns = (ms.order * length / ms.size + 1.0) * (ms.order * radius / ms.size + 1.0)
+    check_memory(field, value, unknowns * per, f"a {model} mesh of about {unknowns:.3g} unknowns")
 
 
 def _spec(case: Case) -> ThermalSpec:

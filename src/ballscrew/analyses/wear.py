@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import Case
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import cell_centres, hertz
@@ -22,7 +23,14 @@ from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import gap_function, raceway_curvature
 from ballscrew.loads import ball_load, nut_axial_compliance, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
-from ballscrew.wear.life import FLANKS, WearLife, WearSetup, integrate_wear, nut_force_pair
+from ballscrew.wear.life import (
+    FLANKS,
+    WearLife,
+    WearSetup,
+    check_wear_work,
+    integrate_wear,
+    nut_force_pair,
+)
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.strips import working_raceway_length
 
@@ -79,6 +87,9 @@ def wear_setup(case: Case) -> WearSetup:
     )
     hz = hertz(ca.rx, ca.ry, e_star, q_max)  # a along x (rolling), b along y (across)
     nx, ny = spec.grid
+    grid_bytes = contact_grid_bytes(nx, ny) + 8.0 * nx * ny * 16  # + warm starts, gaps, rates
+    check_memory("wear.grid", list(spec.grid), grid_bytes, f"the {nx} × {ny} wear grid")
+    check_wear_work(spec, 0, 0.0, 0)
     dx, dy = 2.0 * spec.box_factor * hz.a / nx, 2.0 * spec.box_factor * hz.b / ny
     x, y = cell_centres(nx, dx), cell_centres(ny, dy)
     model = case.numerics.gap_model

@@ -1,4 +1,4 @@
-"""Calibration of the wear model against a test bench (GitHub issue #6, part 4).
+"""Calibration of the wear model against a test bench.
 
 1. ``data = read_measured("bench.csv")`` reads a measured history of friction torque, preload
    or wear depth against screw revolutions (header row; units in brackets are converted).

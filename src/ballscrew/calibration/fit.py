@@ -52,7 +52,8 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy.optimize import least_squares
 
-from ballscrew.calibration.measured import MeasuredHistory
+from ballscrew.budget import BudgetError
+from ballscrew.calibration.measured import MeasuredHistory, check_values
 from ballscrew.errors import BallscrewError, ConvergenceError, InputError
 
 __all__ = [
@@ -358,6 +359,7 @@ def fit_wear_coefficient(
         raise InputError("wear.coefficient", initial_coefficient, f"a number in ({_K_MIN}, 1)")
     if not (math.isfinite(torque_scale) and torque_scale > 0.0):
         raise InputError("wear.torque_scale", torque_scale, "a number > 0")
+    check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
     p = 2 if fit_torque_scale else 1
     n = len(data)
     if n <= p:
@@ -406,6 +408,9 @@ def fit_wear_coefficient(
     jac = objective.jacobian(theta, diff_step)
     covariance = _covariance(jac, residuals, n, p, data.source)
     k = math.exp(theta[0])
+    _check_determined(data.source, "K", k, k * math.sqrt(covariance[0, 0]))
+    if p == 2:
+        _check_determined(data.source, "torque scale", theta[1], math.sqrt(covariance[1, 1]))
     model_at_data, model_rev, model_val = objective.run(theta[0])
     m = float(theta[1]) if fit_torque_scale else 1.0
     fitted = m * model_at_data
@@ -438,6 +443,15 @@ def fit_wear_coefficient(
         scan=scan,
         message=str(solution.message),
     )
+
+
+def _check_determined(source: str, name: str, value: float, error: float) -> None:
+    """CalibrationError when a fitted parameter's standard error is not below its value."""
+    if not (math.isfinite(error) and error < abs(value)):
+        raise CalibrationError(
+            f"{source}: the data do not determine the {name}: the fit gives {value:.3g} ± "
+            f"{error:.2g} (a standard error as large as the value; check the data and units)"
+        )
 
 
 def _covariance(jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str) -> np.ndarray:
@@ -503,7 +517,13 @@ def calibrate(
     def simulate(k: float) -> WearHistory:
         with warnings.catch_warnings(record=True) as seen:
             warnings.simplefilter("always")
-            history = model(with_overrides(case, {**base, "wear.coefficient": k}))
+            try:
+                history = model(with_overrides(case, {**base, "wear.coefficient": k}))
+            except BudgetError as exc:
+                raise CalibrationError(
+                    f"{data.source}: the wear model cannot run at the trial K = {k:.3g} ({exc}); "
+                    f"the measured {data.quantity} is out of the model's reach (check the data)"
+                ) from None
         warned[k] = seen
         return history
 

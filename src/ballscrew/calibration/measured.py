@@ -14,7 +14,11 @@ File format (``ballscrew calibrate --measured FILE.csv``)::
   the largest wear depth of the screw raceway). Other columns (a time stamp, a sample number)
   are ignored.
 * A column name may carry a unit in square brackets, ``wear_depth [um]``, ``preload [kN]``; it
-  is converted to SI with :func:`ballscrew.units.to_si`. Without a unit the numbers are SI.
+  is converted to SI with :func:`ballscrew.units.to_si` and must have the dimension of the
+  quantity (a dimensionless unit such as ``[%]`` is refused). Without a unit the numbers are SI.
+* The measured values must be physically plausible: some > 0, none above
+  :data:`PLAUSIBLE_MAX`, none below −5 % of the largest (noise around 0); at most
+  :data:`MAX_POINTS` rows.
 
 Every problem raises :class:`ballscrew.errors.InputError` naming the file and the column.
 """
@@ -30,10 +34,19 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ballscrew.budget import check_memory, format_bytes
 from ballscrew.errors import InputError
 from ballscrew.units import SI_UNITS, to_si
 
-__all__ = ["QUANTITIES", "MeasuredHistory", "measured_history", "read_measured"]
+__all__ = [
+    "MAX_POINTS",
+    "PLAUSIBLE_MAX",
+    "QUANTITIES",
+    "MeasuredHistory",
+    "check_values",
+    "measured_history",
+    "read_measured",
+]
 
 #: Measured quantities a history may hold: column name → physical kind (see units.SI_UNITS).
 QUANTITIES: dict[str, str] = {
@@ -41,6 +54,24 @@ QUANTITIES: dict[str, str] = {
     "preload": "force",
     "wear_depth": "length",
 }
+
+#: Largest plausible measured value of each quantity (SI): a ball-screw drag torque, a preload
+#: and a raceway wear depth beyond these are a unit or data error.
+PLAUSIBLE_MAX: dict[str, float] = {
+    "friction_torque": 1.0e4,
+    "preload": 1.0e7,
+    "wear_depth": 1.0e-2,
+}
+NOISE = 0.05
+"""Negative values down to this share of the largest one are accepted as noise around 0."""
+MAX_REVOLUTIONS = 1.0e12
+"""Largest plausible revolution count of a life test."""
+MAX_POINTS = 100_000
+"""Most measured points: the fit compares every point with each trial run (see FIT_BYTES)."""
+FIT_BYTES = 3 * 801 * 8
+"""Memory per measured point of the calibration's surrogate (801 trial K × 3 arrays) [bytes]."""
+READ_FACTOR = 30
+"""Memory of reading a CSV file per byte of it (text, lines, cells as Python objects)."""
 
 _HEADER = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(.*)\])?\s*$")
 
@@ -96,6 +127,12 @@ def measured_history(
         if np.any(bad):
             row = int(np.flatnonzero(bad)[0])
             raise InputError(f"{source}: {name} (point {row + 1})", arr[row], "a finite number")
+    _check_count(source, rev.size)
+    if rev.size and rev[-1] > MAX_REVOLUTIONS:
+        raise InputError(
+            f"{source}: revolutions (point {rev.size})", float(rev[-1]), f"≤ {MAX_REVOLUTIONS:g}"
+        )
+    check_values(source, quantity, val)
     if rev.size and rev[0] < 0.0:
         raise InputError(f"{source}: revolutions (point 1)", float(rev[0]), "a count ≥ 0")
     steps = np.diff(rev)
@@ -117,10 +154,49 @@ def measured_history(
     return MeasuredHistory(revolutions=rev, values=val, quantity=quantity, source=source)
 
 
+def _check_count(source: str, points: int) -> None:
+    if points > MAX_POINTS:
+        raise InputError(
+            f"{source}: number of points",
+            points,
+            f"at most {MAX_POINTS} (a fit of {points} points needs about "
+            f"{format_bytes(points * FIT_BYTES)}; thin the data)",
+        )
+
+
+def check_values(source: str, quantity: str, values: NDArray[np.float64]) -> None:
+    """Measured values: some > 0, none above :data:`PLAUSIBLE_MAX`, none below −NOISE × the peak.
+
+    The quantities are ≥ 0; a value slightly below 0 is measurement noise around 0 (NOISE of
+    the largest value), a larger negative value is a sign or data error.
+    """
+    unit = SI_UNITS[QUANTITIES[quantity]]
+    bound = PLAUSIBLE_MAX[quantity]
+    peak = float(np.max(values)) if values.size else 0.0
+    if not peak > 0.0:
+        raise InputError(
+            f"{source}: {quantity}", f"largest value {peak:g}", f"some values > 0 {unit}"
+        )
+    low = -NOISE * min(peak, bound)
+    allowed = f"a measured {quantity} in [{low:.3g}, {bound:g}] {unit}"
+    bad = np.flatnonzero(~((values >= low) & (values <= bound)))  # also NaN
+    if bad.size:
+        row = int(bad[0])
+        raise InputError(f"{source}: {quantity} (point {row + 1})", float(values[row]), allowed)
+
+
 def _unit_factor(source: str, name: str, unit: str | None, kind: str) -> float:
     """Factor that converts numbers in ``unit`` to the SI unit of ``kind`` (1 without unit)."""
     if unit is None or not unit.strip():
         return 1.0
+    try:
+        to_si(f"1 {unit.strip()}", "dimensionless")
+    except ValueError:
+        pass  # a dimensional unit: checked against the quantity below
+    else:
+        raise InputError(
+            f"{source}: column {name!r}", f"[{unit}]", f"a unit of {kind}, not a dimensionless one"
+        )
     try:
         factor = to_si(f"1 {unit.strip()}", kind)
     except ValueError as exc:
@@ -167,6 +243,8 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     path = Path(path)
     source = path.name
     try:
+        size = path.stat().st_size
+        check_memory("--measured", str(path), READ_FACTOR * size, f"reading {size} bytes of CSV")
         text = path.read_text(encoding="utf-8-sig")
     except OSError as exc:
         raise InputError("--measured", str(path), f"a readable CSV file ({exc.strerror})") from None
@@ -179,6 +257,7 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     ]
     if not numbered:
         raise InputError("--measured", str(path), "a CSV file with a header row and data rows")
+    _check_count(source, len(numbered) - 1)
     rows = list(csv.reader(line for _, line in numbered))
     columns = _parse_header(source, rows[0])
     if "revolutions" not in columns:

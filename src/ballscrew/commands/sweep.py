@@ -38,7 +38,7 @@ def sweep(
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
     from ballscrew.sweep.registry import get_analysis
-    from ballscrew.sweep.spec import is_sweep_file, load_sweep, merge_axes
+    from ballscrew.sweep.spec import check_sweep_size, is_sweep_file, load_sweep, merge_axes
 
     extra = [parse_axis(text) for text in vary or []]
     if is_sweep_file(case_file):
@@ -49,6 +49,7 @@ def sweep(
         case, axes, name = load_case(case_file), tuple(extra), analysis or "tcr"
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
+    check_sweep_size(axes)
     function = get_analysis(name)
 
     def progress(done: int, total: int) -> None:

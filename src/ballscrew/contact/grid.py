@@ -16,6 +16,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
+from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.hertz import HertzContact, hertz
 from ballscrew.contact.polonsky_keer import solve_normal
@@ -139,7 +140,16 @@ def solve_contact(
     else:
         nx, ny = (integer_at_least("cells", n, 2) for n in cells)
         dx, dy = 2.0 * fx * estimate.a / nx, 2.0 * fy * estimate.b / ny
+    field, value = (
+        ("numerics.cells", list(cells))
+        if cells is not None
+        else ("numerics.cells_across", cells_across)
+    )
     for enlargement in range(max_enlargements + 1):
+        what = f"the {nx} × {ny} contact grid" + (
+            f" (enlargement {enlargement})" if enlargement else ""
+        )
+        check_memory(field, value, contact_grid_bytes(nx, ny), what)
         x, y = cell_centres(nx, dx), cell_centres(ny, dy)
         gap = _sample(gap_function, x, y)
         initial = estimate.pressure(x[:, None], y[None, :]) if warm_start else None

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ballscrew.budget import check_memory
 from ballscrew.contact_resistance.element import ElementTCR, FractalTCRModel, element_tcr
 from ballscrew.errors import InputError
 from ballscrew.validation import positive
@@ -83,9 +84,24 @@ def rebin_forces(
     dx = positive("dx", dx, "m")
     dy = positive("dy", dy, "m")
     delta = positive("cell_size", cell_size, "m")
+    _check_rebin_memory(p.shape, dx, dy, delta)
     wx = _overlap_weights(p.shape[0], dx, delta)
     wy = _overlap_weights(p.shape[1], dy, delta)
     return wx @ (p * (dx * dy)) @ wy.T
+
+
+def _check_rebin_memory(shape: tuple[int, ...], dx: float, dy: float, delta: float) -> None:
+    """Refuse (``tcr.cell_size``) a re-binning whose arrays would not fit the memory budget.
+
+    The overlap weights and their temporaries (4 float arrays of coarse × fine cells per axis)
+    and about 30 float arrays of the coarse cells (forces, areas and the element quantities).
+    """
+    coarse_x = float(np.ceil(shape[0] * dx / delta))
+    coarse_y = float(np.ceil(shape[1] * dy / delta))
+    weights = 4.0 * (coarse_x * shape[0] + coarse_y * shape[1])
+    estimate = 8.0 * (weights + 30.0 * coarse_x * coarse_y)
+    what = f"re-binning the pressure onto {coarse_x:.3g} × {coarse_y:.3g} fractal cells"
+    check_memory("tcr.cell_size", delta, estimate, what)
 
 
 def _pressure_field(pressure: ArrayLike) -> NDArray[np.float64]:

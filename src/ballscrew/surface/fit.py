@@ -86,6 +86,11 @@ SF_LONG_WAVE_SHARE = 0.02
 SF_MIN_LAG = 5.0
 #: Least ratio τ_max/τ_min of the automatic SF range.
 SF_MIN_DECADES = 10.0
+#: Least RMS height (after removing a line) relative to the largest |height|: below it the
+#: profile is flat to rounding and any slope fitted to it is noise.
+MIN_RELATIVE_RMS = 1.0e-9
+#: Physically plausible fractal roughness G, m; a fit outside it is refused.
+PLAUSIBLE_G: Range = (1.0e-30, 1.0e-2)
 #: Points per smoothing width on the evaluation grid of the fits.
 _GRID_PER_WIDTH = 4
 _SUBBINS = 16
@@ -244,6 +249,34 @@ def _window_factor(window: str | None, n: int) -> float:
     return float(1.0 + 2.0 * np.sum(np.abs(rho) ** 2))
 
 
+def _check_variation(rows: FloatArray) -> None:
+    """InputError for profiles that are flat (to rounding) once a line is removed."""
+    t = np.linspace(-1.0, 1.0, rows.shape[1])
+    residual = rows - rows.mean(axis=1, keepdims=True)
+    residual -= np.outer(residual @ t / (t @ t), t)
+    rms = float(np.sqrt(np.mean(residual**2)))
+    if not rms > MIN_RELATIVE_RMS * float(np.max(np.abs(rows))):
+        raise InputError(
+            "heights",
+            f"a profile with no height variation (RMS {rms:.2g} m after removing a line)",
+            "a rough profile",
+        )
+
+
+def _determined(D: float, G: float, notes: list[str], what: str, D_se: float = 0.0) -> bool:
+    """Whether a fit's G is plausible and its D determined (σ_D < D − 1, the fractal part)."""
+    lo, hi = PLAUSIBLE_G
+    if not lo <= G <= hi:
+        notes.append(f"{what} fit gives G = {G:.3g} m, outside the plausible {lo:g}–{hi:g} m")
+        return False
+    if not D_se < D - 1.0:
+        notes.append(
+            f"{what} fit undetermined: D = {D:.4g} ± {D_se:.2g}, an uncertainty larger than D − 1"
+        )
+        return False
+    return True
+
+
 def _valid_dimension(D: float, notes: list[str], what: str) -> bool:
     if math.isfinite(D) and 1.0 < D < 2.0:
         return True
@@ -283,6 +316,7 @@ def fit_power_spectrum(
     g = check_gamma(gamma)
     dx = check_spacing(spacing)
     rows = as_rows(heights)
+    _check_variation(rows)
     n_rows, n = rows.shape
     length = n * dx
     f, s = (
@@ -332,6 +366,8 @@ def fit_power_spectrum(
         w_G = ((dlnG_da * coef_a + dlnG_db * coef_b) / power) @ kernel
         D_se = math.sqrt(float(np.sum(w_D**2 * var_bin)))
         lnG_se = math.sqrt(float(np.sum(w_G**2 * var_bin)))
+        if not _determined(D, G, notes, "PSD", D_se):
+            D = G = float("nan")
     else:
         D = float("nan")
     points = int(np.count_nonzero((f >= lo) & (f <= hi)))
@@ -401,6 +437,7 @@ def fit_structure_function(
     g = check_gamma(gamma)
     dx = check_spacing(spacing)
     rows = as_rows(heights)
+    _check_variation(rows)
     n_rows, n = rows.shape
     length = n * dx
     lag, sf = structure if structure is not None else structure_function(rows, dx, detrend=detrend)
@@ -460,6 +497,8 @@ def fit_structure_function(
         G = math.exp(
             (intercept - alpha * math.log(2.0 * math.pi) - math.log(c_d)) / (2.0 * (D - 1.0))
         )
+        if not _determined(D, G, notes, "structure-function"):
+            D = G = float("nan")
     else:
         D = float("nan")
     points = int(np.count_nonzero((lag >= lo) & (lag <= hi)))

@@ -12,15 +12,19 @@ line adds axes (or replaces one of the same key).
 
 from __future__ import annotations
 
+import math
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ballscrew.budget import check_count, check_memory
 from ballscrew.case import Case, CaseError, load_case
 from ballscrew.sweep.axes import SweepAxis, parse_axis
 
 _KEYS = {"case", "analysis", "vary", "set", "description"}
+POINT_BYTES = 64 * 2**10
+"""Memory of one sweep point before and after it runs (overrides, validated case, record)."""
 
 
 @dataclass(frozen=True)
@@ -67,3 +71,14 @@ def merge_axes(base: tuple[SweepAxis, ...], extra: list[SweepAxis]) -> tuple[Swe
     """``base`` axes with ``extra`` appended; an extra axis replaces a base axis of its key."""
     keys = {axis.key for axis in extra}
     return tuple(a for a in base if a.key not in keys) + tuple(extra)
+
+
+def check_sweep_size(axes: tuple[SweepAxis, ...]) -> None:
+    """Refuse a grid with more points than the step limit or the memory budget allows.
+
+    Call it before the grid is expanded (``grid_points``) or its cases are validated.
+    """
+    points = math.prod(len(axis.values) for axis in axes)
+    shape = " × ".join(f"{len(axis.values)} ({axis.key})" for axis in axes)
+    check_count("--vary", shape, points, "points of the sweep grid")
+    check_memory("--vary", shape, points * POINT_BYTES, f"a sweep of {points} points")

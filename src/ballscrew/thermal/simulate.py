@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from ballscrew.budget import check_count, check_memory
 from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.problem import stroke_offset
@@ -146,6 +147,17 @@ def simulate(
     return Solution(disc, steady, float(np.sum(f)), loss, transient, seconds)
 
 
+def check_transient(disc: Discretisation | None, duration: float, time_step: float) -> None:
+    """Refuse a transient with too many time steps or (with ``disc``) too large a history."""
+    steps = duration / time_step
+    key = "thermal.transient.time_step"
+    check_count(key, time_step, steps, f"time steps over the duration {duration:g} s")
+    if disc is None:
+        return
+    per_step = 8.0 * (disc.axis.shape[0] + disc.sensors.shape[0] + 4)
+    check_memory(key, time_step, steps * per_step, f"the history of {steps:.3g} time steps")
+
+
 def _march(
     disc: Discretisation,
     averaged: tuple,
@@ -157,6 +169,7 @@ def _march(
 ) -> Transient:
     if not (duration > 0.0 and 0.0 < time_step <= duration):
         raise InputError("transient.time_step", time_step, f"a step in (0, {duration:g}] s")
+    check_transient(disc, duration, time_step)
     steps = max(1, round(duration / time_step))
     dt = duration / steps
     grid = disc.grid

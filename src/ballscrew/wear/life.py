@@ -32,6 +32,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ballscrew.budget import check_count, check_memory, check_work
 from ballscrew.contact import solve_normal
 from ballscrew.errors import InputError
 from ballscrew.geometry import ScrewGeometry
@@ -59,6 +60,7 @@ __all__ = [
     "GridEdgeWarning",
     "WearLife",
     "WearSetup",
+    "check_wear_work",
     "flank_rate",
     "integrate_wear",
     "nut_force_pair",
@@ -419,6 +421,46 @@ def _step_rates(
     return rates, forces
 
 
+def check_wear_work(
+    spec: WearOptions, taken: int, revolutions: float, level: int, rates: FloatArray | None = None
+) -> None:
+    """Refuse a run whose time steps, history memory or contact work would exceed the limits.
+
+    The steps still to go are at least one per torque sample and level end, plus (given the
+    current ``rates``) the depth-limited steps: remaining revolutions × max ḣ / max_depth_step.
+    Checked before the set-up, before the first step and at every step, so a run stops with an
+    error (the guard) instead of running for ever.
+    """
+    ends = np.cumsum([lv.revolutions for lv in spec.programme])
+    remaining = float(ends[-1]) - revolutions
+    if not math.isfinite(remaining):
+        bad = int(np.flatnonzero(~np.isfinite(ends))[0])
+        raise InputError(
+            f"wear.programme[{bad}].revolutions",
+            spec.programme[bad].revolutions,
+            "a finite number of revolutions",
+        )
+    samples = remaining / spec.torque_sampling + len(ends) - level
+    peak = math.inf if rates is None or not np.all(np.isfinite(rates)) else float(rates.max())
+    depth = 0.0 if rates is None or remaining <= 0.0 else remaining * peak / spec.max_depth_step
+    if depth > samples:
+        field, value = "wear.max_depth_step", spec.max_depth_step
+        cause = (
+            f"depth-limited at {peak:.3g} m/rev (wear.coefficient = {spec.coefficient:g}, "
+            f"wear.stroke = {spec.stroke:g} m)"
+        )
+    else:
+        field, value, cause = "wear.torque_sampling", spec.torque_sampling, "one per sample"
+    total = taken + samples + depth
+    check_count(field, value, total, f"time steps of the wear run ({taken} taken, rest {cause})")
+    nx, ny = spec.grid
+    record = 2.0 * 8.0 * (2 * ny + 30)  # a profile per flank and the scalars, twice
+    check_memory(field, value, total * record, f"the wear history of {total:.3g} steps")
+    solves = 2 * len(FLANKS) * (samples + depth)  # two nuts per flank and step, at most
+    what = f"contact-grid cell solves of the wear run ({nx * ny} cells × {solves:.3g} solves)"
+    check_work("wear.grid", list(spec.grid), nx * ny * solves, what)
+
+
 def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> WearLife:
     r = state.records
     spec = setup.spec
@@ -520,6 +562,7 @@ def integrate_wear(
             return _finish(setup, state, False, time.perf_counter() - start)
         preload = setup.preload(float(state.depth.max()))
         rates, _ = _step_rates(setup, state, preload, level.axial_load, level.speed)
+        check_wear_work(spec, state.steps, state.revolutions, state.level, rates)
         next_sample = (math.floor(state.revolutions / every + 1e-9) + 1) * every
         target = min(end, next_sample)
         peak = float(rates.max())
