@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import pytest
 
 import ballscrew
 from ballscrew.analyses.kinematics import computed_drag_torque
-from ballscrew.case import case_from_dict
+from ballscrew.case import Case, case_from_dict
 
 RPM = 2.0 * math.pi / 60.0
 
@@ -70,57 +71,58 @@ def test_thk_preload_torque_example(validation, dataset, base_raw) -> None:
     )
 
 
-@pytest.mark.parametrize(
-    ("direction", "known_miss"),
-    [pytest.param("up", False, id="up"), pytest.param("down", True, id="down")],
+BALL_MODEL_ASSUMPTIONS = (
+    "speed 100 rpm (ASSUMED: the JIS B 1192 / HIWIN measuring speed; not published)",
+    "lubricant ISO VG 68 mineral oil, 0.06 Pa s, α = 2.1e-8 1/Pa; boundary friction 0.1, "
+    "limiting shear 0.07 (GUESS: the example case's values; XJTU lubricant not published)",
+    "raceway roughness D = 1.59, G = 9e-10 m (ASSUMED: the Gao et al. 2019 raceway)",
+    "no seals or wipers in the measured torque (ASSUMED)",
 )
-def test_xjtu_as_new_catalogue_torque(validation, dataset, base_raw, direction, known_miss):
+
+# name → (model label, predictor, extra assumptions, tolerance basis)
+XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]] = {
+    "catalogue": (
+        "drag_torque (catalogue K F_p L/2π)",
+        ballscrew.drag_torque,
+        (),
+        TORQUE_BAND,
+    ),
+    "ball_model": (
+        "computed_drag_torque (ball model, level 2)",
+        lambda case: computed_drag_torque(case, speed=100.0 * RPM, level=2),
+        BALL_MODEL_ASSUMPTIONS,
+        f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
+        "model should do at least as well",
+    ),
+}
+
+
+@pytest.mark.parametrize(
+    ("name", "direction", "known_miss"),
+    [
+        pytest.param("catalogue", "up", False, id="catalogue-up"),
+        pytest.param("catalogue", "down", True, id="catalogue-down"),
+        pytest.param("ball_model", "up", True, id="ball_model-up"),
+        pytest.param("ball_model", "down", True, id="ball_model-down"),
+    ],
+)
+def test_xjtu_as_new_torque(validation, dataset, base_raw, name, direction, known_miss) -> None:
     data = dataset("drag_torque", "xjtu_friction_torque")
-    torque = ballscrew.drag_torque(case_from_dict(_xjtu_raw(base_raw)))
+    model, predict, extra, basis = XJTU_MODELS[name]
     validation.check(
-        f"xjtu_as_new_catalogue_torque_{direction}",
-        model="drag_torque (catalogue K F_p L/2π)",
+        f"xjtu_as_new_{name}_torque_{direction}",
+        model=model,
         source=XJTU_SOURCE,
         reference=data,
         quantity=f"as-new drag torque, '{direction.capitalize()}'",
         unit="N m",
         measured=data[f"{direction}_Nm"][0],
-        predicted=torque,
+        predicted=predict(case_from_dict(_xjtu_raw(base_raw))),
         tolerance=0.30,
         relative=True,
-        tolerance_basis=TORQUE_BAND,
-        assumptions=XJTU_ASSUMPTIONS,
+        tolerance_basis=basis,
+        assumptions=(*XJTU_ASSUMPTIONS, *extra),
         known_miss=known_miss,
-    )
-
-
-@pytest.mark.parametrize("direction", ["up", "down"])
-def test_xjtu_as_new_ball_model_torque(validation, dataset, base_raw, direction) -> None:
-    data = dataset("drag_torque", "xjtu_friction_torque")
-    case = case_from_dict(_xjtu_raw(base_raw))
-    torque = computed_drag_torque(case, speed=100.0 * RPM, level=2)
-    validation.check(
-        f"xjtu_as_new_ball_model_torque_{direction}",
-        model="computed_drag_torque (ball model, level 2)",
-        source=XJTU_SOURCE,
-        reference=data,
-        quantity=f"as-new drag torque, '{direction.capitalize()}'",
-        unit="N m",
-        measured=data[f"{direction}_Nm"][0],
-        predicted=torque,
-        tolerance=0.30,
-        relative=True,
-        tolerance_basis=f"the band the makers allow about their empirical formula ({TORQUE_BAND}); "
-        "a physical model should do at least as well",
-        assumptions=(
-            *XJTU_ASSUMPTIONS,
-            "speed 100 rpm (ASSUMED: the JIS B 1192 / HIWIN measuring speed; not published)",
-            "lubricant ISO VG 68 mineral oil, 0.06 Pa s, α = 2.1e-8 1/Pa; boundary friction 0.1, "
-            "limiting shear 0.07 (GUESS: the example case's values; XJTU lubricant not published)",
-            "raceway roughness D = 1.59, G = 9e-10 m (ASSUMED: the Gao et al. 2019 raceway)",
-            "no seals or wipers in the measured torque (ASSUMED)",
-        ),
-        known_miss=True,
     )
 
 

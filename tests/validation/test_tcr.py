@@ -27,6 +27,10 @@ ASSUMPTIONS = (
 )
 
 
+SUBJECT = {"model": "element_tcr (fractal, V2)", "source": SOURCE, "assumptions": ASSUMPTIONS}
+"""What every comparison of this module shares."""
+
+
 def _conductance(pressure: float) -> float:
     """h = 1/(R A) of one element under contact pressure ``pressure``, W/(m² K)."""
     model = FractalTCRModel(
@@ -48,8 +52,7 @@ def test_moldflow_steel_air_steel_conductance(validation, dataset, index) -> Non
     pressure = data["pressure_MPa"][index]
     validation.check(
         f"moldflow_steel_air_steel_{pressure:g}MPa",
-        model="element_tcr (fractal, V2)",
-        source=SOURCE,
+        **SUBJECT,
         reference=data,
         quantity=f"contact conductance at {pressure:g} MPa",
         unit="W/(m² K)",
@@ -59,7 +62,6 @@ def test_moldflow_steel_air_steel_conductance(validation, dataset, index) -> Non
         relative=True,
         tolerance_basis="±10 % stated in the table, widened to ±50 % because the surface's "
         "roughness is not given and the fractal parameters are a stand-in",
-        assumptions=ASSUMPTIONS,
         known_miss=True,
     )
 
@@ -69,8 +71,7 @@ def test_moldflow_conductance_pressure_trend(validation, dataset) -> None:
     (_, p7, p15), (_, h7, h15) = data["pressure_MPa"], data["conductance_W_m2K"]
     validation.check(
         "moldflow_steel_air_steel_trend",
-        model="element_tcr (fractal, V2)",
-        source=SOURCE,
+        **SUBJECT,
         reference=data,
         quantity=f"h({p15:g} MPa) / h({p7:g} MPa)",
         unit="-",
@@ -80,7 +81,6 @@ def test_moldflow_conductance_pressure_trend(validation, dataset) -> None:
         relative=True,
         tolerance_basis="two values of ±10 % each, in quadrature; the ratio is far less "
         "sensitive to the unknown roughness than the values",
-        assumptions=ASSUMPTIONS,
         known_miss=True,
     )
 
@@ -89,13 +89,11 @@ def test_moldflow_touching_unloaded(validation, dataset) -> None:
     data = dataset("tcr", "moldflow_steel_air_steel")
     validation.not_compared(
         "moldflow_steel_air_steel_0MPa",
-        model="element_tcr (fractal, V2)",
-        source=SOURCE,
+        **SUBJECT,
         reference=data,
         quantity="contact conductance at 0 MPa (touching, unloaded)",
         unit="W/(m² K)",
         measured=data["conductance_W_m2K"][0],
-        assumptions=ASSUMPTIONS,
         reason="the element model treats an unloaded element as out of contact (R = ∞); the air "
         "conductance of touching, unloaded surfaces is outside its scope. Missing: a gas-gap "
         "conductance model at zero load (e.g. Yovanovich's gap model with the roughness σ).",

@@ -34,6 +34,10 @@ ASSUMPTIONS = (
 )
 
 
+SUBJECT = {"model": "thermal_field (network)", "source": SOURCE, "assumptions": ASSUMPTIONS}
+"""What every comparison of this module shares."""
+
+
 def _blk3232_raw(raw: dict[str, Any], data: dict[str, Any]) -> dict[str, Any]:
     raw["screw"].update(pitch_diameter="33.75 mm", lead="32 mm", balls_per_nut=60, nuts=1)
     raw["operating"].update(
@@ -70,8 +74,7 @@ def test_thk_blk3232_shaft_temperature_rise(validation, dataset, base_raw) -> No
     sensor = field.sensors[0]
     validation.check(
         "thk_blk3232_shaft_rise_no_seal",
-        model="thermal_field (network)",
-        source=SOURCE,
+        **SUBJECT,
         reference=data,
         quantity="shaft-centre temperature rise after 90 min, no seal",
         unit="K",
@@ -84,7 +87,6 @@ def test_thk_blk3232_shaft_temperature_rise(validation, dataset, base_raw) -> No
         "Table13, row 600-1000 N mm, L/d <= 40; the row of this screw, 454 N mm and L/d = 45, "
         "was not in the retrieved text, so the quoted C5 value is used); the printed 0.1 K "
         "resolution is negligible",
-        assumptions=ASSUMPTIONS,
     )
 
 
@@ -92,13 +94,11 @@ def test_thk_blk3232_wiper_ring(validation, dataset) -> None:
     data = dataset("thermal", "thk_blk3232_heat_test")
     validation.not_compared(
         "thk_blk3232_shaft_rise_wiper",
-        model="thermal_field (network)",
-        source=SOURCE,
+        **SUBJECT,
         reference=data,
         quantity="shaft-centre temperature rise after 90 min, with wiper ring W",
         unit="K",
         measured=data["temperature_rise_wiper_K"],
-        assumptions=ASSUMPTIONS,
         reason="no model of seal or wiper-ring friction: the heat sources are the balls and the "
         "support bearings only. Missing: a seal/wiper friction torque (e.g. from the maker's "
         "seal resistance data) as a heat source.",
