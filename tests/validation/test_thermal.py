@@ -1,0 +1,105 @@
+"""Thermal model: THK's heat-generation test of a BLK3232 screw (catalogue page A-821)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import ballscrew
+from ballscrew.case import case_from_dict
+
+SOURCE = "THK General Catalog, A-821"
+
+ASSUMPTIONS = (
+    "shaft Ø 32 mm, lead 32 mm, 1000 rpm, stroke 1000 mm, internal load 0.98 kN taken as the "
+    "preload of a single nut, 90 min (source)",
+    "pitch (ball-centre) diameter 33.75 mm, also the smeared shaft diameter (ASSUMED; THK's "
+    "SBN3210, a 32 mm screw, has d_p = 33.75 mm, catalogue B-576)",
+    "ball Ø 6.35 mm, 60 loaded balls (3.6 turns), contact angle 45°, conformity 0.52 (ASSUMED; "
+    "not printed)",
+    "shaft length 1426 mm = the overall length of the model code '+1426L' (ASSUMED)",
+    "nut OD 1.75 d_m = 59 mm and length 2.5 d_m = 84 mm (GUESS: the thermal model's defaults; "
+    "a 73 × 80 mm nut gives 10.0 K instead)",
+    "heat: catalogue preload torque K F_p L/2π (0.454 N m, 47.6 W), half into the screw (GUESS: "
+    "the example case's screw_heat_fraction 0.5); the AFG grease is not modelled",
+    "continuous motion at 1000 rpm, the 100 ms accelerations and the reversals ignored (ASSUMED; "
+    "the mean speed is a few % lower)",
+    "stroke heat and contact averaged over the 1000 mm stroke (stroke mode 'averaged')",
+    "support bearings' heat neglected (ASSUMED; mounting not published; the example case's "
+    "bearings at both ends add 0.02 K at mid-shaft)",
+    "convection: the model's correlations (Kreith rotating cylinder for the screw, laminar flat "
+    "plate for the nut); ambient = initial temperature 25.6 °C = 34.5 − 8.9 (source)",
+    "sensor on the shaft axis at mid-length ('temperature at shaft center area'; ASSUMED), "
+    "value at 90 min (the end of the printed curve)",
+    "ball contact: fractal TCR of the example case's raceway (D = 1.59, G = 9e-10 m; ASSUMED)",
+)
+
+
+SUBJECT = {"model": "thermal_field (network)", "source": SOURCE, "assumptions": ASSUMPTIONS}
+"""What every comparison of this module shares."""
+
+
+def _blk3232_raw(raw: dict[str, Any], data: dict[str, Any]) -> dict[str, Any]:
+    raw["screw"].update(pitch_diameter="33.75 mm", lead="32 mm", balls_per_nut=60, nuts=1)
+    raw["operating"].update(
+        preload=f"{data['internal_load_N']} N", axial_load="0 N", speed="1000 rpm"
+    )
+    ambient = data["temperature_no_seal_degC"] - data["temperature_rise_no_seal_K"]
+    thermal = raw["thermal"]
+    for key in ("nut_outer_diameter", "nut_length"):
+        del thermal[key]
+    thermal.update(
+        model="network",
+        shaft_length=f"{data['overall_length_mm']} mm",
+        shaft_diameter="33.75 mm",
+        ambient_temperature=f"{ambient} degC",
+        bearings=[],
+        drag_torque={"source": "catalogue"},
+        stroke={"length": f"{data['stroke_mm']} mm", "mode": "averaged"},
+        transient={"duration": f"{data['test_duration_min']} min", "time_step": "30 s"},
+        sensors=[
+            {
+                "name": "shaft centre",
+                "body": "screw",
+                "r": "0 mm",
+                "z": f"{data['overall_length_mm'] / 2} mm",
+            }
+        ],
+    )
+    return raw
+
+
+def test_thk_blk3232_shaft_temperature_rise(validation, dataset, base_raw) -> None:
+    data = dataset("thermal", "thk_blk3232_heat_test")
+    field = ballscrew.thermal_field(case_from_dict(_blk3232_raw(base_raw, data)), model="network")
+    sensor = field.sensors[0]
+    validation.check(
+        "thk_blk3232_shaft_rise_no_seal",
+        **SUBJECT,
+        reference=data,
+        quantity="shaft-centre temperature rise after 90 min, no seal",
+        unit="K",
+        measured=data["temperature_rise_no_seal_K"],
+        predicted=sensor.final - field.ambient_temperature,
+        tolerance=0.35,
+        relative=True,
+        tolerance_basis="the rise is proportional to the heat input, and the heat comes from the "
+        "catalogue torque, whose real values may lie ±20 % (C0) to ±35 % (C5) from it (THK A-689 "
+        "Table13, row 600-1000 N mm, L/d <= 40; the row of this screw, 454 N mm and L/d = 45, "
+        "was not in the retrieved text, so the quoted C5 value is used); the printed 0.1 K "
+        "resolution is negligible",
+    )
+
+
+def test_thk_blk3232_wiper_ring(validation, dataset) -> None:
+    data = dataset("thermal", "thk_blk3232_heat_test")
+    validation.not_compared(
+        "thk_blk3232_shaft_rise_wiper",
+        **SUBJECT,
+        reference=data,
+        quantity="shaft-centre temperature rise after 90 min, with wiper ring W",
+        unit="K",
+        measured=data["temperature_rise_wiper_K"],
+        reason="no model of seal or wiper-ring friction: the heat sources are the balls and the "
+        "support bearings only. Missing: a seal/wiper friction torque (e.g. from the maker's "
+        "seal resistance data) as a heat source.",
+    )
