@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from ballscrew.contact.elastic import composite_modulus
-from ballscrew.thermal import FractalTCRModel, element_tcr
+from ballscrew.contact_resistance import FractalTCRModel, element_tcr
 
 SOURCE = "Autodesk Moldflow Insight 2014 help, HTC table"
 ELEMENT_AREA = 1.0e-6  # m²
