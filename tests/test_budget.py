@@ -92,7 +92,7 @@ def test_contact_grid_refused_before_allocation(monkeypatch, gao, overrides, fie
 
 
 def test_tcr_rebinning_refused_before_allocation(monkeypatch):
-    from ballscrew.thermal import aggregation
+    from ballscrew.contact_resistance import aggregation
 
     monkeypatch.setattr(aggregation, "_overlap_weights", _unreachable)
     pressure = np.ones((128, 128))
@@ -101,16 +101,16 @@ def test_tcr_rebinning_refused_before_allocation(monkeypatch):
 
 
 def test_wear_grid_refused_before_allocation(monkeypatch):
-    from ballscrew.wear import life
+    from ballscrew.analyses import wear
 
-    monkeypatch.setattr(life, "gap_function", _unreachable)
+    monkeypatch.setattr(wear, "gap_function", _unreachable)
     case = bs.load_case(EXAMPLES / "wear_step_stress.toml", {"wear.grid": [1024, 4096]})
     start = time.perf_counter()
     with pytest.raises(BudgetError, match=r"^wear.grid = \[1024, 4096\] .*BALLSCREW_MAX_WORK"):
-        life.wear_life(case)
+        wear.wear_life(case)
     monkeypatch.setenv(budget.MEMORY_ENV, "1 GiB")
     with pytest.raises(BudgetError, match=r"^wear.grid = .*1024 × 4096 wear grid needs about"):
-        life.wear_life(case)
+        wear.wear_life(case)
     assert time.perf_counter() - start < 3.0
 
 
@@ -147,7 +147,7 @@ def test_fine_thermal_mesh_refused_before_meshing(
 
 
 def test_billion_time_steps_refused_before_any_work(monkeypatch, thermal_case):
-    from ballscrew.thermal import field
+    from ballscrew.analyses import thermal as field
 
     monkeypatch.setattr(field, "build_problem", _unreachable)
     case, tcr = thermal_case
