@@ -1,30 +1,22 @@
 """Command-line interface: a thin shell over the library.
 
-Each subcommand lives in ``ballscrew.commands.<name>``; it reads a case, runs one analysis and
-writes a results folder. Errors the user can fix (bad input, unwritable output, a solver that
+Each subcommand is one module ``ballscrew.commands.<name>`` with a function ``<name>`` (found
+here, so a new command is one module); it reads a case, runs one analysis and writes a results
+folder. Errors the user can fix (bad input, unwritable output, a solver that
 did not converge) are one line on stderr and exit status 2, never a traceback.
 """
 
 from __future__ import annotations
 
 import logging
+import pkgutil
 import warnings
+from importlib import import_module
 from typing import Annotated, TextIO
 
 import typer
 
-from ballscrew import __version__
-from ballscrew.commands import (
-    calibrate,
-    contact,
-    index,
-    kinematics,
-    surface,
-    sweep,
-    tcr,
-    thermal,
-    wear,
-)
+from ballscrew import __version__, commands
 from ballscrew.commands._common import log
 
 app = typer.Typer(
@@ -72,16 +64,11 @@ def _show_warning(
     typer.echo(f"warning: {message}", err=True)
 
 
-# One line per subcommand (module ballscrew.commands.<name>, function <name>).
-app.command()(contact.contact)
-app.command()(tcr.tcr)
-app.command()(sweep.sweep)
-app.command()(kinematics.kinematics)
-app.command()(thermal.thermal)
-app.command()(surface.surface)
-app.command()(wear.wear)
-app.command()(calibrate.calibrate)
-app.command()(index.index)
+# Every module ballscrew.commands.<name> (not _private) is the subcommand <name>.
+for _module in pkgutil.iter_modules(commands.__path__):
+    if not _module.name.startswith("_"):
+        _name = _module.name
+        app.command()(getattr(import_module(f"ballscrew.commands.{_name}"), _name))
 
 if __name__ == "__main__":  # pragma: no cover
     app()

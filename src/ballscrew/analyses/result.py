@@ -117,6 +117,8 @@ class Analysis:
     """Sweepable scalars of a case, ``name → (value, SI unit)``; None = not sweepable."""
     headlines: tuple[str, ...] = field(default_factory=tuple)
     """Dotted ``summary.json`` keys the index page shows for a results folder."""
+    key_figure: str | None = None
+    """The PNG the index page shows for a results folder (None: its first PNG)."""
 
 
 ANALYSES: Registry[Analysis] = Registry("analysis", "--analysis")

@@ -1,0 +1,104 @@
+"""Every analysis of the package, described once for the command line, sweeps and the index.
+
+Adding an analysis is one composer module, one entry here and one command module.
+"""
+
+from __future__ import annotations
+
+from ballscrew.analyses.ball_contact import contact_scalars
+from ballscrew.analyses.result import ANALYSES, Analysis
+from ballscrew.analyses.screw_tcr import tcr_scalars
+from ballscrew.analyses.thermal import thermal_fe_scalars, thermal_scalars
+from ballscrew.errors import InputError
+
+__all__ = ["ANALYSES", "sweep_function"]
+
+_THERMAL_HEADLINES = (
+    "steady.max_temperature_rise",
+    "steady.elongation",
+    "heat_balance.heat_input",
+)
+
+for _analysis in (
+    Analysis(
+        "contact",
+        "pressure at the screw and nut contacts of one ball against Hertz",
+        scalars=contact_scalars,
+        headlines=(
+            "ball_load",
+            "contacts.screw.numerical.peak_pressure",
+            "contacts.screw.relative_difference_to_hertz.peak_pressure",
+        ),
+        key_figure="pressure_screw.png",
+    ),
+    Analysis(
+        "tcr",
+        "thermal contact resistance of every contact, nut and the screw",
+        scalars=tcr_scalars,
+        headlines=("resistance", "resistance_per_area", "apparent_area"),
+        key_figure="tcr_nut1_screw.png",
+    ),
+    Analysis(
+        "thermal",
+        "temperature field and thermal elongation (1-D network in sweeps)",
+        scalars=thermal_scalars,
+        headlines=_THERMAL_HEADLINES,
+        key_figure="temperature_map.png",
+    ),
+    Analysis(
+        "thermal-fe",
+        "steady temperature field of the axisymmetric FE model (sweeps)",
+        scalars=thermal_fe_scalars,
+        headlines=_THERMAL_HEADLINES,
+    ),
+    Analysis(
+        "kinematics",
+        "ball speeds, spins, loads, film, asperity share and drag torque",
+        headlines=(
+            "nuts.nut1.orbital_speed",
+            "nuts.nut1.spin_screw",
+            "nuts.nut1.asperity_share",
+            "nuts.nut1.film_thickness_central",
+            "drag_torque.ball_model",
+            "drag_torque.catalogue",
+        ),
+        key_figure="sliding_high_speed.png",
+    ),
+    Analysis(
+        "wear",
+        "raceway wear, preload and drag torque over the load programme",
+        headlines=(
+            "revolutions",
+            "max_wear_depth",
+            "final_preload",
+            "final_torque",
+            "ellipse_major_axis",
+        ),
+        key_figure="torque_preload.png",
+    ),
+    Analysis(
+        "calibration",
+        "wear coefficient (and torque scale) fitted to a measured history",
+        headlines=(
+            "wear_coefficient",
+            "wear_coefficient_standard_error",
+            "torque_scale",
+            "rms_residual",
+        ),
+    ),
+    Analysis(
+        "surface",
+        "fractal D and G of a measured or synthetic profile",
+        headlines=("recommended.D", "recommended.G"),
+        key_figure="psd.png",
+    ),
+):
+    ANALYSES.add(_analysis.name, _analysis.title, _analysis)
+
+
+def sweep_function(name: str) -> Analysis:
+    """The descriptor of the sweepable analysis ``name`` (one-line error otherwise)."""
+    sweepable = [n for n, a in ANALYSES.items() if a.scalars is not None]
+    if name not in sweepable:
+        raise InputError("--analysis", name, f"one of {', '.join(sweepable)}")
+    return ANALYSES[name]
