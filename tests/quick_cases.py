@@ -11,6 +11,7 @@ from typing import Any
 
 from typer.testing import CliRunner
 
+from ballscrew.case import Case
 from ballscrew.case.loader import apply_overrides
 from ballscrew.cli import app
 
@@ -72,3 +73,9 @@ def run_cli(*args: object) -> dict[str, Any]:
     assert result.exit_code == 0, f"ballscrew {' '.join(argv)}:\n{result.output}"
     out = Path(argv[argv.index("--out") + 1])
     return json.loads((out / "summary.json").read_text(encoding="utf-8"))
+
+
+def quick_overrides(case: Case) -> dict[str, Any]:
+    """:data:`QUICK` (and :data:`QUICK_WEAR`) for the sections ``case`` has."""
+    quick = {k: v for k, v in QUICK.items() if case.thermal is not None or "thermal." not in k}
+    return quick | (QUICK_WEAR if case.wear is not None else {})
