@@ -56,6 +56,10 @@ def lookup(summary: dict[str, Any], dotted: str) -> Any:
     return node["value"] if isinstance(node, dict) and "value" in node else node
 
 
+#: API entry point (case file -> Python result) -> {summary key: number of the result}
+Checks = dict[Callable[[Path], Any], dict[str, Callable[[Any], float]]]
+
+
 @dataclass(frozen=True)
 class Parity:
     """One CLI analysis: its case, its command line and the API numbers per summary key."""
@@ -63,25 +67,30 @@ class Parity:
     example: str | None
     overrides: dict[str, Any]
     command: Callable[[Path, Path], list[object]]  # (case or input, out) -> argv
-    #: API entry point (case file -> Python result) -> {summary key: number of the result}
-    checks: dict[Callable[[Path], Any], dict[str, Callable[[Any], float]]]
+    checks: Checks
     options: dict[str, Any] = field(default_factory=dict)  # summary key -> expected option
 
 
-def _contact(path: Path) -> Any:
-    return solve_ball_contacts(ballscrew.load_case(path))
+def on_case(function: Callable[..., Any]) -> Callable[[Path], Any]:
+    """``function(case)`` on the case file's case, every option left to the case."""
+    return lambda path: function(ballscrew.load_case(path))
+
+
+def gao(command: str, checks: Checks, options: dict[str, Any]) -> Parity:
+    """``ballscrew COMMAND`` on the Gao screw with :data:`GAO_OPTIONS`."""
+    return Parity(
+        GAO, GAO_OPTIONS, lambda case, out: [command, case, "--out", out], checks, options
+    )
 
 
 def _side(side: str, attr: str) -> Callable[[Any], float]:
     return lambda r: getattr(r.contact(side).solution, attr)
 
 
-CONTACT = Parity(
-    GAO,
-    GAO_OPTIONS,
-    lambda case, out: ["contact", case, "--out", out],
+CONTACT = gao(
+    "contact",
     {
-        _contact: {
+        on_case(solve_ball_contacts): {
             "ball_load": lambda r: r.ball_load,
             "nut_force": lambda r: r.nut_force,
             "lead_angle": lambda r: r.geometry.lead_angle,
@@ -104,14 +113,9 @@ TCR_NUMBERS: dict[str, Callable[[Any], float]] = {
     "nuts.nut2.ball_resistance": lambda r: r.nuts[1].ball_resistance,
 }
 
-TCR = Parity(
-    GAO,
-    GAO_OPTIONS,
-    lambda case, out: ["tcr", case, "--out", out],
-    {
-        lambda path: screw_tcr(ballscrew.load_case(path)): TCR_NUMBERS,
-        lambda path: ballscrew.screw_tcr(ballscrew.load_case(path)): TCR_NUMBERS,
-    },
+TCR = gao(
+    "tcr",
+    {on_case(screw_tcr): TCR_NUMBERS, on_case(ballscrew.screw_tcr): TCR_NUMBERS},
     {"options.variant": "MT", "options.contact_gap_model": "quadratic"},
 )
 
@@ -126,14 +130,9 @@ THERMAL_NUMBERS: dict[str, Callable[[Any], float]] = {
     "transient.final_elongation": lambda r: r.solution.transient.elongation[-1],
 }
 
-THERMAL = Parity(
-    GAO,
-    GAO_OPTIONS,
-    lambda case, out: ["thermal", case, "--out", out],
-    {
-        lambda path: thermal_field(ballscrew.load_case(path)): THERMAL_NUMBERS,
-        lambda path: ballscrew.thermal_field(ballscrew.load_case(path)): THERMAL_NUMBERS,
-    },
+THERMAL = gao(
+    "thermal",
+    {on_case(thermal_field): THERMAL_NUMBERS, on_case(ballscrew.thermal_field): THERMAL_NUMBERS},
     {"model": "network"},
 )
 
@@ -155,15 +154,11 @@ KINEMATICS_NUMBERS: dict[str, Callable[[Any], float]] = {
 
 BALL_STATE = ("ball_speed", "orbital_speed", "load_screw", "load_nut", "angle_screw", "angle_nut")
 
-KINEMATICS = Parity(
-    GAO,
-    GAO_OPTIONS,
-    lambda case, out: ["kinematics", case, "--out", out],
+KINEMATICS = gao(
+    "kinematics",
     {
-        lambda path: run_kinematics(ballscrew.load_case(path)): KINEMATICS_NUMBERS,
-        lambda path: {
-            n: ballscrew.ball_kinematics(ballscrew.load_case(path), nut=n) for n in (1, 2)
-        }: {
+        on_case(run_kinematics): KINEMATICS_NUMBERS,
+        on_case(lambda case: {n: ballscrew.ball_kinematics(case, nut=n) for n in (1, 2)}): {
             f"nuts.nut{n}.{attr}": (lambda r, n=n, attr=attr: getattr(r[n], attr))
             for n in (1, 2)
             for attr in BALL_STATE
@@ -177,7 +172,7 @@ WEAR_RUN = Parity(
     WEAR_OPTIONS,
     lambda case, out: ["wear", case, "--out", out],
     {
-        lambda path: ballscrew.wear_life(ballscrew.load_case(path)): {
+        on_case(ballscrew.wear_life): {
             "revolutions": lambda r: r.revolutions[-1],
             "max_wear_depth": lambda r: r.max_wear_depth[-1],
             "final_preload": lambda r: r.preload[-1],
