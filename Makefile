@@ -28,6 +28,7 @@ demo: $(STAMP)
 ## test: create .venv, install, run the test suite
 test: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
+	$(VENV)/bin/lint-imports
 	$(PY) -m pytest -q
 
 ## bench: run the benchmarks (prints tables; not part of the tests)
@@ -39,6 +40,7 @@ bench: $(STAMP)
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
+	$(VENV)/bin/lint-imports
 	$(VENV)/bin/ruff format --check src tests benchmarks
 
 format: $(STAMP)
