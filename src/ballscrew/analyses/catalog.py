@@ -8,7 +8,11 @@ from __future__ import annotations
 from ballscrew.analyses.ball_contact import contact_scalars
 from ballscrew.analyses.result import ANALYSES, Analysis
 from ballscrew.analyses.screw_tcr import tcr_scalars
-from ballscrew.analyses.thermal import thermal_fe_scalars, thermal_scalars
+from ballscrew.analyses.thermal import (
+    thermal_fe_scalars,
+    thermal_network_scalars,
+    thermal_scalars,
+)
 from ballscrew.errors import InputError
 
 __all__ = ["ANALYSES", "sweep_function"]
@@ -40,10 +44,16 @@ for _analysis in (
     ),
     Analysis(
         "thermal",
-        "temperature field and thermal elongation (1-D network in sweeps)",
+        "temperature field and thermal elongation (the case's [thermal] model)",
         scalars=thermal_scalars,
         headlines=_THERMAL_HEADLINES,
         key_figure="temperature_map.png",
+    ),
+    Analysis(
+        "thermal-network",
+        "steady temperature field of the 1-D network model (fast sweeps)",
+        scalars=thermal_network_scalars,
+        headlines=_THERMAL_HEADLINES,
     ),
     Analysis(
         "thermal-fe",

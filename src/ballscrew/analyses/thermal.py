@@ -690,11 +690,12 @@ def field_dataset(result: ThermalField) -> xr.Dataset:
     )
 
 
-def thermal_scalars(case: Case, model: str = "network") -> dict[str, tuple[float, str]]:
+def thermal_scalars(case: Case, model: str | None = None) -> dict[str, tuple[float, str]]:
     """Sweepable steady-state scalars of :func:`thermal_field` with their units.
 
-    The 1-D network by default: milliseconds per point, so sweeps of thousands of points fit in
-    a minute (``ballscrew sweep --analysis thermal``); ``thermal-fe`` uses the axisymmetric model.
+    ``model`` defaults to the case's ``[thermal] model`` (``ballscrew sweep --analysis
+    thermal``); :func:`thermal_network_scalars` takes the 1-D network (milliseconds per point,
+    thousands of points in a minute) and :func:`thermal_fe_scalars` the axisymmetric model.
     """
     result = thermal_field(case, model, transient=False)
     return {
@@ -703,6 +704,11 @@ def thermal_scalars(case: Case, model: str = "network") -> dict[str, tuple[float
         "heat_input": (result.heat_input, "W"),
         "heat_balance_error": (result.heat_balance_error, ""),
     }
+
+
+def thermal_network_scalars(case: Case) -> dict[str, tuple[float, str]]:
+    """:func:`thermal_scalars` of the 1-D network model."""
+    return thermal_scalars(case, "network")
 
 
 def thermal_fe_scalars(case: Case) -> dict[str, tuple[float, str]]:
