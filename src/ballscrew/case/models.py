@@ -17,6 +17,12 @@ from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
+from ballscrew.contact import (
+    DEFAULT_BOX_FACTOR,
+    DEFAULT_CELLS_ACROSS,
+    DEFAULT_MAX_ITERATIONS,
+    DEFAULT_TOLERANCE,
+)
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
 
@@ -124,7 +130,7 @@ class NumericsSpec(Model):
 
     cells_across: Annotated[
         int, Field(ge=8, le=4096, description="grid cells across the Hertz contact, each axis")
-    ] = 64
+    ] = DEFAULT_CELLS_ACROSS
     cells: tuple[Annotated[int, Field(ge=4, le=8192)], Annotated[int, Field(ge=4, le=8192)]] | (
         None
     ) = Field(
@@ -132,14 +138,15 @@ class NumericsSpec(Model):
         description="explicit grid [nx, ny] over the box, instead of cells_across",
     )
     box_factor: BoxFactor | tuple[BoxFactor, BoxFactor] = Field(
-        1.3, description="grid box half-width / Hertz semi-axis, or [along x, along y]"
+        DEFAULT_BOX_FACTOR,
+        description="grid box half-width / Hertz semi-axis, or [along x, along y]",
     )
     tolerance: Annotated[
         float, Field(gt=0.0, le=1e-3, description="relative pressure change to stop the CG")
-    ] = 1e-8
+    ] = DEFAULT_TOLERANCE
     max_iterations: Annotated[
         int, Field(ge=10, le=100_000, description="CG iteration limit before it is an error")
-    ] = 2000
+    ] = DEFAULT_MAX_ITERATIONS
     gap_model: model_choice(
         GAP_MODELS, "raceway gap: exact Newton projection or quadratic (Hertz) form"
     ) = "exact"

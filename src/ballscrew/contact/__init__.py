@@ -10,13 +10,28 @@
 """
 
 from ballscrew.contact.convolution import DCFFTOperator, direct_convolution, wraparound_kernel
-from ballscrew.contact.grid import GridContactResult, cell_centres, solve_contact
+from ballscrew.contact.grid import (
+    DEFAULT_BOX_FACTOR,
+    DEFAULT_CELLS_ACROSS,
+    GridContactResult,
+    cell_centres,
+    solve_contact,
+)
 from ballscrew.contact.hertz import HertzContact, hamrock_brewe, hertz
 from ballscrew.contact.influence import love_coefficient, love_coefficients
-from ballscrew.contact.polonsky_keer import solve_normal, solve_normal_displacement
+from ballscrew.contact.polonsky_keer import (
+    DEFAULT_MAX_ITERATIONS,
+    DEFAULT_TOLERANCE,
+    solve_normal,
+    solve_normal_displacement,
+)
 from ballscrew.contact.result import ContactResult
 
 __all__ = [
+    "DEFAULT_BOX_FACTOR",
+    "DEFAULT_CELLS_ACROSS",
+    "DEFAULT_MAX_ITERATIONS",
+    "DEFAULT_TOLERANCE",
     "ContactResult",
     "DCFFTOperator",
     "GridContactResult",

@@ -19,7 +19,11 @@ from numpy.typing import NDArray
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.hertz import HertzContact, hertz
-from ballscrew.contact.polonsky_keer import solve_normal
+from ballscrew.contact.polonsky_keer import (
+    DEFAULT_MAX_ITERATIONS,
+    DEFAULT_TOLERANCE,
+    solve_normal,
+)
 from ballscrew.contact.result import ContactResult
 from ballscrew.errors import BallscrewError, InputError
 
@@ -27,6 +31,10 @@ __all__ = ["GridContactResult", "cell_centres", "solve_contact"]
 
 GapFunction = Callable[[NDArray[np.float64], NDArray[np.float64]], Any]
 
+DEFAULT_CELLS_ACROSS = 64
+"""Grid cells across the Hertz contact on each axis."""
+DEFAULT_BOX_FACTOR = 1.3
+"""Grid box half-width / Hertz semi-axis."""
 GROWTH = 1.5
 """Factor on the cell count along an axis whose edge carries pressure."""
 
@@ -97,13 +105,13 @@ def solve_contact(
     ry: float,
     e_star: float,
     load: float,
-    cells_across: int = 64,
-    box_factor: float | tuple[float, float] = 1.3,
-    tol: float = 1e-8,
+    cells_across: int = DEFAULT_CELLS_ACROSS,
+    box_factor: float | tuple[float, float] = DEFAULT_BOX_FACTOR,
+    tol: float = DEFAULT_TOLERANCE,
     max_enlargements: int = 4,
     *,
     cells: tuple[int, int] | None = None,
-    max_iterations: int = 1000,
+    max_iterations: int = DEFAULT_MAX_ITERATIONS,
     edge_tolerance: float = 1e-6,
     warm_start: bool = True,
 ) -> GridContactResult:

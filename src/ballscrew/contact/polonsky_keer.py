@@ -31,7 +31,10 @@ from ballscrew.errors import ConvergenceError, InputError
 __all__ = ["solve_normal", "solve_normal_displacement"]
 
 SOLVER = "Polonsky-Keer conjugate gradient"
-DEFAULT_MAX_ITERATIONS = 1000
+DEFAULT_MAX_ITERATIONS = 2000
+"""CG iterations before a solve is a :class:`~ballscrew.errors.ConvergenceError`."""
+DEFAULT_TOLERANCE = 1e-8
+"""Relative pressure change at which the CG stops."""
 
 
 @dataclass
@@ -265,7 +268,7 @@ def solve_normal(
     dy: float,
     e_star: float,
     load: float,
-    tol: float = 1e-8,
+    tol: float = DEFAULT_TOLERANCE,
     *,
     max_iterations: int = DEFAULT_MAX_ITERATIONS,
     initial: Any = None,
@@ -329,7 +332,7 @@ def solve_normal_displacement(
     dy: float,
     e_star: float,
     approach: float,
-    tol: float = 1e-8,
+    tol: float = DEFAULT_TOLERANCE,
     *,
     max_iterations: int = DEFAULT_MAX_ITERATIONS,
     initial: Any = None,
