@@ -50,7 +50,7 @@ def read_profile(
         head = handle.read(4096)
     if not head.strip():
         raise file_error(path, "", "an empty file", f"a profile file: {_FORMATS}")
-    kind = format.lower() if format else None
+    kind = (format.lower() or None) if isinstance(format, str) else format
     if kind not in (None, "sdf", "text"):
         raise file_error(path, "format", format, "'sdf' or 'text'")
     suffix = path.suffix.lower()

@@ -18,6 +18,8 @@ def file_error(path: str | Path, what: str, value: object, allowed: str) -> Inpu
 
 def length_factor(unit: str, path: str | Path, what: str) -> float:
     """Metres per ``unit`` (pint spelling: m, mm, um, µm, nm, Å, in…)."""
+    if not isinstance(unit, str):
+        raise file_error(path, what, unit, "a length unit (a string) such as mm, um or nm")
     text = unit.strip()
     if not text:
         return 1.0

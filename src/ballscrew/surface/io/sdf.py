@@ -71,14 +71,15 @@ _KEY_SPLIT = re.compile(r"(?:^|\s)([A-Za-z]\w*)\s*=\s*")
 
 
 def _int_field(path: Path, header: dict[str, str], key: str, least: int) -> int:
+    """Header ``key`` as an integer ≥ ``least``; NaN, ±inf, fractions and words are refused."""
     text = header[key]
     try:
-        value = int(float(text))
+        number = float(text)
     except ValueError:
-        raise file_error(path, key, text, f"an integer >= {least}") from None
-    if value < least or value != float(text):
+        number = math.nan
+    if not (math.isfinite(number) and number.is_integer() and number >= least):
         raise file_error(path, key, text, f"an integer >= {least}")
-    return value
+    return int(number)
 
 
 def _float_field(path: Path, header: dict[str, str], key: str, positive: bool) -> float:
@@ -230,7 +231,12 @@ def read_sdf(path: str | Path) -> Profile:
             f"{values.size} values",
             f"NumPoints × NumProfiles = {n_points} × {n_profiles} = {n_points * n_profiles}",
         )
-    heights = values.reshape(n_profiles, n_points) * checked["Zscale"]
+    with np.errstate(over="ignore"):
+        heights = values.reshape(n_profiles, n_points) * checked["Zscale"]
+    if np.isinf(heights).any():
+        raise file_error(
+            path, "data", "an infinite height", "finite values × Zscale (numbers or BAD)"
+        )
     if n_profiles == 1:
         heights = heights[0]
     metadata: dict[str, Any] = dict(header)

@@ -159,7 +159,10 @@ def read_text_profile(
     header_x_unit = units[0] if n_cols == 2 else ""
     x_u = x_unit if x_unit is not None else (header_x_unit or meta.get("x_unit", ""))
     z_u = z_unit if z_unit is not None else (units[-1] or meta.get("z_unit", ""))
-    z = data[:, -1] * length_factor(z_u, path, f"unit of column {names[-1]!r}")
+    with np.errstate(over="ignore"):
+        z = data[:, -1] * length_factor(z_u, path, f"unit of column {names[-1]!r}")
+    if np.isinf(z).any():
+        raise file_error(path, f"column {names[-1]!r}", "an infinite height", "finite or nan")
 
     if n_cols == 2:
         x = data[:, 0] * length_factor(x_u, path, f"unit of column {names[0]!r}")
@@ -181,6 +184,8 @@ def read_text_profile(
         if spacing is not None:
             raise InputError("spacing", spacing, "given only for one-column files")
     else:
+        if isinstance(spacing, bool | complex | np.complexfloating):
+            raise InputError("spacing", spacing, "a sampling interval > 0 (m or '0.5 um')")
         if spacing is not None:
             source: object = spacing
             dx = _quantity(spacing, path, "spacing") if isinstance(spacing, str) else spacing
