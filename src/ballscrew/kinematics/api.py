@@ -30,6 +30,7 @@ from ballscrew.kinematics.limits import check_speed_limits, dn_value
 from ballscrew.kinematics.model import BallModel, ball_model
 from ballscrew.kinematics.torque import ball_drag
 from ballscrew.loads import nut_forces, preload_drag_torque
+from ballscrew.validation import case_with
 
 __all__ = [
     "SpeedSweep",
@@ -46,6 +47,7 @@ FloatArray = NDArray[np.float64]
 
 
 def _speed(case: Any, speed: float | None) -> float:
+    case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
     try:
         omega = float(value)
@@ -128,6 +130,7 @@ def drag_torque(case: Any, preload: float | None = None) -> float:
 
     ``preload`` [N] defaults to the case's. REF (F_p = 1500 N): 0.4231 N m (T9.2).
     """
+    case_with(case, "screw", "operating")
     fp = case.operating.preload if preload is None else preload
     geometry = ScrewGeometry.from_spec(case.screw)
     return preload_drag_torque(fp, geometry.lead, geometry.lead_angle)

@@ -43,6 +43,7 @@ from ballscrew.thermal.problem import (
     ThermalProblem,
 )
 from ballscrew.thermal.simulate import Solution, simulate, time_to_fraction
+from ballscrew.validation import case_with
 
 MODELS = ("axisymmetric", "network", "3d")
 ModelName = Literal["axisymmetric", "network", "3d"]
@@ -244,6 +245,7 @@ def thermal_field(
     input). ``transient=False`` skips the transient.
     """
     started = _time.perf_counter()
+    case_with(case, "screw", "operating", "materials", "thermal")
     if model not in MODELS:
         raise InputError("model", model, "'axisymmetric', 'network' or '3d'")
     spec = _spec(case)

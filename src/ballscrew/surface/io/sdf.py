@@ -47,7 +47,7 @@ from typing import Any
 import numpy as np
 
 from ballscrew.errors import InputError
-from ballscrew.surface.io._common import file_error
+from ballscrew.surface.io._common import checked_profile, file_error, file_path
 from ballscrew.surface.profile import Profile
 
 __all__ = ["SDF_MAGIC", "read_sdf", "write_sdf"]
@@ -206,7 +206,7 @@ def read_sdf(path: str | Path) -> Profile:
         InputError: naming the file and the field (a missing or invalid header key, a data
             count that is not NumPoints × NumProfiles, compressed data, a non-numeric value).
     """
-    path = Path(path)
+    path = file_path(path)
     try:
         raw = path.read_bytes()
     except OSError as exc:
@@ -264,7 +264,7 @@ def write_sdf(
         manufacturer: ManufacID (at most 10 characters kept).
         version: ``aBCR-1.0`` or ``aISO-1.0``.
     """
-    path = Path(path)
+    path, profile = file_path(path), checked_profile(profile)
     if data_type not in (3, 5, 6, 7):
         raise InputError("data_type", data_type, "3 (float), 5 (int16), 6 (int32) or 7 (double)")
     if version not in ("aBCR-1.0", "aISO-1.0"):

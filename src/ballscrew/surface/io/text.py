@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from ballscrew.errors import InputError
-from ballscrew.surface.io._common import file_error, length_factor
+from ballscrew.surface.io._common import checked_profile, file_error, file_path, length_factor
 from ballscrew.surface.profile import MIN_POINTS, Profile
 
 __all__ = ["read_text_profile", "write_text_profile"]
@@ -91,7 +91,7 @@ def read_text_profile(
             an empty file, a row with a missing or extra column, a non-numeric value,
             non-uniform or non-monotonic x, an unknown unit, a missing spacing.
     """
-    path = Path(path)
+    path = file_path(path)
     try:
         raw = path.read_bytes()
     except OSError as exc:
@@ -228,9 +228,10 @@ def write_text_profile(
     delimiter: str = ",",
 ) -> Path:
     """Write a single profile as two columns ``x [x_unit], z [z_unit]`` (CSV by default)."""
+    profile = checked_profile(profile)
     if profile.n_profiles != 1:
         raise InputError("profile", f"{profile.n_profiles} rows", "a single profile")
-    path = Path(path)
+    path = file_path(path)
     fx = length_factor(x_unit, path, "x_unit")
     fz = length_factor(z_unit, path, "z_unit")
     sep = delimiter if delimiter != " " else " "
