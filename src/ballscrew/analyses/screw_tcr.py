@@ -34,6 +34,7 @@ from ballscrew.thermal import (
     parallel_resistance,
     series_resistance,
 )
+from ballscrew.validation import as_case_fields, case_with
 
 
 @dataclass(frozen=True)
@@ -135,6 +136,21 @@ def tcr_model(case: Case, side: Side, variant: str | None = None) -> FractalTCRM
     )
 
 
+def tcr_fields(side: Side) -> dict[str, str]:
+    """Case fields behind the arguments of the TCR model of the ``side`` raceway."""
+    pair = f"materials.ball and materials.{side}"
+    return {
+        "D": "surface.D",
+        "G": "surface.G",
+        "H": f"the hardness of {pair}",
+        "lambda_1": "materials.ball.thermal_conductivity",
+        "lambda_2": f"materials.{side}.thermal_conductivity",
+        "lambda_s": f"the mean thermal conductivity of {pair}",
+        "lambda_f": "medium.thermal_conductivity",
+        "factor": "tcr.gap_factor",
+    }
+
+
 def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
     """Thermal contact resistance of the ball screw of ``case`` (contact-tcr.md §7.1).
 
@@ -142,6 +158,7 @@ def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
     Contacts of equal side and ball load are solved once (both nuts share them at zero axial
     load).
     """
+    case_with(case, "screw", "operating", "surface", "materials", "medium", "numerics", "tcr")
     geometry = ScrewGeometry.from_spec(case.screw)
     op = case.operating
     if case.screw.nuts == 2:
@@ -157,15 +174,16 @@ def screw_tcr(case: Case, variant: str | None = "V2") -> ScrewTCR:
                 geometry, side, load, contact_modulus(case, side), case.numerics, flank
             )
             sol = contact.solution
-            tcr = contact_tcr(
-                sol.pressure,
-                sol.dx,
-                sol.dy,
-                models[side],
-                cell_size=case.tcr.cell_size if case.tcr.rebin else None,
-                load_threshold=case.tcr.load_threshold,
-                partial_cells=case.tcr.partial_cells,
-            )
+            with as_case_fields(tcr_fields(side)):
+                tcr = contact_tcr(
+                    sol.pressure,
+                    sol.dx,
+                    sol.dy,
+                    models[side],
+                    cell_size=case.tcr.cell_size if case.tcr.rebin else None,
+                    load_threshold=case.tcr.load_threshold,
+                    partial_cells=case.tcr.partial_cells,
+                )
             solved[side, load] = RacewayTCR(contact, tcr)
         return solved[side, load]
 
