@@ -16,6 +16,7 @@ from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.case import Case, NumericsSpec
 from ballscrew.contact import hamrock_brewe, hertz, solve_contact
 from ballscrew.contact.hertz import HertzContact
+from ballscrew.errors import InputError
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
 
 
@@ -91,18 +92,27 @@ def solve_raceway_contact(
     """
     curvature = raceway_curvature(geometry, side)
     rx, ry = curvature.rx, curvature.ry
-    outcome = solve_contact(
-        gap_function(geometry, side, flank=flank, model=numerics.gap_model),
-        rx,
-        ry,
-        e_star,
-        load,
-        cells_across=numerics.cells_across,
-        box_factor=numerics.box_factor,
-        tol=numerics.tolerance,
-        cells=numerics.cells,
-        max_iterations=numerics.max_iterations,
-    )
+    try:
+        outcome = solve_contact(
+            gap_function(geometry, side, flank=flank, model=numerics.gap_model),
+            rx,
+            ry,
+            e_star,
+            load,
+            cells_across=numerics.cells_across,
+            box_factor=numerics.box_factor,
+            tol=numerics.tolerance,
+            cells=numerics.cells,
+            max_iterations=numerics.max_iterations,
+        )
+    except InputError as exc:
+        if exc.field != "x, y":  # the gap of a grid point outside the ball
+            raise
+        allowed = (
+            f"larger than the {side} contact of the ball load Q = {load:.4g} N (its grid reaches "
+            "outside the ball): lower operating.preload / axial_load or numerics.box_factor"
+        )
+        raise InputError("screw.ball_diameter", 2.0 * geometry.ball_radius, allowed) from None
     return RacewayContact(
         side=side,
         load=load,

@@ -45,6 +45,7 @@ from ballscrew.kinematics.sliding import SlidingField, sliding_field, sliding_fi
 from ballscrew.kinematics.torque import BallDrag, ball_drag
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication import AsperitySurface, LoadSharing, asperity_pressure
+from ballscrew.validation import case_with
 
 __all__ = [
     "ContactFields",
@@ -68,6 +69,7 @@ FloatArray = NDArray[np.float64]
 
 
 def _speed(case: Case, speed: float | None) -> float:
+    case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
     try:
         omega = float(value)
@@ -148,6 +150,7 @@ def drag_torque(case: Case, preload: float | None = None) -> float:
     ``preload`` [N] defaults to the case's. The 40 × 10 reference screw at F_p = 1500 N:
     0.4231 N m.
     """
+    case_with(case, "screw", "operating")
     fp = case.operating.preload if preload is None else preload
     geometry = ScrewParameters.from_case(case).geometry
     return preload_drag_torque(fp, geometry.lead, geometry.lead_angle)

@@ -26,6 +26,7 @@ from ballscrew.contact_resistance import (
 )
 from ballscrew.errors import InputError
 from ballscrew.loads import preloaded_axial_stiffness
+from ballscrew.validation import as_case_fields, case_with
 
 
 @dataclass(frozen=True)
@@ -130,6 +131,21 @@ def tcr_model(
     )
 
 
+def tcr_fields(side: Side) -> dict[str, str]:
+    """Case fields behind the arguments of the TCR model of the ``side`` raceway."""
+    pair = f"materials.ball and materials.{side}"
+    return {
+        "D": "surface.D",
+        "G": "surface.G",
+        "H": f"the hardness of {pair}",
+        "lambda_1": "materials.ball.thermal_conductivity",
+        "lambda_2": f"materials.{side}.thermal_conductivity",
+        "lambda_s": f"the mean thermal conductivity of {pair}",
+        "lambda_f": "medium.thermal_conductivity",
+        "factor": "tcr.gap_factor",
+    }
+
+
 def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     """Thermal contact resistance of the ball screw of ``case``.
 
@@ -137,6 +153,7 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     ``[tcr] variant``. Contacts of equal side and ball load are solved once (both nuts share
     them at zero axial load).
     """
+    case_with(case, "screw", "operating", "surface", "materials", "medium", "numerics", "tcr")
     params = ScrewParameters.from_case(case)
     geometry = params.geometry
     models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}
@@ -148,15 +165,16 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
                 geometry, side, load, params.contact_modulus(side), case.numerics, flank
             )
             sol = contact.solution
-            tcr = contact_tcr(
-                sol.pressure,
-                sol.dx,
-                sol.dy,
-                models[side],
-                cell_size=case.tcr.cell_size if case.tcr.rebin else None,
-                load_threshold=case.tcr.load_threshold,
-                partial_cells=case.tcr.partial_cells,
-            )
+            with as_case_fields(tcr_fields(side)):
+                tcr = contact_tcr(
+                    sol.pressure,
+                    sol.dx,
+                    sol.dy,
+                    models[side],
+                    cell_size=case.tcr.cell_size if case.tcr.rebin else None,
+                    load_threshold=case.tcr.load_threshold,
+                    partial_cells=case.tcr.partial_cells,
+                )
             solved[side, load] = RacewayTCR(contact, tcr)
         return solved[side, load]
 

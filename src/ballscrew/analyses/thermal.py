@@ -45,6 +45,7 @@ from ballscrew.thermal.problem import (
     ThermalProblem,
 )
 from ballscrew.thermal.simulate import Solution, check_transient, simulate, time_to_fraction
+from ballscrew.validation import case_with
 
 
 @dataclass(frozen=True)
@@ -243,6 +244,7 @@ def thermal_field(
     computed, and cached per contact input). ``transient=False`` skips the transient.
     """
     started = _time.perf_counter()
+    case_with(case, "screw", "operating", "materials", "thermal")
     spec = _spec(case)
     model = THERMAL_MODELS.check(spec.model if model is None else model)
     if transient:  # the step count before any work; the history's memory once the mesh is known

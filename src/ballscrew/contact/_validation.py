@@ -13,7 +13,12 @@ __all__ = ["finite_grid", "integer_at_least", "positive"]
 
 def finite_grid(name: str, array: Any, xp: ModuleType) -> Any:
     """``array`` as a 2-D float64 array of finite values, else :class:`InputError`."""
-    grid = xp.asarray(array, dtype=xp.float64)
+    if xp.iscomplexobj(array):
+        raise InputError(name, "a complex array", "a real 2-D array (complex values are refused)")
+    try:
+        grid = xp.asarray(array, dtype=xp.float64)
+    except (TypeError, ValueError):
+        raise InputError(name, f"a {type(array).__name__}", "a real 2-D array") from None
     if grid.ndim != 2 or grid.size == 0:
         raise InputError(name, f"array of shape {grid.shape}", "a non-empty 2-D array")
     if not bool(xp.isfinite(grid).all()):

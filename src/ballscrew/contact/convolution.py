@@ -17,6 +17,7 @@ import scipy.fft
 from numpy.typing import NDArray
 
 from ballscrew.backend import padded_rfft
+from ballscrew.contact._validation import finite_grid
 from ballscrew.contact.influence import love_coefficients
 
 __all__ = ["DCFFTOperator", "direct_convolution", "wraparound_kernel"]
@@ -108,7 +109,7 @@ def direct_convolution(
 
     Reference for small grids (tests); use :class:`DCFFTOperator` otherwise.
     """
-    p = np.asarray(pressure, dtype=np.float64)
+    p = finite_grid("pressure", pressure, np)
     nx, ny = p.shape
     table = love_coefficients(nx, ny, dx, dy, e_star)
     di = np.abs(np.subtract.outer(np.arange(nx), np.arange(nx)))

@@ -71,6 +71,7 @@ class GridContactResult:
 
 def cell_centres(n: int, spacing: float) -> NDArray[np.float64]:
     """x_i = (i − n/2 + ½)·spacing, i = 0 … n − 1: n cells centred on 0 [m]."""
+    n, spacing = integer_at_least("n", n, 1), positive("spacing", spacing, "m")
     return (np.arange(n, dtype=np.float64) - 0.5 * n + 0.5) * spacing
 
 
@@ -137,6 +138,8 @@ def solve_contact(
     :func:`solve_normal` (non-convergence raises :class:`~ballscrew.errors.ConvergenceError`).
     """
     estimate = hertz(rx, ry, e_star, load)
+    if not callable(gap_function):
+        raise InputError("gap_function", gap_function, "a function h(x, y) of the gap in m")
     cells_across = integer_at_least("cells_across", cells_across, 2)
     max_enlargements = integer_at_least("max_enlargements", max_enlargements, 0)
     fx, fy = (box_factor, box_factor) if np.isscalar(box_factor) else box_factor

@@ -10,6 +10,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ballscrew.validation import integer_at_least, positive, real_array, same_shape
+
 __all__ = ["love_coefficient", "love_coefficients"]
 
 
@@ -37,7 +39,10 @@ def love_coefficient(
     A square cell of side Δ has K(0, 0) = 4 ln(1 + √2)/π · Δ/E* = 1.122200 Δ/E*; far away K tends to
     the point load Δ²/(π E* r) of Boussinesq (K2).
     """
-    x, y = np.broadcast_arrays(np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64))
+    x, y = real_array("x", x, "m"), real_array("y", y, "m")
+    same_shape("x, y", x, y)
+    x, y = np.broadcast_arrays(x, y)
+    dx, dy, e_star = _checked_cell(dx, dy, e_star)
     a, b = 0.5 * dx, 0.5 * dy
     total = (
         _love_primitive(x + a, y + b)
@@ -56,7 +61,14 @@ def love_coefficients(nx: int, ny: int, dx: float, dy: float, e_star: float) -> 
     The cell corners x_i ± dx/2 lie on one lattice, so F of (K4) is evaluated once per corner and
     K is its second mixed difference (4x fewer evaluations than :func:`love_coefficient`).
     """
+    nx, ny = integer_at_least("nx", nx, 1), integer_at_least("ny", ny, 1)
+    dx, dy, e_star = _checked_cell(dx, dy, e_star)
     x = dx * (np.arange(nx + 1, dtype=np.float64) - 0.5)[:, None]
     y = dy * (np.arange(ny + 1, dtype=np.float64) - 0.5)[None, :]
     f = _love_primitive(*np.broadcast_arrays(x, y))
     return (f[1:, 1:] - f[1:, :-1] - f[:-1, 1:] + f[:-1, :-1]) / (np.pi * e_star)
+
+
+def _checked_cell(dx: float, dy: float, e_star: float) -> tuple[float, float, float]:
+    """Cell sides [m] and composite modulus [Pa], each a finite number > 0."""
+    return positive("dx", dx, "m"), positive("dy", dy, "m"), positive("e_star", e_star, "Pa")

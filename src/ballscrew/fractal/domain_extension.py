@@ -13,6 +13,7 @@ from functools import lru_cache
 from scipy.optimize import brentq
 
 from ballscrew.errors import ConvergenceError, InputError
+from ballscrew.validation import real_number
 
 __all__ = ["domain_extension_factor", "size_distribution_constant", "validate_dimension"]
 
@@ -28,9 +29,13 @@ def validate_dimension(D: float) -> float:
     Raises:
         InputError: if ``D`` is not a finite number strictly between 1 and 2.
     """
-    value = float(D)
-    if not (math.isfinite(value) and 1.0 < value < 2.0):
-        raise InputError("D", D, "profile fractal dimension with 1 < D < 2 (surface Ds = D + 1)")
+    allowed = "profile fractal dimension with 1 < D < 2 (surface Ds = D + 1)"
+    try:
+        value = real_number("D", D)
+    except InputError:
+        value = math.nan
+    if not 1.0 < value < 2.0:
+        raise InputError("D", D, allowed)
     return value
 
 

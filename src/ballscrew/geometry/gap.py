@@ -24,6 +24,7 @@ from ballscrew.geometry.helix import FloatArray
 from ballscrew.geometry.raceway import contact_frame
 from ballscrew.geometry.screw import ScrewGeometry, Side, flank_sign, side_sign
 from ballscrew.registry import Registry
+from ballscrew.validation import real_array, same_shape
 
 GapFunction = Callable[[ArrayLike, ArrayLike], FloatArray]
 
@@ -51,7 +52,7 @@ def ball_height(geometry: ScrewGeometry, x: ArrayLike, y: ArrayLike) -> FloatArr
     x² + y² ≥ r_b² are not on the ball's lower hemisphere and raise InputError.
     """
     r_b = geometry.ball_radius
-    rho2 = np.square(np.asarray(x, dtype=float)) + np.square(np.asarray(y, dtype=float))
+    rho2 = np.square(real_array("x", x, "m")) + np.square(real_array("y", y, "m"))
     if not np.all(rho2 < r_b**2):
         worst = float(np.sqrt(np.max(rho2)))
         raise InputError("x, y", worst, f"√(x² + y²) < r_b = {r_b!r} m (the ball's radius)")
@@ -69,9 +70,9 @@ def project_onto_raceway(
     :class:`ScrewGeometry` and is not checked.
     """
     g, s = side_sign(side), flank_sign(flank)
-    x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
-    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
-        raise InputError("x, y", "non-finite", "finite tangent-plane coordinates in m")
+    x, y = real_array("x", x, "m"), real_array("y", y, "m")
+    same_shape("x, y", x, y)
+    x, y = np.broadcast_arrays(x, y)
     rows = contact_frame(geometry, side, s).rotation
     r_m, p_h, r_b = geometry.pitch_radius, geometry.helix_parameter, geometry.ball_radius
     cos_a, sin_a = np.cos(geometry.lead_angle), np.sin(geometry.lead_angle)
@@ -161,7 +162,8 @@ def gap_quadratic(
     """
     flank_sign(flank)
     c = raceway_curvature(geometry, side)
-    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    x, y = real_array("x", x, "m"), real_array("y", y, "m")
+    same_shape("x, y", x, y)
     return 0.5 * (c.h_xx * x * x + 2.0 * c.h_xy * x * y + c.h_yy * y * y)
 
 

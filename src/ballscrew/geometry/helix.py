@@ -11,13 +11,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.geometry.screw import ScrewGeometry
+from ballscrew.validation import real_array
 
 FloatArray = NDArray[np.float64]
 
 
 def helix_point(geometry: ScrewGeometry, theta: ArrayLike) -> FloatArray:
     """Ball-centre helix C(θ) = (r_m cosθ, r_m sinθ, p_h θ), (G1), m."""
-    theta = np.asarray(theta, dtype=float)
+    theta = real_array("theta", theta, "rad")
     r_m = geometry.pitch_radius
     return np.stack(
         [r_m * np.cos(theta), r_m * np.sin(theta), geometry.helix_parameter * theta], axis=-1
@@ -28,7 +29,7 @@ def frenet_frame(
     geometry: ScrewGeometry, theta: ArrayLike
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Unit tangent t, principal normal n (towards the axis) and binormal b = t × n, (G3)–(G5)."""
-    theta = np.asarray(theta, dtype=float)
+    theta = real_array("theta", theta, "rad")
     cos_t, sin_t = np.cos(theta), np.sin(theta)
     cos_a, sin_a = np.cos(geometry.lead_angle), np.sin(geometry.lead_angle)
     zero = np.zeros_like(theta)

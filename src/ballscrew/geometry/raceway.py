@@ -15,6 +15,7 @@ from numpy.typing import ArrayLike
 
 from ballscrew.geometry.helix import FloatArray, frenet_frame, helix_point
 from ballscrew.geometry.screw import ScrewGeometry, Side, flank_sign, side_sign
+from ballscrew.validation import real_array, same_shape
 
 
 def contact_direction(
@@ -49,7 +50,7 @@ def groove_profile(
     φ = β gives the contact point. φ is the paper's β_AS (β_BS).
     """
     g, s = side_sign(side), flank_sign(flank)
-    phi = np.asarray(phi, dtype=float)
+    phi = real_array("phi", phi, "rad")
     r_b, beta = geometry.ball_radius, geometry.contact_angle
     radius = geometry.groove_radius(side)
     offset = radius - r_b
@@ -65,7 +66,9 @@ def raceway_surface(
 
     θ and φ broadcast against each other.
     """
-    theta, phi = np.broadcast_arrays(np.asarray(theta, dtype=float), np.asarray(phi, dtype=float))
+    theta, phi = real_array("theta", theta, "rad"), real_array("phi", phi, "rad")
+    same_shape("theta, phi", theta, phi)
+    theta, phi = np.broadcast_arrays(theta, phi)
     profile = groove_profile(geometry, side, phi, flank)
     _, n, b = frenet_frame(geometry, theta)
     return helix_point(geometry, theta) + profile[..., 1:2] * n + profile[..., 2:3] * b

@@ -11,6 +11,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
+from ballscrew.validation import nonnegative_array
 
 __all__ = ["ball_load", "validate_angles", "validate_balls"]
 
@@ -64,8 +65,5 @@ def ball_load(
     """
     beta, alpha = validate_angles(contact_angle, lead_angle)
     n_b = validate_balls(balls)
-    force = np.asarray(axial_force, dtype=np.float64)
-    bad = ~np.isfinite(force) | (force < 0.0)
-    if np.any(bad):
-        raise InputError("axial_force", force[bad].flat[0], "finite values >= 0 N")
+    force = nonnegative_array("axial_force", axial_force, "N")
     return force / (n_b * math.sin(beta) * math.cos(alpha))

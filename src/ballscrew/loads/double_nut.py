@@ -20,7 +20,7 @@ from scipy.optimize import brentq
 
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.loads.ball_load import validate_angles, validate_balls
-from ballscrew.validation import positive
+from ballscrew.validation import nonnegative_array, positive, positive_array, same_shape
 
 __all__ = [
     "NutForces",
@@ -43,14 +43,6 @@ class NutForces(NamedTuple):
     """Axial force of the loaded nut 1 (the nut the external load presses on), N."""
     f2: float
     """Axial force of the unloaded nut 2, N (0 after lift-off)."""
-
-
-def _nonnegative_array(field: str, value: ArrayLike, allowed: str) -> NDArray[np.float64]:
-    arr = np.asarray(value, dtype=np.float64)
-    bad = ~np.isfinite(arr) | (arr < 0.0)
-    if np.any(bad):
-        raise InputError(field, arr[bad].flat[0], allowed)
-    return arr
 
 
 def nut_forces(preload: float, axial_load: float) -> NutForces:
@@ -114,11 +106,9 @@ def preloaded_axial_stiffness(force: ArrayLike, axial_deflection: ArrayLike) -> 
     Returns:
         Stiffness in N/m (broadcast shape); e.g. 1500 N at 4.0217 µm → 5.595e8 N/m.
     """
-    f = _nonnegative_array("force", force, "finite values >= 0 N")
-    d = np.asarray(axial_deflection, dtype=np.float64)
-    bad = ~np.isfinite(d) | (d <= 0.0)
-    if np.any(bad):
-        raise InputError("axial_deflection", d[bad].flat[0], "finite values > 0 m")
+    f = nonnegative_array("force", force, "N")
+    d = positive_array("axial_deflection", axial_deflection, "m")
+    same_shape("force, axial_deflection", f, d)
     return 1.5 * f / d
 
 
@@ -139,8 +129,9 @@ def axial_deflection_from_approaches(
         δ_a in m (broadcast shape).
     """
     beta, alpha = validate_angles(contact_angle, lead_angle)
-    da = _nonnegative_array("delta_a", delta_a, "finite values >= 0 m")
-    db = _nonnegative_array("delta_b", delta_b, "finite values >= 0 m")
+    da = nonnegative_array("delta_a", delta_a, "m")
+    db = nonnegative_array("delta_b", delta_b, "m")
+    same_shape("delta_a, delta_b", da, db)
     return (da + db) / (math.sin(beta) * math.cos(alpha))
 
 
@@ -180,7 +171,7 @@ def nut_axial_deflection(force: ArrayLike, compliance_constant: float) -> NDArra
         δ_a in m, same shape as ``force``.
     """
     c_a = positive("compliance_constant", compliance_constant, "m N^-2/3")
-    return c_a * _nonnegative_array("force", force, "finite values >= 0 N") ** (2.0 / 3.0)
+    return c_a * nonnegative_array("force", force, "N") ** (2.0 / 3.0)
 
 
 def preload_after_wear(
@@ -213,6 +204,6 @@ def preload_after_wear(
     f_p0 = positive("initial_preload", initial_preload, "N")
     c_a = positive("compliance_constant", compliance_constant, "m N^-2/3")
     beta, alpha = validate_angles(contact_angle, lead_angle)
-    h = _nonnegative_array("max_wear_depth", max_wear_depth, "finite values >= 0 m")
+    h = nonnegative_array("max_wear_depth", max_wear_depth, "m")
     delta = c_a * f_p0 ** (2.0 / 3.0) - h / (math.sin(beta) * math.cos(alpha))
     return np.maximum(delta, 0.0) ** 1.5 / c_a**1.5

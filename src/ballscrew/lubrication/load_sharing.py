@@ -19,6 +19,7 @@ from scipy.optimize import brentq
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.fractal import yan_komvopoulos as yk
 from ballscrew.lubrication.film import FilmThickness, hamrock_dowson
+from ballscrew.validation import real_array, real_number
 
 __all__ = [
     "AsperitySurface",
@@ -172,7 +173,7 @@ def load_sharing_residual(
 ) -> NDArray[np.float64]:
     """r(ψ) = F_asp(h_c((1−ψ)Q)) − ψQ of (E6.4) at each ψ in [0, 1), N (for checks and plots)."""
     e_prime = 2.0 * surface.e_star
-    psi = np.asarray(psi, dtype=float)
+    psi = real_array("psi", psi)
     films = np.array(
         [
             _film(
@@ -186,7 +187,7 @@ def load_sharing_residual(
 
 def asperity_pressure(pressure: ArrayLike, psi: float) -> NDArray[np.float64]:
     """Per-cell asperity pressure p_asp = ψ p, (E6.5), Pa; the film carries (1 − ψ) p."""
-    psi = float(psi)
-    if not (math.isfinite(psi) and 0.0 <= psi <= 1.0):
+    psi = real_number("psi", psi)
+    if not 0.0 <= psi <= 1.0:
         raise InputError("psi", psi, "an asperity share in [0, 1]")
-    return psi * np.asarray(pressure, dtype=float)
+    return psi * real_array("pressure", pressure, "Pa")

@@ -12,6 +12,7 @@ import matplotlib.pyplot as plt
 
 from ballscrew.calibration.fit import CalibrationResult
 from ballscrew.results.folder import results_folder
+from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -105,10 +106,10 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
         "o",
         color="tab:red",
         markersize=4,
-        label=f"measured ({result.source})",
+        label=plain(f"measured ({result.source})"),
     )
     ax.set_ylabel(f"{label} [{unit}]")
-    ax.set_title(title, fontsize=10)
+    ax.set_title(plain(title), fontsize=10)
     ax.legend(fontsize=8)
     axr.axhline(0.0, color="0.5", linewidth=0.8)
     axr.plot(result.revolutions * 1e-6, result.residuals * factor, "o", color="tab:red", ms=3)

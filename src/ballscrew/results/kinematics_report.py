@@ -19,6 +19,7 @@ from ballscrew.case import Case
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
 from ballscrew.results.folder import results_folder, write_netcdf
+from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -163,7 +164,7 @@ def sliding_map(fields: ContactFields, title: str, path: str | Path, arrows: int
     )
     ax.set_xlabel("y along Y_A, across the groove [µm] (axes not to scale)")
     ax.set_ylabel("x along X_A, rolling direction [µm]")
-    ax.set_title(title, fontsize=10)
+    ax.set_title(plain(title), fontsize=10)
     path = Path(path)
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -12,6 +12,15 @@ import numpy as np
 from matplotlib.patches import Ellipse
 
 
+def plain(text: object) -> str:
+    """``text`` shown literally in a figure: every ``$`` escaped, so mathtext never starts.
+
+    Outside ``$…$`` matplotlib draws ``^``, ``_`` and ``\\`` as they are, so user text (case,
+    sensor, profile and file names) can neither break the figure nor change its look.
+    """
+    return str(text).replace("$", r"\$")
+
+
 def pressure_map(
     x: np.ndarray,
     y: np.ndarray,
@@ -44,7 +53,7 @@ def pressure_map(
     )
     ax.set_xlabel("y, across the groove [µm] (axes not to scale)")
     ax.set_ylabel("x, rolling direction [µm]")
-    ax.set_title(title)
+    ax.set_title(plain(title))
     ax.legend(loc="upper right", fontsize=8)
     path = Path(path)
     fig.savefig(path, dpi=110)
@@ -75,7 +84,7 @@ def pressure_profiles(
         ax.set_xlabel(label)
         ax.set_ylabel("pressure [GPa]")
         ax.legend(fontsize=8)
-    fig.suptitle(title, fontsize=10)
+    fig.suptitle(plain(title), fontsize=10)
     path = Path(path)
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -102,7 +111,7 @@ def resistance_map(
     fig.colorbar(image, ax=ax, label="element resistance R_ij [K/W]")
     ax.set_xlabel("y, across the groove [µm] (axes not to scale)")
     ax.set_ylabel("x, rolling direction [µm]")
-    ax.set_title(title)
+    ax.set_title(plain(title))
     path = Path(path)
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -12,6 +12,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from ballscrew.results.folder import results_folder
+from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 from ballscrew.surface.fit import FractalFit, SurfaceFit
@@ -148,7 +149,9 @@ def profile_plot(profile: Profile, path: Path) -> Path:
     ax.plot(profile.x[::step] * 1e3, z[::step] * 1e6, linewidth=0.6)
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("z [µm]")
-    ax.set_title(f"{Path(profile.source).name or 'profile'} (first complete row)", fontsize=10)
+    ax.set_title(
+        plain(f"{Path(profile.source).name or 'profile'} (first complete row)"), fontsize=10
+    )
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

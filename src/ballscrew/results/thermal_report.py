@@ -15,6 +15,7 @@ from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.thermal import ThermalField
 from ballscrew.results.folder import results_folder, write_netcdf
+from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 
@@ -137,7 +138,7 @@ def _sensor_markers(ax: plt.Axes, result: ThermalField, z_scale: float = 1e3) ->
     for k, s in enumerate(result.problem.sensors):
         ax.plot(s.z * z_scale, s.r * 1e3, "o", ms=6, mfc="none", mec="cyan", mew=1.5)
         ax.annotate(
-            s.name,
+            plain(s.name),
             (s.z * z_scale, s.r * 1e3),
             textcoords="offset points",
             xytext=(4, -10 - 8 * (k % 2)),
@@ -180,7 +181,7 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
             for s, v in zip(problem.sensors, sol.sensors, strict=True):
                 ax.plot(s.z * 1e3, _c(amb + v), "o", mfc="none", mec="black")
                 ax.annotate(
-                    s.name,
+                    plain(s.name),
                     (s.z * 1e3, _c(amb + v)),
                     textcoords="offset points",
                     xytext=(4, 4),
@@ -195,7 +196,7 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
             ax.set_ylabel("r [mm]")
             _sensor_markers(ax, result)
     axes[1].set_xlim((ring_lo - pad) * 1e3, (ring_hi + pad) * 1e3)
-    axes[0].set_title(f"{result.case_name}: steady temperature ({result.model} model)")
+    axes[0].set_title(plain(f"{result.case_name}: steady temperature ({result.model} model)"))
     axes[1].set_title("around the nut (sensors circled)", fontsize=9)
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -212,7 +213,7 @@ def temperature_rise(result: ThermalField, path: Path) -> Path:
     ax.axhline(result.max_temperature_rise, color=line.get_color(), ls="--", lw=0.8)
     steady = result.solution.sensors
     for k, s in enumerate(result.problem.sensors):
-        line = ax.plot(minutes, t.sensors[:, k], label=f"sensor {s.name} ({s.body})")[0]
+        line = ax.plot(minutes, t.sensors[:, k], label=plain(f"sensor {s.name} ({s.body})"))[0]
         ax.axhline(steady[k], color=line.get_color(), ls="--", lw=0.8)
     t95 = result.time_to_95
     if math.isfinite(t95):

@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
+from ballscrew.validation import real_array
 
 __all__ = ["MIN_POINTS", "Profile", "as_rows", "check_spacing"]
 
@@ -42,7 +43,7 @@ def as_rows(heights: ArrayLike, field_name: str = "heights") -> FloatArray:
     ``BAD`` in an SDF file) are left out; if none is left, or a row has fewer than
     :data:`MIN_POINTS` points, :class:`InputError` is raised.
     """
-    arr = np.asarray(heights, dtype=np.float64)
+    arr = real_array(field_name, heights, "m", missing_ok=True)
     if arr.ndim == 1:
         arr = arr[None, :]
     if arr.ndim != 2:
@@ -82,7 +83,7 @@ class Profile:
     source: str = ""
 
     def __post_init__(self) -> None:
-        heights = np.asarray(self.heights, dtype=np.float64)
+        heights = real_array("heights", self.heights, "m", missing_ok=True)
         if heights.ndim not in (1, 2) or heights.shape[-1] < 2:
             raise InputError(
                 "heights", f"array of shape {heights.shape}", "a 1-D or 2-D array of heights in m"

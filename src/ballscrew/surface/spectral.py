@@ -18,12 +18,13 @@ import math
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.signal import periodogram
+from scipy.signal import get_window, periodogram
 
 from ballscrew.errors import InputError
 from ballscrew.fractal.domain_extension import validate_dimension
 from ballscrew.surface.profile import as_rows, check_spacing
 from ballscrew.surface.weierstrass_mandelbrot import check_gamma
+from ballscrew.validation import nonnegative_array, positive, positive_array
 
 __all__ = [
     "log_binned_power",
@@ -46,12 +47,9 @@ def wm_power_spectrum(frequency: ArrayLike, D: float, G: float, gamma: float = 1
     """
     d = validate_dimension(D)
     g = check_gamma(gamma)
-    if not (math.isfinite(float(G)) and float(G) > 0.0):
-        raise InputError("G", G, "a finite number > 0 (m)")
-    f = np.asarray(frequency, dtype=np.float64)
-    if np.any(~np.isfinite(f) | (f <= 0.0)):
-        raise InputError("frequency", f, "frequencies > 0 in cycles/m")
-    return float(G) ** (2.0 * (d - 1.0)) / (2.0 * math.log(g)) * f ** (-(5.0 - 2.0 * d))
+    G = positive("G", G, "m")
+    f = positive_array("frequency", frequency, "cycles/m")
+    return G ** (2.0 * (d - 1.0)) / (2.0 * math.log(g)) * f ** (-(5.0 - 2.0 * d))
 
 
 def power_spectrum(
@@ -76,10 +74,15 @@ def power_spectrum(
     dx = check_spacing(spacing)
     if detrend not in ("linear", "constant", None, False):
         raise InputError("detrend", detrend, "'linear', 'constant' or None")
+    window = "boxcar" if window is None else window
+    try:
+        get_window(window, rows.shape[1])
+    except (TypeError, ValueError):
+        raise InputError("window", window, "a scipy.signal window name, e.g. 'hann'") from None
     f, p = periodogram(
         rows,
         fs=1.0 / dx,
-        window="boxcar" if window is None else window,
+        window=window,
         detrend=detrend if detrend else False,
         scaling="density",
         axis=-1,
@@ -109,7 +112,7 @@ def log_smoothed_spectrum(
     Returns:
         The smoothed PSD at ``at``, m³.
     """
-    x_eval = np.log(np.asarray(at, dtype=np.float64))
+    x_eval = np.log(positive_array("at", at, "cycles/m"))
     x_bin, p_bin, _ = log_binned_power(frequency, psd, width)
     return (smoothing_kernel(x_eval, x_bin, width) @ p_bin) / np.exp(x_eval)
 
@@ -122,10 +125,11 @@ def log_binned_power(
     Returns ``(x, power, power_squared)``: each sub-bin's power centroid in ln ω, its power
     Σ S_k Δω (m²) and Σ (S_k Δω)² (for the periodogram variance).
     """
-    if not width > 0.0:
-        raise InputError("width", width, "a smoothing width > 0 in ln ω")
-    f = np.asarray(frequency, dtype=np.float64)
-    s = np.asarray(psd, dtype=np.float64)
+    positive("width", width, "(a smoothing width in ln ω)")
+    f = positive_array("frequency", frequency, "cycles/m")
+    s = nonnegative_array("psd", psd, "m³")
+    if f.shape != s.shape or f.ndim != 1:
+        raise InputError("frequency, psd", (f.shape, s.shape), "1-D arrays of one length")
     df = f[1] - f[0] if f.size > 1 else f[0]
     power = s * df
     lnf = np.log(f)

@@ -27,6 +27,7 @@ from ballscrew.errors import InputError
 from ballscrew.fractal.domain_extension import validate_dimension
 from ballscrew.surface.profile import as_rows, check_spacing
 from ballscrew.surface.weierstrass_mandelbrot import check_gamma
+from ballscrew.validation import integer_at_least, nonnegative_array, positive
 
 __all__ = [
     "band_limited_ratio",
@@ -71,13 +72,10 @@ def wm_structure_function(lag: ArrayLike, D: float, G: float, gamma: float = 1.5
     matches (F4) to < 0.4 %.
     """
     d = validate_dimension(D)
-    if not (math.isfinite(float(G)) and float(G) > 0.0):
-        raise InputError("G", G, "a finite number > 0 (m)")
-    tau = np.asarray(lag, dtype=np.float64)
-    if np.any(~np.isfinite(tau) | (tau < 0.0)):
-        raise InputError("lag", tau, "lags >= 0 in m")
+    G = positive("G", G, "m")
+    tau = nonnegative_array("lag", lag, "m")
     c = structure_function_constant(d, gamma)
-    return c * float(G) ** (2.0 * (d - 1.0)) * (2.0 * math.pi * tau) ** (4.0 - 2.0 * d)
+    return c * G ** (2.0 * (d - 1.0)) * (2.0 * math.pi * tau) ** (4.0 - 2.0 * d)
 
 
 def _lower_part(a: FloatArray, alpha: float) -> FloatArray:
@@ -173,7 +171,7 @@ def structure_function(
     rows = _detrended(as_rows(heights), detrend)
     dx = check_spacing(spacing)
     n = rows.shape[1]
-    k_max = n - 1 if max_lag is None else int(max_lag)
+    k_max = n - 1 if max_lag is None else integer_at_least("max_lag", max_lag, 1)
     if not 1 <= k_max <= n - 1:
         raise InputError("max_lag", max_lag, f"an integer between 1 and {n - 1}")
     size = 1 << math.ceil(math.log2(2 * n))

@@ -113,7 +113,7 @@ def weierstrass_mandelbrot_profile(
     n = wm_frequency_indices(
         n_pts * dx, dx, gamma=g, frequency_min=frequency_min, frequency_max=frequency_max
     )
-    rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
+    rng = _generator(seed)
     phase = rng.uniform(0.0, 2.0 * math.pi, size=(int(profiles), n.size))
     freq = g ** n.astype(np.float64)
     amplitude = g_rough ** (d - 1.0) * g ** (-(2.0 - d) * n.astype(np.float64))
@@ -140,3 +140,15 @@ def weierstrass_mandelbrot_profile(
     }
     heights = z[0] if profiles == 1 else z
     return Profile(heights, dx, None, metadata, "synthetic")
+
+
+def _generator(seed: int | np.random.Generator | None) -> np.random.Generator:
+    """``seed`` itself if a Generator, else ``np.random.default_rng(seed)``."""
+    if isinstance(seed, np.random.Generator):
+        return seed
+    if isinstance(seed, bool | float | str | bytes):
+        raise InputError("seed", seed, "an integer >= 0, a numpy Generator or None")
+    try:
+        return np.random.default_rng(seed)
+    except (TypeError, ValueError):
+        raise InputError("seed", seed, "an integer >= 0, a numpy Generator or None") from None

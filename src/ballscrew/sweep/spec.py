@@ -39,32 +39,101 @@ class SweepSpec:
 
 
 def is_sweep_file(path: str | Path) -> bool:
-    """True if ``path`` is a TOML file with a top-level ``[sweep]`` table."""
+    """True if ``path`` is a TOML file with a top-level ``[sweep]`` key."""
     try:
         return "sweep" in tomllib.loads(Path(path).read_text(encoding="utf-8"))
-    except (OSError, tomllib.TOMLDecodeError):
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
         return False
 
 
 def load_sweep(path: str | Path) -> SweepSpec:
     """Read a sweep file; errors name the key and the file."""
     path = Path(path)
+    source = str(path)
     try:
-        table = tomllib.loads(path.read_text(encoding="utf-8"))["sweep"]
+        document = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise CaseError([f"cannot read the sweep file ({exc.strerror})"], source) from None
+    except UnicodeDecodeError:
+        raise CaseError(["the sweep file is not UTF-8 text"], source) from None
     except tomllib.TOMLDecodeError as exc:
-        raise CaseError([f"TOML syntax error: {exc}"], str(path)) from None
-    unknown = set(table) - _KEYS
+        raise CaseError([f"TOML syntax error: {exc}"], source) from None
+    table = _sweep_table(document, source)
+    fixed = _flatten(_typed(table, "set", dict, "a table of dotted case keys", source, {}))
+    case_path = _typed(table, "case", str, "the path of the case file (a string)", source)
+    case = load_case(path.parent / case_path, fixed)
+    axes = tuple(parse_axis(text) for text in _vary(table, source))
+    analysis = _analysis(table, source)
+    description = _typed(table, "description", str, "a string", source, "")
+    return SweepSpec(case, axes, analysis, description, fixed)
+
+
+def _sweep_table(document: dict[str, Any], source: str) -> dict[str, Any]:
+    """The ``[sweep]`` table, checked for its shape and unknown keys."""
+    table = document.get("sweep")
+    if not isinstance(table, dict):
+        raise CaseError(
+            [f"sweep = {table!r} is not allowed: a table ([sweep]) with the key 'case'"], source
+        )
+    unknown = sorted(set(table) - _KEYS)
     if unknown:
         raise CaseError(
             [f"sweep.{k}: unknown key; allowed: {', '.join(sorted(_KEYS))}" for k in unknown],
-            str(path),
+            source,
         )
     if "case" not in table:
-        raise CaseError(["sweep.case is missing (path of the case file)"], str(path))
-    fixed = dict(table.get("set", {}))
-    case = load_case(path.parent / table["case"], fixed)
-    axes = tuple(parse_axis(text) for text in table.get("vary", []))
-    return SweepSpec(case, axes, table.get("analysis"), table.get("description", ""), fixed)
+        raise CaseError(["sweep.case is missing (path of the case file)"], source)
+    return table
+
+
+_MISSING = object()
+
+
+def _typed(
+    table: dict[str, Any], key: str, kind: type, allowed: str, source: str, default: Any = _MISSING
+) -> Any:
+    """``table[key]`` if it is a ``kind`` (``default`` when absent); else a :class:`CaseError`."""
+    value = table.get(key, default)
+    if value is not default and not isinstance(value, kind):
+        raise CaseError([f"sweep.{key} = {value!r} is not allowed: {allowed}"], source)
+    return value
+
+
+def _analysis(table: dict[str, Any], source: str) -> str | None:
+    """``sweep.analysis``: a registered analysis name, or None when absent."""
+    from ballscrew.sweep.registry import ANALYSES
+
+    allowed = f"one of {', '.join(sorted(ANALYSES))}"
+    analysis = _typed(table, "analysis", str, allowed, source, None)
+    if analysis is not None and analysis not in ANALYSES:
+        raise CaseError([f"sweep.analysis = {analysis!r} is not allowed: {allowed}"], source)
+    return analysis
+
+
+def _vary(table: dict[str, Any], source: str) -> list[str]:
+    """``sweep.vary``: a list of distinct-key axis strings."""
+    allowed = 'a list of strings "KEY=START:STOP:NUM" or "KEY=V1,V2,..."'
+    vary = _typed(table, "vary", list, allowed, source, [])
+    keys: set[str] = set()
+    for item in vary:
+        if not isinstance(item, str):
+            raise CaseError([f"sweep.vary item {item!r} is not allowed: {allowed}"], source)
+        key = item.partition("=")[0].strip()
+        if key in keys:
+            raise CaseError([f"sweep.vary: {key} is swept twice; give each key once"], source)
+        keys.add(key)
+    return vary
+
+
+def _flatten(table: dict[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Nested tables (``[sweep.set] surface.G = ...``) as dotted keys."""
+    flat: dict[str, Any] = {}
+    for key, value in table.items():
+        if isinstance(value, dict):
+            flat.update(_flatten(value, f"{prefix}{key}."))
+        else:
+            flat[f"{prefix}{key}"] = value
+    return flat
 
 
 def merge_axes(base: tuple[SweepAxis, ...], extra: list[SweepAxis]) -> tuple[SweepAxis, ...]:

@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
+from ballscrew.validation import nonnegative_array, real_array
 
 __all__ = ["worn_gap", "worn_gap_function"]
 
@@ -21,12 +22,10 @@ GapFunction = Callable[[Any, Any], Any]
 
 
 def _profile(y: ArrayLike, depth: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    yy = np.asarray(y, dtype=float)
-    hh = np.asarray(depth, dtype=float)
+    yy = real_array("y", y, "m")
+    hh = nonnegative_array("wear depth", depth, "m")
     if yy.ndim != 1 or yy.shape != hh.shape or yy.size < 2 or np.any(np.diff(yy) <= 0.0):
         raise InputError("wear profile", (yy.shape, hh.shape), "increasing y with one h per y")
-    if not (np.all(np.isfinite(hh)) and np.all(hh >= 0.0)):
-        raise InputError("wear depth", "array", "finite depths >= 0 m")
     return yy, hh
 
 
@@ -47,8 +46,10 @@ def worn_gap_function(gap: GapFunction, y: ArrayLike, depth: ArrayLike) -> GapFu
 
 def worn_gap(nominal: ArrayLike, depth: ArrayLike) -> NDArray[np.float64]:
     """Worn gap on a fixed grid: ``nominal[i, j] + depth[j]`` (axis 1 across the groove), m."""
-    g = np.asarray(nominal, dtype=float)
-    h = np.asarray(depth, dtype=float)
-    if g.ndim != 2 or h.shape != (g.shape[1],):
+    g = real_array("nominal", nominal, "m")
+    h = nonnegative_array("wear depth", depth, "m")
+    if g.ndim != 2:
+        raise InputError("nominal", f"array of shape {g.shape}", "a 2-D gap grid in m")
+    if h.shape != (g.shape[1],):
         raise InputError("wear depth", h.shape, f"one depth per grid column ({g.shape[1]})")
     return g + h[None, :]

@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
-from ballscrew.validation import positive
+from ballscrew.validation import nonnegative_array, positive, same_shape
 
 __all__ = [
     "depth_per_revolution",
@@ -33,7 +33,7 @@ def strip_wear_speed(cell_rates: ArrayLike, dx: float) -> FloatArray:
     ``cell_rates`` [m/s] has axis 0 along the helix tangent (i) and axis 1 across the groove (j).
     T8.1: w = [[1, 2, 1], [0.5, 1, 0.5]]e-9 m/s, Δx = 10 µm → W = [1.5, 3.0, 1.5]e-14 m²/s.
     """
-    w = np.asarray(cell_rates, dtype=float)
+    w = nonnegative_array("cell_rates", cell_rates, "m/s")
     if w.ndim != 2:
         raise InputError("cell_rates", w.shape, "a 2-D array (along the helix, across the groove)")
     return w.sum(axis=0) * positive("dx", dx, "m")
@@ -66,14 +66,14 @@ def raceway_depth_rate(strip_speed: ArrayLike, balls: int, raceway_length: float
         raise InputError("balls", balls, "an integer number of balls >= 1")
     return (
         int(balls)
-        * np.asarray(strip_speed, dtype=float)
+        * nonnegative_array("strip_speed", strip_speed, "m²/s")
         / positive("raceway_length", raceway_length, "m")
     )
 
 
 def depth_per_revolution(depth_rate: ArrayLike, screw_speed: float) -> FloatArray:
     """Wear depth per screw revolution ``Δh_j = ḣ_j · 2π/ω_s``, (E8.2), m/rev."""
-    return np.asarray(depth_rate, dtype=float) * (
+    return nonnegative_array("depth_rate", depth_rate, "m/s") * (
         2.0 * math.pi / positive("screw_speed", screw_speed, "rad/s")
     )
 
@@ -84,7 +84,9 @@ def reciprocating_rate(rate_loaded: ArrayLike, rate_unloaded: ArrayLike | None) 
     Each flank spends half the time under the loaded nut (F_1) and half under the unloaded one
     (F_2). ``rate_unloaded = None`` means the unloaded nut has lifted off (F_2 = 0): it adds 0.
     """
-    loaded = np.asarray(rate_loaded, dtype=float)
+    loaded = nonnegative_array("rate_loaded", rate_loaded, "m/s")
     if rate_unloaded is None:
         return 0.5 * loaded
-    return 0.5 * (loaded + np.asarray(rate_unloaded, dtype=float))
+    unloaded = nonnegative_array("rate_unloaded", rate_unloaded, "m/s")
+    same_shape("rate_loaded, rate_unloaded", loaded, unloaded)
+    return 0.5 * (loaded + unloaded)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ballscrew.surface.io._common import file_error
+from ballscrew.surface.io._common import file_error, file_path
 from ballscrew.surface.io.sdf import SDF_MAGIC, read_sdf, write_sdf
 from ballscrew.surface.io.text import read_text_profile, write_text_profile
 from ballscrew.surface.profile import Profile
@@ -43,14 +43,14 @@ def read_profile(
         InputError: naming the file for a missing, empty or unrecognised file, and the field
             for a bad one.
     """
-    path = Path(path)
+    path = file_path(path)
     if not path.is_file():
         raise file_error(path, "", str(path), "an existing profile file")
     with path.open("rb") as handle:
         head = handle.read(4096)
     if not head.strip():
         raise file_error(path, "", "an empty file", f"a profile file: {_FORMATS}")
-    kind = format.lower() if format else None
+    kind = (format.lower() or None) if isinstance(format, str) else format
     if kind not in (None, "sdf", "text"):
         raise file_error(path, "format", format, "'sdf' or 'text'")
     suffix = path.suffix.lower()

@@ -47,7 +47,7 @@ from typing import Any
 import numpy as np
 
 from ballscrew.errors import InputError
-from ballscrew.surface.io._common import file_error
+from ballscrew.surface.io._common import checked_profile, file_error, file_path
 from ballscrew.surface.profile import Profile
 
 __all__ = ["SDF_MAGIC", "read_sdf", "write_sdf"]
@@ -71,14 +71,15 @@ _KEY_SPLIT = re.compile(r"(?:^|\s)([A-Za-z]\w*)\s*=\s*")
 
 
 def _int_field(path: Path, header: dict[str, str], key: str, least: int) -> int:
+    """Header ``key`` as an integer ≥ ``least``; NaN, ±inf, fractions and words are refused."""
     text = header[key]
     try:
-        value = int(float(text))
+        number = float(text)
     except ValueError:
-        raise file_error(path, key, text, f"an integer >= {least}") from None
-    if value < least or value != float(text):
+        number = math.nan
+    if not (math.isfinite(number) and number.is_integer() and number >= least):
         raise file_error(path, key, text, f"an integer >= {least}")
-    return value
+    return int(number)
 
 
 def _float_field(path: Path, header: dict[str, str], key: str, positive: bool) -> float:
@@ -205,7 +206,7 @@ def read_sdf(path: str | Path) -> Profile:
         InputError: naming the file and the field (a missing or invalid header key, a data
             count that is not NumPoints × NumProfiles, compressed data, a non-numeric value).
     """
-    path = Path(path)
+    path = file_path(path)
     try:
         raw = path.read_bytes()
     except OSError as exc:
@@ -230,7 +231,12 @@ def read_sdf(path: str | Path) -> Profile:
             f"{values.size} values",
             f"NumPoints × NumProfiles = {n_points} × {n_profiles} = {n_points * n_profiles}",
         )
-    heights = values.reshape(n_profiles, n_points) * checked["Zscale"]
+    with np.errstate(over="ignore"):
+        heights = values.reshape(n_profiles, n_points) * checked["Zscale"]
+    if np.isinf(heights).any():
+        raise file_error(
+            path, "data", "an infinite height", "finite values × Zscale (numbers or BAD)"
+        )
     if n_profiles == 1:
         heights = heights[0]
     metadata: dict[str, Any] = dict(header)
@@ -258,7 +264,7 @@ def write_sdf(
         manufacturer: ManufacID (at most 10 characters kept).
         version: ``aBCR-1.0`` or ``aISO-1.0``.
     """
-    path = Path(path)
+    path, profile = file_path(path), checked_profile(profile)
     if data_type not in (3, 5, 6, 7):
         raise InputError("data_type", data_type, "3 (float), 5 (int16), 6 (int32) or 7 (double)")
     if version not in ("aBCR-1.0", "aISO-1.0"):

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from ballscrew.errors import InputError
-from ballscrew.surface.io._common import file_error, length_factor
+from ballscrew.surface.io._common import checked_profile, file_error, file_path, length_factor
 from ballscrew.surface.profile import MIN_POINTS, Profile
 
 __all__ = ["read_text_profile", "write_text_profile"]
@@ -91,7 +91,7 @@ def read_text_profile(
             an empty file, a row with a missing or extra column, a non-numeric value,
             non-uniform or non-monotonic x, an unknown unit, a missing spacing.
     """
-    path = Path(path)
+    path = file_path(path)
     try:
         raw = path.read_bytes()
     except OSError as exc:
@@ -159,7 +159,10 @@ def read_text_profile(
     header_x_unit = units[0] if n_cols == 2 else ""
     x_u = x_unit if x_unit is not None else (header_x_unit or meta.get("x_unit", ""))
     z_u = z_unit if z_unit is not None else (units[-1] or meta.get("z_unit", ""))
-    z = data[:, -1] * length_factor(z_u, path, f"unit of column {names[-1]!r}")
+    with np.errstate(over="ignore"):
+        z = data[:, -1] * length_factor(z_u, path, f"unit of column {names[-1]!r}")
+    if np.isinf(z).any():
+        raise file_error(path, f"column {names[-1]!r}", "an infinite height", "finite or nan")
 
     if n_cols == 2:
         x = data[:, 0] * length_factor(x_u, path, f"unit of column {names[0]!r}")
@@ -181,6 +184,8 @@ def read_text_profile(
         if spacing is not None:
             raise InputError("spacing", spacing, "given only for one-column files")
     else:
+        if isinstance(spacing, bool | complex | np.complexfloating):
+            raise InputError("spacing", spacing, "a sampling interval > 0 (m or '0.5 um')")
         if spacing is not None:
             source: object = spacing
             dx = _quantity(spacing, path, "spacing") if isinstance(spacing, str) else spacing
@@ -223,9 +228,10 @@ def write_text_profile(
     delimiter: str = ",",
 ) -> Path:
     """Write a single profile as two columns ``x [x_unit], z [z_unit]`` (CSV by default)."""
+    profile = checked_profile(profile)
     if profile.n_profiles != 1:
         raise InputError("profile", f"{profile.n_profiles} rows", "a single profile")
-    path = Path(path)
+    path = file_path(path)
     fx = length_factor(x_unit, path, "x_unit")
     fz = length_factor(z_unit, path, "z_unit")
     sep = delimiter if delimiter != " " else " "
