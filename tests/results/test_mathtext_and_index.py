@@ -14,9 +14,9 @@ from typer.testing import CliRunner
 from ballscrew.calibration import fit_wear_coefficient, measured_history
 from ballscrew.cli import app
 from ballscrew.errors import InputError
+from ballscrew.plotting import plain
 from ballscrew.results.calibration_report import write_calibration
 from ballscrew.results.index import SkippedFolderWarning, write_index
-from ballscrew.results.plots import plain
 from ballscrew.results.surface_report import profile_plot
 from ballscrew.surface.profile import Profile
 from calibration.conftest import MEASURED_AT, SyntheticModel, exact

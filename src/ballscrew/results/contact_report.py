@@ -8,8 +8,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from ballscrew import plotting as plots
 from ballscrew.analyses.ball_contact import SIDES, BallContacts, RacewayContact
-from ballscrew.results import plots
 from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary

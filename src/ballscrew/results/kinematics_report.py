@@ -18,8 +18,8 @@ from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
 from ballscrew.case import Case
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
+from ballscrew.plotting import plain
 from ballscrew.results.folder import results_folder, write_netcdf
-from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 

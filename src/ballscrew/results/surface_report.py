@@ -11,8 +11,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from ballscrew.plotting import plain
 from ballscrew.results.folder import results_folder
-from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 from ballscrew.surface.fit import FractalFit, SurfaceFit

@@ -14,8 +14,8 @@ import numpy as np
 from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.thermal import ThermalField
+from ballscrew.plotting import plain
 from ballscrew.results.folder import results_folder, write_netcdf
-from ballscrew.results.plots import plain
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
 

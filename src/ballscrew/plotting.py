@@ -1,4 +1,4 @@
-"""Figures written by the analyses (matplotlib, non-interactive)."""
+"""Figures of the analyses (matplotlib, non-interactive): shared drawing helpers."""
 
 from __future__ import annotations
 
