@@ -26,7 +26,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.case.inputs import input_rows
-from ballscrew.results.folder import results_folder
+from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import write_summary
 
@@ -74,7 +74,7 @@ def write_results(
         if case_file is not None:
             shutil.copyfile(case_file, folder / "case.toml")
         for stem, dataset in _datasets(result).items():
-            dataset.to_netcdf(folder / f"{stem}.nc", engine="h5netcdf")
+            write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
         sections = [_inputs_section(result.inputs), _warnings_section(tuple(result.warnings))]
         for s in result.report():
