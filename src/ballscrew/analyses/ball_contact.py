@@ -8,12 +8,16 @@ Hamrock–Brewe solutions alongside for comparison (theory manual: *Geometry*, *
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
+import xarray as xr
 
+from ballscrew.analyses import contact_report
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
+from ballscrew.analyses.result import Figure, Section, recorded_warnings
 from ballscrew.case import Case, NumericsSpec
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.contact import hamrock_brewe, hertz, solve_contact
 from ballscrew.contact.hertz import HertzContact
 from ballscrew.errors import InputError
@@ -69,10 +73,34 @@ class BallContacts:
     """Normal load on each of its balls, Q = F/(n_b sinβ cosα) [N]."""
     screw: RacewayContact
     nut: RacewayContact
+    warnings: tuple[str, ...] = ()
+    """Warnings raised while solving (one line each)."""
+
+    analysis: ClassVar[str] = "contact"
 
     def contact(self, side: Side) -> RacewayContact:
         """The contact on ``side``."""
         return self.screw if side == "screw" else self.nut
+
+    @property
+    def title(self) -> str:
+        return f"Ball–raceway contact: {self.case.name}"
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case)
+
+    def summary(self) -> dict[str, Any]:
+        return contact_report.summary(self)
+
+    def to_xarray(self) -> xr.Dataset:
+        return contact_report.fields(self)
+
+    def figures(self) -> list[Figure]:
+        return contact_report.figures(self)
+
+    def report(self) -> list[Section]:
+        return contact_report.sections(self)
 
 
 def solve_raceway_contact(
@@ -131,14 +159,21 @@ def solve_ball_contacts(case: Case) -> BallContacts:
     """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads."""
     params = ScrewParameters.from_case(case)
     nut = params.loaded_nut
-    contacts = {
-        side: solve_raceway_contact(
-            params.geometry, side, nut.ball_load, params.contact_modulus(side), case.numerics
-        )
-        for side in SIDES
-    }
+    with recorded_warnings() as messages:
+        contacts = {
+            side: solve_raceway_contact(
+                params.geometry, side, nut.ball_load, params.contact_modulus(side), case.numerics
+            )
+            for side in SIDES
+        }
     return BallContacts(
-        case, params.geometry, nut.force, nut.ball_load, contacts["screw"], contacts["nut"]
+        case,
+        params.geometry,
+        nut.force,
+        nut.ball_load,
+        contacts["screw"],
+        contacts["nut"],
+        tuple(messages),
     )
 
 

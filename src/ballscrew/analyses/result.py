@@ -18,7 +18,9 @@ sweeps and the index page.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+import warnings
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol, runtime_checkable
@@ -35,12 +37,31 @@ __all__ = [
     "Section",
     "Table",
     "quantity",
+    "recorded_warnings",
 ]
 
 
 def quantity(number: float, unit: str) -> dict[str, Any]:
     """A summary scalar with its SI unit, e.g. ``{"value": 1.35e9, "unit": "Pa"}``."""
     return {"value": float(number), "unit": unit}
+
+
+@contextmanager
+def recorded_warnings() -> Iterator[list[str]]:
+    """Record the warnings raised inside the block (one line each) and raise them again.
+
+    The list fills when the block ends; a result stores it as its ``warnings``, and the warnings
+    still reach the console or the caller's filters.
+    """
+    messages: list[str] = []
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        yield messages
+    for w in caught:
+        text = " ".join(str(w.message).split())
+        if text not in messages:
+            messages.append(text)
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
 @dataclass(frozen=True)

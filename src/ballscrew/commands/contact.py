@@ -14,11 +14,10 @@ def contact(
     """Solve the screw-side and nut-side contact of one ball of the loaded nut."""
     from ballscrew.analyses.ball_contact import solve_ball_contacts
     from ballscrew.case import load_case
-    from ballscrew.results import claim_output
-    from ballscrew.results.contact_report import write_ball_contacts
+    from ballscrew.results import claim_output, write_results
 
     case = load_case(case_file)
     with claim_output(out, command="contact", force=force, inputs=[case_file]):
         result = solve_ball_contacts(case)
-        folder = write_ball_contacts(result, out)
+        folder = write_results(result, out, case_file)
     log.info("wrote %s", folder / "report.html")

@@ -9,6 +9,7 @@ from ballscrew.results.folder import (
 )
 from ballscrew.results.report import Section, write_report
 from ballscrew.results.summary import value, write_summary
+from ballscrew.results.writer import write_results
 
 __all__ = [
     "ResultsWriteError",
@@ -19,5 +20,6 @@ __all__ = [
     "value",
     "write_netcdf",
     "write_report",
+    "write_results",
     "write_summary",
 ]
