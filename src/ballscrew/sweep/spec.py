@@ -101,11 +101,11 @@ def _typed(
 
 def _analysis(table: dict[str, Any], source: str) -> str | None:
     """``sweep.analysis``: a registered analysis name, or None when absent."""
-    from ballscrew.sweep.registry import ANALYSES
+    from ballscrew.sweep.registry import SWEEPABLE
 
-    allowed = f"one of {', '.join(sorted(ANALYSES))}"
+    allowed = f"one of {', '.join(SWEEPABLE)}"
     analysis = _typed(table, "analysis", str, allowed, source, None)
-    if analysis is not None and analysis not in ANALYSES:
+    if analysis is not None and analysis not in SWEEPABLE:
         raise CaseError([f"sweep.analysis = {analysis!r} is not allowed: {allowed}"], source)
     return analysis
 
