@@ -66,5 +66,5 @@ def test_sweep_file_that_is_not_utf8_is_one_line(tmp_path):
     path = tmp_path / "sweep.toml"
     path.write_bytes('[sweep]\ncase = "é.toml"\n'.encode("utf-16"))
     assert not is_sweep_file(path)
-    with pytest.raises(CaseError, match="not UTF-8"):
+    with pytest.raises(CaseError, match="save it as UTF-8"):
         load_sweep(path)

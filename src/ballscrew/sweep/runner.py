@@ -29,6 +29,7 @@ from ballscrew.case import Case
 from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
+from ballscrew.sweep.spec import check_sweep_size
 
 log = logging.getLogger(__name__)
 
@@ -139,6 +140,7 @@ def run_sweep(
     Points that failed earlier count as done unless ``retry_failed``. Returns the Dataset and
     the number of points computed in this call (0 when all were done).
     """
+    check_sweep_size(axes)
     points = grid_points(axes)
     cases = validate_points(base, points)
     folder = Path(store) / "points"

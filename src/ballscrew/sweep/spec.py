@@ -13,13 +13,13 @@ line adds axes (or replaces one of the same key).
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ballscrew.budget import check_count, check_memory
 from ballscrew.case import Case, CaseError, load_case
+from ballscrew.case.loader import read_toml
 from ballscrew.sweep.axes import SweepAxis, parse_axis
 
 _KEYS = {"case", "analysis", "vary", "set", "description"}
@@ -39,10 +39,10 @@ class SweepSpec:
 
 
 def is_sweep_file(path: str | Path) -> bool:
-    """True if ``path`` is a TOML file with a top-level ``[sweep]`` key."""
+    """True if ``path`` is a readable TOML file with a top-level ``[sweep]`` key."""
     try:
-        return "sweep" in tomllib.loads(Path(path).read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return "sweep" in read_toml(path, "case or sweep file")
+    except CaseError:
         return False
 
 
@@ -50,14 +50,7 @@ def load_sweep(path: str | Path) -> SweepSpec:
     """Read a sweep file; errors name the key and the file."""
     path = Path(path)
     source = str(path)
-    try:
-        document = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise CaseError([f"cannot read the sweep file ({exc.strerror})"], source) from None
-    except UnicodeDecodeError:
-        raise CaseError(["the sweep file is not UTF-8 text"], source) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CaseError([f"TOML syntax error: {exc}"], source) from None
+    document = read_toml(path, "sweep file")
     table = _sweep_table(document, source)
     fixed = _flatten(_typed(table, "set", dict, "a table of dotted case keys", source, {}))
     case_path = _typed(table, "case", str, "the path of the case file (a string)", source)

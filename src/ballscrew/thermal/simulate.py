@@ -168,7 +168,7 @@ def _march(
     feed_speed: float,
 ) -> Transient:
     if not (duration > 0.0 and 0.0 < time_step <= duration):
-        raise InputError("transient.time_step", time_step, f"a step in (0, {duration:g}] s")
+        raise InputError("thermal.transient.time_step", time_step, f"a step in (0, {duration:g}] s")
     check_transient(disc, duration, time_step)
     steps = max(1, round(duration / time_step))
     dt = duration / steps
