@@ -119,7 +119,7 @@ def _client(scheduler: str | None, workers: int | None):  # -> distributed.Clien
         threads_per_worker=1,
         processes=True,
         host="127.0.0.1",
-        dashboard_address=None,
+        dashboard_address="127.0.0.1:0",  # its HTTP server on loopback, any free port
     )
     return Client(cluster), cluster
 
