@@ -81,6 +81,8 @@ class Lubrication:
     """Inlet dynamic viscosity η₀ [Pa s]; None = no lubricant data (dry contacts)."""
     pressure_viscosity: float | None
     """Barus coefficient α_p [1/Pa]; None = unknown."""
+    film_model: str = "hamrock_dowson"
+    """Registered EHL film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
 
     @property
     def lubricated(self) -> bool:
@@ -145,7 +147,9 @@ class ScrewParameters:
             D=case.surface.D,
             G=case.surface.G,
             smooth_ball=case.surface.ball is None,
-            lubrication=Lubrication(medium.name, medium.thermal_conductivity, eta, alpha),
+            lubrication=Lubrication(
+                medium.name, medium.thermal_conductivity, eta, alpha, medium.film_model
+            ),
             nuts=(),
         )
         return params.with_loads()

@@ -25,6 +25,7 @@ from ballscrew.contact import (
 )
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
+from ballscrew.lubrication.film import FILM_MODELS
 
 
 class ScrewSpec(Model):
@@ -108,6 +109,9 @@ class MediumSpec(Model):
         quantity("inverse_pressure", "Barus pressure–viscosity coefficient α_p", ge=0, le=1e-6)
         | None
     ) = None
+    film_model: model_choice(
+        FILM_MODELS, "EHL film-thickness model of the ball contacts (kinematics and wear)"
+    ) = "hamrock_dowson"
 
 
 class OperatingSpec(Model):

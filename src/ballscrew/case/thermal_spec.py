@@ -18,6 +18,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import Model, model_choice, quantity
+from ballscrew.loads.drag_torque import DRAG_TORQUE_MODELS
 from ballscrew.thermal.models import THERMAL_MODELS
 
 #: Longest shaft, stroke or position a thermal model accepts, m.
@@ -86,11 +87,11 @@ class BearingSpec(Model):
 class DragTorqueSpec(Model):
     """Friction torque of the ball screw itself, heat Q_bs = M_bs·ω (Q4)."""
 
-    source: Literal["catalogue", "given", "kinematics"] = Field(
-        "catalogue",
-        description="catalogue preload torque K·F_p·L/(2π) (Q4), a given torque, or the drag "
-        "torque computed by the ball kinematics model",
-    )
+    source: model_choice(
+        DRAG_TORQUE_MODELS,
+        "catalogue preload torque K·F_p·L/(2π), a given torque, or the drag torque computed by "
+        "the ball kinematics model",
+    ) = "catalogue"
     torque: quantity("torque", "drag torque M_bs for source = 'given'", ge=0, le=1e5) | None = None
 
     @model_validator(mode="after")

@@ -19,11 +19,11 @@ from ballscrew.kinematics.frames import BallFrame, ball_frame
 from ballscrew.kinematics.inertia import ball_inertia, ball_mass
 from ballscrew.kinematics.sliding import deformed_radius
 from ballscrew.lubrication import (
+    FILM_MODELS,
     AsperitySurface,
     FilmThickness,
     LoadSharing,
     ehl_rolling_resistance,
-    hamrock_dowson,
     share_load,
 )
 
@@ -49,6 +49,8 @@ class BallModel:
     boundary_friction: float = 0.1
     limiting_shear: float = 0.07
     traction_cells: int = 32
+    film_model: str = "hamrock_dowson"
+    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
 
     @property
     def lubricated(self) -> bool:
@@ -99,11 +101,11 @@ class BallModel:
         return deformed_radius(self.geometry.groove_radius(contact), self.geometry.ball_radius)
 
     def film(self, load: float, speed: float, contact: Side = "screw") -> FilmThickness | None:
-        """Hamrock–Dowson film carrying the whole load (None without lubricant or motion)."""
+        """EHL film carrying the whole load (None without lubricant or motion)."""
         if not self.lubricated or speed == 0.0 or load <= 0.0:
             return None
         c = self.curvature(contact)
-        return hamrock_dowson(
+        return FILM_MODELS[self.film_model](
             c.rx,
             c.ry,
             2.0 * self.e_star(contact),
@@ -128,6 +130,7 @@ class BallModel:
             abs(speed),
             math.pi * a * b,
             self.surface,
+            film_model=self.film_model,
         )
 
     def rolling_resistance(self, load: float, speed: float, contact: Side) -> float:

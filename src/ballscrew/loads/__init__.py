@@ -13,9 +13,15 @@ from ballscrew.loads.double_nut import (
     preload_after_wear,
     preloaded_axial_stiffness,
 )
-from ballscrew.loads.drag_torque import preload_drag_torque
+from ballscrew.loads.drag_torque import (
+    DRAG_TORQUE_MODELS,
+    DragTorqueInputs,
+    preload_drag_torque,
+)
 
 __all__ = [
+    "DRAG_TORQUE_MODELS",
+    "DragTorqueInputs",
     "NutForces",
     "axial_deflection_from_approaches",
     "ball_load",

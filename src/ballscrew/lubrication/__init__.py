@@ -9,7 +9,12 @@
 4. :data:`LUBRICANTS` / :func:`lubricant`: named oils and greases with their sources.
 """
 
-from ballscrew.lubrication.film import FilmThickness, dimensionless_groups, hamrock_dowson
+from ballscrew.lubrication.film import (
+    FILM_MODELS,
+    FilmThickness,
+    dimensionless_groups,
+    hamrock_dowson,
+)
 from ballscrew.lubrication.load_sharing import (
     AsperitySurface,
     LoadSharing,
@@ -21,6 +26,7 @@ from ballscrew.lubrication.lubricants import LUBRICANTS, Lubricant, lubricant
 from ballscrew.lubrication.rolling_resistance import ehl_rolling_resistance
 
 __all__ = [
+    "FILM_MODELS",
     "LUBRICANTS",
     "AsperitySurface",
     "FilmThickness",

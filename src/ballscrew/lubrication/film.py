@@ -8,9 +8,11 @@ contacts, Part III — fully flooded results", J. Lubr. Technol. 99:264. Physics
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from ballscrew.errors import InputError
+from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative, positive
 
 __all__ = ["FilmThickness", "dimensionless_groups", "hamrock_dowson"]
@@ -63,6 +65,13 @@ def dimensionless_groups(
     )
 
 
+FILM_MODELS: Registry[Callable[..., FilmThickness]] = Registry(
+    "film thickness model", "medium.film_model"
+)
+"""Rival EHL film-thickness models, each ``(rx, ry, E′, η₀, α_p, u_e, Q_f) → FilmThickness``."""
+
+
+@FILM_MODELS.register("hamrock_dowson", "Hamrock & Dowson (1977), isothermal, fully flooded")
 def hamrock_dowson(
     rx: float,
     ry: float,

@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.fractal import yan_komvopoulos as yk
-from ballscrew.lubrication.film import FilmThickness, hamrock_dowson
+from ballscrew.lubrication.film import FILM_MODELS, FilmThickness
 from ballscrew.validation import real_array, real_number
 
 __all__ = [
@@ -98,9 +98,11 @@ def _film(
     viscosity: float,
     pressure_viscosity: float,
     speed: float,
+    film_model: str = "hamrock_dowson",
 ) -> FilmThickness:
     film_load = film_fraction * load  # (1 − ψ) Q, passed as 1 − ψ to keep it > 0 near ψ = 1
-    return hamrock_dowson(rx, ry, e_prime, viscosity, pressure_viscosity, speed, film_load)
+    film = FILM_MODELS[film_model]
+    return film(rx, ry, e_prime, viscosity, pressure_viscosity, speed, film_load)
 
 
 def share_load(
@@ -114,6 +116,7 @@ def share_load(
     surface: AsperitySurface,
     *,
     xtol: float = 1e-14,
+    film_model: str = "hamrock_dowson",
 ) -> LoadSharing:
     """Asperity share ψ of the normal load Q of one EHL contact, (E6.1)–(E6.4).
 
@@ -139,7 +142,7 @@ def share_load(
     if float(entrainment_speed) == 0.0:
         return LoadSharing(1.0, q, 0.0, None)
     e_prime = 2.0 * surface.e_star
-    args = (q, rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed)
+    args = (q, rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, film_model)
 
     def residual_t(t: float) -> float:  # r at ψ = 1 − e^t
         h = _film(math.exp(t), *args).central
@@ -170,6 +173,7 @@ def load_sharing_residual(
     entrainment_speed: float,
     nominal_area: float,
     surface: AsperitySurface,
+    film_model: str = "hamrock_dowson",
 ) -> NDArray[np.float64]:
     """r(ψ) = F_asp(h_c((1−ψ)Q)) − ψQ of (E6.4) at each ψ in [0, 1), N (for checks and plots)."""
     e_prime = 2.0 * surface.e_star
@@ -177,7 +181,15 @@ def load_sharing_residual(
     films = np.array(
         [
             _film(
-                1.0 - p, load, rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed
+                1.0 - p,
+                load,
+                rx,
+                ry,
+                e_prime,
+                viscosity,
+                pressure_viscosity,
+                entrainment_speed,
+                film_model,
             ).central
             for p in psi.ravel()
         ]

@@ -108,6 +108,8 @@ class WearSetup:
     """Factor on the catalogue torque of (E9.1) (torque_scale or the initial-torque fit)."""
     tolerance: float
     max_iterations: int
+    film_model: str = "hamrock_dowson"
+    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
 
     @property
     def cell_area(self) -> float:
@@ -219,6 +221,7 @@ def flank_rate(
             entrainment_speed(setup.geometry, screw_speed),
             area,
             setup.surface,
+            film_model=setup.film_model,
         ).psi
     else:
         psi = 1.0
