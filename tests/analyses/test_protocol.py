@@ -1,0 +1,42 @@
+"""Each converted analysis returns an AnalysisResult; the generic writer makes its folder."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from typing import Any
+
+import pytest
+
+import ballscrew
+from ballscrew.analyses.result import AnalysisResult
+from ballscrew.analyses.screw_tcr import screw_tcr
+from ballscrew.results import write_results
+from quick_cases import QUICK, write_case
+
+#: analysis name → the composer that solves a case
+COMPOSERS: dict[str, Callable[[Any], Any]] = {
+    "tcr": screw_tcr,
+}
+
+
+@pytest.mark.parametrize("name", list(COMPOSERS))
+def test_result_follows_the_protocol_and_writes_its_folder(tmp_path, name):
+    case_file = write_case(tmp_path, "gao2019_tcr.toml", QUICK)
+    result = COMPOSERS[name](ballscrew.load_case(case_file))
+    assert isinstance(result, AnalysisResult)
+    assert result.analysis == name
+    assert isinstance(result.warnings, tuple)
+
+    folder = write_results(result, tmp_path / "out", case_file)
+    summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
+    assert summary["analysis"] == name
+    assert summary["warnings"] == list(result.warnings)
+    assert summary["inputs"] == json.loads((folder / "inputs.json").read_text(encoding="utf-8"))
+    assert (folder / "case.toml").read_text(encoding="utf-8") == case_file.read_text(
+        encoding="utf-8"
+    )
+    report = (folder / "report.html").read_text(encoding="utf-8")
+    assert "<h2>Inputs</h2>" in report and "<table" in report
+    for figure in result.figures():
+        assert (folder / f"{figure.name}.png").is_file()
