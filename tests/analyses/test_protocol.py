@@ -11,12 +11,14 @@ import pytest
 import ballscrew
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.analyses.screw_tcr import screw_tcr
+from ballscrew.analyses.thermal import thermal_field
 from ballscrew.results import write_results
 from quick_cases import QUICK, write_case
 
 #: analysis name → the composer that solves a case
 COMPOSERS: dict[str, Callable[[Any], Any]] = {
     "tcr": screw_tcr,
+    "thermal": thermal_field,
 }
 
 
