@@ -9,6 +9,7 @@ from typing import Any
 import pytest
 
 import ballscrew
+from ballscrew.analyses.kinematics import run_kinematics
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
@@ -19,6 +20,7 @@ from quick_cases import QUICK, write_case
 COMPOSERS: dict[str, Callable[[Any], Any]] = {
     "tcr": screw_tcr,
     "thermal": thermal_field,
+    "kinematics": run_kinematics,
 }
 
 
@@ -42,3 +44,15 @@ def test_result_follows_the_protocol_and_writes_its_folder(tmp_path, name):
     assert "<h2>Inputs</h2>" in report and "<table" in report
     for figure in result.figures():
         assert (folder / f"{figure.name}.png").is_file()
+
+
+def test_kinematics_speed_limits_are_the_results_warnings(tmp_path):
+    """The speed-limit text the analysis collects is its protocol warnings, still warned once."""
+    from ballscrew.kinematics.limits import SpeedLimitWarning
+
+    case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", QUICK))
+    with pytest.warns(SpeedLimitWarning) as caught:
+        result = run_kinematics(case, speed=942.5)
+    assert len(result.warnings) == 1
+    assert "[kinematics] dn_limit" in result.warnings[0]
+    assert [str(w.message) for w in caught] == list(result.warnings)
