@@ -74,7 +74,7 @@ class SensorReading:
 
 @dataclass(frozen=True)
 class ThermalField:
-    """Temperature field and thermal elongation of the ball screw (issue #4 contract).
+    """Temperature field and thermal elongation of the ball screw (attribute names are public).
 
     Temperatures in K, rises in K, lengths in m, heat in W, times in s.
     """
