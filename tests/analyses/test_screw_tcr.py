@@ -1,8 +1,8 @@
-"""The full TCR chain against contact-tcr.md §11 (T-AGG1, T-TR1–T-TR3), through screw_tcr.
+"""The full TCR chain against its reference values (T-AGG1, T-TR1–T-TR3), through screw_tcr.
 
-The reference numbers were computed on the document's grid: 40 × 200 cells over ±2.6 × the
+The reference numbers were computed on one grid: 40 × 200 cells over ±2.6 × the
 Hertz semi-axis along the rolling direction and ±2.4 × across the groove, element TCR on the
-solver cells themselves. The TCR is mesh dependent (§6.5), so these tests use that grid.
+solver cells themselves. The TCR is mesh dependent, so these tests use that grid.
 """
 
 from __future__ import annotations

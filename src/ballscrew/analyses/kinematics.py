@@ -23,14 +23,18 @@ import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
+import xarray as xr
 from numpy.typing import NDArray
 
+from ballscrew.analyses import kinematics_report
 from ballscrew.analyses.ball_contact import solve_raceway_contact
 from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.result import Figure, Section, recorded_warnings
 from ballscrew.case import Case
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.kinematics.balance import LEVELS, BallState, solve_ball
@@ -382,7 +386,32 @@ class KinematicsRun:
     model_torque: float
     """Ball-model drag torque at the operating point [N m]."""
     lubricated: bool
-    warnings: list[str]
+    case: Case
+    """The case that was solved."""
+    warnings: tuple[str, ...] = ()
+    """Speed-limit messages and warnings raised while solving (one line each)."""
+
+    analysis: ClassVar[str] = "kinematics"
+
+    @property
+    def title(self) -> str:
+        return f"Ball kinematics, balance, lubrication and drag torque: {self.case.name}"
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case)
+
+    def summary(self) -> dict[str, Any]:
+        return kinematics_report.summary(self)
+
+    def to_xarray(self) -> xr.Dataset:
+        return kinematics_report.fields(self)
+
+    def figures(self) -> list[Figure]:
+        return kinematics_report.figures(self)
+
+    def report(self) -> list[Section]:
+        return kinematics_report.sections(self)
 
 
 def _no_load(case: Case) -> Any:
@@ -397,35 +426,36 @@ def run_kinematics(
     """Run the analysis (all checks first, see :func:`prepare`)."""
     omega = case.operating.speed if speed is None else float(speed)
     speeds = curve_speeds(case)
-    model, lvl = prepare(case, np.append(speeds, omega), level)
-    messages = speed_limit_messages(case, float(max(omega, speeds.max())))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SpeedLimitWarning)
-        states, drags = {}, {}
-        for number, force, flank in nut_loads(case):
-            if force > 0.0:
-                states[number] = solve_ball(model, omega, force, flank, lvl)
-                drags[number] = ball_drag(model, states[number])
-        fields = contact_fields(case, model, states[1])
-        positive = speeds[speeds > 0]
-        low_speed = omega if omega > 0 else float(positive.min()) if positive.size else 1.0
-        high_speed = float(max(speeds.max(), low_speed))
-        _, f1, s1 = nut_loads(case)[0]
+    with recorded_warnings() as raised:
+        model, lvl = prepare(case, np.append(speeds, omega), level)
+        messages = speed_limit_messages(case, float(max(omega, speeds.max())))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SpeedLimitWarning)
+            states, drags = {}, {}
+            for number, force, flank in nut_loads(case):
+                if force > 0.0:
+                    states[number] = solve_ball(model, omega, force, flank, lvl)
+                    drags[number] = ball_drag(model, states[number])
+            fields = contact_fields(case, model, states[1])
+            positive = speeds[speeds > 0]
+            low_speed = omega if omega > 0 else float(positive.min()) if positive.size else 1.0
+            high_speed = float(max(speeds.max(), low_speed))
+            _, f1, s1 = nut_loads(case)[0]
 
-        def nut1_fields(speed: float) -> ContactFields:
-            """Nut 1 at ``speed``: the case-speed solution when it is the same problem."""
-            if speed == omega:
-                return fields
-            return contact_fields(case, model, solve_ball(model, speed, f1, s1, lvl))
+            def nut1_fields(speed: float) -> ContactFields:
+                """Nut 1 at ``speed``: the case-speed solution when it is the same problem."""
+                if speed == omega:
+                    return fields
+                return contact_fields(case, model, solve_ball(model, speed, f1, s1, lvl))
 
-        low, high = nut1_fields(low_speed), nut1_fields(high_speed)
-        sweep = speed_sweep(case, speeds, lvl)
-        free = _no_load(case)
-        no_load = np.array([_model_torque(model, free, float(w), lvl) for w in speeds])
-        preloads = case.operating.preload * np.linspace(0.25, 2.0, 8)
-        preload_model = np.array(
-            [_model_torque(model, free, omega, lvl, preload=float(fp)) for fp in preloads]
-        )
+            low, high = nut1_fields(low_speed), nut1_fields(high_speed)
+            sweep = speed_sweep(case, speeds, lvl)
+            free = _no_load(case)
+            no_load = np.array([_model_torque(model, free, float(w), lvl) for w in speeds])
+            preloads = case.operating.preload * np.linspace(0.25, 2.0, 8)
+            preload_model = np.array(
+                [_model_torque(model, free, omega, lvl, preload=float(fp)) for fp in preloads]
+            )
     model_torque = sum(model.balls * d.dissipation_torque for d in drags.values())
     return KinematicsRun(
         case_name=case.name,
@@ -445,5 +475,6 @@ def run_kinematics(
         catalogue_torque=drag_torque(case),
         model_torque=float(model_torque),
         lubricated=model.lubricated,
-        warnings=messages,
+        case=case,
+        warnings=tuple(dict.fromkeys(messages + raised)),
     )

@@ -13,10 +13,16 @@ so one solve serves every contact of equal load and side.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any, ClassVar
 
+import xarray as xr
+
+from ballscrew.analyses import tcr_report
 from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
+from ballscrew.analyses.result import Figure, Section, recorded_warnings
 from ballscrew.case import Case, TCRSpec
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.contact_resistance import (
     ContactTCR,
     FractalTCRModel,
@@ -88,6 +94,12 @@ class ScrewTCR:
     """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
     nuts: tuple[NutTCR, ...]
     """The nuts that carry load (a lifted-off nut is absent)."""
+    case: Case
+    """The case that was solved."""
+    warnings: tuple[str, ...] = ()
+    """Warnings raised while solving (one line each)."""
+
+    analysis: ClassVar[str] = "tcr"
 
     @property
     def resistance(self) -> float:
@@ -103,6 +115,26 @@ class ScrewTCR:
     def resistance_per_area(self) -> float:
         """Unit-area TCR R″ = R·S (A4) [m² K/W]."""
         return self.resistance * self.apparent_area
+
+    @property
+    def title(self) -> str:
+        return f"Thermal contact resistance: {self.case.name}"
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case)
+
+    def summary(self) -> dict[str, Any]:
+        return tcr_report.summary(self)
+
+    def to_xarray(self) -> xr.Dataset:
+        return tcr_report.fields(self)
+
+    def figures(self) -> list[Figure]:
+        return tcr_report.figures(self)
+
+    def report(self) -> list[Section]:
+        return tcr_report.sections(self)
 
 
 def tcr_model(
@@ -179,29 +211,32 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         return solved[side, load]
 
     nuts = []
-    for nut in params.nuts:
-        if not nut.loaded:
-            continue  # a lifted-off nut carries nothing
-        screw_side = raceway("screw", nut.ball_load, nut.flank)
-        nut_side = raceway("nut", nut.ball_load, nut.flank)
-        approach = screw_side.contact.solution.approach + nut_side.contact.solution.approach
-        nuts.append(
-            NutTCR(
-                index=nut.index,
-                force=nut.force,
-                ball_load=nut.ball_load,
-                balls=params.balls_per_nut,
-                screw=screw_side,
-                nut=nut_side,
-                axial_deflection=approach / params.axial_projection,
+    with recorded_warnings() as messages:
+        for nut in params.nuts:
+            if not nut.loaded:
+                continue  # a lifted-off nut carries nothing
+            screw_side = raceway("screw", nut.ball_load, nut.flank)
+            nut_side = raceway("nut", nut.ball_load, nut.flank)
+            approach = screw_side.contact.solution.approach + nut_side.contact.solution.approach
+            nuts.append(
+                NutTCR(
+                    index=nut.index,
+                    force=nut.force,
+                    ball_load=nut.ball_load,
+                    balls=params.balls_per_nut,
+                    screw=screw_side,
+                    nut=nut_side,
+                    axial_deflection=approach / params.axial_projection,
+                )
             )
-        )
     return ScrewTCR(
         case_name=case.name,
         variant=models["screw"].variant,
         cell_size=case.tcr.cell_size if case.tcr.rebin else None,
         nut_forces=params.nut_forces,
         nuts=tuple(nuts),
+        case=case,
+        warnings=tuple(messages),
     )
 
 

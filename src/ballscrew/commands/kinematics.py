@@ -30,8 +30,7 @@ def kinematics(
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
     from ballscrew.kinematics.limits import SpeedLimitWarning
-    from ballscrew.results import claim_output
-    from ballscrew.results.kinematics_report import write_kinematics
+    from ballscrew.results import claim_output, write_results
     from ballscrew.units import to_si
 
     case = load_case(case_file)
@@ -57,5 +56,5 @@ def kinematics(
             result.model_torque,
             result.catalogue_torque,
         )
-        folder = write_kinematics(result, case, out)
+        folder = write_results(result, out, case_file)
     log.info("wrote %s", folder / "report.html")

@@ -22,12 +22,11 @@ def tcr(
     """Thermal contact resistance of every contact, each nut and the whole screw."""
     from ballscrew.analyses.screw_tcr import screw_tcr
     from ballscrew.case import load_case
-    from ballscrew.results import claim_output
-    from ballscrew.results.tcr_report import write_screw_tcr
+    from ballscrew.results import claim_output, write_results
 
     case = load_case(case_file)
     with claim_output(out, command="tcr", force=force, inputs=[case_file]):
         result = screw_tcr(case, variant=variant)
         log.info("R = %.4g K/W, R'' = %.4g m^2K/W", result.resistance, result.resistance_per_area)
-        folder = write_screw_tcr(result, case, out)
+        folder = write_results(result, out, case_file)
     log.info("wrote %s", folder / "report.html")

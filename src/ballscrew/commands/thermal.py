@@ -23,8 +23,7 @@ def thermal(
     """Steady and transient temperatures, sensors and thermal elongation (needs [thermal])."""
     from ballscrew.analyses.thermal import thermal_field
     from ballscrew.case import load_case
-    from ballscrew.results import claim_output
-    from ballscrew.results.thermal_report import write_thermal
+    from ballscrew.results import claim_output, write_results
 
     case = load_case(case_file)
     with claim_output(out, command="thermal", force=force, inputs=[case_file]):
@@ -37,5 +36,5 @@ def thermal(
             result.model,
             result.unknowns,
         )
-        folder = write_thermal(result, out)
+        folder = write_results(result, out, case_file)
     log.info("wrote %s", folder / "report.html")

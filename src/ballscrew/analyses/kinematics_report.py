@@ -1,10 +1,11 @@
-"""Results folder of ``ballscrew kinematics``: summary.json, fields.nc, figures and report.html."""
+"""What the kinematics analysis shows: its summary, fields, figures and report sections."""
 
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
@@ -14,20 +15,21 @@ import numpy as np
 import xarray as xr
 from matplotlib.patches import Ellipse
 
-from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
-from ballscrew.case import Case
+from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.analyses.result import quantity as value
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
 from ballscrew.plotting import plain
-from ballscrew.results.folder import results_folder, write_netcdf
-from ballscrew.results.report import Section, write_report
-from ballscrew.results.summary import value, write_summary
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
 
 __all__ = [
-    "kinematics_fields",
-    "kinematics_summary",
+    "fields",
+    "figures",
+    "sections",
     "sliding_map",
-    "write_kinematics",
+    "summary",
 ]
 
 _RPM = 60.0 / (2.0 * math.pi)
@@ -62,8 +64,9 @@ def _state_summary(
     return out
 
 
-def kinematics_summary(run: KinematicsRun, case: Case) -> dict[str, Any]:
+def summary(run: KinematicsRun) -> dict[str, Any]:
     """Scalars at the case speed, the curves versus speed and the options used."""
+    case = run.case
     balls = case.screw.balls_per_nut
     nuts = {}
     for number, state in run.states.items():
@@ -72,7 +75,6 @@ def kinematics_summary(run: KinematicsRun, case: Case) -> dict[str, Any]:
         nuts[f"nut{number}"] = entry
     sweep = run.sweep
     return {
-        "analysis": "kinematics",
         "case": run.case_name,
         "level": run.level,
         "speed": value(run.speed, "rad/s"),
@@ -103,11 +105,10 @@ def kinematics_summary(run: KinematicsRun, case: Case) -> dict[str, Any]:
             "surface": {"D": case.surface.D, "Ds": case.surface.D + 1.0},
             "lubricated": run.lubricated,
         },
-        "warnings": run.warnings,
     }
 
 
-def kinematics_fields(run: KinematicsRun) -> xr.Dataset:
+def fields(run: KinematicsRun) -> xr.Dataset:
     """Pressure, sliding (exact and closed form), ‖Δv‖ and asperity pressure at A, nut 1."""
     f = run.fields
     x, y = np.asarray(f.contact.x), np.asarray(f.contact.y)
@@ -208,11 +209,11 @@ def _torques(run: KinematicsRun, path: Path) -> Path:
     return path
 
 
-def _state_rows(run: KinematicsRun) -> list[list[object]]:
+def _state_rows(run: KinematicsRun) -> tuple[tuple[object, ...], ...]:
     rows = []
     for number, st in run.states.items():
         rows.append(
-            [
+            (
                 f"nut {number} (s = {st.flank:+d})",
                 st.nut_force,
                 st.ball_speed,
@@ -223,115 +224,108 @@ def _state_rows(run: KinematicsRun) -> list[list[object]]:
                 st.load_nut,
                 math.degrees(st.angle_screw),
                 math.degrees(st.angle_nut),
-            ]
-        )
-    return rows
-
-
-def write_kinematics(run: KinematicsRun, case: Case, out: str | Path) -> Path:
-    """Write the ``kinematics`` results folder and return its path."""
-    summary = kinematics_summary(run, case)
-    with results_folder(out) as folder:
-        write_summary(folder / "summary.json", summary)
-        write_netcdf(kinematics_fields(run), folder / "fields.nc")
-        figures = []
-        for tag, f in (("low", run.low), ("high", run.high)):
-            rpm = f.state.screw_speed * _RPM
-            figures.append(
-                (
-                    sliding_map(
-                        f,
-                        f"{tag} speed {rpm:.0f} rpm: Q_A = {f.state.load_screw:.2f} N, "
-                        f"β_A = {math.degrees(f.state.angle_screw):.2f}°",
-                        folder / f"sliding_{tag}_speed.png",
-                    ),
-                    f"Sliding velocity of the ball relative to the screw over the pressure at A, "
-                    f"{rpm:.0f} rpm (arrow length ∝ |Δv|, per figure).",
-                )
             )
-        figures.append(
-            (_loads_angles(run, folder / "loads_angles_vs_speed.png"), "Q_A, Q_B, β_A, β_B.")
         )
-        figures.append(
-            (_torques(run, folder / "drag_torque.png"), "Drag torque: ball model and catalogue.")
+    return tuple(rows)
+
+
+def figures(run: KinematicsRun) -> list[Figure]:
+    """Sliding maps at the low and high speed, loads and angles versus speed, drag torques."""
+    out = []
+    for tag, f in (("low", run.low), ("high", run.high)):
+        rpm = f.state.screw_speed * _RPM
+        out.append(
+            Figure(
+                f"sliding_{tag}_speed",
+                f"Sliding velocity of the ball relative to the screw over the pressure at A, "
+                f"{rpm:.0f} rpm (arrow length ∝ |Δv|, per figure).",
+                partial(
+                    sliding_map,
+                    f,
+                    f"{tag} speed {rpm:.0f} rpm: Q_A = {f.state.load_screw:.2f} N, "
+                    f"β_A = {math.degrees(f.state.angle_screw):.2f}°",
+                ),
+            )
         )
-        film = run.fields.sharing.film
-        sections = [
-            Section(
-                "Ball kinematics and loads at the case speed",
-                paragraphs=[
-                    f"Level {run.level} ball balance at ω_s = {run.speed:.4g} rad/s "
-                    f"({run.speed * _RPM:.4g} rpm). Nut-raceway control: no spin and no slip at "
-                    "the nut contact B; pure rolling along t at the centre of A (Level 0/1) or "
-                    "the full quasi-static balance (Level 2). Spins are relative to the raceway, "
-                    "about the contact normals pointing into the ball.",
-                    *[f"Warning: {w}" for w in run.warnings],
-                ],
-                tables=[
-                    (
-                        [
-                            "nut",
-                            "F [N]",
-                            "V [m/s]",
-                            "ω_c [rad/s]",
-                            "spin A [rad/s]",
-                            "spin B [rad/s]",
-                            "Q_A [N]",
-                            "Q_B [N]",
-                            "β_A [°]",
-                            "β_B [°]",
-                        ],
-                        _state_rows(run),
-                    )
-                ],
+    return [
+        *out,
+        Figure("loads_angles_vs_speed", "Q_A, Q_B, β_A, β_B.", partial(_loads_angles, run)),
+        Figure("drag_torque", "Drag torque: ball model and catalogue.", partial(_torques, run)),
+    ]
+
+
+def sections(run: KinematicsRun) -> list[Section]:
+    """The report sections: ball state and loads, lubrication at A, drag torque."""
+    case = run.case
+    film = run.fields.sharing.film
+    return [
+        Section(
+            "Ball kinematics and loads at the case speed",
+            paragraphs=(
+                f"Level {run.level} ball balance at ω_s = {run.speed:.4g} rad/s "
+                f"({run.speed * _RPM:.4g} rpm). Nut-raceway control: no spin and no slip at "
+                "the nut contact B; pure rolling along t at the centre of A (Level 0/1) or "
+                "the full quasi-static balance (Level 2). Spins are relative to the raceway, "
+                "about the contact normals pointing into the ball.",
             ),
-            Section(
-                "Lubrication at A (nut 1)",
-                paragraphs=[
-                    "Hamrock–Dowson film at the film-borne load, Johnson–Greenwood–Poon load "
-                    "sharing with the Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
-                    f"{case.surface.D + 1:g}, G = {case.surface.G:.3g} m, cell "
-                    f"{case.kinematics.micro_contact_size * 1e6:g} µm)."
-                    if run.lubricated
-                    else "No lubricant data: dry contact, asperity share ψ = 1.",
-                ],
-                tables=[
+            tables=(
+                Table(
                     (
-                        ["quantity", "value"],
-                        [
-                            ["h_c [nm]", film.central * 1e9 if film else "—"],
-                            ["h_min [nm]", film.minimum * 1e9 if film else "—"],
-                            ["asperity share ψ", run.fields.sharing.psi],
-                        ],
-                    )
-                ],
+                        "nut",
+                        "F [N]",
+                        "V [m/s]",
+                        "ω_c [rad/s]",
+                        "spin A [rad/s]",
+                        "spin B [rad/s]",
+                        "Q_A [N]",
+                        "Q_B [N]",
+                        "β_A [°]",
+                        "β_B [°]",
+                    ),
+                    _state_rows(run),
+                ),
             ),
-            Section(
-                "Drag torque",
-                paragraphs=[
-                    "Catalogue preload drag torque (E9.1) and the ball model: power dissipated "
-                    "by sliding at A (traction E3.3) and EHL rolling resistance (E3.4) over ω_s, "
-                    "which equals the screw torque of the ball forces (E3.7) when the balance "
-                    "includes the traction (level 2). The external load's reversible torque is "
-                    "excluded. The curves are at F_a = 0 (no-load drag torque).",
-                ],
-                tables=[
+        ),
+        Section(
+            "Lubrication at A (nut 1)",
+            paragraphs=(
+                "Hamrock–Dowson film at the film-borne load, Johnson–Greenwood–Poon load "
+                "sharing with the Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
+                f"{case.surface.D + 1:g}, G = {case.surface.G:.3g} m, cell "
+                f"{case.kinematics.micro_contact_size * 1e6:g} µm)."
+                if run.lubricated
+                else "No lubricant data: dry contact, asperity share ψ = 1.",
+            ),
+            tables=(
+                Table(
+                    ("quantity", "value"),
                     (
-                        ["quantity", "value"],
-                        [
-                            ["catalogue T_p [N m]", run.catalogue_torque],
-                            ["ball model T [N m], operating point", run.model_torque],
-                            ["heat T·ω_s [W]", run.model_torque * run.speed],
-                        ],
-                    )
-                ],
-                figures=figures,
+                        ("h_c [nm]", film.central * 1e9 if film else "—"),
+                        ("h_min [nm]", film.minimum * 1e9 if film else "—"),
+                        ("asperity share ψ", run.fields.sharing.psi),
+                    ),
+                ),
             ),
-        ]
-        write_report(
-            folder / "report.html",
-            f"Ball kinematics, balance, lubrication and drag torque: {case.name}",
-            "ballscrew kinematics",
-            sections,
-        )
-    return Path(out).resolve()
+        ),
+        Section(
+            "Drag torque",
+            paragraphs=(
+                "Catalogue preload drag torque (E9.1) and the ball model: power dissipated "
+                "by sliding at A (traction E3.3) and EHL rolling resistance (E3.4) over ω_s, "
+                "which equals the screw torque of the ball forces (E3.7) when the balance "
+                "includes the traction (level 2). The external load's reversible torque is "
+                "excluded. The curves are at F_a = 0 (no-load drag torque).",
+            ),
+            tables=(
+                Table(
+                    ("quantity", "value"),
+                    (
+                        ("catalogue T_p [N m]", run.catalogue_torque),
+                        ("ball model T [N m], operating point", run.model_torque),
+                        ("heat T·ω_s [W]", run.model_torque * run.speed),
+                    ),
+                ),
+            ),
+            figures=tuple(f.name for f in figures(run)),
+        ),
+    ]

@@ -1,23 +1,27 @@
-"""Results folder of ``ballscrew thermal``: summary.json, fields.nc, plots and report.html."""
+"""What the thermal analysis shows: its summary, fields, figures and report sections."""
 
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+import xarray as xr
 from matplotlib.tri import Triangulation
 
-from ballscrew.analyses.thermal import ThermalField
+from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import plain
-from ballscrew.results.folder import results_folder, write_netcdf
-from ballscrew.results.report import Section, write_report
-from ballscrew.results.summary import value, write_summary
+from ballscrew.thermal.elongation import displacement_profile
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.thermal import ThermalField
 
 CELSIUS = 273.15
 
@@ -26,7 +30,7 @@ def _c(kelvin: float) -> float:
     return kelvin - CELSIUS
 
 
-def thermal_summary(result: ThermalField) -> dict[str, Any]:
+def summary(result: ThermalField) -> dict[str, Any]:
     """The scalars of a thermal analysis, each with its unit."""
     sol = result.solution
     problem = result.problem
@@ -34,7 +38,6 @@ def thermal_summary(result: ThermalField) -> dict[str, Any]:
     t = sol.transient
     sensors = result.sensors
     summary: dict[str, Any] = {
-        "analysis": "thermal",
         "case": result.case_name,
         "model": result.model,
         "unknowns": result.unknowns,
@@ -132,6 +135,129 @@ def thermal_summary(result: ThermalField) -> dict[str, Any]:
             "sensors": {s.name: value(s.final, "K") for s in sensors},
         }
     return summary
+
+
+def fields(result: ThermalField) -> xr.Dataset:
+    """Fields and histories of the thermal analysis with units (temperatures in K)."""
+    sol = result.solution
+    disc = sol.discretisation
+    problem = result.problem
+    amb = result.ambient_temperature
+
+    def kelvin(long_name: str) -> dict[str, str]:
+        return {"units": "K", "long_name": long_name}
+
+    alpha = problem.expansion
+    data: dict[str, Any] = {
+        "axis_temperature": (
+            "axis_z",
+            amb + sol.axis,
+            kelvin("steady cross-section mean temperature of the screw"),
+        ),
+        "axis_displacement": (
+            "axis_z",
+            displacement_profile(disc.axis_z, sol.axis, alpha),
+            {"units": "m", "long_name": "steady axial thermal displacement α∫ΔT̄ dz from z = 0"},
+        ),
+        "sensor_temperature_steady": (
+            "sensor",
+            amb + sol.sensors,
+            kelvin("steady sensor temperature"),
+        ),
+        "sensor_r": ("sensor", [s.r for s in problem.sensors], {"units": "m"}),
+        "sensor_z": ("sensor", [s.z for s in problem.sensors], {"units": "m"}),
+        "sensor_body": ("sensor", [s.body for s in problem.sensors]),
+    }
+    coords: dict[str, Any] = {
+        "axis_z": ("axis_z", disc.axis_z, {"units": "m", "long_name": "axial position"}),
+        "sensor": ("sensor", [s.name for s in problem.sensors]),
+    }
+    t = sol.transient
+    if t is not None:
+        coords["time"] = ("time", t.time, {"units": "s", "long_name": "time"})
+        coords["snapshot_time"] = ("snapshot_time", t.snapshot_times, {"units": "s"})
+        data.update(
+            max_temperature=("time", amb + t.max_rise, kelvin("largest temperature")),
+            elongation=(
+                "time",
+                t.elongation,
+                {"units": "m", "long_name": "thermal elongation α∫ΔT̄ dz of the screw"},
+            ),
+            sensor_temperature=(("time", "sensor"), amb + t.sensors, kelvin("sensor temperature")),
+            axis_temperature_history=(
+                ("time", "axis_z"),
+                amb + t.axis,
+                kelvin("cross-section mean temperature of the screw"),
+            ),
+            nut_offset=(
+                "time",
+                t.offset * disc.grid.dz,
+                {"units": "m", "long_name": "nut stroke offset (resolved stroke)"},
+            ),
+        )
+    if disc.model in ("axisymmetric", "3d"):
+        fe_mesh = disc.extra["mesh"]
+        nodal = disc.extra["basis"].nodal_dofs[0]
+        node_axes = (
+            (("node_r", "radius"), ("node_z", "axial position"))
+            if disc.model == "axisymmetric"
+            else (("node_x", "x"), ("node_y", "y"), ("node_z", "axial position"))
+        )
+        coords["node"] = ("node", np.arange(fe_mesh.mesh.p.shape[1]))
+        for row, (name, long_name) in enumerate(node_axes):
+            data[name] = ("node", fe_mesh.mesh.p[row], {"units": "m", "long_name": long_name})
+        data.update(
+            element_nodes=(("element", "corner"), fe_mesh.mesh.t.T),
+            element_body=(
+                "element",
+                fe_mesh.body,
+                {"long_name": "0 = screw shaft, 1 = nut assembly"},
+            ),
+            temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),
+        )
+        if t is not None:
+            data["temperature"] = (
+                ("snapshot_time", "node"),
+                amb + t.snapshots[:, nodal],
+                kelvin("temperature"),
+            )
+    else:
+        ex = disc.extra
+        coords["ring_z"] = ("ring_z", ex["ring_z"], {"units": "m", "long_name": "nut cell centre"})
+        for key, label in (
+            ("ring_mean", "nut assembly mean"),
+            ("ring_bore", "nut bore"),
+            ("ring_outer", "nut outer surface"),
+        ):
+            data[f"{key}_temperature_steady"] = (
+                "ring_z",
+                amb + sol.steady[ex[key]],
+                kelvin(f"steady {label} temperature"),
+            )
+        data["shaft_surface_temperature_steady"] = (
+            "axis_z",
+            amb + sol.steady[ex["shaft_surface"]],
+            kelvin("steady screw surface temperature"),
+        )
+        if t is not None:
+            data["ring_mean_temperature"] = (
+                ("snapshot_time", "ring_z"),
+                amb + t.snapshots[:, ex["ring_mean"]],
+                kelvin("nut assembly mean temperature"),
+            )
+    return xr.Dataset(
+        data,
+        coords=coords,
+        attrs={
+            "case": result.case_name,
+            "model": result.model,
+            "ambient_temperature_K": amb,
+            "heat_input_W": result.heat_input,
+            "max_temperature_rise_K": result.max_temperature_rise,
+            "elongation_m": result.elongation,
+            "unknowns": result.unknowns,
+        },
+    )
 
 
 def _sensor_markers(ax: plt.Axes, result: ThermalField, z_scale: float = 1e3) -> None:
@@ -254,10 +380,37 @@ def _fmt_s(seconds: float) -> str:
     return "not reached" if not math.isfinite(seconds) else f"{seconds / 60:.1f} min"
 
 
-def _sections(result: ThermalField, summary: dict[str, Any], figures: list) -> list[Section]:
+def figures(result: ThermalField) -> list[Figure]:
+    """Steady temperature map, rise over time (with a transient) and elongation."""
+    out = [
+        Figure(
+            "temperature_map",
+            "Steady temperature with the sensor points circled.",
+            partial(temperature_map, result),
+        ),
+        Figure(
+            "elongation",
+            "Thermal elongation over time and the steady axial temperature profile.",
+            partial(elongation_plot, result),
+        ),
+    ]
+    if result.solution.transient is not None:
+        out.insert(
+            1,
+            Figure(
+                "temperature_rise",
+                "Temperature rise of the maximum and of each sensor.",
+                partial(temperature_rise, result),
+            ),
+        )
+    return out
+
+
+def sections(result: ThermalField) -> list[Section]:
+    """The report sections: model, heat sources, convection, contact, results, heat balance."""
     problem = result.problem
     sol = result.solution
-    parts = summary["geometry"]["parts"]
+    parts = summary(result)["geometry"]["parts"]
     geometry_rows = [
         ["shaft length [mm]", problem.shaft_length * 1e3],
         ["shaft diameter [mm]", 2e3 * problem.shaft_radius],
@@ -327,55 +480,55 @@ def _sections(result: ThermalField, summary: dict[str, Any], figures: list) -> l
     return [
         Section(
             "Model and geometry",
-            paragraphs=[
-                "Screw shaft, nut(s) and spacer (contact-tcr.md §9). The balls of each nut are "
+            paragraphs=(
+                "Screw shaft, nut(s) and spacer. The balls of each nut are "
                 "smeared over its bore as an interface conductance h = 1/(R·A_bore), R being the "
                 "nut's total screw-to-nut resistance: the fractal micro TCR of the chain (A1–A3) "
                 "plus, unless switched off, the macro-constriction of the Hertz patches into ball "
                 "and raceways. The ball-screw friction heat enters both faces of that interface; "
                 "the spacer bore is adiabatic; every outer surface convects to ambient.",
-            ],
-            tables=[(["quantity", "value"], geometry_rows)],
+            ),
+            tables=(_table(("quantity", "value"), geometry_rows),),
         ),
         Section(
             "Heat sources (Q2–Q4)",
-            tables=[
-                (
-                    [
+            tables=(
+                _table(
+                    (
                         "source",
                         "method",
                         "torque [N·m]",
                         "heat [W]",
                         "into screw [W]",
                         "into nut [W]",
-                    ],
+                    ),
                     sources,
-                )
-            ],
+                ),
+            ),
         ),
-        Section("Convection (Q5, Q6)", tables=[(["surface", "h [W/(m² K)]", "from"], conv)]),
+        Section("Convection (Q5, Q6)", tables=(_table(("surface", "h [W/(m² K)]", "from"), conv),)),
         Section(
             "Thermal contact of the balls",
-            tables=[
-                (
-                    [
+            tables=(
+                _table(
+                    (
                         "nut",
                         "micro TCR [K/W]",
                         "constriction [K/W]",
                         "total R [K/W]",
                         "R″ of the chain [m² K/W]",
                         "smeared h [W/(m² K)]",
-                    ],
+                    ),
                     contact,
-                )
-            ],
+                ),
+            ),
         ),
         Section(
             "Results",
-            tables=[
-                (["quantity", "value"], steady),
-                (
-                    [
+            tables=(
+                _table(("quantity", "value"), steady),
+                _table(
+                    (
                         "sensor",
                         "body",
                         "r [mm]",
@@ -383,44 +536,15 @@ def _sections(result: ThermalField, summary: dict[str, Any], figures: list) -> l
                         "steady [°C]",
                         "final [°C]",
                         "time to 95 %",
-                    ],
+                    ),
                     sensor_rows,
                 ),
-            ],
-            figures=figures,
+            ),
+            figures=tuple(f.name for f in figures(result)),
         ),
-        Section("Heat balance", tables=[(["quantity", "value"], balance)]),
+        Section("Heat balance", tables=(_table(("quantity", "value"), balance),)),
     ]
 
 
-def write_thermal(result: ThermalField, out: str | Path) -> Path:
-    """Write the ``thermal`` results folder and return its path."""
-    summary = thermal_summary(result)
-    with results_folder(out) as folder:
-        write_summary(folder / "summary.json", summary)
-        write_netcdf(result.to_xarray(), folder / "fields.nc")
-        figures = [
-            (
-                temperature_map(result, folder / "temperature_map.png"),
-                "Steady temperature with the sensor points circled.",
-            ),
-            (
-                elongation_plot(result, folder / "elongation.png"),
-                "Thermal elongation over time and the steady axial temperature profile.",
-            ),
-        ]
-        if result.solution.transient is not None:
-            figures.insert(
-                1,
-                (
-                    temperature_rise(result, folder / "temperature_rise.png"),
-                    "Temperature rise of the maximum and of each sensor.",
-                ),
-            )
-        write_report(
-            folder / "report.html",
-            f"Temperature field and thermal elongation: {result.case_name}",
-            "ballscrew thermal",
-            _sections(result, summary, figures),
-        )
-    return Path(out).resolve()
+def _table(header: tuple[str, ...], rows: list[list[object]]) -> Table:
+    return Table(header, tuple(tuple(r) for r in rows))

@@ -1,0 +1,229 @@
+"""What the TCR analysis shows: its summary, fields, figures and report sections."""
+
+from __future__ import annotations
+
+from functools import partial
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import xarray as xr
+
+from ballscrew import plotting as plots
+from ballscrew.analyses.parameters import SIDES
+from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.analyses.result import quantity as value
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR, ScrewTCR
+
+_LABEL = {"screw": "ball–screw contact", "nut": "ball–nut contact"}
+
+
+def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarray:
+    """Centres of ``count`` fractal cells of side ``cell`` centred on the solver grid ``coord``."""
+    centre = 0.5 * (coord[0] + coord[-1])
+    return centre + (np.arange(count) - 0.5 * (count - 1)) * cell
+
+
+def _cells_text(result: ScrewTCR) -> str:
+    if result.cell_size is None:
+        return "the solver grid's cells"
+    return f"{1e6 * result.cell_size:g} µm fractal cells"
+
+
+def _contact_summary(r: RacewayTCR) -> dict[str, Any]:
+    return {
+        "resistance": value(r.tcr.resistance, "K/W"),
+        "apparent_area": value(r.tcr.apparent_area, "m^2"),
+        "resistance_per_area": value(r.tcr.unit_area_resistance, "m^2*K/W"),
+        "loaded_cells": r.tcr.loaded_cells,
+        "peak_pressure": value(r.contact.solution.peak_pressure, "Pa"),
+        "approach": value(r.contact.solution.approach, "m"),
+        "solver_iterations": r.contact.solution.iterations,
+    }
+
+
+def _nut_summary(nut: NutTCR) -> dict[str, Any]:
+    return {
+        "force": value(nut.force, "N"),
+        "ball_load": value(nut.ball_load, "N"),
+        "balls": nut.balls,
+        "ball_resistance": value(nut.ball_resistance, "K/W"),
+        "resistance": value(nut.resistance, "K/W"),
+        "apparent_area": value(nut.apparent_area, "m^2"),
+        "axial_deflection": value(nut.axial_deflection, "m"),
+        "axial_stiffness": value(nut.axial_stiffness, "N/m"),
+        "contacts": {side: _contact_summary(getattr(nut, side)) for side in SIDES},
+    }
+
+
+def summary(result: ScrewTCR) -> dict[str, Any]:
+    """Scalars of the whole screw, per nut and per contact, with the options that produced them."""
+    case = result.case
+    return {
+        "case": result.case_name,
+        "resistance": value(result.resistance, "K/W"),
+        "resistance_per_area": value(result.resistance_per_area, "m^2*K/W"),
+        "apparent_area": value(result.apparent_area, "m^2"),
+        "nut_forces": [value(f, "N") for f in result.nut_forces],
+        "nuts": {f"nut{n.index}": _nut_summary(n) for n in result.nuts},
+        "options": {
+            "variant": result.variant,
+            "cell_size": value(result.cell_size, "m") if result.cell_size else "solver grid",
+            "gap_model": case.tcr.gap_model,
+            "gap_factor": case.tcr.gap_factor,
+            "cutoff_area": value(case.tcr.cutoff_area, "m^2"),
+            "load_threshold": case.tcr.load_threshold,
+            "surface": {"D": case.surface.D, "G": value(case.surface.G, "m")},
+            "medium_conductivity": value(case.medium.thermal_conductivity, "W/(m*K)"),
+            "contact_gap_model": case.numerics.gap_model,
+        },
+    }
+
+
+def fields(result: ScrewTCR) -> xr.Dataset:
+    """Pressure (solver grid) and element TCR (fractal cells) of every contact, with units."""
+    variables: dict[str, Any] = {}
+    coords: dict[str, Any] = {}
+    for nut, side, tag in _contacts(result):
+        r: RacewayTCR = getattr(nut, side)
+        c = r.contact
+        px, py = f"{tag}_x", f"{tag}_y"
+        coords[px] = (px, c.x, {"units": "m", "long_name": "rolling direction"})
+        coords[py] = (py, c.y, {"units": "m", "long_name": "across the groove"})
+        variables[f"{tag}_pressure"] = (
+            (px, py),
+            np.asarray(c.solution.pressure),
+            {"units": "Pa", "long_name": f"nut {nut.index}, {_LABEL[side]}: pressure"},
+        )
+        rmap = r.tcr.cell_resistance
+        fx, fy = f"{tag}_fx", f"{tag}_fy"
+        coords[fx] = (
+            fx,
+            fractal_cell_centres(c.x, rmap.shape[0], r.tcr.cell_size[0]),
+            {"units": "m", "long_name": "fractal cell centre, rolling direction"},
+        )
+        coords[fy] = (
+            fy,
+            fractal_cell_centres(c.y, rmap.shape[1], r.tcr.cell_size[1]),
+            {"units": "m", "long_name": "fractal cell centre, across the groove"},
+        )
+        variables[f"{tag}_element_resistance"] = (
+            (fx, fy),
+            np.where(np.isfinite(rmap), rmap, np.nan),
+            {
+                "units": "K/W",
+                "long_name": f"nut {nut.index}, {_LABEL[side]}: element TCR (NaN = unloaded)",
+            },
+        )
+    return xr.Dataset(
+        variables,
+        coords=coords,
+        attrs={
+            "case": result.case_name,
+            "variant": result.variant,
+            "cell_size_m": result.cell_size,
+        },
+    )
+
+
+def _contacts(result: ScrewTCR) -> list[tuple[NutTCR, str, str]]:
+    """(nut, side, tag) of every contact, tag = ``nut<i>_<side>``."""
+    return [(n, side, f"nut{n.index}_{side}") for n in result.nuts for side in SIDES]
+
+
+def figures(result: ScrewTCR) -> list[Figure]:
+    """Pressure map and element-TCR map of every contact."""
+    out = []
+    for nut, side, tag in _contacts(result):
+        r: RacewayTCR = getattr(nut, side)
+        c = r.contact
+        rmap = r.tcr.cell_resistance
+        label = f"nut {nut.index}, {_LABEL[side]}"
+        out += [
+            Figure(
+                f"pressure_{tag}",
+                f"Pressure, {label}, Hertz ellipse dashed.",
+                partial(
+                    plots.pressure_map,
+                    c.x,
+                    c.y,
+                    c.solution.pressure,
+                    (c.hertz.a, c.hertz.b),
+                    f"{label}: Q = {c.load:.1f} N",
+                ),
+            ),
+            Figure(
+                f"tcr_{tag}",
+                f"Element TCR on {_cells_text(result)} ({result.variant}).",
+                partial(
+                    plots.resistance_map,
+                    fractal_cell_centres(c.x, rmap.shape[0], r.tcr.cell_size[0]),
+                    fractal_cell_centres(c.y, rmap.shape[1], r.tcr.cell_size[1]),
+                    rmap,
+                    f"{label}: R_c = {r.tcr.resistance:.3g} K/W",
+                ),
+            ),
+        ]
+    return out
+
+
+def sections(result: ScrewTCR) -> list[Section]:
+    """The report section: the screw's resistance, then each nut's."""
+    case = result.case
+    rows = tuple(
+        (
+            f"nut {n.index}",
+            n.force,
+            n.ball_load,
+            n.screw.tcr.resistance,
+            n.nut.tcr.resistance,
+            n.ball_resistance,
+            n.resistance,
+            n.axial_stiffness * 1e-6,
+        )
+        for n in result.nuts
+    )
+    return [
+        Section(
+            "Thermal contact resistance of the screw",
+            paragraphs=(
+                f"Element model {result.variant} on {_cells_text(result)} "
+                f"(D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
+                f"{case.medium.thermal_conductivity:g} W/mK). Elements in parallel per "
+                "contact, screw and nut contact in series per ball, all loaded balls of "
+                "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "
+                "cell size Δ_f; compare results only at equal Δ_f.",
+            ),
+            tables=(
+                Table(
+                    ("quantity", "value"),
+                    (
+                        ("R, whole screw [K/W]", result.resistance),
+                        ("S, apparent area [mm²]", result.apparent_area * 1e6),
+                        ("R″ = R·S [m²K/W]", result.resistance_per_area),
+                        (
+                            "F1, F2 [N]",
+                            f"{result.nut_forces[0]:.1f}, {result.nut_forces[1]:.1f}",
+                        ),
+                    ),
+                ),
+                Table(
+                    (
+                        "nut",
+                        "force [N]",
+                        "ball load [N]",
+                        "R_sb [K/W]",
+                        "R_bn [K/W]",
+                        "R_sbn [K/W]",
+                        "R nut [K/W]",
+                        "stiffness [N/µm]",
+                    ),
+                    rows,
+                ),
+            ),
+            figures=tuple(
+                f"{kind}_{tag}" for _, _, tag in _contacts(result) for kind in ("pressure", "tcr")
+            ),
+        )
+    ]

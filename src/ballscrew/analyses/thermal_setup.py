@@ -1,0 +1,351 @@
+"""Case → :class:`~ballscrew.thermal.problem.ThermalProblem`: what the thermal model is given.
+
+Geometry of the shaft, nut(s) and spacer, the friction heat of the balls and the bearings
+(Q2–Q4), the convection coefficients (Q5, Q6), the smeared ball contact of each nut from the TCR
+chain (A1–A4) and, for the 3-D model, the helical ball patches (theory manual: *Thermal*).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.case import Case
+from ballscrew.case.thermal_spec import ThermalSpec
+from ballscrew.contact_resistance.constriction import ball_contact_constriction
+from ballscrew.errors import InputError
+from ballscrew.loads import preload_drag_torque
+from ballscrew.thermal.convection import (
+    Air,
+    flat_plate_laminar,
+    horizontal_cylinder_natural,
+    rotating_cylinder,
+)
+from ballscrew.thermal.heat_sources import friction_heat, nut_heat_shares, palmgren_torque
+from ballscrew.thermal.problem import (
+    BandHeat,
+    Convection,
+    RingPart,
+    Sensor,
+    Solid,
+    ThermalProblem,
+)
+
+__all__ = [
+    "ConvectionCoefficient",
+    "HeatSource",
+    "NutInterface",
+    "ball_patches",
+    "build_problem",
+    "thermal_spec",
+]
+
+
+@dataclass(frozen=True)
+class HeatSource:
+    """One friction heat source (Q2–Q4)."""
+
+    name: str
+    method: str
+    """How the torque was obtained."""
+    torque: float
+    """Friction torque [N·m]."""
+    heat: float
+    """Heat generated, M·ω [W]."""
+    into_screw: float
+    """Part entering the screw model [W]."""
+    into_nut: float
+    """Part entering the nut model [W] (bearings: 0, the rest leaves through the housing)."""
+
+
+@dataclass(frozen=True)
+class ConvectionCoefficient:
+    """A heat-transfer coefficient and where it came from (Q5, Q6)."""
+
+    surface: str
+    value: float
+    """h [W/(m² K)]."""
+    correlation: str
+    """Correlation used, or 'override'."""
+
+
+@dataclass(frozen=True)
+class NutInterface:
+    """The smeared ball contact of one nut."""
+
+    name: str
+    micro_resistance: float
+    """Fractal TCR of all its balls, R_sbn/n_b (A2–A3), or R″/A for a given R″ [K/W]."""
+    constriction_resistance: float
+    """Macro-constriction of the Hertz patches into balls and raceways, all balls [K/W]."""
+    resistance_per_area: float
+    """R″ = R·S of the TCR chain (A4) for this nut [m² K/W] (NaN for a given value)."""
+    bore_area: float
+    """Nominal bore area 2πR·L_nut the balls are smeared over [m²]."""
+
+    @property
+    def resistance(self) -> float:
+        """Total screw-to-nut resistance of the nut's balls [K/W]."""
+        return self.micro_resistance + self.constriction_resistance
+
+    @property
+    def conductance_per_area(self) -> float:
+        """Smeared interface conductance h = 1/(R·A_bore) [W/(m² K)] (∞ → 0 if lifted off)."""
+        r = self.resistance
+        return 0.0 if not math.isfinite(r) else 1.0 / (r * self.bore_area)
+
+
+def thermal_spec(case: Case) -> ThermalSpec:
+    """The case's ``[thermal]`` section (one-line error without one)."""
+    if case.thermal is None:
+        raise InputError(
+            "thermal",
+            None,
+            "a [thermal] section in the case file (every key has a default, so an empty "
+            "[thermal] table works)",
+        )
+    return case.thermal
+
+
+_TCR_CACHE: dict[str, ScrewTCR] = {}
+_TCR_KEYS = {"screw", "materials", "surface", "medium", "operating", "numerics", "tcr"}
+
+
+def _cached_tcr(case: Case) -> ScrewTCR:
+    """:func:`screw_tcr` of the case's variant, cached on the inputs it depends on."""
+    key = case.model_dump_json(include=_TCR_KEYS)
+    if key not in _TCR_CACHE:
+        if len(_TCR_CACHE) >= 32:
+            _TCR_CACHE.pop(next(iter(_TCR_CACHE)))
+        _TCR_CACHE[key] = screw_tcr(case)
+    return _TCR_CACHE[key]
+
+
+def build_problem(
+    case: Case, tcr: ScrewTCR | None = None
+) -> tuple[
+    ThermalProblem,
+    tuple[HeatSource, ...],
+    tuple[ConvectionCoefficient, ...],
+    tuple[NutInterface, ...],
+    float,
+]:
+    """Translate ``case`` into the SI :class:`ThermalProblem` and its reported inputs.
+
+    Returns (problem, heat sources, convection coefficients, nut interfaces, feed speed).
+    """
+    spec = thermal_spec(case)
+    screw, op = case.screw, case.operating
+    d_m = screw.pitch_diameter
+    shaft_d = spec.shaft_diameter or d_m
+    nut_d = spec.nut_outer_diameter or 1.75 * d_m
+    nut_len = spec.nut_length or 2.5 * d_m
+    spacer_d = spec.spacer_outer_diameter or nut_d
+    for name, value in (("nut_outer_diameter", nut_d), ("spacer_outer_diameter", spacer_d)):
+        if not value > shaft_d:
+            raise InputError(f"thermal.{name}", value, f"a diameter > the shaft's {shaft_d:g} m")
+    omega = op.speed
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
+    lead = screw.lead
+    feed = spec.stroke.feed_speed
+    feed = abs(omega) * lead / (2 * math.pi) if feed is None else feed
+    length = spec.shaft_length
+
+    # heat of the ball screw, split between the nuts by their forces
+    forces = tuple(n.force for n in params.nuts)
+    dt = spec.drag_torque
+    if dt.source == "kinematics":
+        from ballscrew.analyses.kinematics import computed_drag_torque
+
+        torque, method = float(computed_drag_torque(case)), "kinematics model (ball drag)"
+    elif dt.source == "given":
+        torque, method = float(dt.torque), "given"
+    else:
+        torque = preload_drag_torque(op.preload, lead, geometry.lead_angle)
+        method = "catalogue preload torque K·F_p·L/(2π), K = 0.05/√tan α"
+    drag_heat = friction_heat(torque, omega)
+    s = spec.screw_heat_fraction
+    sources = [
+        HeatSource(
+            f"nut {k + 1} balls",
+            method,
+            torque * fraction,
+            drag_heat * fraction,
+            s * drag_heat * fraction,
+            (1 - s) * drag_heat * fraction,
+        )
+        for k, fraction in enumerate(nut_heat_shares(1.0, forces))
+    ]
+
+    # bearings (Q2, Q3)
+    bands = []
+    for b in spec.bearings:
+        if b.torque is not None:
+            m_be, how = b.torque, "catalogue torque"
+        else:
+            pt = palmgren_torque(
+                omega,
+                b.f0,
+                b.viscosity,
+                b.mean_diameter,
+                b.axial_load,
+                b.static_load_rating,
+                b.radial_load,
+                b.f1,
+            )
+            m_be = pt.total
+            how = f"Palmgren M0 + M1 = {pt.load_independent:.4g} + {pt.load_dependent:.4g} N·m"
+        q = friction_heat(m_be, omega)
+        sources.append(HeatSource(b.name, how, m_be, q, b.shaft_fraction * q, 0.0))
+        bands.append(BandHeat(b.name, b.position, b.width, b.shaft_fraction * q))
+
+    # convection (Q5, Q6)
+    cs = spec.convection
+    dT = cs.temperature_difference
+    air = Air(
+        cs.air_kinematic_viscosity,
+        cs.air_conductivity,
+        cs.air_prandtl,
+        spec.ambient_temperature + 0.5 * dT,
+    )
+    nuts_count = screw.nuts
+    spacer_len = spec.spacer_length if nuts_count == 2 else 0.0
+    ring_length = nuts_count * nut_len + spacer_len
+    coefficients: list[ConvectionCoefficient] = []
+
+    def pick(name: str, override: float | None, options: dict[str, float]) -> float:
+        if override is not None:
+            coefficients.append(ConvectionCoefficient(name, float(override), "override"))
+            return float(override)
+        label, value = max(options.items(), key=lambda kv: kv[1])
+        coefficients.append(ConvectionCoefficient(name, value, label))
+        return value
+
+    h_screw = pick(
+        "screw",
+        cs.screw,
+        {
+            "Kreith rotating cylinder (Q5)": rotating_cylinder(shaft_d, omega, air),
+            f"Churchill–Chu natural, ΔT = {dT:g} K (Q6)": horizontal_cylinder_natural(
+                shaft_d, dT, air
+            ),
+        },
+    )
+    h_screw_ends = pick("screw ends", cs.screw_ends, {"= screw": h_screw})
+    nut_options = {
+        f"Churchill–Chu natural, ΔT = {dT:g} K (Q6)": horizontal_cylinder_natural(nut_d, dT, air)
+    }
+    if spec.stroke.length > 0 and feed > 0:
+        nut_options["laminar flat plate at the feed speed (Q6)"] = flat_plate_laminar(
+            ring_length, feed, air
+        )
+    h_nut = pick("nut", cs.nut, nut_options)
+    h_nut_ends = pick("nut ends", cs.nut_ends, {"= nut": h_nut})
+
+    # the balls: TCR chain (A1–A4) + macro-constriction, or a given R″
+    radius = 0.5 * shaft_d
+    bore_area = 2 * math.pi * radius * nut_len
+    interfaces = []
+    contact = spec.contact
+    if contact.source == "tcr":
+        tcr = tcr if tcr is not None else _cached_tcr(case)
+        by_index = {n.index: n for n in tcr.nuts}
+    mats = case.materials
+    for k in range(nuts_count):
+        name = f"nut {k + 1}"
+        if contact.source == "given":
+            r_pp = float(contact.resistance_per_area)
+            interfaces.append(NutInterface(name, r_pp / bore_area, 0.0, float("nan"), bore_area))
+            continue
+        nut = by_index.get(k + 1)
+        if nut is None:  # lifted off
+            interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area))
+            continue
+        constriction = 0.0
+        if contact.constriction:
+            per_ball = ball_contact_constriction(
+                (nut.screw.contact.hertz.a, nut.screw.contact.hertz.b),
+                mats.ball.thermal_conductivity,
+                mats.screw.thermal_conductivity,
+            ) + ball_contact_constriction(
+                (nut.nut.contact.hertz.a, nut.nut.contact.hertz.b),
+                mats.ball.thermal_conductivity,
+                mats.nut.thermal_conductivity,
+            )
+            constriction = per_ball / nut.balls
+        interfaces.append(
+            NutInterface(
+                name, nut.resistance, constriction, nut.resistance * nut.apparent_area, bore_area
+            )
+        )
+
+    nut_parts = [
+        RingPart(
+            f"nut {k + 1}",
+            nut_len,
+            0.5 * nut_d,
+            True,
+            0.0 if not math.isfinite(i.resistance) else 1.0 / i.resistance,
+            sources[k].into_screw,
+            sources[k].into_nut,
+        )
+        for k, i in enumerate(interfaces)
+    ]
+    parts = nut_parts[:1]
+    if nuts_count == 2:
+        if spacer_len > 0:
+            parts.append(RingPart("spacer", spacer_len, 0.5 * spacer_d, balls=False))
+        parts.append(nut_parts[1])
+    problem = ThermalProblem(
+        shaft_radius=radius,
+        shaft_length=length,
+        shaft=_solid(mats.screw),
+        ring=_solid(mats.nut),
+        parts=tuple(parts),
+        ring_centre=spec.nut_position if spec.nut_position is not None else 0.5 * length,
+        convection=Convection(h_screw, h_screw_ends, h_nut, h_nut_ends),
+        bearings=tuple(bands),
+        stroke=spec.stroke.length,
+        expansion=mats.screw.thermal_expansion,
+        sensors=tuple(Sensor(s.name, s.body, s.r, s.z, s.theta) for s in spec.sensors),
+    )
+    return problem, tuple(sources), tuple(coefficients), tuple(interfaces), feed
+
+
+def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = None) -> tuple:
+    """:class:`~ballscrew.thermal.threed.BallPatches` of each part of ``problem`` (3-D model).
+
+    Loaded balls and Hertz semi-axes of the screw contact from the TCR chain (a, along the
+    rolling direction; b·cos β across the groove projected on the cylinder); with a given R″
+    the balls per nut of the case and mesh-sized patches. Spacers: None.
+    """
+    from ballscrew.thermal.threed import BallPatches
+
+    screw = case.screw
+    beta = ScrewParameters.from_case(case).geometry.contact_angle
+    by_index = {}
+    if thermal_spec(case).contact.source == "tcr":
+        tcr = tcr if tcr is not None else _cached_tcr(case)
+        by_index = {n.index: n for n in tcr.nuts}
+    out: list = []
+    k = 0
+    for part in problem.parts:
+        if not part.balls:
+            out.append(None)
+            continue
+        k += 1
+        nut = by_index.get(k)
+        if nut is None:
+            out.append(BallPatches(screw.balls_per_nut, screw.lead))
+            continue
+        h = nut.screw.contact.hertz
+        out.append(BallPatches(nut.balls, screw.lead, (h.a, h.b * math.cos(beta))))
+    return tuple(out)
+
+
+def _solid(material: Any) -> Solid:
+    return Solid(material.thermal_conductivity, material.density, material.specific_heat)

@@ -1,0 +1,58 @@
+"""Each converted analysis returns an AnalysisResult; the generic writer makes its folder."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from typing import Any
+
+import pytest
+
+import ballscrew
+from ballscrew.analyses.kinematics import run_kinematics
+from ballscrew.analyses.result import AnalysisResult
+from ballscrew.analyses.screw_tcr import screw_tcr
+from ballscrew.analyses.thermal import thermal_field
+from ballscrew.results import write_results
+from quick_cases import QUICK, write_case
+
+#: analysis name → the composer that solves a case
+COMPOSERS: dict[str, Callable[[Any], Any]] = {
+    "tcr": screw_tcr,
+    "thermal": thermal_field,
+    "kinematics": run_kinematics,
+}
+
+
+@pytest.mark.parametrize("name", list(COMPOSERS))
+def test_result_follows_the_protocol_and_writes_its_folder(tmp_path, name):
+    case_file = write_case(tmp_path, "gao2019_tcr.toml", QUICK)
+    result = COMPOSERS[name](ballscrew.load_case(case_file))
+    assert isinstance(result, AnalysisResult)
+    assert result.analysis == name
+    assert isinstance(result.warnings, tuple)
+
+    folder = write_results(result, tmp_path / "out", case_file)
+    summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
+    assert summary["analysis"] == name
+    assert summary["warnings"] == list(result.warnings)
+    assert summary["inputs"] == json.loads((folder / "inputs.json").read_text(encoding="utf-8"))
+    assert (folder / "case.toml").read_text(encoding="utf-8") == case_file.read_text(
+        encoding="utf-8"
+    )
+    report = (folder / "report.html").read_text(encoding="utf-8")
+    assert "<h2>Inputs</h2>" in report and "<table" in report
+    for figure in result.figures():
+        assert (folder / f"{figure.name}.png").is_file()
+
+
+def test_kinematics_speed_limits_are_the_results_warnings(tmp_path):
+    """The speed-limit text the analysis collects is its protocol warnings, still warned once."""
+    from ballscrew.kinematics.limits import SpeedLimitWarning
+
+    case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", QUICK))
+    with pytest.warns(SpeedLimitWarning) as caught:
+        result = run_kinematics(case, speed=942.5)
+    assert len(result.warnings) == 1
+    assert "[kinematics] dn_limit" in result.warnings[0]
+    assert [str(w.message) for w in caught] == list(result.warnings)
