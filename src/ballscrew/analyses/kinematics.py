@@ -279,6 +279,7 @@ def ball_model(case: Case) -> BallModel:
         surface=surface,
         viscosity=params.lubrication.viscosity,
         pressure_viscosity=params.lubrication.pressure_viscosity,
+        film_model=params.lubrication.film_model,
         boundary_friction=spec.boundary_friction,
         limiting_shear=spec.limiting_shear,
         traction_cells=spec.traction_cells,

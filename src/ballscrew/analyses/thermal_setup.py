@@ -9,15 +9,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
+from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.errors import InputError
-from ballscrew.loads import preload_drag_torque
+from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
 from ballscrew.thermal.convection import (
     Air,
     flat_plate_laminar,
@@ -158,15 +160,17 @@ def build_problem(
     # heat of the ball screw, split between the nuts by their forces
     forces = tuple(n.force for n in params.nuts)
     dt = spec.drag_torque
-    if dt.source == "kinematics":
-        from ballscrew.analyses.kinematics import computed_drag_torque
-
-        torque, method = float(computed_drag_torque(case)), "kinematics model (ball drag)"
-    elif dt.source == "given":
-        torque, method = float(dt.torque), "given"
-    else:
-        torque = preload_drag_torque(op.preload, lead, geometry.lead_angle)
-        method = "catalogue preload torque K·F_p·L/(2π), K = 0.05/√tan α"
+    model = DRAG_TORQUE_MODELS.entry(dt.source)
+    torque = model.model(
+        DragTorqueInputs(
+            op.preload,
+            lead,
+            geometry.lead_angle,
+            given=dt.torque,
+            ball_model=partial(computed_drag_torque, case),
+        )
+    )
+    method = f"{model.name}: {model.description}"
     drag_heat = friction_heat(torque, omega)
     s = spec.screw_heat_fraction
     sources = [
