@@ -105,7 +105,7 @@ def test_check_determined():
 
 def test_model_beyond_the_work_limit_is_a_calibration_error(monkeypatch):
     """A trial K the wear model refuses to run (too many steps) ends the fit at once."""
-    from ballscrew import wear
+    from ballscrew.analyses import wear
     from ballscrew.budget import BudgetError
 
     def refuse(case):
