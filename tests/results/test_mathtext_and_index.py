@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+from ballscrew.analyses.surface_report import profile_plot
 from ballscrew.calibration import fit_wear_coefficient, measured_history
 from ballscrew.case import load_case, with_overrides
 from ballscrew.cli import app
@@ -19,7 +20,6 @@ from ballscrew.errors import InputError
 from ballscrew.plotting import plain
 from ballscrew.results import write_results
 from ballscrew.results.index import SkippedFolderWarning, write_index
-from ballscrew.results.surface_report import profile_plot
 from ballscrew.surface.profile import Profile
 from calibration.conftest import MEASURED_AT, SyntheticModel, exact
 
