@@ -12,8 +12,9 @@ from typer.testing import CliRunner
 
 import ballscrew.calibration
 from ballscrew.calibration import fit_wear_coefficient, measured_history
+from ballscrew.case import load_case
 from ballscrew.commands import calibrate as command
-from ballscrew.results.calibration_report import write_calibration
+from ballscrew.results import write_results
 
 from .conftest import MEASURED_AT, SyntheticModel, exact
 
@@ -21,22 +22,35 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "measured" / "step_
 REQUIRED = ("wear_coefficient", "wear_coefficient_standard_error", "torque_scale", "rms_residual")
 
 
-def test_results_folder(tmp_path: Path) -> None:
+def test_results_folder(tmp_path: Path, wear_case_path: Path) -> None:
+    """The result on the protocol: the generic writer makes its folder."""
+    from dataclasses import replace
+
+    from protocol_check import assert_protocol_folder
+
     rng = np.random.default_rng(0)
     clean = exact(2.0e-4, MEASURED_AT).max_wear_depth
     data = measured_history(
         MEASURED_AT, clean + rng.normal(0.0, 3e-8, clean.size), "wear_depth", source="b.csv"
     )
-    result = fit_wear_coefficient(SyntheticModel(), data)
-    folder = write_calibration(result, "demo", tmp_path / "out", {"fit_torque_scale": False})
+    case = load_case(wear_case_path)
+    result = replace(
+        fit_wear_coefficient(SyntheticModel(), data),
+        case=case,
+        options={"fit_torque_scale": False},
+    )
+    folder = write_results(result, tmp_path / "out", wear_case_path)
     assert sorted(p.name for p in folder.iterdir()) == [
         ".ballscrew-results.json",  # the marker naming the files ballscrew wrote
-        "fit.csv",
+        "case.toml",
+        "fit.nc",
         "fit.png",
+        "inputs.json",
         "report.html",
         "summary.json",
     ]
-    summary = json.loads((folder / "summary.json").read_text())
+    summary = assert_protocol_folder(result, folder)
+    assert summary["analysis"] == "calibrate" and summary["options"] == dict(result.options)
     for key in REQUIRED:
         assert set(summary[key]) == {"value", "unit"}
     assert summary["wear_coefficient"]["value"] == pytest.approx(result.wear_coefficient)
@@ -48,9 +62,7 @@ def test_results_folder(tmp_path: Path) -> None:
     assert summary["rms_residual"]["unit"] == "m"
     assert summary["measured"]["points"] == 31
     assert summary["fit"]["model_evaluations"] == result.evaluations
-    table = np.loadtxt(folder / "fit.csv", delimiter=",", skiprows=1)
-    np.testing.assert_allclose(table[:, 3], table[:, 2] - table[:, 1], atol=1e-15)
-    assert "Wear calibration: demo" in (folder / "report.html").read_text()
+    assert f"Wear calibration: {case.name}" in (folder / "report.html").read_text()
 
 
 def test_command_writes_the_folder(
@@ -81,6 +93,11 @@ def test_command_writes_the_folder(
         < 3 * (summary["torque_scale_standard_error"]["value"])
     )
     assert summary["rms_residual"]["unit"] == "N*m"
+    table = np.loadtxt(out / "fit.csv", delimiter=",", skiprows=1)
+    np.testing.assert_allclose(table[:, 3], table[:, 2] - table[:, 1], atol=1e-15)
+    assert {"fit.csv", "fit.nc", "fit.png", "case.toml", "inputs.json"} <= set(
+        json.loads((out / ".ballscrew-results.json").read_text())["files"]
+    )
 
     bad = tmp_path / "bad.csv"
     bad.write_text("revolutions,preload\n0,1500\n0,1400\n")

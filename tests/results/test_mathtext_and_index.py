@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import warnings
+from dataclasses import replace
 from pathlib import Path
 
 import matplotlib.pyplot as plt
@@ -11,16 +12,18 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+from ballscrew.analyses.surface_report import profile_plot
 from ballscrew.calibration import fit_wear_coefficient, measured_history
+from ballscrew.case import load_case, with_overrides
 from ballscrew.cli import app
 from ballscrew.errors import InputError
 from ballscrew.plotting import plain
-from ballscrew.results.calibration_report import write_calibration
+from ballscrew.results import write_results
 from ballscrew.results.index import SkippedFolderWarning, write_index
-from ballscrew.results.surface_report import profile_plot
 from ballscrew.surface.profile import Profile
 from calibration.conftest import MEASURED_AT, SyntheticModel, exact
 
+WEAR_EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "wear_step_stress.toml"
 NASTY = [r"$\bad{$", "a $^$ b", r"$x_$", "5$ and 6$", r"back\slash $\alpha", "<b>&amp;"]
 
 
@@ -39,8 +42,9 @@ def test_plain_text_is_drawn_literally(tmp_path, text):
 def test_calibration_report_with_mathtext_in_case_and_csv_names(tmp_path, name):
     depth = exact(2.0e-4, MEASURED_AT).max_wear_depth
     data = measured_history(MEASURED_AT, depth, "wear_depth", source=f"{name}.csv")
-    result = fit_wear_coefficient(SyntheticModel(), data)
-    folder = write_calibration(result, f"{name} <b>", tmp_path / "out", {})
+    case = with_overrides(load_case(WEAR_EXAMPLE), {"name": f"{name} <b>"})
+    result = replace(fit_wear_coefficient(SyntheticModel(), data), case=case)
+    folder = write_results(result, tmp_path / "out")
     assert (folder / "fit.png").is_file()
     report = (folder / "report.html").read_text()
     assert "&lt;b&gt;" in report

@@ -40,6 +40,24 @@ def test_surface_writes_summary_plots_and_report(tmp_path: Path) -> None:
     assert "Fractal parameters" in (out / "report.html").read_text(encoding="utf-8")
 
 
+def test_surface_result_follows_the_result_protocol(tmp_path: Path) -> None:
+    from ballscrew.analyses.surface import surface_characterisation
+    from ballscrew.results import write_results
+    from protocol_check import assert_protocol_folder
+
+    p = weierstrass_mandelbrot_profile(1.5, 1e-10, 2**11 * 1e-6, 1e-6, seed=5)
+    src = write_sdf(tmp_path / "p.sdf", p)
+    result = surface_characterisation(src, gamma=1.6, resolution=2e-6)
+    folder = write_results(result, tmp_path / "out")
+    summary = assert_protocol_folder(result, folder, case_file=False)
+    assert summary["inputs"]["profile_file"] == str(src)
+    assert summary["inputs"]["spacing"] == {"value": pytest.approx(1e-6), "unit": "m"}
+    assert summary["inputs"]["resolution"] == {"value": 2e-6, "unit": "m"}
+    assert summary["inputs"]["gamma"] == summary["gamma"] == 1.6
+    assert summary["inputs"]["points_per_profile"] == 2**11
+    assert "profile_file" in (folder / "report.html").read_text(encoding="utf-8")
+
+
 def test_one_column_text_file_with_spacing_option(tmp_path: Path) -> None:
     p = weierstrass_mandelbrot_profile(1.5, 1e-10, 2**13 * 1e-6, 1e-6, seed=5)
     zonly = tmp_path / "z.txt"  # heights in m: a bare column carries no unit

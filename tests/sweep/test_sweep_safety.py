@@ -71,3 +71,27 @@ def test_an_unreadable_point_is_computed_again(tmp_path):
     point = tmp_path / "0123.json"
     point.write_text('{"overrides": ')
     assert sweep_runner._needs_run(point, retry_failed=False)
+
+
+def test_sweep_folder_states_its_inputs_and_failed_points(tmp_path, gao_case_path):
+    """The sweep report has the writer's Inputs and Warnings sections; a failed point warns."""
+    from ballscrew.case import load_case
+    from ballscrew.sweep import parse_axis
+
+    case = load_case(gao_case_path)
+    data = _dataset(1.0)
+    data["failed"] = (("F",), np.array([False, True]))
+    data["error"] = (("F",), np.array(["", "InputError: boom"]))
+    out = tmp_path / "sweep"
+    with claim_output(out, command="sweep"):
+        prepare_sweep_folder(out)
+        write_sweep(data, out, 2, case, [parse_axis("operating.axial_load=0,1")])
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["warnings"] == ["point F=1 failed: InputError: boom"]
+    assert summary["inputs"]["analysis"] == "tcr"
+    assert summary["inputs"]["axes"]["F"] == {"values": [0.0, 1.0], "unit": "N"}
+    assert summary["inputs"]["case"]["operating"]["preload"]["unit"] == "N"
+    assert summary["failed"] == 1 and summary["axes"]["F"]["unit"] == "N"  # as before
+    report = (out / "report.html").read_text()
+    assert "<h2>Inputs</h2>" in report and "operating.preload" in report
+    assert "point F=1 failed: InputError: boom" in report

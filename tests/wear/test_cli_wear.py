@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -103,3 +104,28 @@ def test_checkpoint_of_another_case_is_replaced(tmp_path) -> None:
     summary = json.loads((out / "summary.json").read_text())
     assert summary["wear_coefficient"]["value"] == pytest.approx(1.304e-4)
     assert summary["complete"]
+
+
+def test_wear_result_follows_the_result_protocol(tmp_path) -> None:
+    from ballscrew import load_case, wear_life
+    from ballscrew.results import write_results
+    from protocol_check import assert_protocol_folder
+
+    case_path = small_case(tmp_path)
+    life = wear_life(load_case(case_path))
+    summary = assert_protocol_folder(life, write_results(life, tmp_path / "out", case_path))
+    assert summary["inputs"]["wear"]["grid"] == [12, 48]
+    assert life.torque_samples[0][0] == 0.0 and life.level_boundaries[-1] == 1e5
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        life.life.preload = life.preload  # results are immutable
+
+
+@pytest.mark.parametrize("bad", [5, "case.toml", None])
+def test_wear_life_refuses_what_is_not_a_case(bad) -> None:
+    from ballscrew import wear_life
+    from ballscrew.analyses.wear import wear_setup
+    from ballscrew.errors import InputError
+
+    for call in (wear_life, wear_setup):
+        with pytest.raises(InputError, match="case"):
+            call(bad)

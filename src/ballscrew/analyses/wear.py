@@ -9,13 +9,19 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any, ClassVar
 
 import numpy as np
+import xarray as xr
 
+from ballscrew.analyses import wear_report
 from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.result import Figure, Section, recorded_warnings
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import Case
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import cell_centres, hertz
 from ballscrew.errors import InputError
@@ -23,6 +29,7 @@ from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import gap_function, raceway_curvature
 from ballscrew.loads import ball_load, nut_axial_compliance, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
+from ballscrew.validation import case_with
 from ballscrew.wear.life import (
     FLANKS,
     WearLife,
@@ -34,7 +41,46 @@ from ballscrew.wear.life import (
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.strips import working_raceway_length
 
-__all__ = ["fingerprint", "wear_life", "wear_options", "wear_setup"]
+__all__ = ["WearResult", "fingerprint", "wear_life", "wear_options", "wear_setup"]
+
+
+@dataclass(frozen=True)
+class WearResult:
+    """The wear life of a case: its :class:`~ballscrew.wear.WearLife` history (every attribute
+    of which it answers too: ``revolutions``, ``preload``, ``torque_samples``, …) with the case."""
+
+    case: Case
+    life: WearLife
+    warnings: tuple[str, ...] = ()
+    """Warnings raised during the run (one line each)."""
+
+    analysis: ClassVar[str] = "wear"
+
+    def __getattr__(self, name: str) -> Any:
+        life = vars(self).get("life")
+        if life is None or name.startswith("__"):
+            raise AttributeError(name)
+        return getattr(life, name)
+
+    @property
+    def title(self) -> str:
+        return f"Wear life: {self.case.name}"
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case)
+
+    def summary(self) -> dict[str, Any]:
+        return wear_report.summary(self)
+
+    def to_xarray(self) -> dict[str, xr.Dataset]:
+        return {"history": wear_report.history(self)}
+
+    def figures(self) -> list[Figure]:
+        return wear_report.figures(self)
+
+    def report(self) -> list[Section]:
+        return wear_report.sections(self)
 
 
 def wear_options(case: Case) -> WearOptions:
@@ -59,6 +105,7 @@ def wear_options(case: Case) -> WearOptions:
 
 def wear_setup(case: Case) -> WearSetup:
     """Fixed grid, gaps, fractal surface, C_a, L_w and torque factor of a case with ``[wear]``."""
+    case_with(case, "screw", "operating")
     spec = wear_options(case)
     if case.screw.nuts != 2:
         raise InputError("screw.nuts", case.screw.nuts, "2 (the wear life needs a double nut)")
@@ -164,7 +211,7 @@ def wear_life(
     checkpoint: str | Path | None = None,
     resume: bool = False,
     max_steps: int | None = None,
-) -> WearLife:
+) -> WearResult:
     """Wear, preload and drag torque over the load programme of ``case.wear``.
 
     Args:
@@ -176,15 +223,19 @@ def wear_life(
             ``complete = False``; resume it later from the checkpoint).
 
     Returns:
-        :class:`~ballscrew.wear.WearLife`. The step-stress example
+        :class:`WearResult` (the :class:`~ballscrew.wear.WearLife` history with the case). The
+        step-stress example
         (examples/wear_step_stress.toml, K = 1.304e-4) gives h_max = 2.43 µm and F_p = 244 N at
         1.44e6 rev.
     """
-    setup = wear_setup(case)
-    return integrate_wear(
-        setup,
-        fingerprint(case, setup),
-        checkpoint=checkpoint,
-        resume=resume,
-        max_steps=max_steps,
-    )
+    case_with(case, "screw", "operating")
+    with recorded_warnings() as messages:
+        setup = wear_setup(case)
+        life = integrate_wear(
+            setup,
+            fingerprint(case, setup),
+            checkpoint=checkpoint,
+            resume=resume,
+            max_steps=max_steps,
+        )
+    return WearResult(case, life, tuple(messages))

@@ -7,7 +7,7 @@
    ln K, running :func:`ballscrew.wear_life` on the case for each trial K.
    :func:`fit_wear_coefficient` is the same fit with any model callable ``K -> history``.
 3. ``result.wear_coefficient``, ``result.standard_error``, ``result.torque_scale`` and
-   ``result.rms_residual`` are the fit; ``ballscrew.results.calibration_report`` writes it.
+   ``result.rms_residual`` are the fit; ``ballscrew.results.write_results`` writes its folder.
 
 K is confounded with the stroke and the revolution count of the case (kinematics-wear.md §7.4):
 report it together with them.

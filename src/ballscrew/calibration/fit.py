@@ -44,16 +44,20 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Callable
-from dataclasses import dataclass
-from typing import Any, Protocol
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, replace
+from typing import Any, ClassVar, Protocol
 
 import numpy as np
+import xarray as xr
 from numpy.typing import NDArray
 from scipy.optimize import least_squares
 
+from ballscrew.analyses.result import Figure, Section, recorded_warnings
 from ballscrew.budget import BudgetError
+from ballscrew.calibration import report as calibration_report
 from ballscrew.calibration.measured import MeasuredHistory, check_values
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import BallscrewError, ConvergenceError, InputError
 
 __all__ = [
@@ -115,6 +119,9 @@ class CalibrationResult:
         model_values: the fitted model's history of the quantity (SI).
         scan: (K, RMS residual) of the coarse scan, in the order evaluated.
         message: the least-squares solver's termination message.
+        case: the calibrated case (None for :func:`fit_wear_coefficient` on its own).
+        options: the options of the run, as ``summary.json`` states them.
+        warnings: warnings of the model run nearest the fitted K (one line each).
     """
 
     quantity: str
@@ -137,6 +144,38 @@ class CalibrationResult:
     model_values: NDArray[np.float64]
     scan: tuple[tuple[float, float], ...]
     message: str
+    case: Any = None
+    options: Mapping[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+
+    analysis: ClassVar[str] = "calibrate"
+
+    @property
+    def title(self) -> str:
+        return f"Wear calibration: {self.case_name}"
+
+    @property
+    def case_name(self) -> str:
+        """Name of the calibrated case (the measured file's when there is no case)."""
+        return self.case.name if self.case is not None else self.source
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case) if self.case is not None else {}
+
+    def summary(self) -> dict[str, Any]:
+        return calibration_report.summary(self)
+
+    def to_xarray(self) -> dict[str, xr.Dataset]:
+        from ballscrew.calibration import report
+
+        return {"fit": report.fit_dataset(self)}
+
+    def figures(self) -> list[Figure]:
+        return calibration_report.figures(self)
+
+    def report(self) -> list[Section]:
+        return calibration_report.sections(self)
 
     @property
     def relative_error(self) -> float:
@@ -536,11 +575,12 @@ def calibrate(
         **options,
     )  # Warnings of the model at trial K values far from the fit are noise; re-issue only those
     # of the run nearest the fitted K.
-    if warned:
-        nearest = min(warned, key=lambda k: abs(math.log(k / result.wear_coefficient)))
-        for w in warned[nearest]:
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    return result
+    with recorded_warnings() as messages:
+        if warned:
+            nearest = min(warned, key=lambda k: abs(math.log(k / result.wear_coefficient)))
+            for w in warned[nearest]:
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return replace(result, case=case, warnings=tuple(messages))
 
 
 def _initial_torque_scale(case: Any, initial_torque: float) -> float:

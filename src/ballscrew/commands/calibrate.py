@@ -37,11 +37,15 @@ def calibrate(
     force: ForceOpt = False,
 ) -> None:
     """Fit the wear coefficient (and the torque scale) to a measured history."""
+    from dataclasses import replace
+
     from ballscrew.calibration import calibrate as fit
     from ballscrew.calibration import read_measured
+    from ballscrew.calibration.report import fit_table
     from ballscrew.case import load_case
-    from ballscrew.results import claim_output, value
-    from ballscrew.results.calibration_report import write_calibration
+    from ballscrew.files import atomic_file
+    from ballscrew.results import claim_output, value, write_results
+    from ballscrew.results.folder import write_marker
 
     case = load_case(case_file)
     data = read_measured(measured, min_points=3 if fit_torque_scale else 2)
@@ -63,9 +67,13 @@ def calibrate(
             "measured_file": str(measured),
             "fit_torque_scale": fit_torque_scale,
         }
-        if case.wear is not None:  # K is confounded with these (kinematics-wear.md §7.4)
+        if case.wear is not None:  # K is confounded with these
             options["wear_model"] = case.wear.model
             options["stroke"] = value(case.wear.stroke, "m")
             options["programme_revolutions"] = sum(lv.revolutions for lv in case.wear.programme)
-        folder = write_calibration(result, case.name, out, options)
+        result = replace(result, case=case, options=options)
+        folder = write_results(result, out, case_file)
+        with atomic_file(folder / "fit.csv") as tmp:  # the fit table for spreadsheets
+            tmp.write_text(fit_table(result), encoding="utf-8")
+        write_marker(folder, "calibrate")
         log.info("wrote %s", folder / "report.html")

@@ -47,17 +47,18 @@ def surface(
     force: ForceOpt = False,
 ) -> None:
     """Fractal dimension D and roughness G by power spectrum and structure function."""
-    from ballscrew.results import claim_output
-    from ballscrew.results.surface_report import write_surface
-    from ballscrew.surface import fractal_parameters, read_profile
+    from ballscrew.analyses.surface import surface_characterisation
+    from ballscrew.results import claim_output, write_results
 
     with claim_output(out, command="surface", force=force, inputs=[profile_file]):
-        profile = read_profile(profile_file, spacing=spacing)
-        fit = fractal_parameters(
-            profile, gamma=gamma, resolution=_length(resolution, "--resolution")
+        result = surface_characterisation(
+            profile_file,
+            spacing=spacing,
+            resolution=_length(resolution, "--resolution"),
+            gamma=gamma,
         )
-        for f in (fit.psd, fit.structure_function):
+        for f in (result.fit.psd, result.fit.structure_function):
             if f is not None:
                 log.info("%s: D = %.4f, G = %.4g m (R² = %.4f)", f.method, f.D, f.G, f.r_squared)
-        folder = write_surface(fit, profile, out)
+        folder = write_results(result, out)
     log.info("wrote %s", folder / "report.html")

@@ -60,5 +60,5 @@ def sweep(
         dataset, computed = run_sweep(
             case, axes, function, name, folder, scheduler, workers, progress, retry_failed
         )
-        write_sweep(dataset, folder, computed)
+        write_sweep(dataset, folder, computed, case, axes)
     log.info("wrote %s", folder / "report.html")

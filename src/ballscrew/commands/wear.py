@@ -33,9 +33,9 @@ def wear(
     from ballscrew.analyses.wear import wear_life
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
-    from ballscrew.results import claim_output
-    from ballscrew.results.folder import writing
-    from ballscrew.results.wear_report import write_wear
+    from ballscrew.files import atomic_file
+    from ballscrew.results import claim_output, write_results
+    from ballscrew.results.folder import write_marker, writing
 
     case = load_case(case_file)
     with claim_output(out, command="wear", force=force, inputs=[case_file]) as path, writing(path):
@@ -57,6 +57,10 @@ def wear(
             life.friction_torque[-1],
             life.revolutions[-1],
         )
-        folder = write_wear(life, case, out, state_file=state)
+        folder = write_results(life, out, case_file)
+        if state.is_file():  # the final state, for a later run to continue from
+            with atomic_file(folder / "state.npz") as tmp:
+                tmp.write_bytes(state.read_bytes())
+            write_marker(folder, "wear")
         state.unlink(missing_ok=True)
         log.info("wrote %s", folder / "report.html")

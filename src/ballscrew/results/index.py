@@ -9,56 +9,30 @@ import warnings
 from pathlib import Path
 from typing import Any
 
+from ballscrew.analyses.catalog import ANALYSES
+from ballscrew.analyses.result import Analysis
 from ballscrew.errors import InputError
+from ballscrew.files import atomic_file
 from ballscrew.results.folder import SUMMARY_NAME
 from ballscrew.results.report import Section, write_report
 
 HEADLINES = 6
-"""Scalars shown per results folder when its analysis has no entry in :data:`KEY_QUANTITIES`."""
+"""Scalars shown per results folder when its analysis names no headlines."""
 
-KEY_QUANTITIES: dict[str, tuple[str, ...]] = {
-    "contact": (
-        "ball_load",
-        "contacts.screw.numerical.peak_pressure",
-        "contacts.screw.relative_difference_to_hertz.peak_pressure",
-    ),
-    "tcr": ("resistance", "resistance_per_area", "apparent_area"),
-    "thermal": ("steady.max_temperature_rise", "steady.elongation", "heat_balance.heat_input"),
-    "kinematics": (
-        "nuts.nut1.orbital_speed",
-        "nuts.nut1.spin_screw",
-        "nuts.nut1.asperity_share",
-        "nuts.nut1.film_thickness_central",
-        "drag_torque.ball_model",
-        "drag_torque.catalogue",
-    ),
-    "wear": (
-        "revolutions",
-        "max_wear_depth",
-        "final_preload",
-        "final_torque",
-        "ellipse_major_axis",
-    ),
-    "surface": ("recommended.D", "recommended.G"),
-    "calibration": (
-        "wear_coefficient",
-        "wear_coefficient_standard_error",
-        "torque_scale",
-        "rms_residual",
-    ),
-}
-"""Dotted summary.json paths of the numbers an index shows per analysis."""
+SWEEP = Analysis(
+    "sweep",
+    "an analysis over a grid of case values",
+    headlines=("points", "computed_now", "failed"),
+    key_figure="sweep_resistance_per_area.png",
+)
+"""What the index shows of a sweep folder (its figures are ``sweep_<scalar>.png``)."""
 
-KEY_FIGURES: dict[str, str] = {
-    "contact": "pressure_screw.png",
-    "tcr": "tcr_nut1_screw.png",
-    "thermal": "temperature_map.png",
-    "kinematics": "sliding_high_speed.png",
-    "wear": "torque_preload.png",
-    "surface": "psd.png",
-    "sweep": "sweep_resistance_per_area.png",
-}
-"""The figure an index shows per analysis (else the folder's first PNG)."""
+
+def _descriptor(kind: str) -> Analysis | None:
+    """The descriptor of the analysis ``kind`` of a results folder (None if unknown)."""
+    if kind == SWEEP.name:
+        return SWEEP
+    return ANALYSES[kind] if kind in ANALYSES.names else None
 
 
 def _format(name: str, entry: Any) -> str | None:
@@ -84,11 +58,10 @@ def _lookup(summary: dict[str, Any], dotted: str) -> Any:
 
 
 def _headlines(summary: dict[str, Any], analysis: str) -> list[str]:
-    """'name = value unit' for the analysis' key quantities (or its first top-level scalars)."""
-    if analysis in KEY_QUANTITIES:
-        pairs = [
-            (".".join(p.split(".")[-2:]), _lookup(summary, p)) for p in KEY_QUANTITIES[analysis]
-        ]
+    """'name = value unit' for the analysis' headlines (or its first top-level scalars)."""
+    descriptor = _descriptor(analysis)
+    if descriptor is not None and descriptor.headlines:
+        pairs = [(".".join(p.split(".")[-2:]), _lookup(summary, p)) for p in descriptor.headlines]
     else:
         pairs = list(summary.items())
     lines = [line for name, entry in pairs if (line := _format(name, entry))]
@@ -150,7 +123,8 @@ def _describe(summary: dict[str, Any]) -> tuple[str, str, str]:
 
 def _figure_of(folder: Path, kind: str) -> list[Path]:
     """The folder's key figure (else its first PNG) if it is a readable file; else none."""
-    key = folder / KEY_FIGURES.get(kind, "")
+    descriptor = _descriptor(kind)
+    key = folder / ((descriptor and descriptor.key_figure) or "")
     try:
         figures = [key] if key.is_file() else sorted(folder.glob("*.png"))[:1]
         return [f for f in figures if f.is_file() and os.access(f, os.R_OK)]
@@ -188,8 +162,9 @@ def write_index(root: str | Path, title: str = "ballscrew results") -> Path:
     overview = Section("Results", tables=[(["folder", "analysis", "case", "headline"], rows)])
     path = root / "index.html"
     try:
-        write_report(path, title, f"{len(rows)} results folders", [overview, *sections])
-        _link_reports(path, linked)
+        with atomic_file(path) as tmp:  # a reader never sees a half-written index
+            write_report(tmp, title, f"{len(rows)} results folders", [overview, *sections])
+            _link_reports(tmp, linked)
     except OSError as exc:
         raise InputError("folder", str(root), f"a writable folder ({exc.strerror})") from None
     return path

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import base64
 import html
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
+from typing import Any
 
 from ballscrew import __version__
+from ballscrew.case.inputs import input_rows
 
 _STYLE = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2rem auto;
@@ -33,6 +35,19 @@ class Section:
     paragraphs: list[str] = field(default_factory=list)
     tables: list[tuple[Sequence[str], Sequence[Sequence[object]]]] = field(default_factory=list)
     figures: list[tuple[Path, str]] = field(default_factory=list)
+
+
+def inputs_warnings_sections(inputs: Mapping[str, Any], warnings: Sequence[str]) -> list[Section]:
+    """The first two sections of every report: the inputs as they ran, then the warnings."""
+    rows = [[key, value, unit] for key, value, unit in input_rows(dict(inputs))]
+    return [
+        Section(
+            "Inputs",
+            paragraphs=["The case as it ran: every value, defaults included (SI units)."],
+            tables=[(["input", "value", "unit"], rows)],
+        ),
+        Section("Warnings", paragraphs=list(warnings) or ["None."]),
+    ]
 
 
 def _cell(item: object) -> str:

@@ -1,8 +1,15 @@
-"""Results folder of ``ballscrew sweep``: sweep.nc, line/map plots and report.html."""
+"""Results folder of ``ballscrew sweep``: sweep.nc, line/map plots and report.html.
+
+A sweep folder is written in place (it holds the point cache ``points/``), not by the generic
+writer, but its summary and report state the same inputs and warnings sections: the base case
+resolved with units, the axes and the analysis; one warning per failed point.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import matplotlib
 
@@ -11,6 +18,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
+from ballscrew.case import Case
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.results.folder import (
     SUMMARY_NAME,
     SWEEP_PATTERNS,
@@ -19,8 +28,9 @@ from ballscrew.results.folder import (
     write_netcdf,
     writing,
 )
-from ballscrew.results.report import Section, write_report
+from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
+from ballscrew.sweep.axes import SweepAxis
 
 
 def _label(da: xr.DataArray, name: str) -> str:
@@ -52,20 +62,47 @@ def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
     return path
 
 
-def write_sweep(ds: xr.Dataset, folder: Path, computed: int) -> Path:
+def sweep_inputs(
+    ds: xr.Dataset, case: Case | None = None, axes: Sequence[SweepAxis] = ()
+) -> dict[str, Any]:
+    """The inputs of a sweep: its analysis, its axes (values with units) and the base case."""
+    described = {a.key: a.description for a in axes}
+    dims = list(ds["failed"].dims)
+    return {
+        "analysis": ds.attrs["analysis"],
+        "axes": {
+            d: {
+                "values": [float(v) for v in ds[d].values],
+                "unit": ds[d].attrs.get("units", ""),
+                **({"description": described[d]} if d in described else {}),
+            }
+            for d in dims
+        },
+        "case": resolved_inputs(case) if case is not None else {"name": ds.attrs["case"]},
+    }
+
+
+def write_sweep(
+    ds: xr.Dataset,
+    folder: Path,
+    computed: int,
+    case: Case | None = None,
+    axes: Sequence[SweepAxis] = (),
+) -> Path:
     """Write sweep.nc, one plot per result, summary.json and report.html into ``folder``.
 
-    ``folder`` also holds the per-point store (``points/``), so it is written in place, each
-    file through a temporary file; a failed write raises :class:`ResultsWriteError`.
+    ``case`` is the base case and ``axes`` the swept keys (their inputs in the summary and the
+    report). ``folder`` also holds the per-point store (``points/``), so it is written in
+    place, each file through a temporary file; a failed write raises :class:`ResultsWriteError`.
     """
     folder = Path(folder)
     with writing(folder):
-        _write_files(ds, folder, computed)
+        _write_files(ds, folder, computed, sweep_inputs(ds, case, axes))
         write_marker(folder, "sweep", SWEEP_PATTERNS)
     return folder
 
 
-def _write_files(ds: xr.Dataset, folder: Path, computed: int) -> None:
+def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any]) -> None:
     write_netcdf(ds, folder / "sweep.nc")
     names = [n for n in ds.data_vars if n not in ("error", "failed")]
     figures = [
@@ -80,6 +117,7 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int) -> None:
         ]
         for idx in failed
     ]
+    warnings = [f"point {point} failed: {error}" for point, error in failures]
     summary = {
         "analysis": ds.attrs["analysis"],
         "case": ds.attrs["case"],
@@ -88,10 +126,13 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int) -> None:
         "failed": len(failures),
         "axes": {d: {"values": ds[d].values, "unit": ds[d].attrs.get("units", "")} for d in dims},
         "failures": failures,
+        "warnings": warnings,
+        "inputs": inputs,
     }
     with atomic_file(folder / SUMMARY_NAME) as tmp:
         write_summary(tmp, summary)
     sections = [
+        *inputs_warnings_sections(inputs, warnings),
         Section(
             "Sweep",
             paragraphs=[
@@ -100,7 +141,7 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int) -> None:
             ],
             tables=[(["point", "error"], failures)] if failures else [],
             figures=figures,
-        )
+        ),
     ]
     with atomic_file(folder / "report.html") as tmp:
         write_report(

@@ -20,14 +20,12 @@ import json
 import shutil
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
 
 import xarray as xr
 
 from ballscrew.analyses.result import AnalysisResult
-from ballscrew.case.inputs import input_rows
 from ballscrew.results.folder import results_folder, write_netcdf
-from ballscrew.results.report import Section, write_report
+from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
 
 __all__ = ["write_results"]
@@ -36,21 +34,6 @@ __all__ = ["write_results"]
 def _datasets(result: AnalysisResult) -> Mapping[str, xr.Dataset]:
     data = result.to_xarray()
     return {"fields": data} if isinstance(data, xr.Dataset) else data
-
-
-def _inputs_section(inputs: Mapping[str, Any]) -> Section:
-    rows = [[key, value, unit] for key, value, unit in input_rows(dict(inputs))]
-    return Section(
-        "Inputs",
-        paragraphs=["The case as it ran: every value, defaults included (SI units)."],
-        tables=[(["input", "value", "unit"], rows)],
-    )
-
-
-def _warnings_section(warnings: tuple[str, ...]) -> Section:
-    if not warnings:
-        return Section("Warnings", paragraphs=["None."])
-    return Section("Warnings", paragraphs=list(warnings))
 
 
 def write_results(
@@ -76,7 +59,7 @@ def write_results(
         for stem, dataset in _datasets(result).items():
             write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
-        sections = [_inputs_section(result.inputs), _warnings_section(tuple(result.warnings))]
+        sections = inputs_warnings_sections(result.inputs, result.warnings)
         for s in result.report():
             sections.append(
                 Section(

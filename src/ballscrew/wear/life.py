@@ -248,7 +248,7 @@ def flank_rate(
 # ------------------------------------------------------------------------------ result
 
 
-@dataclass
+@dataclass(frozen=True)
 class WearLife:
     """History of a wear run; arrays have one entry per recorded step (index 0: N = 0)."""
 
@@ -469,7 +469,20 @@ def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> Wea
     spec = setup.spec
     loads = np.array([lv.axial_load for lv in spec.programme])
     boundaries = np.cumsum([lv.revolutions for lv in spec.programme])
-    life = WearLife(
+    extras: dict[str, Any] = {}
+    solves = state.solves
+    if complete:
+        last = spec.programme[-1]
+        f1 = nut_force_pair(float(r["preload"][-1]), last.axial_load)[0]
+        if f1 > 0.0:
+            worn = flank_rate(setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"))
+            unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y))
+            solves += 2
+            extras["ellipse_major_axis"] = _extent(worn.pressure, setup.dy)
+            extras["ellipse_major_axis_unworn"] = _extent(unworn.pressure, setup.dy)
+            extras["final_pressure"] = worn.pressure
+        extras["worn_band_width"] = _band(state.depth[0], setup.dy)
+    return WearLife(
         revolutions=np.asarray(r["revolutions"], dtype=float),
         max_wear_depth=np.asarray(r["max_depth"], dtype=float),
         preload=np.asarray(r["preload"], dtype=float),
@@ -481,7 +494,7 @@ def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> Wea
         profiles=np.asarray(r["profiles"], dtype=float),
         level_boundaries=boundaries.astype(float),
         level_loads=loads,
-        contact_solves=state.solves,
+        contact_solves=solves,
         steps=state.steps,
         wall_time=wall,
         complete=complete,
@@ -492,19 +505,8 @@ def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> Wea
         cell_area=setup.cell_area,
         initial_psi=dict(state.initial_psi),
         x=setup.x.copy(),
+        **extras,
     )
-    if complete:
-        last = spec.programme[-1]
-        f1 = nut_force_pair(float(life.preload[-1]), last.axial_load)[0]
-        if f1 > 0.0:
-            worn = flank_rate(setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"))
-            unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y))
-            life.contact_solves += 2
-            life.ellipse_major_axis = _extent(worn.pressure, setup.dy)
-            life.ellipse_major_axis_unworn = _extent(unworn.pressure, setup.dy)
-            life.final_pressure = worn.pressure
-        life.worn_band_width = _band(state.depth[0], setup.dy)
-    return life
 
 
 def _extent(pressure: FloatArray, dy: float) -> float:

@@ -1,20 +1,25 @@
-"""Results folder of ``ballscrew calibrate``: summary.json, fit.csv, a plot and report.html."""
+"""What the calibration shows: its summary, fit table, figure and report section."""
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import xarray as xr
 
-from ballscrew.calibration.fit import CalibrationResult
+from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import plain
-from ballscrew.results.folder import results_folder
-from ballscrew.results.report import Section, write_report
-from ballscrew.results.summary import value, write_summary
+
+if TYPE_CHECKING:
+    from ballscrew.calibration.fit import CalibrationResult
+
+__all__ = ["figures", "fit_dataset", "fit_table", "sections", "summary"]
 
 #: Label and display unit (name, factor from SI) of each measured quantity.
 _DISPLAY: dict[str, tuple[str, str, float]] = {
@@ -24,13 +29,10 @@ _DISPLAY: dict[str, tuple[str, str, float]] = {
 }
 
 
-def calibration_summary(
-    result: CalibrationResult, case_name: str, options: dict[str, Any] | None = None
-) -> dict[str, Any]:
-    """The fit as a JSON-ready dict (keys required by issue #6 first, then diagnostics)."""
+def summary(result: CalibrationResult) -> dict[str, Any]:
+    """The fit as a JSON-ready dict (the fitted values first, then diagnostics)."""
     return {
-        "analysis": "calibrate",
-        "case": case_name,
+        "case": result.case_name,
         "wear_coefficient": value(result.wear_coefficient, ""),
         "wear_coefficient_standard_error": value(result.standard_error, ""),
         "torque_scale": value(result.torque_scale, ""),
@@ -61,7 +63,7 @@ def calibration_summary(
             ],
             "message": result.message,
         },
-        "options": options or {},
+        "options": dict(result.options),
         "note": "K is confounded with the stroke and the revolution count of the case "
         "(kinematics-wear.md §7.4); quote it with them. Standard errors assume the model is "
         "right and the noise independent with equal variance.",
@@ -121,57 +123,68 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     return path
 
 
-def write_calibration(
-    result: CalibrationResult,
-    case_name: str,
-    out: str | Path,
-    options: dict[str, Any] | None = None,
-) -> Path:
-    """Write the ``calibrate`` results folder (summary.json, fit.csv, fit.png, report.html)."""
-    label, unit, factor = _DISPLAY[result.quantity]
-    with results_folder(out) as folder:
-        write_summary(folder / "summary.json", calibration_summary(result, case_name, options))
-        (folder / "fit.csv").write_text(fit_table(result), encoding="utf-8")
-        figure = fit_plot(result, f"{case_name}: {label} against revolutions", folder / "fit.png")
-        rows: list[list[object]] = [
-            ["wear coefficient K", result.wear_coefficient],
-            ["standard error of K", result.standard_error],
-            ["relative standard error of K", result.relative_error],
-            [
-                "torque scale" + (" (fitted)" if result.torque_scale_error is not None else ""),
-                result.torque_scale,
-            ],
-        ]
-        if result.torque_scale_error is not None:
-            rows.append(["standard error of the torque scale", result.torque_scale_error])
-            rows.append(["correlation (ln K, torque scale)", result.correlation])
-        rows += [
-            [f"RMS residual [{unit}]", result.rms_residual * factor],
-            ["measured points", result.n_points],
-            ["model evaluations", result.evaluations],
-        ]
-        sections = [
-            Section(
-                "Calibration of the wear coefficient",
-                paragraphs=[
-                    f"The wear model of case {case_name!r} was fitted to the measured {label} "
-                    f"of {result.source} ({result.n_points} points) by nonlinear least squares on "
-                    "ln K (scipy least_squares, trust-region reflective, after a coarse scan "
-                    "one decade apart), the model history interpolated linearly onto the "
-                    "measured revolutions. Standard errors from the Jacobian at the solution: "
-                    "cov = RSS/(n − p)·(JᵀJ)⁻¹, K's by the delta method from ln K.",
-                    "K is confounded with the stroke and the revolution count of the case "
-                    "(kinematics-wear.md §7.4): quote it together with them. The standard "
-                    "errors cover measurement noise only, not the model's own uncertainty.",
-                ],
-                tables=[(["quantity", "value"], rows)],
-                figures=[(figure, f"Measured {label} and the fitted model; residuals below.")],
-            )
-        ]
-        write_report(
-            folder / "report.html",
-            f"Wear calibration: {case_name}",
-            "ballscrew calibrate",
-            sections,
+def fit_dataset(result: CalibrationResult) -> xr.Dataset:
+    """Measured, model and residual at the measured revolutions (SI units)."""
+    unit = result.unit or "1"
+    return xr.Dataset(
+        {
+            "measured": ("point", result.measured, {"units": unit}),
+            "model": ("point", result.fitted, {"units": unit}),
+            "residual": ("point", result.residuals, {"units": unit}),
+        },
+        coords={"revolutions": ("point", result.revolutions, {"units": "1"})},
+        attrs={"quantity": result.quantity, "source": result.source},
+    )
+
+
+def figures(result: CalibrationResult) -> list[Figure]:
+    """The measured history with the fitted model."""
+    label = _DISPLAY[result.quantity][0]
+    title = f"{result.case_name}: {label} against revolutions"
+    return [
+        Figure(
+            "fit",
+            f"Measured {label} and the fitted model; residuals below.",
+            partial(fit_plot, result, title),
         )
-    return Path(out).resolve()
+    ]
+
+
+def sections(result: CalibrationResult) -> list[Section]:
+    """The fitted values, their uncertainty and the method."""
+    label, unit, factor = _DISPLAY[result.quantity]
+    rows: list[tuple[object, ...]] = [
+        ("wear coefficient K", result.wear_coefficient),
+        ("standard error of K", result.standard_error),
+        ("relative standard error of K", result.relative_error),
+        (
+            "torque scale" + (" (fitted)" if result.torque_scale_error is not None else ""),
+            result.torque_scale,
+        ),
+    ]
+    if result.torque_scale_error is not None:
+        rows.append(("standard error of the torque scale", result.torque_scale_error))
+        rows.append(("correlation (ln K, torque scale)", result.correlation))
+    rows += [
+        (f"RMS residual [{unit}]", result.rms_residual * factor),
+        ("measured points", result.n_points),
+        ("model evaluations", result.evaluations),
+    ]
+    return [
+        Section(
+            "Calibration of the wear coefficient",
+            paragraphs=(
+                f"The wear model of case {result.case_name!r} was fitted to the measured {label} "
+                f"of {result.source} ({result.n_points} points) by nonlinear least squares on "
+                "ln K (scipy least_squares, trust-region reflective, after a coarse scan "
+                "one decade apart), the model history interpolated linearly onto the "
+                "measured revolutions. Standard errors from the Jacobian at the solution: "
+                "cov = RSS/(n − p)·(JᵀJ)⁻¹, K's by the delta method from ln K.",
+                "K is confounded with the stroke and the revolution count of the case: quote "
+                "it together with them. The standard errors cover measurement noise only, not "
+                "the model's own uncertainty.",
+            ),
+            tables=(Table(("quantity", "value"), tuple(rows)),),
+            figures=("fit",),
+        )
+    ]

@@ -1,14 +1,15 @@
-"""Results folder of ``ballscrew wear``: summary.json, history.nc, figures and report.html.
+"""What the wear analysis shows: its summary, history, figures and report sections.
 
 Figures after the paper's: drag torque and preload versus revolutions with the level boundaries
 (its Figures 11–12) and the wear profile across the groove at the end of each level (its
-Figure 8). Physics reference: ``kinematics-wear.md`` §8–§10.
+Figure 8).
 """
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
@@ -17,13 +18,15 @@ import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
+from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.analyses.result import quantity as value
 from ballscrew.case import Case
-from ballscrew.results.folder import results_folder, write_netcdf
-from ballscrew.results.report import Section, write_report
-from ballscrew.results.summary import value, write_summary
 from ballscrew.wear.life import WearLife
 
-__all__ = ["wear_history", "wear_summary", "write_wear"]
+if TYPE_CHECKING:
+    from ballscrew.analyses.wear import WearResult
+
+__all__ = ["figures", "history", "sections", "summary"]
 
 
 def _provenance(case: Case) -> str:
@@ -37,10 +40,10 @@ def _provenance(case: Case) -> str:
     )
 
 
-def wear_summary(life: WearLife, case: Case) -> dict[str, Any]:
+def summary(result: WearResult) -> dict[str, Any]:
     """Scalars of the run: final wear, contact width, preload, torque and the model options."""
+    life, case = result.life, result.case
     return {
-        "analysis": "wear",
         "case": case.name,
         "complete": life.complete,
         "revolutions": float(life.revolutions[-1]),
@@ -79,8 +82,9 @@ def wear_summary(life: WearLife, case: Case) -> dict[str, Any]:
     }
 
 
-def wear_history(life: WearLife, case: Case) -> xr.Dataset:
+def history(result: WearResult) -> xr.Dataset:
     """History over revolutions: wear profiles of both flanks, h_max, preload, forces, torque."""
+    life, case = result.life, result.case
     step = np.arange(life.revolutions.size)
     return xr.Dataset(
         {
@@ -161,74 +165,73 @@ def _depth(life: WearLife, path: Path) -> Path:
     return path
 
 
-def write_wear(
-    life: WearLife, case: Case, out: str | Path, state_file: str | Path | None = None
-) -> Path:
-    """Write the ``wear`` results folder and return its path (``state_file`` copied in)."""
-    summary = wear_summary(life, case)
-    with results_folder(out) as folder:
-        write_summary(folder / "summary.json", summary)
-        write_netcdf(wear_history(life, case), folder / "history.nc")
-        if state_file is not None and Path(state_file).is_file():
-            (folder / "state.npz").write_bytes(Path(state_file).read_bytes())
-        figures = [
-            (
-                _torque_preload(life, folder / "torque_preload.png"),
-                "Drag torque (E9.1) and preload (E1.13) versus revolutions; dotted: level ends.",
+def figures(result: WearResult) -> list[Figure]:
+    """Torque and preload, wear profiles and the largest wear depth versus revolutions."""
+    life = result.life
+    return [
+        Figure(
+            "torque_preload",
+            "Drag torque (E9.1) and preload (E1.13) versus revolutions; dotted: level ends.",
+            partial(_torque_preload, life),
+        ),
+        Figure(
+            "wear_profiles",
+            "Wear depth across the groove (flank +1) at the end of each level.",
+            partial(_profiles, life),
+        ),
+        Figure("max_wear_depth", "Largest wear depth versus revolutions.", partial(_depth, life)),
+    ]
+
+
+def sections(result: WearResult) -> list[Section]:
+    """The report section: final wear, contact width, preload and torque, level by level."""
+    life = result.life
+    data = summary(result)
+    rows = tuple(
+        (
+            f"level {k + 1}",
+            lv["axial_load"]["value"],
+            lv["end_revolutions"],
+            1e6 * lv["max_wear_depth"]["value"],
+            lv["preload"]["value"],
+        )
+        for k, lv in enumerate(data["levels"])
+    )
+    return [
+        Section(
+            "Raceway wear and preload degradation",
+            paragraphs=(
+                f"Fractal wear Model {life.model}, K = {life.coefficient:.4g} "
+                f"({data['wear_coefficient']['source']}); L_w = "
+                f"{life.raceway_length:.4g} m; {life.steps} steps, "
+                f"{life.contact_solves} contact solutions in {life.wall_time:.1f} s.",
+                "The largest wear depth sets the preload every step (E1.13); the torque is "
+                "the catalogue drag torque of the preload (E9.1). The running-in drop of "
+                "the measured torque is not modelled.",
             ),
-            (
-                _profiles(life, folder / "wear_profiles.png"),
-                "Wear depth across the groove (flank +1) at the end of each level.",
-            ),
-            (_depth(life, folder / "max_wear_depth.png"), "Largest wear depth versus revolutions."),
-        ]
-        rows = [
-            [
-                f"level {k + 1}",
-                lv["axial_load"]["value"],
-                lv["end_revolutions"],
-                1e6 * lv["max_wear_depth"]["value"],
-                lv["preload"]["value"],
-            ]
-            for k, lv in enumerate(summary["levels"])
-        ]
-        sections = [
-            Section(
-                "Raceway wear and preload degradation",
-                paragraphs=[
-                    f"Fractal wear Model {life.model}, K = {life.coefficient:.4g} "
-                    f"({summary['wear_coefficient']['source']}); L_w = "
-                    f"{life.raceway_length:.4g} m; {life.steps} steps, "
-                    f"{life.contact_solves} contact solutions in {life.wall_time:.1f} s.",
-                    "The largest wear depth sets the preload every step (E1.13); the torque is "
-                    "the catalogue drag torque of the preload (E9.1). The running-in drop of "
-                    "the measured torque is not modelled.",
-                ],
-                tables=[
+            tables=(
+                Table(
+                    ("quantity", "value"),
                     (
-                        ["quantity", "value"],
-                        [
-                            ["largest wear depth [µm]", 1e6 * float(life.max_wear_depth[-1])],
-                            [
-                                "contact width, worn / unworn [µm]",
-                                f"{1e6 * life.ellipse_major_axis:.0f} / "
-                                f"{1e6 * life.ellipse_major_axis_unworn:.0f}",
-                            ],
-                            ["worn band (h > 5 % of max) [µm]", 1e6 * life.worn_band_width],
-                            [
-                                "preload, initial / final [N]",
-                                f"{life.preload[0]:.1f} / {life.preload[-1]:.1f}",
-                            ],
-                            [
-                                "torque, initial / final [N m]",
-                                f"{life.friction_torque[0]:.4f} / {life.friction_torque[-1]:.4f}",
-                            ],
-                        ],
+                        ("largest wear depth [µm]", 1e6 * float(life.max_wear_depth[-1])),
+                        (
+                            "contact width, worn / unworn [µm]",
+                            f"{1e6 * life.ellipse_major_axis:.0f} / "
+                            f"{1e6 * life.ellipse_major_axis_unworn:.0f}",
+                        ),
+                        ("worn band (h > 5 % of max) [µm]", 1e6 * life.worn_band_width),
+                        (
+                            "preload, initial / final [N]",
+                            f"{life.preload[0]:.1f} / {life.preload[-1]:.1f}",
+                        ),
+                        (
+                            "torque, initial / final [N m]",
+                            f"{life.friction_torque[0]:.4f} / {life.friction_torque[-1]:.4f}",
+                        ),
                     ),
-                    (["level", "F_a [N]", "end [rev]", "h_max [µm]", "F_p [N]"], rows),
-                ],
-                figures=figures,
-            )
-        ]
-        write_report(folder / "report.html", f"Wear life: {case.name}", "ballscrew wear", sections)
-    return Path(out).resolve()
+                ),
+                Table(("level", "F_a [N]", "end [rev]", "h_max [µm]", "F_p [N]"), rows),
+            ),
+            figures=("torque_preload", "wear_profiles", "max_wear_depth"),
+        )
+    ]

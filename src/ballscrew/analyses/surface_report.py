@@ -1,23 +1,37 @@
-"""Results folder of ``ballscrew surface``: summary.json, log–log fit plots and report.html."""
+"""What the surface analysis shows: its summary, spectra, log–log fit plots and report section."""
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+import xarray as xr
 
+from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import plain
-from ballscrew.results.folder import results_folder
-from ballscrew.results.report import Section, write_report
-from ballscrew.results.summary import value, write_summary
 from ballscrew.surface.fit import FractalFit, SurfaceFit
 from ballscrew.surface.profile import Profile
 from ballscrew.surface.structure_function import band_limited_ratio
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.surface import SurfaceCharacterisation
+
+__all__ = [
+    "fields",
+    "figures",
+    "profile_plot",
+    "psd_plot",
+    "sections",
+    "structure_function_plot",
+    "summary",
+]
 
 _NAMES = {"psd": "power spectrum (F2)", "structure_function": "structure function (F4)"}
 
@@ -44,8 +58,9 @@ def _fit_summary(fit: FractalFit) -> dict[str, Any]:
     }
 
 
-def surface_summary(fit: SurfaceFit, profile: Profile) -> dict[str, Any]:
+def summary(result: SurfaceCharacterisation) -> dict[str, Any]:
     """Scalars of both fits and the recommended D and G, each with its unit."""
+    fit, profile = result.fit, result.profile
     rows = profile.rows
     finite = rows[np.all(np.isfinite(rows), axis=1)]
     detrended = finite - finite.mean(axis=1, keepdims=True)
@@ -55,7 +70,6 @@ def surface_summary(fit: SurfaceFit, profile: Profile) -> dict[str, Any]:
         if f is not None
     }
     return {
-        "analysis": "surface",
         "source": profile.source,
         "format": profile.metadata.get("format", ""),
         "profiles": profile.n_profiles,
@@ -172,70 +186,73 @@ def _row(fit: FractalFit) -> list[object]:
     ]
 
 
-def write_surface(fit: SurfaceFit, profile: Profile, out: str | Path) -> Path:
-    """Write the ``surface`` results folder and return its path."""
-    summary = surface_summary(fit, profile)
-    fits = [f for f in (fit.psd, fit.structure_function) if f is not None]
-    with results_folder(out) as folder:
-        write_summary(folder / "summary.json", summary)
-        figures = [(profile_plot(profile, folder / "profile.png"), "The measured profile.")]
-        if fit.psd is not None:
-            figures.append(
-                (
-                    psd_plot(fit, folder / "psd.png"),
-                    "PSD: periodogram (grey), the Gaussian log-smoothed spectrum that was fitted, "
-                    "the fitted line and the fit range (shaded).",
-                )
-            )
-        if fit.structure_function is not None:
-            figures.append(
-                (
-                    structure_function_plot(fit, folder / "structure_function.png"),
-                    "Structure function (grey), the band-corrected points that were fitted, the "
-                    "fitted (F4) line, the line times the band ratio, and the fit range.",
-                )
-            )
-        notes = [n for f in fits for n in f.notes] + list(fit.notes)
-        sections = [
-            Section(
-                "Fractal parameters",
-                paragraphs=[
-                    f"{profile.n_profiles} profile(s) of {profile.n_points} points at "
-                    f"Δx = {profile.spacing:.4g} m (L = {profile.length:.4g} m). Recommended: "
-                    f"D = {fit.D:.4f} (surface Ds = {fit.D + 1:.4f}), G = {fit.G:.4g} m from "
-                    f"the {_NAMES[fit.recommended.method]}.",
-                    "Conventions of contact-tcr.md §5.1: profile dimension 1 < D < 2, G in m, "
-                    "one-sided PSD in cycles/m (F2), structure function with the (2π)^(4−2D) "
-                    "factor (F4), γ = "
-                    f"{fit.recommended.gamma:g}. Fit ranges are chosen away from the sampling "
-                    "length and the Nyquist/resolution ends (see ballscrew.surface.fit). "
-                    "Standard errors (PSD) treat the profile as a Gaussian random process; "
-                    "G is ill-conditioned, d ln G/dD ≈ −ln(ω_c G)/(D − 1).",
-                    *notes,
-                ],
-                tables=[
-                    (
-                        [
-                            "method",
-                            "D",
-                            "Ds = D + 1",
-                            "G [m]",
-                            "s.e. D",
-                            "s.e. ln G",
-                            "fit range",
-                            "R²",
-                            "points",
-                        ],
-                        [_row(f) for f in fits],
-                    )
-                ],
-                figures=figures,
-            )
-        ]
-        write_report(
-            folder / "report.html",
-            f"Surface characterisation: {Path(profile.source).name}",
-            "ballscrew surface",
-            sections,
+def fields(result: SurfaceCharacterisation) -> dict[str, xr.Dataset]:
+    """The periodogram and the structure function that were fitted, with units."""
+    fit, data = result.fit, {}
+    if fit.spectrum is not None:
+        f, s = fit.spectrum
+        data["spectrum"] = xr.Dataset(
+            {"psd": ("frequency", s, {"units": "m^3", "long_name": "one-sided PSD"})},
+            coords={"frequency": ("frequency", f, {"units": "1/m"})},
         )
-    return Path(out).resolve()
+    if fit.structure is not None:
+        lag, sf = fit.structure
+        data["structure_function"] = xr.Dataset(
+            {"structure_function": ("lag", sf, {"units": "m^2"})},
+            coords={"lag": ("lag", lag, {"units": "m"})},
+        )
+    return data
+
+
+def figures(result: SurfaceCharacterisation) -> list[Figure]:
+    """The profile, and the log–log plot of each fit."""
+    fit = result.fit
+    out = [Figure("profile", "The measured profile.", partial(profile_plot, result.profile))]
+    if fit.psd is not None:
+        out.append(
+            Figure(
+                "psd",
+                "PSD: periodogram (grey), the Gaussian log-smoothed spectrum that was fitted, "
+                "the fitted line and the fit range (shaded).",
+                partial(psd_plot, fit),
+            )
+        )
+    if fit.structure_function is not None:
+        out.append(
+            Figure(
+                "structure_function",
+                "Structure function (grey), the band-corrected points that were fitted, the "
+                "fitted (F4) line, the line times the band ratio, and the fit range.",
+                partial(structure_function_plot, fit),
+            )
+        )
+    return out
+
+
+def sections(result: SurfaceCharacterisation) -> list[Section]:
+    """The recommended D and G, the conventions and the table of both fits."""
+    fit, profile = result.fit, result.profile
+    fits = [f for f in (fit.psd, fit.structure_function) if f is not None]
+    notes = [n for f in fits for n in f.notes] + list(fit.notes)
+    header = ("method", "D", "Ds = D + 1", "G [m]", "s.e. D", "s.e. ln G", "fit range", "R²")
+    return [
+        Section(
+            "Fractal parameters",
+            paragraphs=(
+                f"{profile.n_profiles} profile(s) of {profile.n_points} points at "
+                f"Δx = {profile.spacing:.4g} m (L = {profile.length:.4g} m). Recommended: "
+                f"D = {fit.D:.4f} (surface Ds = {fit.D + 1:.4f}), G = {fit.G:.4g} m from "
+                f"the {_NAMES[fit.recommended.method]}.",
+                "Conventions: profile dimension 1 < D < 2, G in m, "
+                "one-sided PSD in cycles/m (F2), structure function with the (2π)^(4−2D) "
+                "factor (F4), γ = "
+                f"{fit.recommended.gamma:g}. Fit ranges are chosen away from the sampling "
+                "length and the Nyquist/resolution ends (see ballscrew.surface.fit). "
+                "Standard errors (PSD) treat the profile as a Gaussian random process; "
+                "G is ill-conditioned, d ln G/dD ≈ −ln(ω_c G)/(D − 1).",
+                *notes,
+            ),
+            tables=(Table((*header, "points"), tuple(tuple(_row(f)) for f in fits)),),
+            figures=tuple(f.name for f in figures(result)),
+        )
+    ]
