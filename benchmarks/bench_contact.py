@@ -1,11 +1,11 @@
 """Benchmark of the normal-contact solver against Hertz, the FFT floor and peer solvers.
 
-Cases of /work/shared/anchors/contact-solvers.md: sphere R = 10 mm, W = 100 N and the ellipse
-Rx = 3.6 mm, Ry = 40 mm, W = 1000 N, E* = 113.19 GPa, box side 3 × the Hertz contact diameter
-along each axis, N × N cells, tol 1e-8. For each N: median wall time of 5 solves after a warm-up,
-iterations, peak-pressure error against Hertz, and the ratio of the time to the "FFT floor" =
-iterations × one forward + inverse real FFT of 2N × 2N with the same backend (pyFFTW, same
-threads).
+Cases (those the peers Tamaas 2.9.0 and ContactMechanics 1.8.3 were timed on): sphere
+R = 10 mm, W = 100 N and the ellipse Rx = 3.6 mm, Ry = 40 mm, W = 1000 N, E* = 113.19 GPa, box
+side 3 × the Hertz contact diameter along each axis, N × N cells, tol 1e-8. For each N: median
+wall time of 5 solves after a warm-up, iterations, peak-pressure error against Hertz, and the
+ratio of the time to the "FFT floor" = iterations × one forward + inverse real FFT of 2N × 2N
+with the same backend (pyFFTW, same threads).
 
 The grid has a cell centred on the origin (as the peers' grids, whose peak-pressure errors are
 positive), so the peak cell samples p0 itself.

@@ -1,9 +1,9 @@
-"""Benchmark of the wear life: the full three-level step-stress test of the REF screw.
+"""Benchmark of the wear life: the full three-level step-stress test of the reference screw.
 
-examples/wear_step_stress.toml (kinematics-wear.md §9.2, §10.2): 2000/3000/4000 N, 4.8e5 rev
-per level at 100 rpm, 32 × 128 contact grid, Model A with K = 1.304e-4, torque sampled every
-4.8e4 rev. Reports the wall time (median of the repeats after a warm-up run), the number of time
-steps and contact solutions, and the end values next to §10.3 (h_max = 2.430 µm, F_p = 244.3 N).
+examples/wear_step_stress.toml (theory manual ``docs/theory/wear.md``): 2000/3000/4000 N, 4.8e5 rev
+per level at 100 rpm, 32 × 128 contact grid, Model A with K = 1.304e-4, torque sampled every 4.8e4
+rev. Reports the wall time (median of the repeats after a warm-up run), the number of time steps and
+contact solutions, and the end values next to the reference run (h_max = 2.430 µm, F_p = 244.3 N).
 Target: < 60 s.
 
 Usage: BALLSCREW_FFT_THREADS=1 python benchmarks/bench_wear.py [--repeats N] [--model A|C]
@@ -37,19 +37,19 @@ def main() -> None:
         life = ballscrew.wear_life(case)
         times.append(time.perf_counter() - start)
     assert life is not None
-    print(f"wear life, REF three-level test, Model {args.model}")
+    print(f"wear life, reference screw, three-level test, Model {args.model}")
     print(
         f"  wall time      {statistics.median(times):8.3f} s (median of {args.repeats}; "
         f"best {min(times):.3f} s; target < 60 s)"
     )
     print(f"  time steps     {life.steps:8d}")
     print(f"  contact solves {life.contact_solves:8d}")
-    print(f"  h_max          {1e6 * life.max_wear_depth[-1]:8.4f} µm   (§10.3: 2.430)")
-    print(f"  final preload  {life.preload[-1]:8.1f} N    (§10.3: 244.3)")
-    print(f"  final torque   {life.friction_torque[-1]:8.4f} N m  (§10.3: 0.0689)")
+    print(f"  h_max          {1e6 * life.max_wear_depth[-1]:8.4f} µm   (reference: 2.430)")
+    print(f"  final preload  {life.preload[-1]:8.1f} N    (reference: 244.3)")
+    print(f"  final torque   {life.friction_torque[-1]:8.4f} N m  (reference: 0.0689)")
     print(
-        f"  contact width  {1e6 * life.ellipse_major_axis:8.0f} µm   (§10.3: 1089; "
-        f"unworn {1e6 * life.ellipse_major_axis_unworn:.0f}, §10.3: 808)"
+        f"  contact width  {1e6 * life.ellipse_major_axis:8.0f} µm   (reference: 1089; "
+        f"unworn {1e6 * life.ellipse_major_axis_unworn:.0f}, reference: 808)"
     )
 
 

@@ -11,11 +11,11 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 @pytest.fixture
 def gao_case_path() -> Path:
-    """The TCR reference screw (contact-tcr.md §10.1)."""
+    """The TCR reference screw (theory manual, *Reference screws*)."""
     return EXAMPLES / "gao2019_tcr.toml"
 
 
 @pytest.fixture
 def wear_case_path() -> Path:
-    """The step-stress wear reference screw (kinematics-wear.md §10.2)."""
+    """The step-stress wear reference screw (theory manual, *Reference screws*)."""
     return EXAMPLES / "wear_step_stress.toml"

@@ -40,7 +40,7 @@ def test_contact_writes_a_complete_results_folder(tmp_path, example, request):
         contact = summary["contacts"][side]
         assert contact["numerical"]["peak_pressure"]["unit"] == "Pa"
         assert contact["hertz"]["semi_axis_x"]["unit"] == "m"
-        # The exact raceway gap is within about 0.2 % of Hertz at these loads (T-H3/T-H4).
+        # The exact raceway gap is within about 0.2 % of Hertz at these loads (both contacts).
         assert abs(contact["relative_difference_to_hertz"]["peak_pressure"]) < 5e-3
         assert contact["numerical"]["load"]["value"] == pytest.approx(
             summary["ball_load"]["value"], rel=1e-10

@@ -1,6 +1,6 @@
-"""The full TCR chain against its reference values (T-AGG1, T-TR1–T-TR3), through screw_tcr.
+"""The full TCR chain of the TCR reference screw (aggregated R and its trends), through screw_tcr.
 
-The reference numbers were computed on one grid: 40 × 200 cells over ±2.6 × the
+The reference numbers were computed on a published grid: 40 × 200 cells over ±2.6 × the
 Hertz semi-axis along the rolling direction and ±2.4 × across the groove, element TCR on the
 solver cells themselves. The TCR is mesh dependent, so these tests use that grid.
 """
@@ -31,21 +31,21 @@ def test_t_agg1_full_chain_on_the_exact_gap(doc_case):
     assert result.variant == "V2"
     assert result.nut_forces == pytest.approx((1500.0, 1500.0))
     nut = result.nuts[0]
-    # P–K on the exact gap (T-H3/T-H4): 0.5 % on the stated grid.
+    # P–K on the exact gap (screw and nut contacts): 0.5 % on the stated grid.
     assert nut.screw.contact.solution.dx == pytest.approx(6.14853e-6, rel=1e-5)
     assert nut.screw.contact.solution.dy == pytest.approx(9.92481e-6, rel=1e-5)
     assert nut.screw.contact.solution.peak_pressure == pytest.approx(0.961650e9, rel=5e-3)
     assert nut.screw.contact.solution.approach == pytest.approx(1.434781e-6, rel=5e-3)
     assert nut.nut.contact.solution.peak_pressure == pytest.approx(0.868679e9, rel=5e-3)
     assert nut.nut.contact.solution.approach == pytest.approx(1.404833e-6, rel=5e-3)
-    # Full chain (T-AGG1): 3 %.
+    # Full chain (aggregated screw TCR): 3 %.
     assert nut.screw.tcr.resistance == pytest.approx(1.07658, rel=0.03)
     assert nut.nut.tcr.resistance == pytest.approx(0.980292, rel=0.03)
     assert nut.ball_resistance == pytest.approx(2.05687, rel=0.03)
     assert result.resistance == pytest.approx(1.90451e-2, rel=0.03)
     assert result.apparent_area == pytest.approx(7.16536e-6, rel=0.03)
     assert result.resistance_per_area == pytest.approx(1.36465e-7, rel=0.03)
-    # Per-nut axial stiffness, 1.5 F/δ_a with δ_a = 4.0217 µm (§8.2): 559 N/µm.
+    # Per-nut axial stiffness, 1.5 F/δ_a with δ_a = 4.0217 µm (P4): 559 N/µm.
     assert nut.axial_deflection == pytest.approx(4.0217e-6, rel=5e-3)
     assert nut.axial_stiffness == pytest.approx(559e6, rel=5e-3)
 
@@ -135,7 +135,7 @@ def test_fractal_cell_result_converges_with_the_solver_grid(gao_case_path):
         for n in (64, 128)
     )
     assert fine == pytest.approx(coarse, rel=0.015)
-    # ... and lands near the document's solver-cell value T-AGG1 (cells of similar area).
+    # ... and lands near the reference solver-cell value of the aggregated TCR (similar cells).
     assert fine == pytest.approx(1.90451e-2, rel=0.05)
 
 

@@ -1,10 +1,10 @@
 """A closed-form stand-in for the wear model, so the calibration tests never run the real one.
 
-Step-stress history in the shape of kinematics-wear.md §9.2/§10.3: three levels of 4.8e5 rev,
-wear depth linear in K within each level, h(N) = K · c(N), with the per-level depth increments
-of the REF regression at K_REF = 1.3041e-4 (0.968 / 0.693 / 0.769 µm). Preload from (E1.13)
-with the REF nut (F_p0 = 1500 N, C_a = 3.749e-8 m N^-2/3, β = 45°), friction torque from (E9.1)
-times a torque scale.
+Step-stress history in the shape of the reference run of examples/wear_step_stress.toml: three
+levels of 4.8e5 rev, wear depth linear in K within each level, h(N) = K · c(N), with the
+per-level depth increments of that run at K_REF = 1.3041e-4 (0.968 / 0.693 / 0.769 µm). Preload
+from (E1.13) with the reference nut (F_p0 = 1500 N, C_a = 3.749e-8 m N^-2/3, β = 45°), friction
+torque from (E9.1) times a torque scale.
 """
 
 from __future__ import annotations

@@ -29,7 +29,7 @@ class CaseModel:
         self.seen.append((w.coefficient, w.torque_scale, w.initial_torque))
         if w.initial_torque is None:
             self.model.torque_scale = w.torque_scale
-        else:  # K_T rescaled so that T(0) = initial_torque (E9.3)
+        else:  # K_T rescaled so that T(0) = initial_torque
             catalogue = preload_drag_torque(PRELOAD0, LEAD, LAMBDA)
             self.model.torque_scale = w.initial_torque / catalogue
         return self.model(w.coefficient)
@@ -88,8 +88,8 @@ def test_real_wear_model_on_the_example(case) -> None:
     """The real wear model fitted to the synthetic example (made with K = 1.3041e-4, scale 1.15).
 
     The example came from a stand-in whose depth grows linearly within each level and matches
-    the §10.3 REF regression at the level ends; the real model reproduces §10.3 within ±3 %, so
-    K and the scale must come back within a few per cent.
+    the reference step-stress run at the level ends; the real model reproduces that run within
+    ±3 %, so K and the scale must come back within a few per cent.
     """
     data = read_measured(EXAMPLE)
     result = calibrate(case, data, fit_torque_scale=True)

@@ -1,4 +1,4 @@
-"""DC-FFT convolution against a direct double sum written here (T-K2, Liu, Wang & Liu 2000)."""
+"""DC-FFT convolution against a direct double sum written here (Liu, Wang & Liu 2000)."""
 
 import threading
 
@@ -25,7 +25,7 @@ def naive_sum(p, dx, dy):
 
 @pytest.fixture(scope="module")
 def t_k2():
-    """T-K2: 8 × 6 cells, Δx = 10 µm, Δy = 20 µm, random p ≤ 1 GPa."""
+    """8 × 6 cells, Δx = 10 µm, Δy = 20 µm, random p ≤ 1 GPa."""
     p = np.random.default_rng(20000101).uniform(0.0, 1e9, (8, 6))
     return p, 10e-6, 20e-6, naive_sum(p, 10e-6, 20e-6)
 

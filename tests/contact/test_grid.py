@@ -1,4 +1,4 @@
-"""Automatic grid sizing: Hertz-sized grid, edge check and box enlargement (§3.4)."""
+"""Automatic grid sizing: Hertz-sized grid, edge check and box enlargement (theory manual)."""
 
 import numpy as np
 import pytest

@@ -1,4 +1,5 @@
-"""Hertz closed forms against the spec's numbers (§11: T-PK1, T-PK2, T-H3, T-H4; 1e-5 relative),
+"""Hertz closed forms against reference numbers (sphere, ellipsoid, and the screw and nut contacts
+of the TCR reference screw; 1e-5 relative),
 the circular limit (H1), and the pressure field's integral (the load) by quadrature."""
 
 import dataclasses
@@ -10,8 +11,8 @@ from scipy.integrate import dblquad
 from ballscrew.contact import hamrock_brewe, hertz
 from ballscrew.errors import InputError
 
-E_STAR = 113.187e9  # the spec's value for T-PK1..T-H4
-Q_BALL = 39.40790  # N, ball load of (Q1) used by T-H3/T-H4
+E_STAR = 113.187e9  # composite modulus of these reference cases
+Q_BALL = 39.40790  # N, ball load (Q1) of the TCR reference screw
 
 
 def radii(a_h, b_h):
@@ -48,10 +49,10 @@ def test_t_pk2_hamrock_brewe():
 @pytest.mark.parametrize(
     ("a_h", "b_h", "exact", "fits"),
     [
-        # T-H3 screw contact; the doc's a (across the groove) lies along y here.
+        # Screw contact of the TCR reference screw; its a (across the groove) lies along y here.
         (177.2534, 6.056935, (47.29638e-6, 0.4135337e-3, 0.9620238e9, 1.432304e-6),
          (47.1109e-6, 0.417055e-3, 0.957656e9, 1.41952e-6)),
-        # T-H4 nut contact: A_H = h_xx/2, B_H = h_yy/2 from T-G2.
+        # Nut contact: A_H = h_xx/2, B_H = h_yy/2 from the exact gap Hessian.
         (283.3550 / 2, 12.11387 / 2, (53.27936e-6, 0.4063867e-3, 0.8690128e9, 1.402484e-6),
          None),
     ],

@@ -1,4 +1,4 @@
-"""Love's rectangular-cell coefficients (K4) against the spec's T-K1 table, the closed-form
+"""Love's rectangular-cell coefficients (K4) against a six-digit reference table, the closed-form
 self-coefficient, the Boussinesq far field (K2) and a numerical quadrature of (K2) over the cell."""
 
 import numpy as np
@@ -11,7 +11,7 @@ E_STAR = 113.19e9
 
 
 def test_square_cell_table_matches_t_k1():
-    """T-K1 (physics notes §11): K·E*/Δ of a square cell at the listed offsets, 6 digits."""
+    """K·E*/Δ of a square cell at the listed offsets, 6 digits."""
     delta = 10e-6
     table = love_coefficients(11, 11, delta, delta, E_STAR) * E_STAR / delta
     expected = {(0, 0): 1.122200, (1, 0): 0.330421, (1, 1): 0.230678, (2, 0): 0.160776,
@@ -22,7 +22,7 @@ def test_square_cell_table_matches_t_k1():
 
 
 def test_self_coefficient_closed_form():
-    """K(0, 0) of a square cell = 4 ln(1 + √2)/π · Δ/E* (§2.2)."""
+    """K(0, 0) of a square cell = 4 ln(1 + √2)/π · Δ/E* (K4)."""
     delta = 3.7e-6
     k00 = love_coefficient(0.0, 0.0, delta, delta, E_STAR)
     assert k00 == pytest.approx(4.0 * np.log(1.0 + np.sqrt(2.0)) / np.pi * delta / E_STAR, 1e-14)

@@ -1,4 +1,4 @@
-"""Polonsky-Keer solver against Hertz (Johnson 1985), the spec's grid results (§11 T-PK1-T-PK3),
+"""Polonsky-Keer solver against Hertz (Johnson 1985), reference grid results (sphere and ellipsoid),
 a grid-convergence study, and the complementarity conditions (C1)-(C2) on random ellipsoids."""
 
 import numpy as np
@@ -39,7 +39,7 @@ def cells_across(case, cells, box=1.5):
 
 
 @pytest.mark.parametrize(
-    "case", [SPHERE, T_PK2, T_H3, T_H4], ids=["sphere", "T-PK2", "T-H3", "T-H4"]
+    "case", [SPHERE, T_PK2, T_H3, T_H4], ids=["sphere", "ellipsoid", "screw-contact", "nut-contact"]
 )
 def test_quadratic_gaps_match_hertz_at_128_cells_across(case):
     """Peak pressure within 0.1 % of p0, exact load balance, approach within 0.01 %."""
@@ -54,7 +54,7 @@ def test_quadratic_gaps_match_hertz_at_128_cells_across(case):
     assert result.contact_area == pytest.approx(reference.area, rel=0.01)
 
 
-def test_t_pk1_on_the_spec_grid():
+def test_sphere_on_the_reference_grid():
     """128 × 128 cells over a box of side 4a, ε0 = 1e-9: p_max = 1.353131 GPa, δ = 3.527680 µm."""
     a = hertz(*SPHERE[:2], E_STAR, SPHERE[2]).a
     gap, dx, dy = quadratic_gap(*SPHERE[:2], 128, 128, 2 * a, 2 * a)
@@ -74,13 +74,13 @@ def test_t_pk1_coarse_grid_errors():
 
 @pytest.fixture(scope="module")
 def t_pk2_grid():
-    """128 × 64 cells over ±2.6a × ±2.6b of the T-PK2 ellipsoid."""
+    """128 × 64 cells over ±2.6a × ±2.6b of the reference ellipsoid."""
     reference = hertz(*T_PK2[:2], E_STAR, T_PK2[2])
     gap, dx, dy = quadratic_gap(*T_PK2[:2], 128, 64, 2.6 * reference.a, 2.6 * reference.b)
     return gap, dx, dy, reference
 
 
-def test_t_pk2_on_the_spec_grid(t_pk2_grid):
+def test_ellipsoid_on_the_reference_grid(t_pk2_grid):
     """p_max −0.078 %, δ −0.012 % against Hertz."""
     gap, dx, dy, reference = t_pk2_grid
     result = solve_normal(gap, dx, dy, E_STAR, 100.0, tol=1e-9)
@@ -96,7 +96,7 @@ def test_t_pk3_displacement_control_on_the_t_pk2_grid(t_pk2_grid):
     assert result.approach == 2.605610e-6
 
 
-@pytest.mark.parametrize("case", [SPHERE, T_H3], ids=["sphere", "T-H3"])
+@pytest.mark.parametrize("case", [SPHERE, T_H3], ids=["sphere", "screw-contact"])
 def test_displacement_control_returns_the_hertz_load(case):
     """Hertz δ in → Hertz load out within 0.1 % at 128 cells across; load control agrees."""
     gap, dx, dy, reference = cells_across(case, 128)
@@ -112,7 +112,7 @@ def observed_order(spacings, errors):
     return slope
 
 
-@pytest.mark.parametrize("case", [SPHERE, T_H3], ids=["sphere", "T-H3"])
+@pytest.mark.parametrize("case", [SPHERE, T_H3], ids=["sphere", "screw-contact"])
 def test_grid_convergence_is_second_order(case):
     """Errors in p_max and δ against Hertz fall as h² on 16, 32, 64 cells across the contact."""
     cells = np.array([16, 32, 64])

@@ -1,4 +1,5 @@
-"""Element and contact TCR (contact-tcr.md §6–§7): T-TCR1, T-TCR2, T-AGG1 arithmetic, T-EXP."""
+"""Element and contact TCR (``docs/theory/contact-resistance.md``): element examples at D = 1.59,
+screw aggregation arithmetic and the experiment reduction."""
 
 import math
 
@@ -28,7 +29,7 @@ from ballscrew.errors import InputError
 
 E_STAR = 206e9 / (2 * (1 - 0.3**2))
 H = 6.5e9
-A = 1e-10  # element area of T-TCR1/2
+A = 1e-10  # element area of the element examples
 
 
 def model(**overrides) -> FractalTCRModel:
@@ -45,7 +46,7 @@ def model(**overrides) -> FractalTCRModel:
     return FractalTCRModel(**params)
 
 
-# ---------------------------------------------------------------------------------- T-TCR1/2
+# -------------------------------------------------------------------------- element examples
 
 T_TCR1 = [
     # P [N], L_g [m], G_s [W/K], G_g [W/K], R [K/W], R'' [m²K/W]
@@ -77,7 +78,7 @@ def test_t_tcr1_mt_at_0_1_n() -> None:
 def test_t_tcr1_v1_at_0_1_n() -> None:
     res = element_tcr(0.1, A, model(variant="V1"))
     assert float(res.solid_conductance) == pytest.approx(1.91796e-4, rel=1e-4)
-    # V1 = one spot of the real area: 2 λ_s √(A_r/π) with A_r = 1.80572e-11 (T-MB2)
+    # V1 = one spot of the real area: 2 λ_s √(A_r/π) with A_r = 1.80572e-11 (MB element at 0.1 N)
     assert float(res.solid_conductance) == pytest.approx(80 * math.sqrt(1.80572e-11 / math.pi))
 
 
@@ -92,7 +93,7 @@ def test_t_tcr2() -> None:
 
 
 def test_v2_equals_mt_with_doc_equivalent_cutoff() -> None:
-    """§6.3: (T5) is (T2a) with a_s = 2^(−2/(D−1)) a_l."""
+    """(T5) is (T2a) with a_s = 2^(−2/(D−1)) a_l."""
     a_l = np.array([1e-14, 4.06690e-12, 1e-10])
     D = 1.59
     v2 = solid_conductance_v2(a_l, D=D, lambda_s=40.0)
@@ -108,8 +109,8 @@ def test_mt_cutoff_scaling_and_zero_below_cutoff() -> None:
 
 
 def test_gap_models() -> None:
-    a_l = 4.06690e-12  # T-MB2 at 0.1 N
-    delta_l = 1.35451e-8 * math.pi / 2  # interference of the largest asperity, from T-TCR1's L_g
+    a_l = 4.06690e-12  # Majumdar–Bhushan element example at 0.1 N
+    delta_l = 1.35451e-8 * math.pi / 2  # largest asperity's interference, from L_g at 0.1 N
     kw = {"D": 1.59, "G": 9e-10}
     assert float(gap_thickness(a_l, **kw, model="interference")) == pytest.approx(delta_l, 1e-4)
     assert float(gap_thickness(a_l, **kw, model="cap_clearance")) == pytest.approx(
@@ -142,7 +143,7 @@ def test_unloaded_elements_do_not_conduct() -> None:
 
 
 def test_v2_resistance_vanishes_with_load_documented_artefact() -> None:
-    """§6.3 caveat: R″ rises with pressure in V2; as P → 0, L_g → 0 and R → 0 (all variants)."""
+    """Known artefact: R″ rises with pressure in V2; as P → 0, L_g → 0 and R → 0 (all variants)."""
     load = np.logspace(-12, -1, 12)
     for variant in VARIANTS:
         r = element_tcr(load, A, model(variant=variant)).resistance
@@ -176,7 +177,7 @@ def test_model_rejects_bad_parameters() -> None:
 def test_harmonic_mean_and_cmy() -> None:
     assert harmonic_mean_conductivity(40.0, 40.0) == 40.0
     assert harmonic_mean_conductivity(20.0, 60.0) == pytest.approx(30.0)
-    # §6.4 example: λ_s = 40, σ = 0.2 µm, m = 0.05, p/H = 0.15 → 2.06e6 W/m²K
+    # Example: λ_s = 40, σ = 0.2 µm, m = 0.05, p/H = 0.15 → 2.06e6 W/m²K
     h_c = cooper_mikic_yovanovich_conductance(
         0.15 * H, lambda_s=40.0, slope=0.05, sigma=0.2e-6, hardness=H
     )
@@ -213,7 +214,7 @@ def test_rebinning_aggregates_whole_blocks() -> None:
 
 
 def test_uniform_pressure_parallel_law_uses_t_tcr1() -> None:
-    """Uniform p with p·Δ_f² = 0.1 N on Δ_f = 10 µm: every cell is the T-TCR1 0.1 N element."""
+    """Uniform p with p·Δ_f² = 0.1 N on Δ_f = 10 µm: every cell is the 0.1 N example element."""
     p = np.full((40, 24), 0.1 / A)  # 100 µm × 60 µm at 2.5 µm spacing → 10 × 6 cells
     res = contact_tcr(p, 2.5e-6, 2.5e-6, model(), cell_size=1e-5)
     assert res.loaded_cells == 60
@@ -253,7 +254,7 @@ def test_resistance_falls_when_more_cells_are_loaded() -> None:
 
 
 def test_result_depends_on_cell_size_mesh_dependence() -> None:
-    """§6.5: same pressure field, different Δ_f, different R_c; the result records Δ_f."""
+    """Mesh dependence: same pressure, different Δ_f, different R_c; the result records Δ_f."""
     p = np.full((48, 48), 1e9)
     coarse = contact_tcr(p, 1e-6, 1e-6, model(), cell_size=8e-6)
     fine = contact_tcr(p, 1e-6, 1e-6, model(), cell_size=4e-6)
@@ -288,7 +289,7 @@ def test_series_and_parallel_closed_forms() -> None:
 
 
 def test_t_agg1_chain_arithmetic() -> None:
-    """T-AGG1: R_sbn = R_sb + R_bn, 108 balls in parallel, R″ = R·S."""
+    """Screw aggregation (A2)–(A4): R_sbn = R_sb + R_bn, 108 balls in parallel, R″ = R·S."""
     r_sbn = series_resistance(1.07658, 0.980292)
     assert float(r_sbn) == pytest.approx(2.05687, rel=1e-5)
     r = parallel_resistance([r_sbn, r_sbn], counts=[54, 54])

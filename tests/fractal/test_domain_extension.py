@@ -1,4 +1,4 @@
-"""Wang–Komvopoulos ψ(D), equation (F10), against contact-tcr.md §5.3 and T-MB1."""
+"""Wang–Komvopoulos ψ(D), equation (F10), against its table and the element example at D = 1.59."""
 
 import itertools
 import math
@@ -8,7 +8,7 @@ import pytest
 from ballscrew.errors import InputError
 from ballscrew.fractal import domain_extension_factor, size_distribution_constant
 
-# (F10) table of contact-tcr.md §5.3
+# (F10) table
 PSI_TABLE = [
     (1.1, 2.44346),
     (1.3, 2.18371),
@@ -36,7 +36,7 @@ def test_psi_satisfies_f10(D: float, _psi: float) -> None:
 
 
 def test_size_distribution_constant_t_mb1() -> None:
-    # T-MB1: ψ^((2−D)/2) = 1.14492 at D = 1.59
+    # D = 1.59 example: ψ^((2−D)/2) = 1.14492 at D = 1.59
     assert size_distribution_constant(1.59) == pytest.approx(1.14492, rel=1e-5)
 
 

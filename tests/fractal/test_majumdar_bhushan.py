@@ -1,6 +1,6 @@
-"""Majumdar–Bhushan contact (F3), (F5)–(F15) against contact-tcr.md T-MB1…T-MB3.
+"""Majumdar–Bhushan contact (F3), (F5)–(F15) against worked examples (D = 1.59, 1.475, 1.5).
 
-Reference numbers are the document's; the quadrature checks rebuild (F11), (F12) and (F14) from the
+Reference numbers are worked examples; the quadrature checks rebuild (F11), (F12) and (F14) from the
 single-asperity laws (F6) and the size distribution (F9) written out here.
 """
 
@@ -39,7 +39,7 @@ def test_material_constants_as_in_doc() -> None:
     assert H / E_STAR == pytest.approx(0.0574272, rel=1e-5)
 
 
-# ---------------------------------------------------------------------------------- T-MB1
+# ---------------------------------------------------------------------- critical area a_c
 
 
 @pytest.mark.parametrize(
@@ -54,7 +54,7 @@ def test_critical_area_overflows_to_inf_near_d_1() -> None:
     assert critical_area(D=1.0 + 1e-3, G=1e-9, E_star=E_STAR, H=H) == math.inf
 
 
-# ---------------------------------------------------------------------------------- T-MB2
+# ----------------------------------------------------------------------- element at 0.1 N
 
 
 def test_forward_load_t_mb2() -> None:
@@ -85,7 +85,7 @@ def test_inversion_is_exact_in_plastic_regime() -> None:
     np.testing.assert_allclose(largest_spot_area(load, **PAPER), load / p_c * a_c, rtol=1e-14)
 
 
-# ---------------------------------------------------------------------------------- T-MB3
+# --------------------------------------------------------------------- D = 1.5 log branch
 
 
 def test_d_15_log_branch_t_mb3() -> None:

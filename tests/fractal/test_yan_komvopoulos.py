@@ -1,4 +1,4 @@
-"""3-D fractal micro-contact (Yan & Komvopoulos 1998) against kinematics-wear.md §5.5 (T5.1–T5.13).
+"""3-D fractal micro-contact (Yan & Komvopoulos 1998) against worked examples ((E5.1)–(E5.16)).
 
 E* = 1.1319e11 Pa, H = 7.0 GPa, γ = 1.5; Ds is the surface dimension (profile D + 1).
 """
@@ -21,10 +21,10 @@ CELL = 100e-12  # ΔA = 100 µm²
 @pytest.mark.parametrize(
     ("Ds", "G", "a_c", "delta_c"),
     [
-        (2.3, 1e-10, 1.497e-13, 4.498e-8),  # T5.1
-        (2.4, 1e-10, 2.265e-15, 5.534e-9),  # T5.2
-        (2.5, 1e-10, 1.833e-16, None),  # T5.3
-        (2.4, 1e-9, 2.265e-13, None),  # T5.4
+        (2.3, 1e-10, 1.497e-13, 4.498e-8),
+        (2.4, 1e-10, 2.265e-15, 5.534e-9),
+        (2.5, 1e-10, 1.833e-16, None),
+        (2.4, 1e-9, 2.265e-13, None),
     ],
 )
 def test_critical_area(Ds, G, a_c, delta_c):
@@ -59,7 +59,7 @@ def test_hertz_force_of_the_cap_equals_the_closed_form():
 
 @pytest.mark.parametrize(
     ("a_l", "total", "f_e", "f_p"),
-    [(1e-12, 9.239e-3, 6.611e-3, 2.628e-3), (1e-11, 6.512e-2, 5.195e-2, 1.317e-2)],  # T5.6, T5.7
+    [(1e-12, 9.239e-3, 6.611e-3, 2.628e-3), (1e-11, 6.512e-2, 5.195e-2, 1.317e-2)],
 )
 def test_forward_cell_forces(a_l, total, f_e, f_p):
     e, p = yk.cell_forces(a_l, 2.4, 1e-10, E_STAR, H)
@@ -125,7 +125,7 @@ def test_t5_11_logarithmic_branch_and_its_continuity():
 def test_t5_12_rms_height_closed_form_and_sampled():
     sigma = yk.rms_height(2.4, 1e-10, 10e-6)
     assert sigma == pytest.approx(7.254e-8, rel=5e-4)
-    # 8 realisations of E5.1 with M = 10, n = 0..17 (document: 7.42e-8 ± 0.77e-8).
+    # 8 realisations of E5.1 with M = 10, n = 0..17 (reference: 7.42e-8 ± 0.77e-8).
     x = np.linspace(0.0, 10e-6, 96)
     xx, yy = np.meshgrid(x, x, indexing="ij")
     samples = [

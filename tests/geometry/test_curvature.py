@@ -1,5 +1,5 @@
-"""Raceway curvatures and gap Hessian (G15)–(G18) against contact-tcr.md T-G2 and
-kinematics-wear.md T1.2."""
+"""Raceway curvatures and gap Hessian (G15)–(G18) against the TCR reference screw
+and the cosλ curvature sums of the wear reference screw."""
 
 import math
 
@@ -54,7 +54,7 @@ def test_t_g2_harris_curvature_sum(side: str, curvature_sum: float, difference: 
 def test_t_g2_cos_alpha_formula() -> None:
     assert harris_rolling_curvature(REFERENCE, "screw") == pytest.approx(39.700, abs=5e-4)
     assert -harris_rolling_curvature(REFERENCE, "nut") == pytest.approx(31.687, abs=5e-4)
-    # §1.6: the cosα form is ≈0.4 % (screw) and ≈0.25 % (nut) too large.
+    # The cosα form is ≈0.4 % (screw) and ≈0.25 % (nut) too large.
     excess = {
         side: harris_rolling_curvature(REFERENCE, side) / rolling_curvature(REFERENCE, side) - 1
         for side in ("screw", "nut")
@@ -72,7 +72,7 @@ def test_g15_g16_approximate_forms() -> None:
 
 
 def test_t1_2_kinematics_wear_radii() -> None:
-    """T1.2 uses the cosλ curvature sums of (E1.2); the exact (G15)/(G16) differ by < 0.05 %."""
+    """The wear reference uses the cosλ curvature sums (G18); exact (G15)/(G16) differ < 0.05 %."""
     screw = raceway_curvature(WEAR_REFERENCE, "screw", model="harris")
     nut = raceway_curvature(WEAR_REFERENCE, "nut", model="harris")
     assert screw.rx == pytest.approx(2.820e-3, abs=0.5e-6)
@@ -94,13 +94,13 @@ def test_principal_axes(side: str) -> None:
     np.testing.assert_allclose(c.principal_curvatures, values[::-1], rtol=1e-13)
     major = vectors[:, 1] * np.sign(vectors[0, 1])
     assert c.principal_angle == pytest.approx(math.atan2(major[1], major[0]), abs=1e-12)
-    assert 4e-4 < abs(c.principal_angle) < 6e-4  # "about 5e-4 rad", §1.6
+    assert 4e-4 < abs(c.principal_angle) < 6e-4  # "about 5e-4 rad"
     assert c.rx == 1 / c.h_xx
     assert c.ry == 1 / c.h_yy
 
 
 def test_screw_contact_is_more_curved_than_nut() -> None:
-    """§1.6: screw convex along t, nut concave, so Σρ_screw > Σρ_nut."""
+    """Screw convex along t, nut concave, so Σρ_screw > Σρ_nut."""
     screw, nut = (raceway_curvature(REFERENCE, side) for side in ("screw", "nut"))
     assert screw.k_x > 0 > nut.k_x
     assert screw.curvature_sum > nut.curvature_sum

@@ -84,7 +84,7 @@ def test_g8_contact_points_on_g12_helices() -> None:
     turn = contact_point(REFERENCE, "screw", theta=theta + 2 * math.pi) - a
     np.testing.assert_allclose(turn, np.broadcast_to([0, 0, 10.0e-3], turn.shape), atol=1e-15)
     np.testing.assert_allclose(np.linalg.norm(a - b, axis=-1), 6.35e-3, rtol=1e-14)
-    # Axial component of the contact normal is s·sinβ·cosα (§1.3).
+    # Axial component of the contact normal is s·sinβ·cosα (G8).
     e_a = contact_direction(REFERENCE, theta, flank=-1)
     np.testing.assert_allclose(e_a[:, 2], -math.sin(math.pi / 4) * math.cos(REFERENCE.lead_angle))
 
@@ -135,7 +135,7 @@ def test_contact_frames_match_g13_g14(beta: float, lead: float, theta: float) ->
 @settings(max_examples=30, deadline=None)
 @given(beta=contact_angles, lead=leads, theta=angles)
 def test_z_axis_is_surface_normal(beta: float, lead: float, theta: float) -> None:
-    """∂S/∂θ and ∂S/∂φ of (G11) at the contact point are ⊥ ẑ; x̂ = t is tangent (§1.4)."""
+    """∂S/∂θ and ∂S/∂φ of (G11) at the contact point are ⊥ ẑ; x̂ = t is tangent (G13)."""
     g = geometry(lead, beta)
     eps = 1e-6
     for side in SIDES:
@@ -149,7 +149,7 @@ def test_z_axis_is_surface_normal(beta: float, lead: float, theta: float) -> Non
             )
             for tangent in (d_theta, d_phi):
                 assert abs(tangent @ z_axis) <= 1e-8 * np.linalg.norm(tangent)
-            # ∂S/∂θ = σ[(1 ∓ κ r_b cosβ) t + …]: its t component, (§1.4).
+            # ∂S/∂θ = σ[(1 ∓ κ r_b cosβ) t + …]: its t component.
             t = frenet_frame(g, theta)[0]
             stretch = 1.0 - (1 if side == "screw" else -1) * g.curvature * g.ball_radius * math.cos(
                 beta

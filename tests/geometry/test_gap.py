@@ -1,4 +1,4 @@
-"""Exact (§1.5) and quadratic (§1.6) initial gap against contact-tcr.md T-G2/T-G3."""
+"""Exact and quadratic initial gap (G11)–(G18) against the TCR reference screw."""
 
 import math
 import time
@@ -75,7 +75,7 @@ def test_numerical_hessian_equals_closed_form(side: str) -> None:
 
 
 def test_documented_numerical_hessian_is_a_20_micron_difference() -> None:
-    """T-G2 quotes 354.510, 12.1142, −0.171164 for the numerical Hessian. These are the central
+    """A published numerical Hessian is 354.510, 12.1142, −0.171164. These are the central
     differences with a 20 µm step, biased by the quartic terms (+9e-6 and +2.7e-5 relative);
     the step → 0 limit is the closed form 354.5069, 12.11387, −0.171163."""
     h_xx, h_yy, h_xy = _hessian("screw", 20.0 * UM)

@@ -1,6 +1,7 @@
 """ScrewGeometry: validation, derived helix quantities (G2), (G6), (G12), lead_angle contract.
 
-Reference numbers: contact-tcr.md §11 T-G1 (f = 0.52) and kinematics-wear.md §1.7 T1.1 (f = 0.55).
+Reference numbers: the TCR reference screw (examples/gao2019_tcr.toml, f = 0.52) and the wear
+reference screw (examples/wear_step_stress.toml, f = 0.55).
 """
 
 import math

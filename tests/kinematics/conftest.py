@@ -1,4 +1,4 @@
-"""REF screw of kinematics-wear.md §10.2 and helpers to vary its case."""
+"""The wear reference screw (examples/wear_step_stress.toml) and helpers to vary its case."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ def ref_geometry() -> ScrewGeometry:
 
 @pytest.fixture
 def ref_case(wear_case_path):
-    """The REF case at preload 1500 N and no external load (so F_1 = F_2 = 1500 N)."""
+    """The reference case at preload 1500 N and no external load (so F_1 = F_2 = 1500 N)."""
     return updated(load_case(wear_case_path), operating={"axial_load": 0.0})
 
 

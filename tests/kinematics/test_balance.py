@@ -1,4 +1,4 @@
-"""Quasi-static ball balance, Levels 0/1/2: kinematics-wear.md T1.7, T1.9–T1.11, T3.4–T3.6."""
+"""Quasi-static ball balance, Levels 0/1/2: worked examples of the wear reference screw."""
 
 from __future__ import annotations
 
@@ -30,7 +30,7 @@ def test_contract_attributes(ref_case):
         "angle_nut",
     ):
         assert isinstance(getattr(state, name), float), name
-    assert state.ball_speed == pytest.approx(0.09333, rel=5e-4)  # T2.1 at the case speed
+    assert state.ball_speed == pytest.approx(0.09333, rel=5e-4)  # at the case speed
 
 
 def test_t1_7_hertz_constants(ref_case):
@@ -52,9 +52,9 @@ def test_t1_9_t1_11_level0_loads(ref_case, axial, load):
 @pytest.mark.parametrize(
     ("rpm", "q_a", "q_b", "b_a", "b_b"),
     [
-        (100, 39.197, 39.197, 45.31, 45.31),  # T3.4
-        (3000, 39.05, 39.34, 45.52, 45.10),  # T3.5
-        (6000, 38.64, 39.79, 46.15, 44.45),  # T3.6
+        (100, 39.197, 39.197, 45.31, 45.31),
+        (3000, 39.05, 39.34, 45.52, 45.10),
+        (6000, 38.64, 39.79, 46.15, 44.45),
     ],
 )
 def test_level1_groove_balance(ref_case, rpm, q_a, q_b, b_a, b_b):
@@ -91,7 +91,7 @@ def test_level1_tends_to_level0_as_speed_goes_to_zero(ref_case):
     assert s0.angle_screw == pytest.approx(s0.angle_nut, rel=1e-9)
     axial = model.balls * s0.load_nut * math.sin(s0.angle_nut) * math.cos(lam)
     assert axial == pytest.approx(1500.0, rel=1e-9)
-    # What is left, the conformal groove turning the load line (β 45° → 45.31°, T3.4), is an
+    # What is left, the conformal groove turning the load line (β 45° → 45.31° at 100 rpm), is an
     # elastic effect that vanishes like δ ∝ F^(2/3) as the load goes to zero.
     for force in (1500.0, 1.0):
         s0 = solve_ball(model, 0.0, force, 1, level=1)
@@ -134,7 +134,7 @@ def test_level2_balance_holds_and_conserves_energy(ref_case, flank):
 
 def test_level2_without_friction_is_level1(ref_case):
     # μ_b = Λ → 0 and low speed: no traction, negligible inertia and rolling force, so Level 2
-    # gives the groove balance of Level 1 (T3.4). Exactly zero friction leaves V undetermined
+    # gives the groove balance of Level 1. Exactly zero friction leaves V undetermined
     # (F_R,A = F_R,B fixes nothing), hence 1e-4.
     frictionless = updated(ref_case, kinematics={"boundary_friction": 1e-4, "limiting_shear": 1e-4})
     s2 = solve_ball(ball_model(frictionless), 100 * RPM, 1500.0, 1, level=2)
@@ -146,13 +146,13 @@ def test_level2_without_friction_is_level1(ref_case):
 
 def test_level2_nut_reaction_holds_the_gyroscopic_moment(ref_case):
     # Without friction at A the t-component of M_g (E3.2: s J ω_B ω_c cosλ sinβ) can only be
-    # held by the traction at B: |F_TB,Y| r_b = M_g·t (3000 rpm: |M_g| = 3.705e-4 N m, T3.3),
+    # held by the traction at B: |F_TB,Y| r_b = M_g·t (3000 rpm: |M_g| = 3.705e-4 N m),
     # up to what the weak friction at A can carry, μ Q_A r_b.
     mu = 1e-4
     frictionless = updated(ref_case, kinematics={"boundary_friction": mu, "limiting_shear": mu})
     model = ball_model(frictionless)
     s2 = solve_ball(model, 3000 * RPM, 1500.0, 1, level=2)
-    assert s2.ball_speed == pytest.approx(2.800, rel=0.02)  # T3.3
+    assert s2.ball_speed == pytest.approx(2.800, rel=0.02)
     assert np.linalg.norm(s2.gyroscopic_moment) == pytest.approx(3.705e-4, rel=0.03)
     m_t = s2.gyroscopic_moment @ s2.motion.frame.t
     f_y = s2.traction_nut @ s2.motion.nut_contact.y

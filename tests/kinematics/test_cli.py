@@ -55,7 +55,7 @@ def test_writes_a_complete_results_folder(tmp_path, wear_case_path):
     summary = json.loads((out / "summary.json").read_text())
     nut = summary["nuts"]["nut1"]
     assert summary["level"] == 1
-    assert nut["ball_speed"]["value"] == pytest.approx(0.09333, rel=2e-3)  # T2.1, β_A ≠ 45°
+    assert nut["ball_speed"]["value"] == pytest.approx(0.09333, rel=2e-3)  # β_A ≠ 45°
     assert nut["orbital_speed"]["value"] == pytest.approx(4.652, rel=2e-3)
     assert nut["spin_screw"]["value"] == pytest.approx(7.382, rel=1e-2)
     assert abs(nut["spin_nut"]["value"]) < 1e-9
@@ -63,7 +63,7 @@ def test_writes_a_complete_results_folder(tmp_path, wear_case_path):
     assert 0.0 < nut["asperity_share"] < 1.0
     assert nut["film_thickness_central"]["value"] == pytest.approx(55e-9, rel=0.05)
     torque = summary["drag_torque"]
-    assert torque["catalogue"]["value"] == pytest.approx(0.4231, rel=5e-4)  # T9.2
+    assert torque["catalogue"]["value"] == pytest.approx(0.4231, rel=5e-4)
     assert 0 < torque["ball_model"]["value"] < torque["catalogue"]["value"]
     assert torque["heat"]["value"] == pytest.approx(
         torque["ball_model"]["value"] * 10 * math.pi / 3, rel=1e-9

@@ -1,4 +1,4 @@
-"""Frames of §2.1: orthonormal, right-handed, for both flanks and both contacts (property tests)."""
+"""Kinematics frames: orthonormal, right-handed, for both flanks and contacts (property tests)."""
 
 from __future__ import annotations
 
@@ -63,7 +63,7 @@ def test_same_frames_as_the_geometry_package_at_the_nominal_angle(geometry, flan
 
 
 def test_document_components(ref_geometry):
-    # §2.1: Y_A = t × e = cosβ b − s sinβ n, Y_B = e × t, e_A = −e_B.
+    # Y_A = t × e = cosβ b − s sinβ n, Y_B = e × t, e_A = −e_B.
     frame = ball_frame(ref_geometry)
     beta = ref_geometry.contact_angle
     for s in (1, -1):

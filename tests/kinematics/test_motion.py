@@ -1,4 +1,4 @@
-"""Ball motion (E2.1)–(E2.5), inertia (§3.1–3.2): kinematics-wear.md T2.1–T2.3, T2.7, T3.1–T3.3."""
+"""Ball motion (E2.1)–(E2.5), inertia (E3.1)–(E3.2): worked examples of the wear reference screw."""
 
 from __future__ import annotations
 
@@ -95,7 +95,7 @@ def test_t3_1_ball_mass_and_inertia():
 
 @pytest.mark.parametrize(
     ("omega", "f_c", "m_g"),
-    [(OMEGA, 4.555e-4, 4.116e-7), (314.16, 0.4100, 3.705e-4)],  # T3.2, T3.3
+    [(OMEGA, 4.555e-4, 4.116e-7), (314.16, 0.4100, 3.705e-4)],
 )
 def test_inertia_forces(ref_geometry, omega, f_c, m_g):
     m = ball_motion(ref_geometry, omega)

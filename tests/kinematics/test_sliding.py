@@ -1,4 +1,4 @@
-"""Sliding field at A, exact (E2.6) and closed form (E2.7): kinematics-wear.md T2.4–T2.6."""
+"""Sliding field at A, exact (E2.6) and closed form (E2.7): wear reference screw examples."""
 
 from __future__ import annotations
 
@@ -24,10 +24,10 @@ def at(field, i=0, j=0):
 @pytest.mark.parametrize(
     ("flank", "x", "y", "vx", "vy"),
     [
-        (1, 50, 0, 0.0, -2.268e-3),  # T2.4
+        (1, 50, 0, 0.0, -2.268e-3),
         (1, 0, 200, -1.476e-3, -2.637e-3),
         (1, 30, -150, 1.107e-3, -2.416e-3),
-        (-1, 50, 0, 0.0, -3.007e-3),  # T2.5
+        (-1, 50, 0, 0.0, -3.007e-3),
         (-1, 30, -150, -1.107e-3, -2.859e-3),
     ],
 )

@@ -1,4 +1,4 @@
-"""Ball load (Q1)/(E1.6) against contact-tcr.md §11 and kinematics-wear.md T1.11."""
+"""Ball load (Q1) against the TCR and the wear reference screws."""
 
 import math
 
@@ -21,7 +21,7 @@ def test_ball_load_at_preload() -> None:
 
 
 def test_ball_load_of_loaded_nut_t1_11() -> None:
-    """kinematics-wear T1.11: Q at F1 for F_a = 2000/3000/4000 N, F_p = 1500 N."""
+    """Wear reference screw: Q at F1 for F_a = 2000/3000/4000 N, F_p = 1500 N."""
     f1 = [nut_forces(1500.0, fa).f1 for fa in (2000.0, 3000.0, 4000.0)]
     np.testing.assert_allclose(ball_load(f1, 54, BETA, ALPHA), [68.69, 85.91, 105.79], rtol=2e-4)
 

@@ -1,6 +1,7 @@
-"""Double-nut preload (P1)–(P3)/(E1.10), stiffness and wear (E1.7)–(E1.13) against the docs.
+"""Double-nut preload (P1)–(P3), stiffness (P4) and wear (E1.7)–(E1.13).
 
-contact-tcr.md §8.2 (table, T-PL) and kinematics-wear.md §1.7 (T1.8–T1.10, T1.12).
+Against the load-split table of the preloaded double nut and worked examples of the TCR and the
+wear reference screws.
 """
 
 import math
@@ -32,7 +33,7 @@ LIFT_OFF = 2**1.5  # F_a/F_p at lift-off (P2)
         (2.5, 2.54904, 0.04904),
     ],
 )
-def test_section_8_2_table(ratio: float, f1: float, f2: float) -> None:
+def test_load_split_table(ratio: float, f1: float, f2: float) -> None:
     forces = nut_forces(1.0, ratio)
     assert forces.f1 == pytest.approx(f1, abs=1e-5)
     assert forces.f2 == pytest.approx(f2, abs=1e-5)
@@ -106,10 +107,10 @@ def test_rejects_bad_axial_load_and_states_sign_convention(axial: float) -> None
 # ---------------------------------------------------------------------------------- stiffness
 
 
-def test_preloaded_axial_stiffness_section_8_2() -> None:
-    # contact-tcr §8.2: δ_a = 4.0217 µm at 1500 N → 559 N/µm per nut
+def test_preloaded_axial_stiffness_of_the_tcr_reference_screw() -> None:
+    # TCR reference screw: δ_a = 4.0217 µm at 1500 N → 559 N/µm per nut
     assert float(preloaded_axial_stiffness(1500.0, 4.0217e-6)) == pytest.approx(559e6, rel=1e-3)
-    # kinematics-wear §1.7: 1.5 F^(1/3)/C_a = 4.58e8 N/m at 1500 N, C_a = 3.749e-8
+    # wear reference screw: 1.5 F^(1/3)/C_a = 4.58e8 N/m at 1500 N, C_a = 3.749e-8
     delta = nut_axial_deflection(1500.0, 3.749e-8)
     assert float(preloaded_axial_stiffness(1500.0, delta)) == pytest.approx(4.58e8, rel=1e-3)
     with pytest.raises(InputError):
@@ -117,23 +118,24 @@ def test_preloaded_axial_stiffness_section_8_2() -> None:
 
 
 def test_axial_deflection_from_normal_approaches() -> None:
-    # contact-tcr §11 (T-H3/T-H4): (1.432304 + 1.402484) µm / (sinβ cosα) = 4.0217 µm
+    # Hertz approaches at the screw and nut contacts of the TCR reference screw:
+    # (1.432304 + 1.402484) µm / (sinβ cosα) = 4.0217 µm
     d = axial_deflection_from_approaches(1.432304e-6, 1.402484e-6, BETA, ALPHA)
     assert float(d) == pytest.approx(4.0217e-6, rel=1e-4)
-    # kinematics-wear T1.9: δ_A = 1.752, δ_B = 1.710 µm → δ_a0 = 4.912 µm
+    # wear reference screw: δ_A = 1.752, δ_B = 1.710 µm → δ_a0 = 4.912 µm
     d = axial_deflection_from_approaches(1.752e-6, 1.710e-6, BETA, ALPHA)
     assert float(d) == pytest.approx(4.912e-6, rel=2e-4)
 
 
 def test_compliance_constant_t1_8() -> None:
-    # T1.7 Hertz constants → T1.8 C_a (exact and Hamrock–Brewe)
+    # Hertz constants → C_a (exact and Hamrock–Brewe)
     assert nut_axial_compliance(1.513e-7, 1.477e-7, 54, BETA, ALPHA) == pytest.approx(
         3.749e-8, rel=1e-3
     )
     assert nut_axial_compliance(1.517e-7, 1.483e-7, 54, BETA, ALPHA) == pytest.approx(
         3.762e-8, rel=1e-3
     )
-    # T1.9: δ_a0 = C_a F_p^(2/3) = 4.912 µm at 1500 N
+    # δ_a0 = C_a F_p^(2/3) = 4.912 µm at 1500 N
     assert float(nut_axial_deflection(1500.0, 3.749e-8)) == pytest.approx(4.912e-6, rel=2e-4)
 
 
@@ -144,7 +146,7 @@ def test_preload_after_wear_t1_12() -> None:
     h = np.array([0.1e-6, 1.0e-6, 2.43e-6])
     f_p = preload_after_wear(1500.0, 3.749e-8, h, BETA, ALPHA)
     np.testing.assert_allclose(f_p, [1435.5, 899.6, 244.3], rtol=1e-3)
-    # Hamrock–Brewe constants (C_a = 3.762e-8, T1.8) → 1435.7 / 901.5 / 247.2 N
+    # Hamrock–Brewe constants (C_a = 3.762e-8) → 1435.7 / 901.5 / 247.2 N
     f_hb = preload_after_wear(1500.0, 3.762e-8, h, BETA, ALPHA)
     np.testing.assert_allclose(f_hb, [1435.7, 901.5, 247.2], rtol=1e-3)
 

@@ -1,7 +1,7 @@
-"""Hamrock–Dowson film thickness and EHL rolling resistance (kinematics-wear.md T6.1–T6.3, T3.7).
+"""Hamrock–Dowson film thickness and EHL rolling resistance ((E6.1)–(E6.3), (E3.4)).
 
-REF contact A with the document's E1.2 radii: R_x = 2.8196 mm, R_y = 34.925 mm; E′ = 2.2637e11 Pa,
-η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa, u_e = 0.09333 m/s.
+Contact A of the wear reference screw with the cosλ curvature radii of (G18): R_x = 2.8196 mm,
+R_y = 34.925 mm; E′ = 2.2637e11 Pa, η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa, u_e = 0.09333 m/s.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import pytest
 from ballscrew.errors import InputError
 from ballscrew.lubrication import dimensionless_groups, ehl_rolling_resistance, hamrock_dowson
 
-# E1.2: 1/R_xA = 2/D_w + 2 cosβ cosλ/(d_m − D_w cosβ), 1/R_yA = 2/D_w − 1/r_s.
+# (G18): 1/R_xA = 2/D_w + 2 cosβ cosλ/(d_m − D_w cosβ), 1/R_yA = 2/D_w − 1/r_s.
 LAM = math.atan(0.010 / (math.pi * 0.040))
 RX = 1.0 / (2 / 6.35e-3 + 2 * math.cos(math.pi / 4) * math.cos(LAM) / (0.040 - 6.35e-3 / 2**0.5))
 RY = 1.0 / (2 / 6.35e-3 - 1 / (0.55 * 6.35e-3))
@@ -35,7 +35,7 @@ def test_t6_1_groups_and_film():
 
 @pytest.mark.parametrize(
     ("load", "w", "h_c", "h_min"),
-    [(68.69, 3.817e-5, 51.35e-9, 40.04e-9), (105.79, None, 49.89e-9, 38.80e-9)],  # T6.2, T6.3
+    [(68.69, 3.817e-5, 51.35e-9, 40.04e-9), (105.79, None, 49.89e-9, 38.80e-9)],
 )
 def test_film_falls_slowly_with_load(load, w, h_c, h_min):
     film = hamrock_dowson(RX, RY, E_PRIME, ETA, ALPHA, U_E, load)

@@ -1,4 +1,4 @@
-"""JGP load sharing between the EHL film and fractal asperities (kinematics-wear.md T6.4–T6.7)."""
+"""JGP load sharing between the EHL film and fractal asperities (load sharing, (E6.1)–(E6.5))."""
 
 from __future__ import annotations
 
@@ -35,9 +35,9 @@ def test_sigma_of_the_cell():
 @pytest.mark.parametrize(
     ("load", "psi", "h", "f_asp", "f_film"),
     [
-        (39.41, 0.767, 58.76e-9, 30.21, 9.19),  # T6.4
-        (68.69, 0.672, 55.34e-9, 46.18, 22.51),  # T6.5
-        (105.79, 0.603, 53.07e-9, 63.77, 42.02),  # T6.6
+        (39.41, 0.767, 58.76e-9, 30.21, 9.19),
+        (68.69, 0.672, 55.34e-9, 46.18, 22.51),
+        (105.79, 0.603, 53.07e-9, 63.77, 42.02),
     ],
 )
 def test_ref_sharing(load, psi, h, f_asp, f_film):
@@ -79,7 +79,7 @@ def test_residual_is_monotone_with_the_right_end_values():
 
 
 def test_residual_is_still_positive_at_the_documents_bracket_end_on_rough_surfaces():
-    # kinematics-wear.md (E6.4) brackets ψ on [0, 1 − 1e-12] claiming r(1⁻) = −Q < 0. h_c only
+    # A bracket of ψ on [0, 1 − 1e-12] claiming r(1⁻) = −Q < 0. h_c only
     # grows as W^−0.067, so at 1 − 1e-12 the film is 6.4× thicker, not infinite: on a rough
     # surface (σ = 0.46 µm ≫ h_c) the residual there is still +42 N and that bracket fails.
     rough = AsperitySurface(2.4, 1e-8, E_STAR, H, 100e-12)

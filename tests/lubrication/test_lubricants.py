@@ -19,7 +19,7 @@ def case_lubricant(case):
 def test_iso_grades_follow_iso_3448_midpoints():
     # η₀ = ρ ν with ν = grade mm²/s at 40 °C and ρ = 870 kg/m³.
     assert lubricant("iso_vg_68").viscosity == pytest.approx(870 * 68e-6)
-    assert lubricant("iso_vg_68").pressure_viscosity == 2.1e-8  # REF, kinematics-wear §10.2
+    assert lubricant("iso_vg_68").pressure_viscosity == 2.1e-8  # wear reference screw
     for entry in LUBRICANTS.values():
         assert 1e-3 < entry.viscosity < 1.0 and 1e-8 < entry.pressure_viscosity < 3e-8
         assert entry.source

@@ -1,4 +1,4 @@
-"""D and G recovered from synthetic W–M profiles (issue #6: within 2 % and 10 %), both methods."""
+"""D and G recovered from synthetic W–M profiles (within 2 % and 10 %), both methods."""
 
 from __future__ import annotations
 

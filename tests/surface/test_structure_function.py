@@ -71,7 +71,7 @@ def test_c_d_is_regular_at_d_one_and_a_half() -> None:
 
 @pytest.mark.parametrize(("D", "ripple"), [(1.3, 0.012), (1.5, 0.045), (1.59, 0.07), (1.7, 0.12)])
 def test_f4_is_the_log_period_mean_of_the_discrete_sum(D: float, ripple: float) -> None:
-    """contact-tcr.md: (F4) 'checked against the discrete sum to 0.4 %'.
+    """(F4) agrees with the discrete sum to 0.4 %.
 
     The infinite W–M sum oscillates about (F4) with period ln γ in ln τ; its geometric mean over
     a period equals (F4) to < 0.4 %; the oscillation itself reaches 1 % (D = 1.3), 4 % (1.5),

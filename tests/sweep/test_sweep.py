@@ -62,7 +62,7 @@ def test_sweep_on_local_dask_cluster(tmp_path, coarse_case):
     assert np.isnan(ds["resistance"].sel({"surface.D": 1.5, "operating.axial_load": 1000.0}))
     good = ds["resistance"].where(~ds["failed"])
     assert int(np.isfinite(good).sum()) == 5
-    # Physics through the sweep: R falls with D (contact-tcr T-TR1) at either load.
+    # Physics through the sweep: R falls with D (Gao et al. 2019) at either load.
     assert float(good.isel({"operating.axial_load": 0}).diff("surface.D").max()) < 0
     # F1 − F2 = F_a at every good point (P1).
     np.testing.assert_allclose(

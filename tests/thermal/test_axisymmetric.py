@@ -1,4 +1,4 @@
-"""Axisymmetric scikit-fem model against the engine report, closed forms, the network and
+"""Axisymmetric scikit-fem model against the reference problem, closed forms, the network and
 mesh refinement (reference problems in ``test_network.py``)."""
 
 from __future__ import annotations
@@ -30,13 +30,13 @@ def engine_fe():
     return simulate(disc, 5400.0, 60.0)
 
 
-def test_engine_report_steady(engine_fe):
-    """Peak 45.169 °C and 104.68 µm (engine report: 2-D axisymmetric P2, 1 mm)."""
+def test_reference_problem_steady(engine_fe):
+    """Peak 45.169 °C and 104.68 µm (reference: 2-D axisymmetric P2, 1 mm, scikit-fem 12.0.2)."""
     assert 20.0 + engine_fe.max_temperature_rise == pytest.approx(ref.FE_T_MAX, abs=0.002)
     assert engine_fe.elongation == pytest.approx(ref.FE_ELONGATION, rel=2e-4)
 
 
-def test_engine_report_transient(engine_fe):
+def test_reference_problem_transient(engine_fe):
     """T_max at 15/60/90 min and 95.5 % of the steady rise after 90 min."""
     t = engine_fe.transient
     for minute, value in ref.FE_HISTORY.items():
@@ -55,7 +55,7 @@ def test_energy_balance_steady_and_transient(engine_fe):
 
 def test_network_and_fe_agree(engine_fe):
     """The hierarchy checks itself: peak rise and elongation of the network within 0.5 % and
-    0.2 % of the FE model (engine report: 0.1 % on T, i.e. 0.2 % on the rise)."""
+    0.2 % of the FE model (reference: 0.1 % on T, i.e. 0.2 % on the rise)."""
     net = simulate(build_network(ref.engine_problem(), 0.005), None)
     assert net.max_temperature_rise == pytest.approx(engine_fe.max_temperature_rise, rel=5e-3)
     assert net.elongation == pytest.approx(engine_fe.elongation, rel=2e-3)
@@ -112,7 +112,7 @@ def test_interface_jump_equals_q_times_r(order):
 
 def test_thermoelastic_end_displacement_equals_alpha_integral(engine_fe):
     """Axisymmetric thermo-elasticity (u_z = 0 at z = 0): mean end displacement = α∫θ dV/A
-    (Betti; engine report 3-D: 104.8 vs 104.7 µm)."""
+    (Betti; a 3-D clamped check gave 104.8 vs 104.7 µm)."""
     disc = engine_fe.discretisation
     u = thermoelastic_elongation(disc, engine_fe.steady, 206e9, 0.3)
     assert u == pytest.approx(engine_fe.elongation, rel=1e-6)

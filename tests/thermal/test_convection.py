@@ -1,4 +1,4 @@
-"""Convection correlations against the worked examples of contact-tcr.md §9.2 and hand values."""
+"""Convection correlations against worked examples (Q5)–(Q6) and hand values."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from ballscrew.thermal.convection import (
 )
 
 RPM = 2 * math.pi / 60
-AIR = Air(1.589e-5, 0.0263, 0.707, 300.0)  # the spec's air; β = 1/300 K reproduces Ra
+AIR = Air(1.589e-5, 0.0263, 0.707, 300.0)  # air of the worked examples; β = 1/300 K reproduces Ra
 
 
 @pytest.mark.parametrize(("rpm", "h"), [(1000, 37.46), (800, 32.28)])

@@ -1,4 +1,4 @@
-"""Friction heat of bearings and ball screw against the worked examples of contact-tcr.md §9.1."""
+"""Friction heat of bearings and ball screw against worked examples (Q2)–(Q4)."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from ballscrew.thermal.heat_sources import friction_heat, nut_heat_shares, palmg
 RPM = 2 * math.pi / 60
 
 
-def test_palmgren_example_of_the_spec():
+def test_palmgren_worked_example():
     """(Q3) f0 = 2, ν0 = 20 mm²/s, 1000 r/min, d_m = 46 mm, F_a = 2000 N, C0 = 12000 N:
     M0 = 14.34 N·mm, M1 = 50.93 N·mm, M = 0.06528 N·m, Q = 6.84 W."""
     m = palmgren_torque(1000 * RPM, 2.0, 20e-6, 0.046, 2000.0, 12000.0)
@@ -37,7 +37,7 @@ def test_given_f1_overrides_the_estimate():
 
 
 @pytest.mark.parametrize(("rpm", "heat"), [(1000, 44.31), (800, 35.45)])
-def test_drag_torque_heat_of_the_spec(rpm, heat):
+def test_drag_torque_heat_worked_example(rpm, heat):
     """(Q4) F_p = 1500 N, L = 10 mm, d_m = 40 mm: T_p = 0.42314 N·m → 44.31 W / 35.45 W."""
     lead_angle = math.atan(0.010 / (math.pi * 0.040))
     torque = preload_drag_torque(1500.0, 0.010, lead_angle)

@@ -1,7 +1,7 @@
-"""1-D axial network against the engine report, the fin solution and a closed-form interface.
+"""1-D axial network against the reference problem, the fin solution and a closed-form interface.
 
 The reference problems are defined here and reused by ``test_axisymmetric.py``:
-- the engine report's test problem (thermal-fe-engines.md §1): shaft Ø40×1000 mm, nut ring
+- the reference problem of ``benchmarks/bench_thermal.py``: shaft Ø40×1000 mm, nut ring
   Ø40/Ø70×100 mm at z = 450–550 mm, k = 45, ρ = 7850, c_p = 460, h = 20 W/(m² K),
   R″ = 5e-4 m² K/W, 30 W at the interface split 50/50, α = 11.5e-6 /K;
 - a thin fin heated over a band, whose exact solution is a piecewise cosh/sinh (below);
@@ -33,7 +33,7 @@ R_PP = 5e-4  # m² K/W
 
 
 def engine_problem(stroke: float = 0.0) -> ThermalProblem:
-    """thermal-fe-engines.md §1 (the interface conductance is R″ over the 2π·20·100 mm² bore)."""
+    """The reference problem (the interface conductance is R″ over the 2π·20·100 mm² bore)."""
     g = 2 * math.pi * 0.02 * 0.1 / R_PP
     nut = RingPart("nut", 0.1, 0.035, True, g, 15.0, 15.0)
     return ThermalProblem(
@@ -49,7 +49,7 @@ def engine_problem(stroke: float = 0.0) -> ThermalProblem:
     )
 
 
-# thermal-fe-engines.md §1: 1-D network (5 mm cells) and 2-D axisymmetric P2 (1 mm) values
+# Reference values: 1-D network (5 mm cells) and 2-D axisymmetric P2 (1 mm) values
 NETWORK_T_MAX, NETWORK_ELONGATION = 45.221, 104.62e-6
 NETWORK_HISTORY = {15: 31.70, 30: 37.29, 60: 42.29, 90: 44.09}
 FE_T_MAX, FE_ELONGATION = 45.169, 104.68e-6
@@ -151,8 +151,8 @@ def sleeve_solution(problem: ThermalProblem, radius: float) -> float:
     return q / (2 * math.pi * length) * (1 / (h * ro) + math.log(ro / radius) / k)
 
 
-def test_engine_report_network_steady():
-    """Peak 45.221 °C and 104.62 µm with 5 mm cells (thermal-fe-engines.md §1)."""
+def test_reference_problem_network_steady():
+    """Peak 45.221 °C and 104.62 µm with 5 mm cells (reference values)."""
     sol = simulate(build_network(engine_problem(), 0.005), None)
     assert 20.0 + sol.max_temperature_rise == pytest.approx(NETWORK_T_MAX, abs=0.01)
     assert sol.elongation == pytest.approx(NETWORK_ELONGATION, rel=1e-3)
@@ -160,7 +160,7 @@ def test_engine_report_network_steady():
     assert sol.heat_balance_error < 1e-9
 
 
-def test_engine_report_network_transient():
+def test_reference_problem_network_transient():
     """T_max at 15/30/60/90 min, 95.5 % of the steady rise after 90 min; energy conserved."""
     sol = simulate(build_network(engine_problem(), 0.005), 5400.0, 60.0)
     t = sol.transient

@@ -88,7 +88,7 @@ def test_tcr_feeds_the_interface(case, tcr, results):
         assert i.conductance_per_area == pytest.approx(
             1 / ((i.micro_resistance + i.constriction_resistance) * area), rel=1e-12
         )
-        # macro-constriction of ~100 small patches dominates the micro TCR (§7 scale check)
+        # macro-constriction of ~100 small patches dominates the micro TCR (scale check)
         assert 0.5 < i.constriction_resistance < 10.0
         assert i.constriction_resistance > 10 * i.micro_resistance
 

@@ -1,4 +1,4 @@
-"""3-D hexahedral model (``model="3d"``): mesh, energy, the engine report, agreement with the
+"""3-D hexahedral model (``model="3d"``): mesh, energy, the reference problem, agreement with the
 axisymmetric model, and the helical contact patches (reference problems in ``test_network.py``).
 
 Coarse meshes throughout (1–15k unknowns) so the file runs in well under a minute.
@@ -91,8 +91,8 @@ def test_energy_balance_steady_and_transient(engine_3d):
     assert t.heat_balance_error < 1e-6
 
 
-def test_engine_report(engine_3d):
-    """thermal-fe-engines.md §1: 45.169 °C and 104.68 µm (2-D P2, 1 mm), and the transient:
+def test_reference_problem(engine_3d):
+    """Reference values: 45.169 °C and 104.68 µm (2-D P2, 1 mm), and the transient:
     the coarse 3-D mesh within 0.5 % of the rise and 0.5 % of the elongation."""
     assert engine_3d.max_temperature_rise == pytest.approx(ref.FE_T_MAX - 20.0, rel=5e-3)
     assert engine_3d.elongation == pytest.approx(ref.FE_ELONGATION, rel=5e-3)

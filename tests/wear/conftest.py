@@ -1,4 +1,4 @@
-"""Fixtures of the wear tests: the REF case and a coarse, short variant of it."""
+"""Fixtures of the wear tests: the reference case and a coarse, short variant of it."""
 
 from __future__ import annotations
 
@@ -24,13 +24,14 @@ def short_programme(revolutions: float = 1.0e5) -> list[dict[str, object]]:
 
 @pytest.fixture(scope="session")
 def ref_case() -> Case:
-    """examples/wear_step_stress.toml: the REF screw and programme (§10.2, §9.2)."""
+    """examples/wear_step_stress.toml: the wear reference screw and its step-stress
+    programme."""
     return ballscrew.load_case(REF_PATH)
 
 
 @pytest.fixture(scope="session")
 def coarse_case() -> Case:
-    """REF on a 12 × 48 grid with 1e5 rev per level and 2e4 rev torque sampling (fast)."""
+    """Reference case on a 12 × 48 grid, 1e5 rev per level, 2e4 rev torque sampling (fast)."""
     return ballscrew.load_case(
         REF_PATH,
         {

@@ -1,4 +1,5 @@
-"""Life integration (§8.2) against kinematics-wear.md T8.3 and the §10.3 end-to-end regression,
+"""Life integration (theory manual ``docs/theory/wear.md``) against the initial wear speed and the
+end-to-end regression of the reference step-stress run,
 with monotonicity, step-size, conservation and checkpoint/resume checks."""
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from ballscrew.wear.life import GridEdgeWarning
 
 SPEED = 10.0 * math.pi / 3.0
 
-# §10.3: N [rev], h_max [µm], F_p [N], T_p [N m]
+# reference step-stress run: N [rev], h_max [µm], F_p [N], T_p [N m]
 REF_TABLE = [
     (0.0, 0.000, 1500.0, 0.4231),
     (4.8e4, 0.119, 1423.6, 0.4016),
@@ -28,7 +29,7 @@ REF_TABLE = [
     (9.6e5, 1.661, 563.0, 0.1588),
     (1.44e6, 2.430, 244.3, 0.0689),
 ]
-# §10.3 final profile of flank +1: (y µm, h µm)
+# reference run, final profile of flank +1: (y µm, h µm)
 REF_PROFILE = [
     (-487, 0.269),
     (-347, 1.308),
@@ -44,7 +45,7 @@ REF_PROFILE = [
 @pytest.fixture(scope="module")
 def ref_life(ref_case):
     with warnings.catch_warnings():
-        warnings.simplefilter("error", GridEdgeWarning)  # the §10.2 box holds the worn contact
+        warnings.simplefilter("error", GridEdgeWarning)  # the reference box holds the worn contact
         return wear_life(ref_case)
 
 
@@ -59,7 +60,7 @@ def _at(life, revolutions: float) -> int:
     return i
 
 
-# ------------------------------------------------------------------ document numbers (REF)
+# ------------------------------------------------------------------ reference numbers
 
 
 def test_t8_3_initial_wear_speed(ref_case) -> None:
@@ -83,7 +84,7 @@ def test_t8_3_initial_wear_speed(ref_case) -> None:
     assert c.depth_per_revolution.max() == pytest.approx(a.depth_per_revolution.max(), rel=0.01)
 
 
-def test_section_10_3_history(ref_life) -> None:
+def test_reference_run_history(ref_life) -> None:
     """h_max, F_p (±3 %) and T_p at the tabulated revolutions; 2.43 µm at 1.44e6 rev (±3 %)."""
     life = ref_life
     assert life.complete
@@ -96,7 +97,7 @@ def test_section_10_3_history(ref_life) -> None:
     assert 1e6 * life.max_wear_depth[-1] == pytest.approx(2.43, rel=0.03)
 
 
-def test_section_10_3_growth_per_level_and_lift_off(ref_life) -> None:
+def test_reference_run_growth_per_level_and_lift_off(ref_life) -> None:
     """h_max growth per level 0.968 / 0.693 / 0.769 µm; nut 2 lifts off from level 2 on."""
     life = ref_life
     ends = [_at(life, n) for n in (0.0, 4.8e5, 9.6e5, 1.44e6)]
@@ -108,7 +109,7 @@ def test_section_10_3_growth_per_level_and_lift_off(ref_life) -> None:
     np.testing.assert_allclose(life.nut_forces[life.level == 2, 0], 4000.0)
 
 
-def test_section_10_3_final_profile_and_contact_width(ref_life) -> None:
+def test_reference_run_final_profile_and_contact_width(ref_life) -> None:
     """Profile samples (±0.06 µm), worn band 1027 µm, contact width 1089 µm worn vs 808 unworn."""
     life = ref_life
     h = life.profiles[-1, 0]
@@ -122,7 +123,7 @@ def test_section_10_3_final_profile_and_contact_width(ref_life) -> None:
 
 
 def test_model_c_calibration(ref_case) -> None:
-    """§10.3: Model C reaches 2.43 µm at 1.44e6 rev with K = 1.289e-4 (±3 %)."""
+    """Reference run: Model C reaches 2.43 µm at 1.44e6 rev with K = 1.289e-4 (±3 %)."""
     case = with_overrides(ref_case, {"wear.model": "C", "wear.coefficient": 1.289e-4})
     life = wear_life(case)
     assert 1e6 * life.max_wear_depth[-1] == pytest.approx(2.43, rel=0.03)
@@ -239,12 +240,12 @@ def test_checkpoint_of_another_case_is_refused(coarse_case, tmp_path) -> None:
         wear_life(other, checkpoint=state, resume=True)
 
 
-def test_section_10_3_with_the_quadratic_gap(ref_case) -> None:
-    """With the quadratic (Hertz) gap the §10.3 profile samples, 1089 µm worn and 808 µm unworn
-    contact widths are matched to one grid cell: the document's pipeline evidently used it.
+def test_reference_run_with_the_quadratic_gap(ref_case) -> None:
+    """With the quadratic (Hertz) gap the reference run's profile samples, 1089 µm worn and
+    808 µm unworn contact widths are matched to one grid cell: the reference run evidently used it.
 
     The exact helicoid gap of the example case gives a contact one cell narrower on each side
-    (790 µm unworn); both agree within the §10.3 tolerances (test above).
+    (790 µm unworn); both agree within the reference-run tolerances (test above).
     """
     life = wear_life(with_overrides(ref_case, {"numerics.gap_model": "quadratic"}))
     h = life.profiles[-1, 0]

@@ -1,4 +1,4 @@
-"""Cell wear rates of Models A and C against kinematics-wear.md §7.5 (T7.1–T7.3)."""
+"""Cell wear rates of Models A and C against worked examples ((E7.2), (E7.3), Archard limit)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import pytest
 from ballscrew.errors import InputError
 from ballscrew.wear import cell_wear_rate, wear_rate_model_a, wear_rate_model_c
 
-E_STAR, H, K, DV = 1.1319e11, 7.0e9, 1e-4, 2.637e-3  # §5.5, §7.5
+E_STAR, H, K, DV = 1.1319e11, 7.0e9, 1e-4, 2.637e-3  # wear reference raceway
 CELL = 100e-12  # ΔA = 100 µm²
 
 
@@ -40,7 +40,7 @@ def test_vectorised_zero_load_and_sign_of_speed() -> None:
 
 
 def test_wear_rate_linear_in_k_and_speed() -> None:
-    """w ∝ K |Δv| in both models (Archard structure of §7.2–§7.3)."""
+    """w ∝ K |Δv| in both models (Archard structure of (E7.2)–(E7.3))."""
     for model in ("A", "C"):
         w1 = cell_wear_rate(model, 5e8, DV, CELL, 2.4, 1e-10, E_STAR, H, K)
         w2 = cell_wear_rate(model, 5e8, 3 * DV, CELL, 2.4, 1e-10, E_STAR, H, 2 * K)

@@ -1,4 +1,4 @@
-"""Wear strips, L_w, reciprocation and the worn gap: kinematics-wear.md §8.1, T8.1–T8.2."""
+"""Wear strips, L_w, reciprocation and the worn gap: ``docs/theory/wear.md`` (E8.1)–(E8.4)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Preload after wear (E1.13, T1.12) and drag torque (E9.1, T9.1–T9.2) of the wear set-up."""
+"""Preload after wear (E1.13) and drag torque (E9.1) of the wear set-up."""
 
 from __future__ import annotations
 
@@ -33,10 +33,10 @@ def test_torque_scale_and_initial_torque(ref_case) -> None:
     assert scaled.torque(1000.0) == pytest.approx(1.5 * 0.2821, rel=1e-3)
     fitted = wear_setup(with_overrides(ref_case, {"wear.initial_torque": "0.6 N*m"}))
     assert fitted.torque(1500.0) == pytest.approx(0.6, rel=1e-12)
-    assert fitted.torque(1000.0) == pytest.approx(0.4, rel=1e-12)  # linear in F_p (E9.3)
+    assert fitted.torque(1000.0) == pytest.approx(0.4, rel=1e-12)  # linear in F_p
 
 
-def test_grid_of_ref_section_10_2(ref_case) -> None:
+def test_grid_of_the_reference_case(ref_case) -> None:
     """32 × 128 over ±1.4 b_max × ±1.4 a_max: Δx = 6.823 µm, Δy = 8.780 µm, ΔA = 59.91 µm²."""
     s = wear_setup(ref_case)
     assert s.dx == pytest.approx(6.823e-6, rel=1e-3)

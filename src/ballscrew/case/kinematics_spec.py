@@ -1,7 +1,8 @@
 """Case section ``[kinematics]``: ball kinematics, quasi-static ball balance, lubrication, limits.
 
-Every key has a default, so a case without the section is valid. Physics reference:
-``kinematics-wear.md`` §2, §3, §5, §6 and §9.1.
+Every key has a default, so a case without the section is valid. Theory manual:
+``docs/theory/kinematics.md``, ``docs/theory/fractal-contact.md`` and
+``docs/theory/lubrication.md``.
 
 Example::
 
@@ -35,7 +36,7 @@ class KinematicsSpec(Model):
 
     level: Literal[0, 1, 2] = Field(
         0,
-        description="ball balance: 0 static load (E1.6), 1 centrifugal force + groove geometry "
+        description="ball balance: 0 static load (Q1), 1 centrifugal force + groove geometry "
         "(E3.5), 2 full balance with traction, EHL rolling resistance, gyroscopic moment (E3.6)",
     )
     speed_range: tuple[_Speed, _Speed] | None = Field(

@@ -157,7 +157,7 @@ class NumericsSpec(Model):
 
 
 class TCRSpec(Model):
-    """Options of the fractal thermal-contact-resistance model (contact-tcr.md §6)."""
+    """Options of the fractal thermal-contact-resistance model (theory manual)."""
 
     variant: model_choice(
         ELEMENT_MODELS, "element solid conductance: V2 (default, reconstruction), MT or V1"

@@ -1,10 +1,9 @@
 """Case section ``[thermal]``: what the temperature-field model needs beyond the screw.
 
-The thermal model (issue #4; contact-tcr.md §9) is a screw shaft with its support bearings and a
-nut assembly (one nut, or two nuts with a spacer) on it. Every dimensional value is SI (m, s,
-K, W, N·m, W/(m² K), m² K/W) or a string with a unit (``"1000 mm"``, ``"20 degC"``,
-``"1.5 h"``). A bare number for a temperature is kelvin, so write ambient temperatures as
-``"20 degC"``.
+The thermal model (theory manual ``docs/theory/thermal.md``) is a screw shaft with its support
+bearings and a nut assembly (one nut, or two nuts with a spacer) on it. Every dimensional value is
+SI (m, s, K, W, N·m, W/(m² K), m² K/W) or a string with a unit (``"1000 mm"``, ``"20 degC"``, ``"1.5
+h"``). A bare number for a temperature is kelvin, so write ambient temperatures as ``"20 degC"``.
 
 Only ``[thermal]`` is needed; every key has a default. Geometry defaults scale with the pitch
 diameter d_m of ``[screw]`` (shaft Ø = d_m, nut Ø = 1.75 d_m, nut length = 2.5 d_m).
@@ -136,7 +135,7 @@ class ConvectionSpec(Model):
 
 
 class ContactSpec(Model):
-    """Thermal path across the balls between screw and nut (contact-tcr.md §7, A4)."""
+    """Thermal path across the balls between screw and nut (A4)."""
 
     source: Literal["tcr", "given"] = Field(
         "tcr",
@@ -165,7 +164,7 @@ class ContactSpec(Model):
 
 
 class StrokeSpec(Model):
-    """Reciprocating nut: the moving heat source (issue #4, item 4)."""
+    """Reciprocating nut: the moving heat source (``docs/theory/thermal.md``)."""
 
     length: quantity(
         "length", "stroke of the nut centre (0 = stationary nut)", ge=0, le=MAX_LENGTH
@@ -249,7 +248,7 @@ class SensorSpec(Model):
 
 
 class ThermalSpec(Model):
-    """Thermal model of screw shaft, nuts, spacer and bearings (contact-tcr.md §9)."""
+    """Thermal model of screw shaft, nuts, spacer and bearings (``docs/theory/thermal.md``)."""
 
     model: model_choice(THERMAL_MODELS, "default model of `ballscrew thermal`") = "axisymmetric"
     shaft_length: quantity("length", "length of the screw shaft", gt=0, le=MAX_LENGTH) = 1.0

@@ -1,8 +1,8 @@
 """Case section ``[wear]``: the fractal wear model and the load programme of a life test.
 
-Physics reference: ``kinematics-wear.md`` §7 (wear models A and C), §8 (wear strips, working
-raceway length, time integration), §9 (drag torque and the step-stress test) and §10.3 (the
-calibrated wear coefficient of the REF screw).
+Theory manual: ``docs/theory/wear.md`` (wear models A and C, wear strips, working raceway length,
+life integration, drag torque, the step-stress test and the calibrated wear coefficient of the
+reference screw of ``examples/wear_step_stress.toml``).
 
 The key names ``coefficient``, ``torque_scale``, ``initial_torque`` and ``programme`` are a
 contract with the calibration code; do not rename them.
@@ -10,8 +10,8 @@ contract with the calibration code; do not rename them.
 Example::
 
     [wear]
-    model = "A"                    # Archard–fractal on plastic asperities (E7.x, default)
-    coefficient = 1.304e-4         # K, calibrated to h_max = 2.43 µm at 1.44e6 rev (§10.3)
+    model = "A"                    # Archard–fractal on plastic asperities (E7.2, default)
+    coefficient = 1.304e-4         # K, calibrated to h_max = 2.43 µm at 1.44e6 rev
     stroke = "0.30 m"              # reciprocating stroke S → L_w (E8.3) [assumed]
     torque_sampling = 4.8e4        # revolutions between drag-torque samples
 
@@ -69,7 +69,7 @@ class WearSpec(Model):
             lt=1,
             description="wear coefficient K (dimensionless probability per asperity encounter, "
             "below 1); "
-            "default 1.304e-4 = §10.3 calibration of the REF screw (Model A, REF grid)",
+            "default 1.304e-4 = calibration of the reference screw (Model A, 32 × 128 grid)",
         ),
     ] = 1.304e-4
     stroke: quantity(
@@ -80,7 +80,7 @@ class WearSpec(Model):
     ) = 0.30
     max_depth_step: quantity(
         "length",
-        "largest growth of h_max per time step (m, 1 nm to 0.1 mm); the paper's 0.1 µm (§1.6)",
+        "largest growth of h_max per time step (m, 1 nm to 0.1 mm); the paper's 0.1 µm",
         ge=1e-9,
         le=1e-4,
     ) = 1e-7
@@ -101,7 +101,7 @@ class WearSpec(Model):
         quantity(
             "torque",
             "measured drag torque at N = 0 (N·m); if given, K_T is rescaled so T(0) matches "
-            "it (E9.3) and torque_scale is ignored",
+            "it and torque_scale is ignored",
             gt=0,
             le=1e5,
         )
@@ -114,19 +114,19 @@ class WearSpec(Model):
         ],
         min_length=1,
         description="load levels run one after the other ([[wear.programme]] tables); default "
-        "the three-level step-stress test of §9.2 (2000/3000/4000 N, 100 rpm, 4.8e5 rev each)",
+        "the paper's three-level step-stress test (2000/3000/4000 N, 100 rpm, 4.8e5 rev each)",
     )
     grid: tuple[Annotated[int, Field(ge=4, le=1024)], Annotated[int, Field(ge=4, le=4096)]] = Field(
         (32, 128),
         description="contact-grid cells (along the helix x, across the groove y); fixed for the "
-        "whole run; the cell area ΔA is the fractal micro-contact cell (§10.2: 32 × 128)",
+        "whole run; the cell area ΔA is the fractal micro-contact cell (reference grid 32 × 128)",
     )
     box_factor: Annotated[
         float,
         Field(
             gt=1.0,
             le=4.0,
-            description="grid half-widths / Hertz semi-axes at the largest ball load (§10.2: 1.4)",
+            description="grid half-widths / Hertz semi-axes at the largest ball load (default 1.4)",
         ),
     ] = 1.4
     checkpoint_every: Annotated[

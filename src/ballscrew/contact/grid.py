@@ -1,8 +1,9 @@
 """Contact grids sized from the Hertz estimate, checked and enlarged until the patch fits.
 
-§3.4 of the physics notes: rectangular cells follow the elliptical patch (the same number of cells
-across it along both axes), the box half-widths are a multiple of the Hertz semi-axes, and the
-solution is only accepted when the pressure vanishes on the outer ring of cells.
+Theory manual ``docs/theory/contact.md``, grid sizing: rectangular cells follow the elliptical patch
+(the same number of cells across it along both axes), the box half-widths are a multiple of the
+Hertz semi-axes, and the solution is only accepted when the pressure vanishes on the outer ring of
+cells.
 """
 
 from __future__ import annotations
@@ -131,8 +132,7 @@ def solve_contact(
 
     ``box_factor`` may differ per axis, (f_x, f_y). With ``cells = (nx, ny)`` the grid is given
     explicitly instead: exactly nx × ny cells over the box ±f_x·a × ±f_y·b (no rounding), which
-    reproduces a published grid such as the 40 × 200 cells over ±2.6b × ±2.4a of contact-tcr.md
-    T-H3.
+    reproduces a published grid such as 40 × 200 cells over ±2.6b × ±2.4a.
 
     ``e_star`` [Pa] composite modulus (K1), ``load`` [N], ``tol`` and ``max_iterations`` as in
     :func:`solve_normal` (non-convergence raises :class:`~ballscrew.errors.ConvergenceError`).

@@ -73,7 +73,7 @@ def _conjugate_gradient(
     max_iterations: int,
     total: float | None,
 ) -> _Iterate:
-    """Polonsky & Keer (1999) CG, steps 2-10 of §3.2 (load control) or §3.3 (displacement control).
+    """Polonsky & Keer (1999) CG, load control or displacement control (``docs/theory/contact.md``).
 
     ``h`` is the gap (load control) or h − δ (displacement control, ``total`` None); ``p`` the
     initial pressures (modified in place) and ``u`` = K ∗ p (modified in place). Load control keeps
@@ -245,7 +245,7 @@ def _finish(
     u = problem.operator.apply(p)
     contact = p > 0.0
     n_contact = int(contact.sum())
-    if approach is None:  # δ = mean of u + h over the contact set (§3.2, output).
+    if approach is None:  # δ = mean of u + h over the contact set (Polonsky & Keer 1999).
         approach = float(problem.xp.where(contact, u + h, 0.0).sum()) / max(n_contact, 1)
     cell_area = problem.dx * problem.dy
     return ContactResult(
@@ -277,7 +277,7 @@ def solve_normal(
 ) -> ContactResult:
     """Pressure under the normal load W between two bodies with the initial gap ``gap``.
 
-    Load-controlled conjugate gradients of Polonsky & Keer (1999), §3.2, on the discrete problem
+    Load-controlled conjugate gradients of Polonsky & Keer (1999) on the discrete problem
     (C1)-(C2) with Love's cell coefficients (K4) and DC-FFT convolution (Liu, Wang & Liu 2000).
 
     Parameters
@@ -339,7 +339,7 @@ def solve_normal_displacement(
     operator: DCFFTOperator | None = None,
     raise_on_failure: bool = True,
 ) -> ContactResult:
-    """Pressure and load for a given rigid-body approach δ (displacement control, §3.3).
+    """Pressure and load for a given rigid-body approach δ (displacement control).
 
     Polonsky & Keer (1999) CG with g = u + h − δ and neither the mean subtraction nor the load
     rescaling; stops when Σ|p − p_old| / Σp < tol. The initial guess is p ∝ (δ − h)⁺ scaled to

@@ -1,6 +1,7 @@
 """Contact-level thermal contact resistance: re-binning, aggregation and the experiment.
 
-Physics reference: ``contact-tcr.md`` §6.5 (cell size Δ_f) and §7 (A1)–(A5).
+Theory manual: ``docs/theory/contact-resistance.md``, re-binning onto fractal cells (cell size Δ_f),
+aggregation and experiment reduction (A1)–(A5).
 
 - (A1) elements of one contact in parallel: 1/R_c = Σ 1/R_ij over loaded cells;
 - (A2) the two contacts of a ball in series: R_sbn = R_sb + R_bn (ball conduction neglected);
@@ -36,7 +37,7 @@ __all__ = [
 ]
 
 DEFAULT_CELL_SIZE = 8.0e-6
-"""Default side Δ_f of the square fractal (TCR) cells, m (§6.5 recommends 6–10 µm)."""
+"""Default side Δ_f of the square fractal (TCR) cells, m (6–10 µm recommended)."""
 
 
 def _overlap_weights(n_fine: int, fine: float, coarse: float) -> NDArray[np.float64]:
@@ -159,8 +160,8 @@ def contact_tcr(
 
     1. Re-bin p onto Δ_f × Δ_f cells (:func:`rebin_forces`, force-conserving); with
        ``cell_size=None`` the solver grid itself is used (cells dx × dy).
-    2. Cells whose force is below ``load_threshold``·max force are treated as unloaded (§6.3:
-       "skip p_ij < 1e-8·max p").
+    2. Cells whose force is below ``load_threshold``·max force are treated as unloaded
+       (default 1e-8, ``tcr.load_threshold``).
        A fractal cell on the edge of the patch is only partly in contact. With
        ``partial_cells="contact_area"`` (default) its apparent area A is the part of it that
        lies on loaded solver cells, so it carries its force at the local contact pressure and
@@ -170,7 +171,7 @@ def contact_tcr(
     3. Element resistances R_ij (T8) for all cells at once (:func:`element_tcr`).
     4. R_c = 1/Σ 1/R_ij (A1), S_c = N_loaded·A (A4).
 
-    The result depends on Δ_f (§6.5: V2 falls by ≈ 30 % when the cell side is halved), so Δ_f
+    The result depends on Δ_f (V2 falls by ≈ 30 % when the cell side is halved), so Δ_f
     is explicit and recorded in the result. Variant V2 is a reconstruction [REC].
 
     Args:
@@ -275,9 +276,9 @@ def series_resistance(*resistances: ArrayLike) -> NDArray[np.float64]:
 def mean_apparent_area(screw_area: ArrayLike, nut_area: ArrayLike, counts: ArrayLike = 1) -> float:
     """Apparent area S = Σ_k n_k (S_sb,k + S_bn,k)/2 of the screw, (A4) [assumption].
 
-    The paper only says "apparent contact area"; the mean of the screw-side and nut-side patch
-    areas is the assumption of ``contact-tcr.md`` §7. For FE, prefer one conductance per
-    interface, h_c = 1/(R_c S_c).
+    The paper only says "apparent contact area"; the mean of the screw-side and nut-side patch areas
+    is this project's assumption (``docs/theory/contact-resistance.md``). For FE, prefer one
+    conductance per interface, h_c = 1/(R_c S_c).
 
     Args:
         screw_area: S_sb,k of one ball–screw contact per ball group (nut), m².
@@ -335,7 +336,7 @@ def experimental_tcr(
     """Measured unit-area TCR R″ = (T₁ − T₂) S / Q with Q = U²/R_h, (A5).
 
     T₁ and T₂ must be taken *at* the contact (nodes next to the contact surfaces); temperatures
-    on the nut lining or screw include bulk and macro-constriction resistances (§7).
+    on the nut lining or screw include bulk and macro-constriction resistances.
 
     Args:
         t_nut: nut-side temperature T₁ next to the contact, K or °C.

@@ -1,10 +1,10 @@
 """Macro-constriction of the heat path through a ball and the smeared interface conductance.
 
-The fractal TCR (contact-tcr.md §6–§7) is the *micro* resistance of the rough Hertz patch. A
-model that does not resolve the balls (the axisymmetric FE model and the network, which smear
-the balls around the bore) must add the *macro* constriction of the heat flowing through the
-small patches into the ball and into the raceway; §7's scale check puts it at the order of
-1 K/W for about 100 balls, far above the micro TCR.
+The fractal TCR (theory manual, ``docs/theory/contact-resistance.md``) is the *micro* resistance of
+the rough Hertz patch. A model that does not resolve the balls (the axisymmetric FE model and the
+network, which smear the balls around the bore) must add the *macro* constriction of the heat
+flowing through the small patches into the ball and into the raceway; a scale check puts it at the
+order of 1 K/W for about 100 balls, far above the micro TCR.
 """
 
 from __future__ import annotations

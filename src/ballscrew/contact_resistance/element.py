@@ -1,11 +1,12 @@
 """Fractal thermal contact resistance of one grid element ("diminutive area").
 
-Physics reference: ``contact-tcr.md`` §6 (T1)–(T8) and the variants table of §6.4.
+Theory manual: ``docs/theory/contact-resistance.md``, element resistance (T1)–(T8) and the variants
+of G_s and of the gap thickness.
 
-Each element of apparent area A carries a load P = p·A. Majumdar–Bhushan contact (§5, package
-:mod:`ballscrew.fractal`) gives its largest spot a_l and real area A_r; the element then conducts
-through the solid spots (G_s) and, in parallel, through the interstitial medium across a gap of
-thickness L_g (G_g): R = 1/(G_s + G_g).
+Each element of apparent area A carries a load P = p·A. Majumdar–Bhushan contact
+(``docs/theory/fractal-contact.md``, package :mod:`ballscrew.fractal`) gives its largest spot a_l
+and real area A_r; the element then conducts through the solid spots (G_s) and, in parallel, through
+the interstitial medium across a gap of thickness L_g (G_g): R = 1/(G_s + G_g).
 
 Variants of G_s (option ``variant``):
 
@@ -14,15 +15,15 @@ Variants of G_s (option ``variant``):
 - ``"MT"`` (T2a): Majumdar & Tien (1991) spot integral with a fixed lower cut-off a_s.
 - ``"V1"``: one equivalent circular spot of area A_r per element.
 
-Mesh dependence (§6.5): a_l grows with the element area A at fixed pressure, so the summed
-contact resistance depends on the element size (V2: −30 % when the cell side is halved from
-6.1 µm). The element size Δ_f is therefore a model parameter and must be reported with every
-result (see :func:`ballscrew.thermal.aggregation.contact_tcr`).
+Mesh dependence (theory manual, *Re-binning onto fractal cells*): a_l grows with the element area A
+at fixed pressure, so the summed contact resistance depends on the element size (V2: −30 % when the
+cell side is halved from 6.1 µm). The element size Δ_f is therefore a model parameter and must be
+reported with every result (see :func:`ballscrew.thermal.aggregation.contact_tcr`).
 
-Model artefact to be aware of: with the reconstructed gap thickness (T6), L_g ∝ a_l^((2−D)/2) → 0
-as P → 0, so G_g → ∞ and R → 0 for vanishing load; in V2 the unit-area R″ *rises* with pressure
-(T-TCR1). Lightly loaded elements therefore conduct best; the load threshold of
-:func:`~ballscrew.thermal.aggregation.contact_tcr` controls which of them count.
+Model artefact to be aware of: with the reconstructed gap thickness (T6), L_g ∝ a_l^((2−D)/2) → 0 as
+P → 0, so G_g → ∞ and R → 0 for vanishing load; in V2 the unit-area R″ *rises* with pressure (theory
+manual, *Contact resistance*, known artefact). Lightly loaded elements therefore conduct best; the
+load threshold of :func:`~ballscrew.thermal.aggregation.contact_tcr` controls which of them count.
 """
 
 from __future__ import annotations
@@ -74,7 +75,7 @@ _GAP_COEFFICIENTS: dict[str, float] = {
     "interference": 1.0,
 }
 GAP_MODELS: tuple[str, ...] = (*_GAP_COEFFICIENTS, "two_sigma")
-"""Gap-thickness models: mean_cap (T6, default), cap_clearance, interference, two_sigma (§6.4)."""
+"""Gap-thickness models: mean_cap (T6, default), cap_clearance, interference, two_sigma."""
 
 
 # --------------------------------------------------------------------------------------------
@@ -116,9 +117,9 @@ def solid_conductance_v2(a_l: ArrayLike, *, D: float, lambda_s: float) -> NDArra
 
         G_s = (2λ_s/√π) (D/(D−1)) ψ^((2−D)/2) a_l^(1/2)
 
-    This is (T2a) evaluated at its upper limit only, i.e. (T2a) with a_s = 2^(−2/(D−1)) a_l.
-    Element results depend on the element size (§6.5). Sources: Majumdar & Tien (1991) for
-    the spot network; Wang & Komvopoulos (1994) for ψ.
+    This is (T2a) evaluated at its upper limit only, i.e. (T2a) with a_s = 2^(−2/(D−1)) a_l. Element
+    results depend on the element size (mesh dependence). Sources: Majumdar & Tien (1991) for the
+    spot network; Wang & Komvopoulos (1994) for ψ.
 
     Args:
         a_l: largest spot area(s), m².
@@ -174,7 +175,7 @@ def solid_conductance_mt(
 def solid_conductance_v1(real_area: ArrayLike, *, lambda_s: float) -> NDArray[np.float64]:
     """Solid conductance of variant V1: one equivalent spot of area A_r, G_s = 2λ_s √(A_r/π).
 
-    (§6.4; (T1) applied to the whole real area.)
+    ((T1) applied to the whole real area.)
 
     Args:
         real_area: real contact area(s) A_r of the element, m².
@@ -222,7 +223,7 @@ def gap_thickness(
     factor: float = 1.0,
     sampling_length: float | None = None,
 ) -> NDArray[np.float64]:
-    """Thickness L_g of the interstitial gap of an element, (T6) **[REC]** and the §6.4 options.
+    """Thickness L_g of the interstitial gap of an element, (T6) **[REC]** and the other gap models.
 
     With δ_l = G^(D−1) a_l^((2−D)/2) the interference (height) of the largest asperity (F5):
 
@@ -295,7 +296,7 @@ def gap_conductance(
 def constriction_alleviation_factor(
     real_area: ArrayLike, *, apparent_area: ArrayLike
 ) -> NDArray[np.float64]:
-    """Constriction-alleviation divisor (1 − √(A_r/A))^1.5 for G_s (optional, §6.4).
+    """Constriction-alleviation divisor (1 − √(A_r/A))^1.5 for G_s (optional refinement).
 
     Divide G_s by this factor to account for neighbouring spots; it matters only when
     A_r/A > 0.2. A_r is capped at A (divisor 0 → perfect contact).
@@ -317,7 +318,7 @@ def cooper_mikic_yovanovich_conductance(
 ) -> NDArray[np.float64]:
     """Plastic contact conductance h_c = 1.25 λ_s (m/σ) (p/H)^0.95 (Cooper–Mikic–Yovanovich 1969).
 
-    A Gaussian-surface cross-check of the fractal models (§6.4), per unit apparent area.
+    A Gaussian-surface cross-check of the fractal models, per unit apparent area.
 
     Args:
         pressure: apparent contact pressure p (>= 0), Pa.
@@ -345,7 +346,7 @@ def cooper_mikic_yovanovich_conductance(
 
 @dataclass(frozen=True)
 class FractalTCRModel:
-    """Parameters of the fractal element thermal-contact-resistance model (§5–§6).
+    """Parameters of the fractal element thermal-contact-resistance model.
 
     Validated on construction; an unknown ``variant`` or ``gap_model`` raises
     :class:`~ballscrew.errors.InputError` listing the allowed values.
@@ -376,7 +377,7 @@ class FractalTCRModel:
     sampling_length: float | None = None
     """Sampling length L_u for gap model ``two_sigma``, m."""
     constriction_alleviation: bool = False
-    """Divide G_s by (1 − √(A_r/A))^1.5 (§6.4 option)."""
+    """Divide G_s by (1 − √(A_r/A))^1.5 (optional refinement)."""
     lambda_s: float = field(init=False)
     """Harmonic-mean solid conductivity 2λ₁λ₂/(λ₁+λ₂) (T1), W/(m K); derived."""
 
@@ -435,9 +436,10 @@ def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRMode
 
     Chain per element (all elements at once, no loop): a_l from P (F15 inverted), A_r (F11,
     capped at A), L_g (T6 or option), G_s (T5 for V2 [REC], T2a for MT, 2λ_s√(A_r/π) for V1),
-    G_g (T7), R (T8). The result depends on the element size A (§6.5, mesh dependence).
+    G_g (T7), R (T8). The result depends on the element size A (mesh dependence).
 
-    Sources: Majumdar & Bhushan (1990, 1991); Wang & Komvopoulos (1994); Majumdar & Tien (1991).
+    Sources: Majumdar & Bhushan (1990, J. Tribol. 112:205; 1991); Wang & Komvopoulos (1994);
+    Majumdar & Tien (1991).
 
     Args:
         load: element loads P = p·A (>= 0), N; any shape.

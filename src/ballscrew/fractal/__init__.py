@@ -1,6 +1,7 @@
 """Fractal rough-surface contact: Majumdar–Bhushan with the Wang–Komvopoulos extension.
 
-Physics reference: ``contact-tcr.md`` §5 (equations F3, F5–F15).
+Theory manual: ``docs/theory/fractal-contact.md`` (equations F5–F15) and ``docs/theory/surface.md``
+(F3).
 """
 
 from ballscrew.fractal.domain_extension import (

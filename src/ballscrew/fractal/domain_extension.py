@@ -1,8 +1,8 @@
 """Wang–Komvopoulos domain-extension factor ψ(D) of the fractal spot-size distribution.
 
 Source: Wang, S. & Komvopoulos, K. (1994), "A fractal theory of the interfacial temperature
-distribution in the slow sliding regime: Part I", J. Tribol. 116:812–822. Physics reference:
-``contact-tcr.md`` §5.3, equation (F10).
+distribution in the slow sliding regime: Part I", J. Tribol. 116:812–822. Theory manual:
+``docs/theory/fractal-contact.md``, equation (F10).
 """
 
 from __future__ import annotations

@@ -1,14 +1,15 @@
 """Majumdar–Bhushan (MB) fractal contact of a rough surface, with Wang–Komvopoulos extension.
 
 Sources:
-- Majumdar, A. & Bhushan, B. (1990), Wear 136:313 — Weierstrass–Mandelbrot profile (F1)–(F3).
+- Majumdar, A. & Tien, C. L. (1990), "Fractal characterization and simulation of rough surfaces",
+  Wear 136:313–327 — Weierstrass–Mandelbrot profile (F1)–(F3).
 - Majumdar, A. & Bhushan, B. (1991), J. Tribol. 113:1 — asperity mechanics and load (F5)–(F15).
 - Wang, S. & Komvopoulos, K. (1994), J. Tribol. 116:812 — domain-extension factor ψ (F9)–(F11).
 
-Physics reference: ``contact-tcr.md`` §5. All quantities are SI: lengths in m, areas in m², loads
-in N, moduli and hardness in Pa. ``D`` is the *profile* fractal dimension, 1 < D < 2, and ``G`` the
-fractal roughness in metres. ``E_star`` is the composite contact modulus E* (K1) and ``H`` the
-hardness of the softer surface; only H/E* enters the contact mechanics.
+Theory manual: ``docs/theory/fractal-contact.md``. All quantities are SI: lengths in m, areas in m²,
+loads in N, moduli and hardness in Pa. ``D`` is the *profile* fractal dimension, 1 < D < 2, and
+``G`` the fractal roughness in metres. ``E_star`` is the composite contact modulus E* (K1) and ``H``
+the hardness of the softer surface; only H/E* enters the contact mechanics.
 
 Every function is vectorised over its area or load argument; ``D``, ``G``, ``E_star`` and ``H``
 are scalars (one surface pair per call). Scalar inputs give NumPy float64 scalars.
@@ -339,7 +340,8 @@ def total_load(
     """Total load P = P_e + P_p on an element whose largest spot is a_l, equation (F15).
 
     P(a_l) is continuous at a_c and strictly increasing (paper Eq. (45) as reconstructed in
-    ``contact-tcr.md`` §5.4). Sources: Majumdar & Bhushan (1991); Wang & Komvopoulos (1994).
+    ``docs/theory/fractal-contact.md``). Sources: Majumdar & Bhushan (1991); Wang & Komvopoulos
+    (1994).
 
     Args:
         a_l: largest spot area(s), m².
@@ -376,7 +378,8 @@ def largest_spot_area(
       A Newton step that leaves the bracket is replaced by bisection, so every element converges.
       Iteration stops when every |Δx| ≤ ``xtol`` (= relative change of a_l).
 
-    Sources: Majumdar & Bhushan (1991); Wang & Komvopoulos (1994); ``contact-tcr.md`` §5.4.
+    Sources: Majumdar & Bhushan (1991); Wang & Komvopoulos (1994); theory manual,
+    ``docs/theory/fractal-contact.md``.
 
     Args:
         load: element load(s) P = p·A ≥ 0, N (any shape).

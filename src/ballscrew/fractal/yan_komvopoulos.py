@@ -7,8 +7,8 @@ Sources:
 - Ausloos, M. & Berman, D. H. (1985), Proc. R. Soc. A 400:331 — the 3-D W-M function (E5.1).
 - Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205 — structure function of a profile (E5.4).
 
-Physics reference: ``kinematics-wear.md`` §5. SI throughout: lengths in m, areas in m², forces
-in N, moduli and hardness in Pa.
+Theory manual: ``docs/theory/fractal-contact.md``, Yan–Komvopoulos 3-D surface model. SI throughout:
+lengths in m, areas in m², forces in N, moduli and hardness in Pa.
 
 **Dimension convention.** Every function here takes the *surface* fractal dimension
 ``Ds`` with 2 < Ds < 3. A case stores the *profile* dimension D (1 < D < 2) of the
@@ -71,7 +71,7 @@ class SaturatedCellWarning(UserWarning):
 
 
 def surface_dimension(profile_dimension: float) -> float:
-    """Surface fractal dimension Ds = D + 1 from the profile dimension 1 < D < 2 (§5.1)."""
+    """Surface fractal dimension Ds = D + 1 from the profile dimension 1 < D < 2."""
     d = float(profile_dimension)
     if not (math.isfinite(d) and 1.0 < d < 2.0):
         raise InputError("D", profile_dimension, "a profile fractal dimension 1 < D < 2")
@@ -92,7 +92,7 @@ def _gamma(gamma: float) -> float:
     return g
 
 
-# ------------------------------------------------------------------------------ surface (§5.2)
+# ---------------------------------------------------------------------------- surface (E5.1)–(E5.4)
 
 
 def rms_height(Ds: float, G: float, length: float, gamma: float = 1.5) -> float:
@@ -100,8 +100,8 @@ def rms_height(Ds: float, G: float, length: float, gamma: float = 1.5) -> float:
 
         σ = L_s^(3−Ds) G^(Ds−2) √( ln γ / (2 (1 − γ^(2(Ds−3)))) )
 
-    Summed over all frequency indices n ≥ 0. REF (Ds = 2.4, G = 1e-10 m, L_s = 10 µm):
-    σ = 7.254e-8 m (T5.12).
+    Summed over all frequency indices n ≥ 0. The raceway of ``examples/wear_step_stress.toml``
+    (Ds = 2.4, G = 1e-10 m) with L_s = 10 µm: σ = 7.254e-8 m.
     """
     d, g, ls, gam = _dimension(Ds), positive("G", G), positive("length", length), _gamma(gamma)
     return (
@@ -162,10 +162,10 @@ def weierstrass_mandelbrot_surface(
         z = L_s (G/L_s)^(Ds−2) (ln γ/M)^½ Σ_m Σ_n γ^((Ds−3)n)
             { cos φ_mn − cos[2π γ^n r/L_s · cos(θ − πm/M) + φ_mn] }
 
-    with r = √(x² + y²), θ = atan2(y, x), m = 1..M (``ridges``), n = 0..n_max,
-    n_max = int[log(L_s/L_cut)/log γ] and random phases φ_mn ~ U(0, 2π). ``cutoff`` L_cut
-    defaults to L_s/γ^17 (n_max = 17, as sampled for T5.12). ``x`` and ``y`` broadcast; the
-    sum is vectorised over (m, n).
+    with r = √(x² + y²), θ = atan2(y, x), m = 1..M (``ridges``), n = 0..n_max, n_max =
+    int[log(L_s/L_cut)/log γ] and random phases φ_mn ~ U(0, 2π). ``cutoff`` L_cut defaults to
+    L_s/γ^17 (n_max = 17, as sampled for the σ example above). ``x`` and ``y`` broadcast; the sum is
+    vectorised over (m, n).
     """
     d, g, ls, gam = _dimension(Ds), positive("G", G), positive("length", length), _gamma(gamma)
     if isinstance(ridges, bool) or int(ridges) != ridges or ridges < 1:
@@ -186,7 +186,7 @@ def weierstrass_mandelbrot_surface(
     return prefactor * terms.sum(axis=(-2, -1))
 
 
-# -------------------------------------------------------------------------- one asperity (§5.3)
+# ----------------------------------------------------------------------- one asperity (E5.5)–(E5.9)
 
 
 def asperity_interference(area: ArrayLike, Ds: float, G: float, gamma: float = 1.5) -> FloatArray:
@@ -214,7 +214,7 @@ def elastic_coefficient(Ds: float, G: float, E_star: float, gamma: float = 1.5) 
         C_e = 2^((11−2Ds)/2) (ln γ)^½ G^(Ds−2) E* / (3 π^((4−Ds)/2))
 
     from Hertz f = (4/3) E* R^½ δ^(3/2) with (E5.5)–(E5.6). Ds = 2.4, G = 1e-10 m,
-    E* = 1.1319e11 Pa: C_e = 8.244e6 (T5.2).
+    E* = 1.1319e11 Pa: C_e = 8.244e6.
     """
     d, g, gam = _dimension(Ds), positive("G", G), _gamma(gamma)
     e = positive("E_star", E_star)
@@ -245,15 +245,14 @@ def critical_area(Ds: float, G: float, E_star: float, H: float, gamma: float = 1
 
     Where f_e(a_c) = H a_c: asperities with a' > a_c deform elastically, those with a' ≤ a_c
     plastically (for Ds > 2 the interference ratio δ/δ_c falls as a' grows). E* = 1.1319e11 Pa,
-    H = 7 GPa, G = 1e-10 m: a_c = 1.497e-13 / 2.265e-15 / 1.833e-16 m² at Ds = 2.3 / 2.4 / 2.5
-    (T5.1–T5.3).
+    H = 7 GPa, G = 1e-10 m: a_c = 1.497e-13 / 2.265e-15 / 1.833e-16 m² at Ds = 2.3 / 2.4 / 2.5.
     """
     d = _dimension(Ds)
     ratio = elastic_coefficient(d, G, E_star, gamma) / positive("H", H)
     return ratio ** (2.0 / (d - 2.0))
 
 
-# ------------------------------------------------------------------- population of a cell (§5.4)
+# ------------------------------------------------------------- population of a cell (E5.10)–(E5.13)
 
 
 def size_distribution(area: ArrayLike, largest: float, Ds: float) -> FloatArray:

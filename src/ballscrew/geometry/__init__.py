@@ -1,9 +1,10 @@
 """Ball-screw raceway geometry: helix, Frenet and contact frames, curvatures and the initial gap.
 
-Implements ``contact-tcr.md`` §1, (G1)–(G18): the ball-centre helix and its Frenet–Serret frame
-(Lin, Ravani & Velinsky 1994; Wei & Lin 2009), Gothic-arch raceways swept helicoidally, the
-contact frames at A (screw) and B (nut), the exact gap Hessian, Harris-type curvature sums
-(Harris & Kotzalas), and the exact and quadratic initial gap h(x, y) over a contact grid.
+Implements the theory manual's *Raceway geometry* (``docs/theory/geometry.md``), (G1)–(G18): the
+ball-centre helix and its Frenet–Serret frame (Lin, Ravani & Velinsky 1994; Wei, Lin & Horng 2009),
+Gothic-arch raceways swept helicoidally, the contact frames at A (screw) and B (nut), the exact gap
+Hessian, Harris-type curvature sums (Harris & Kotzalas), and the exact and quadratic initial gap
+h(x, y) over a contact grid.
 """
 
 from ballscrew.geometry.curvature import (

@@ -1,11 +1,11 @@
 """Raceway curvatures and the gap Hessian at the contact points, (G15)–(G18).
 
-``contact-tcr.md`` §1.6 (this project's derivation): second fundamental form of the helicoidal
-sweep (G11) in the contact frame (G13)/(G14), with x̂ = t (rolling) and ŷ across the groove. The
-closed forms are exact at the contact point; the initial gap near the contact is
-h ≈ ½(h_xx x² + 2 h_xy x y + h_yy y²). The Harris-type curvature sum Σρ and difference F(ρ)
-(Harris & Kotzalas) are given for reference, as is the common cosα simplification of the
-rolling-direction curvature used in ball-screw papers ((G18), ``kinematics-wear.md`` (E1.2)).
+Theory manual ``docs/theory/geometry.md``, closed-form curvatures (this project's derivation):
+second fundamental form of the helicoidal sweep (G11) in the contact frame (G13)/(G14), with x̂ = t
+(rolling) and ŷ across the groove. The closed forms are exact at the contact point; the initial gap
+near the contact is h ≈ ½(h_xx x² + 2 h_xy x y + h_yy y²). The Harris-type curvature sum Σρ and
+difference F(ρ) (Harris & Kotzalas) are given for reference, as is the common cosα simplification of
+the rolling-direction curvature used in ball-screw papers (G18).
 """
 
 from __future__ import annotations
@@ -50,7 +50,8 @@ class RacewayCurvature:
     def principal_angle(self) -> float:
         """Angle from x̂ to the principal axis of the larger curvature, ½ atan2(2h_xy, h_xx − h_yy).
 
-        About 5e-4 rad for typical screws (§1.6), so the patch axes are x̂ and ŷ in practice.
+        About 5e-4 rad for typical screws (theory manual, *Raceway geometry*), so the patch axes are
+        x̂ and ŷ in practice.
         """
         return 0.5 * math.atan2(2.0 * self.h_xy, self.h_xx - self.h_yy)
 
@@ -94,7 +95,7 @@ def rolling_curvature(geometry: ScrewGeometry, side: Side) -> float:
 
 
 def harris_rolling_curvature(geometry: ScrewGeometry, side: Side) -> float:
-    """Common simplification ρ_II1 ≈ ±2 cosβ cosα/(d_m ∓ D_b cosβ), (G18)/(E1.2), 1/m.
+    """Common simplification ρ_II1 ≈ ±2 cosβ cosα/(d_m ∓ D_b cosβ), (G18), 1/m.
 
     Signed like :attr:`RacewayCurvature.k_x`. About 0.4 % (screw) and 0.25 % (nut) larger in
     magnitude than the exact (G15)/(G16) at α = 4.55°.
@@ -115,9 +116,9 @@ def raceway_curvature(
 ) -> RacewayCurvature:
     """Rolling curvature and gap Hessian (G17) at contact A (``"screw"``) or B (``"nut"``).
 
-    ``model="exact"`` uses (G15)–(G17), which equal the Hessian of the exact gap (§1.5) at the
-    origin. ``model="harris"`` replaces k_x by the cosα simplification and drops the small twist
-    term h_xy, as ball-screw papers do ((G18), (E1.2)). The result is the same for both flanks.
+    ``model="exact"`` uses (G15)–(G17), which equal the Hessian of the exact gap (Newton projection)
+    at the origin. ``model="harris"`` replaces k_x by the cosα simplification and drops the small
+    twist term h_xy, as ball-screw papers do (G18). The result is the same for both flanks.
     """
     g = side_sign(side)
     if model == "exact":

@@ -1,12 +1,12 @@
-"""Initial (unloaded) gap h(x, y) between ball and raceway in the contact frame, §1.5–§1.6.
+"""Initial (unloaded) gap h(x, y) between ball and raceway in the contact frame, (G11)–(G18).
 
-``contact-tcr.md`` §1.5 (this project's derivation of what the paper's Eqs. (8)–(9) do): at every
-node (x, y) of the tangent-plane grid of contact A (screw) or B (nut), the ball surface is
-z_b = r_b − √(r_b² − x² − y²) (the paper's Eq. (1)) and the raceway height z_r comes from solving
-[R_k(S(θ, φ) − O_k)]_{x,y} = (x, y) on the helicoidal sweep S (G11) for (θ, φ); h = z_b − z_r.
-All 2×2 Newton systems of a grid are solved at once with the analytic Jacobian. Because the
-raceway is a helicoid, the gap does not depend on where along the helix the ball sits, so the
-contact is put at θ_C = 0.
+``docs/theory/geometry.md``, exact gap by Newton projection (this project's derivation of what the
+paper's Eqs. (8)–(9) do): at every node (x, y) of the tangent-plane grid of contact A (screw) or B
+(nut), the ball surface is z_b = r_b − √(r_b² − x² − y²) (the paper's Eq. (1)) and the raceway
+height z_r comes from solving [R_k(S(θ, φ) − O_k)]_{x,y} = (x, y) on the helicoidal sweep S (G11)
+for (θ, φ); h = z_b − z_r. All 2×2 Newton systems of a grid are solved at once with the analytic
+Jacobian. Because the raceway is a helicoid, the gap does not depend on where along the helix the
+ball sits, so the contact is put at θ_C = 0.
 """
 
 from __future__ import annotations
@@ -62,7 +62,7 @@ def ball_height(geometry: ScrewGeometry, x: ArrayLike, y: ArrayLike) -> FloatArr
 def project_onto_raceway(
     geometry: ScrewGeometry, side: Side, x: ArrayLike, y: ArrayLike, flank: int = 1
 ) -> RacewayPoint:
-    """Solve [R_k(S(θ, φ) − O_k)]_{x,y} = (x, y) for (θ, φ) by vectorised Newton, §1.5, (G11).
+    """Solve [R_k(S(θ, φ) − O_k)]_{x,y} = (x, y) for (θ, φ) by vectorised Newton, (G11).
 
     Starts from the contact point (θ, φ) = (0, β) and stops when the tangent-plane residual is
     below 1e-12 r_b; raises :class:`~ballscrew.errors.ConvergenceError` if it is not reached.
@@ -141,7 +141,7 @@ GAP_MODELS: Registry[Callable[..., FloatArray]] = Registry(
 def gap_exact(
     geometry: ScrewGeometry, side: Side, x: ArrayLike, y: ArrayLike, flank: int = 1
 ) -> FloatArray:
-    """Exact initial gap h(x, y) = z_b − z_r ≥ 0 at contact A (screw) or B (nut), §1.5, m.
+    """Exact initial gap h(x, y) = z_b − z_r ≥ 0 at contact A (screw) or B (nut), m.
 
     x (along t, rolling) and y (across the groove) are tangent-plane coordinates of the contact
     frame (G13)/(G14), broadcastable arrays in m, with x² + y² < r_b². Contains the cubic

@@ -1,8 +1,8 @@
-"""Ball-centre helix and its Frenet–Serret frame, (G1)–(G7) of ``contact-tcr.md`` §1.2.
+"""Ball-centre helix and its Frenet–Serret frame, (G1)–(G7) of ``docs/theory/geometry.md``.
 
-Right-hand thread, screw axis z, screw-fixed frame OXYZ (Lin, Ravani & Velinsky 1994; Wei & Lin
-2009). Every function is vectorised over the helix angle θ: an input of shape ``S`` gives vectors
-of shape ``S + (3,)`` and matrices of shape ``S + (3, 3)``.
+Right-hand thread, screw axis z, screw-fixed frame OXYZ (Lin, Ravani & Velinsky 1994; Wei, Lin &
+Horng 2009). Every function is vectorised over the helix angle θ: an input of shape ``S`` gives
+vectors of shape ``S + (3,)`` and matrices of shape ``S + (3, 3)``.
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ def frenet_frame(
 
 
 def frenet_matrix(geometry: ScrewGeometry, theta: ArrayLike) -> FloatArray:
-    """The paper's T(θ): rows tᵀ, nᵀ, bᵀ, so that x_tnb = T(θ)·(X − C(θ)) (§1.2).
+    """The paper's T(θ): rows tᵀ, nᵀ, bᵀ, so that x_tnb = T(θ)·(X − C(θ)) from (G3)–(G5).
 
     The inverse is X = C(θ) + T(θ)ᵀ x_tnb.
     """

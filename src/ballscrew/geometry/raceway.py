@@ -1,6 +1,7 @@
 """Gothic-arch raceways, contact points and local contact frames, (G8)–(G14).
 
-``contact-tcr.md`` §1.3–§1.4: the groove arcs of Wei & Lin (2009) in the normal plane (n, b) of the
+``docs/theory/geometry.md`` (contact points, groove sections, local contact frames): the groove
+arcs of Wei, Lin & Horng (2009) in the normal plane (n, b) of the
 ball-centre helix, swept helicoidally into the raceway surfaces, and the contact frames whose x̂ is
 the rolling direction t and whose ẑ points from the contact point into the ball. Vectorised over
 θ (and φ) like :mod:`ballscrew.geometry.helix`.
@@ -21,7 +22,7 @@ from ballscrew.validation import real_array, same_shape
 def contact_direction(
     geometry: ScrewGeometry, theta: ArrayLike = 0.0, flank: int = 1
 ) -> FloatArray:
-    """Unit vector e_A = cosβ n + s sinβ b from the ball centre to the screw contact A, (§1.3).
+    """Unit vector e_A = cosβ n + s sinβ b from the ball centre to the screw contact A, as in (G8).
 
     The nut contact B lies on the same load line: e_B = −e_A.
     """
@@ -89,7 +90,7 @@ class ContactFrame:
     """R_k, shape (..., 3, 3); rows x̂, ŷ, ẑ."""
 
     def to_local(self, points: ArrayLike) -> FloatArray:
-        """Local coordinates ξ = R_k·(X − O_k) of points X given in OXYZ (§1.4), m."""
+        """Local coordinates ξ = R_k·(X − O_k) of points X given in OXYZ (G13)–(G14), m."""
         relative = np.asarray(points, dtype=float) - self.origin
         return np.einsum("...ij,...j->...i", self.rotation, relative)
 

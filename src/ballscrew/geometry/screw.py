@@ -1,7 +1,7 @@
 """Geometric parameters of a ball screw and the quantities derived from them.
 
-Symbols and equations follow ``contact-tcr.md`` §1 (G1)–(G12), which rebuild Lin, Ravani &
-Velinsky (1994) and Wei & Lin (2009). SI units throughout: lengths in m, angles in rad.
+Symbols and equations follow ``docs/theory/geometry.md`` (G1)–(G12), which rebuild Lin, Ravani &
+Velinsky (1994) and Wei, Lin & Horng (2009). SI units throughout: lengths in m, angles in rad.
 """
 
 from __future__ import annotations
@@ -186,7 +186,7 @@ def as_geometry(obj: object) -> ScrewGeometry:
 
 
 def lead_angle(case: object) -> float:
-    """Lead angle α = atan(L/(π d_m)) of the ball-centre helix, (G2)/(E1.1), rad.
+    """Lead angle α = atan(L/(π d_m)) of the ball-centre helix, (G2), rad.
 
     ``case`` may be a :class:`ScrewGeometry`, any object with its six fields, or a case object
     whose ``screw`` attribute holds them.

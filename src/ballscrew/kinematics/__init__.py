@@ -1,9 +1,9 @@
 """Ball kinematics, quasi-static ball balance and drag torque of a ball screw.
 
-Physics reference ``kinematics-wear.md`` §2, §3 and §9.1 (Wei & Lin 2003; Wei, Lin & Horng 2009;
-Lin, Ravani & Velinsky 1994; Harris & Kotzalas 2006).
+Theory manual ``docs/theory/kinematics.md`` and, for (E9.1), ``docs/theory/loads.md`` (Wei & Lin
+2003; Wei, Lin & Horng 2009; Lin, Ravani & Velinsky 1994; Harris & Kotzalas 2006).
 
-1. :mod:`~ballscrew.kinematics.frames` — Frenet frame at the ball and contact frames at A, B (§2.1).
+1. :mod:`~ballscrew.kinematics.frames` — Frenet frame at the ball and contact frames at A, B.
 2. :mod:`~ballscrew.kinematics.motion` — nut-raceway control and rolling closure (E2.1)–(E2.5).
 3. :mod:`~ballscrew.kinematics.sliding` — sliding field over the contact, exact (E2.6) and
    closed form (E2.7), on the contact-pressure grid.

@@ -1,9 +1,9 @@
 """Quasi-static force and moment balance of a working ball, Levels 0, 1 and 2.
 
-``kinematics-wear.md`` §3, (E3.1)–(E3.6) (structure of Wei & Lin 2003 and Wei, Lin & Horng
-2009; groove geometry of Jones 1960 / Harris & Kotzalas 2006):
+``docs/theory/kinematics.md``, quasi-static balance (E3.1)–(E3.6) (structure of Wei & Lin 2003 and
+Wei, Lin & Horng 2009; groove geometry of Jones 1960 / Harris & Kotzalas 2006):
 
-* Level 0 — static load, Q_A = Q_B = F/(Z sinβ₀ cosλ), β_A = β_B = β₀ (E1.6), kinematics E2.1/E2.4.
+* Level 0 — static load, Q_A = Q_B = F/(Z sinβ₀ cosλ), β_A = β_B = β₀ (Q1), kinematics E2.1/E2.4.
 * Level 1 — centrifugal force with the groove geometry (E3.5): unknowns (c_n, c_b, u), the
   ball-centre offset in the normal plane and the nut's axial displacement; equations the ball's
   force balance in n and b and the nut's equilibrium Z Q_B (e_B·ẑ)(−s) = F. V from E2.4 with

@@ -1,6 +1,7 @@
 """Frames of the ball kinematics: Frenet frame at the ball centre and the contact frames at A, B.
 
-``kinematics-wear.md`` §2.1 (sibling convention of Gao, Wang & Liu 2019; Wei & Lin 2009). All
+``docs/theory/kinematics.md``, frames (sibling convention of Gao, Wang & Liu 2019; Wei, Lin & Horng
+2009). All
 vectors are in the nut frame O_W X_W Y_W Z_W (inertial: the nut translates at constant speed),
 evaluated at the ball's orbital angle θ = 0, where
 
@@ -12,7 +13,7 @@ contact point, lying in the normal plane (n, b). Flank s = ±1 (the two nuts of 
     e_A = cosβ_A n + s sinβ_A b,     e_B = −(cosβ_B n + s sinβ_B b),
 
 and the frame X_k = t, Z_k = −e_k (raceway normal, into the ball), Y_k = Z_k × X_k.
-At β_A = β_B = β this is Y_A = t × e, Z_B = +e, Y_B = e × t as in §2.1.
+At β_A = β_B = β this is Y_A = t × e, Z_B = +e, Y_B = e × t.
 """
 
 from __future__ import annotations
@@ -58,7 +59,7 @@ class BallFrame:
 
 
 def ball_frame(geometry: ScrewGeometry) -> BallFrame:
-    """The frame of §2.1 at θ = 0 for ``geometry``."""
+    """The kinematics frame at θ = 0 for ``geometry``."""
     t, n, b = (np.asarray(v, dtype=float) for v in frenet_frame(geometry, 0.0))
     return BallFrame(
         centre=np.array([geometry.pitch_radius, 0.0, 0.0]),
@@ -72,7 +73,7 @@ def ball_frame(geometry: ScrewGeometry) -> BallFrame:
 
 
 def contact_vector(frame: BallFrame, angle: float, flank: int, contact: Side) -> FloatArray:
-    """Unit vector e_k from the ball centre to contact A (``"screw"``) or B (``"nut"``), §2.1."""
+    """Unit vector e_k from the ball centre to contact A (``"screw"``) or B (``"nut"``)."""
     s = flank_sign(flank)
     e = math.cos(angle) * frame.n + s * math.sin(angle) * frame.b
     if contact == "screw":

@@ -1,7 +1,7 @@
 """Contact geometry of a displaced ball between the screw and nut grooves (Jones/Harris).
 
-``kinematics-wear.md`` (E3.5), the "inner race = screw, outer race = nut" form of Jones (1960)
-and Harris & Kotzalas (2006) applied to a ball screw. In the normal plane (n, b) of the ball
+``docs/theory/kinematics.md`` (E3.5), the "inner race = screw, outer race = nut" form of Jones
+(1960) and Harris & Kotzalas (2006) applied to a ball screw. In the normal plane (n, b) of the ball
 centre, with the unloaded ball centre c₀ and nominal contact vector e₀ = cosβ₀ n + s sinβ₀ b:
 
     C_s = c₀ − (r_s − r_b) e₀,         C_n = c₀ + (r_n − r_b) e₀ + s u cosλ b

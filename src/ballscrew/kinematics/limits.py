@@ -47,7 +47,7 @@ def groove_root_diameter(geometry: ScrewGeometry) -> float:
     Each arc of radius r_s is centred (r_s − r_b) behind the ball centre on the load line of its
     flank, at radius r_m + (r_s − r_b) cosβ and axial offset ∓(r_s − r_b) sinβ; the two arcs
     meet on the groove's centre line at radius r_m + (r_s − r_b) cosβ − √(r_s² − (r_s − r_b)²
-    sin²β). REF (d_m = 40 mm, D_w = 6.35 mm, f_s = 0.55, β = 45°): 33.478 mm.
+    sin²β). Reference screw (d_m = 40 mm, D_w = 6.35 mm, f_s = 0.55, β = 45°): 33.478 mm.
     """
     r_s, r_b, beta = geometry.screw_groove_radius, geometry.ball_radius, geometry.contact_angle
     arm = r_s - r_b

@@ -87,7 +87,7 @@ class BallModel:
         }
 
     def hertz_constant(self, contact: Side) -> float:
-        """K of δ = K Q^(2/3), (E1.5), m N^(−2/3) (1.513e-7 at A in REF, T1.7)."""
+        """K of the Hertz approach δ = K Q^(2/3), m N^(−2/3) (1.513e-7 at A, reference screw)."""
         return self._unit_hertz[contact].approach
 
     def hertz_semi_axes(self, contact: Side, load: float) -> tuple[float, float]:

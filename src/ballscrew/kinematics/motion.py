@@ -1,9 +1,9 @@
 """Rigid-body motion of a ball: nut-raceway control, rolling closure, spins and orbital speed.
 
-``kinematics-wear.md`` §2.2, (E2.1)–(E2.5): in the nut frame the screw performs a screw motion
-(ω_s about ẑ, p ω_s along ẑ, p = L/2π) and the nut is at rest. The ball neither spins nor slips
-at the nut contact B ("raceway control", Jones; Lin, Ravani & Velinsky 1994; Wei & Lin 2009),
-and rolls without slip along t at the centre of the screw contact A (the closure E2.4).
+``docs/theory/kinematics.md``, ball motion (E2.1)–(E2.5): in the nut frame the screw performs a
+screw motion (ω_s about ẑ, p ω_s along ẑ, p = L/2π) and the nut is at rest. The ball neither spins
+nor slips at the nut contact B ("raceway control", Jones; Lin, Ravani & Velinsky 1994; Wei, Lin &
+Horng 2009), and rolls without slip along t at the centre of the screw contact A (the closure E2.4).
 """
 
 from __future__ import annotations
@@ -51,7 +51,8 @@ def nut_controlled_spin_vector(
     """Ball angular velocity with no slip and no spin at B, Ω = (V/r_b) t × e_B, (E2.1), rad/s.
 
     From v_c + Ω × (r_b e_B) = 0 and Ω·e_B = 0. With e_B = −e this is Ω = −(V/r_b) Y_A,
-    i.e. (V/r_b)(s sinβ n − cosβ b): T2.2 gives Ω_n = +20.79, Ω_b = −20.79 rad/s at 100 rpm.
+    i.e. (V/r_b)(s sinβ n − cosβ b): the reference screw gives Ω_n = +20.79, Ω_b = −20.79 rad/s
+    at 100 rpm.
     """
     e_b = np.asarray(nut_direction, dtype=float)
     return (ball_speed / frame.ball_radius) * np.cross(frame.t, e_b)
@@ -63,8 +64,9 @@ def rolling_ball_speed(
     """Ball-centre speed V from pure rolling along t at the centre of A, (E2.4), m/s.
 
     With Ω from (E2.1) the ball surface at A moves at V(1 − e_A·e_B) t, so
-    V = v_s(A)·t / (1 − e_A·e_B). At e_A = −e_B = e this is the document's
-    V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ): 0.09333 m/s at 100 rpm in REF (T2.1).
+    V = v_s(A)·t / (1 − e_A·e_B). At e_A = −e_B = e this is the closed form
+    V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ): 0.09333 m/s at 100 rpm for the reference screw of
+    ``examples/wear_step_stress.toml``.
     """
     e_a = np.asarray(screw_direction, dtype=float)
     e_b = np.asarray(nut_direction, dtype=float)
@@ -94,7 +96,7 @@ class BallMotion:
     def orbital_speed(self) -> float:
         """ω_c = V cosλ / r_m, angular speed of the ball centre about the screw axis [rad/s].
 
-        At the E2.4 closure ω_c = (ω_s/2)(1 − r_b cosβ cos²λ/r_m): 4.652 rad/s in REF (T2.1).
+        At the E2.4 closure ω_c = (ω_s/2)(1 − r_b cosβ cos²λ/r_m): 4.652 rad/s, reference screw.
         """
         radius = float(np.hypot(*self.frame.centre[:2]))
         return self.ball_speed * math.cos(self.lead_angle) / radius
@@ -106,15 +108,15 @@ class BallMotion:
 
     @property
     def rolling_speed(self) -> float:
-        """|Ω| [rad/s]; V/r_b at the nut-controlled motion (29.40 rad/s in T2.1)."""
+        """|Ω| [rad/s]; V/r_b at the nut-controlled motion (29.40 rad/s, reference screw)."""
         return float(np.linalg.norm(self.angular_velocity))
 
     @property
     def spin_screw(self) -> float:
         """Spin of the ball relative to the screw about Z_A, (Ω − ω_s ẑ)·Z_A, (E2.5), rad/s.
 
-        s ω_s sinβ cosλ at Level 0: +7.382 rad/s for s = +1 at 100 rpm (T2.3; the document
-        quotes (Ω − ω_s ẑ)·e = −7.382 about e = −Z_A).
+        s ω_s sinβ cosλ at Level 0: +7.382 rad/s for s = +1 at 100 rpm (the same spin
+        written about e = −Z_A is (Ω − ω_s ẑ)·e = −7.382).
         """
         relative = self.angular_velocity - self.screw_speed * self.frame.axis
         return float(relative @ self.screw_contact.z)

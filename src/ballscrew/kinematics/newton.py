@@ -1,7 +1,7 @@
 """Damped Newton–Raphson with a finite-difference Jacobian, for the quasi-static ball balance.
 
-``kinematics-wear.md`` (E3.6): start from the static values, finite-difference Jacobian, stop at
-|ΔX|/|X| < 1e-10 (here on scaled unknowns, together with a small scaled residual). A solve that
+``docs/theory/kinematics.md`` (E3.6): start from the static values, finite-difference Jacobian, stop
+at |ΔX|/|X| < 1e-10 (here on scaled unknowns, together with a small scaled residual). A solve that
 does not get there raises :class:`~ballscrew.errors.ConvergenceError` with the residual.
 """
 

@@ -1,9 +1,9 @@
 """Sliding-velocity field over the ball–screw contact A, on the contact-pressure grid.
 
-``kinematics-wear.md`` §2.3: the exact rigid-body form (E2.6) for any ball motion (Level 0, 1 or
-2) and the closed form (E2.7) of the nut-controlled, centre-rolling motion. Grid convention of
-:mod:`ballscrew.contact`: x along the rolling direction X_A = t (axis 0), y across the groove
-along Y_A (axis 1), origin at A, arrays of shape (len(x), len(y)).
+``docs/theory/kinematics.md``, sliding field: the exact rigid-body form (E2.6) for any ball motion
+(Level 0, 1 or 2) and the closed form (E2.7) of the nut-controlled, centre-rolling motion. Grid
+convention of :mod:`ballscrew.contact`: x along the rolling direction X_A = t (axis 0), y across the
+groove along Y_A (axis 1), origin at A, arrays of shape (len(x), len(y)).
 """
 
 from __future__ import annotations
@@ -34,7 +34,8 @@ Surface = Literal["deformed", "plane", "ball"]
 def deformed_radius(groove_radius: float, ball_radius: float) -> float:
     """Radius of the deformed contact surface across the groove, R_d = 2 r_s r_b/(r_s + r_b), m.
 
-    Harris & Kotzalas (2006); 3.326 mm for REF (f = 0.55, T2.6).
+    Harris & Kotzalas (2006); 3.326 mm for the reference screw of
+    ``examples/wear_step_stress.toml`` (f = 0.55).
     """
     return 2.0 * groove_radius * ball_radius / (groove_radius + ball_radius)
 

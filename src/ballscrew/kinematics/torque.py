@@ -1,6 +1,6 @@
 """Screw drag torque from the ball model, (E3.7), next to the catalogue formula (E9.1).
 
-``kinematics-wear.md`` (E3.7): the torque the screw needs is the moment about its axis of the
+``docs/theory/kinematics.md`` (E3.7): the torque the screw needs is the moment about its axis of the
 forces the balls exert on it at A. In the nut frame the screw also advances p = L/2π per radian,
 so at a given nut force the axial part of the contact forces is carried through the lead; the
 torque that keeps the nut force fixed is the power the screw delivers over ω_s:
@@ -38,7 +38,8 @@ def efficiency_drag_torque(
     """Efficiency-based preload torque T_p = (F_p L/2π)(1 − η²)/η and η, (E9.2).
 
     η = tanλ/tan(λ + ρ'), ρ' = atan μ_r (textbook form; much smaller than the catalogue E9.1).
-    REF, μ_r = 0.003, F_p = 1500 N: η = 0.9634, T_p = 0.1779 N m (T9.3).
+    Reference screw of ``examples/wear_step_stress.toml``, μ_r = 0.003, F_p = 1500 N:
+    η = 0.9634, T_p = 0.1779 N m.
     """
     eta = math.tan(lead_angle) / math.tan(lead_angle + math.atan(rolling_friction))
     return preload * lead / (2.0 * math.pi) * (1.0 - eta * eta) / eta, eta

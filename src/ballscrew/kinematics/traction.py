@@ -1,7 +1,7 @@
 """Traction of the ball–screw contact A from the sliding field in mixed lubrication.
 
-``kinematics-wear.md`` (E3.3) [reconstructed]: on each cell of the pressure grid the shear stress
-on the ball opposes the local sliding Δv (ball relative to screw),
+``docs/theory/kinematics.md`` (E3.3) [reconstructed]: on each cell of the pressure grid the shear
+stress on the ball opposes the local sliding Δv (ball relative to screw),
 
     τ = −[ μ_b ψ p + (1 − ψ) min( η(p) ‖Δv‖/h_c , Λ p ) ] · Δv/‖Δv‖,
 

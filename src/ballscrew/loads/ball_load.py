@@ -1,6 +1,6 @@
 """Normal ball load from the axial force carried by one nut.
 
-Physics reference: ``contact-tcr.md`` §8.1 (Q1) and ``kinematics-wear.md`` §1.4 (E1.6).
+Theory manual: ``docs/theory/loads.md``, ball load (Q1).
 """
 
 from __future__ import annotations
@@ -45,10 +45,10 @@ def validate_balls(balls: int) -> int:
 def ball_load(
     axial_force: ArrayLike, balls: int, contact_angle: float, lead_angle: float
 ) -> NDArray[np.float64]:
-    """Normal ball load Q = F / (n_b sinβ cosα), equation (Q1) (paper Eq. (20); E1.6).
+    """Normal ball load Q = F / (n_b sinβ cosα), equation (Q1) (paper Eq. (20)).
 
     Every loaded ball of the nut carries the same load; friction is neglected. The axial
-    component of a ball's contact normal is sinβ·cosα (``contact-tcr.md`` §1.3).
+    component of a ball's contact normal is sinβ·cosα (``docs/theory/geometry.md``).
 
     Args:
         axial_force: axial force F carried by the nut (>= 0), N; any shape.

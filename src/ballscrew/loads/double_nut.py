@@ -5,8 +5,7 @@ The spacer fixes the total axial interference 2 C_a F_p^(2/3); an external axial
 nut body by x, loading nut 1 and unloading nut 2.
 
 Sources: Hertz δ ∝ Q^(2/3) (Johnson 1985); Steinmeyer technical notes (lift-off at 2.83 F_p);
-physics reference ``contact-tcr.md`` §8.2 (P1)–(P3) and ``kinematics-wear.md`` §1.4–1.6
-(E1.7)–(E1.13).
+theory manual ``docs/theory/loads.md`` (P1)–(P4), (E1.7)–(E1.13).
 """
 
 from __future__ import annotations
@@ -46,7 +45,7 @@ class NutForces(NamedTuple):
 
 
 def nut_forces(preload: float, axial_load: float) -> NutForces:
-    """Forces (F1, F2) of a spacer-preloaded double nut under an axial load, (P1)–(P3) / (E1.10).
+    """Forces (F1, F2) of a spacer-preloaded double nut under an axial load, (P1)–(P3).
 
     With u = x/δ₀ the nut-body displacement relative to the preload deflection δ₀,
 
@@ -97,7 +96,7 @@ def nut_forces(preload: float, axial_load: float) -> NutForces:
 
 
 def preloaded_axial_stiffness(force: ArrayLike, axial_deflection: ArrayLike) -> NDArray[np.float64]:
-    """Axial stiffness dF/dδ_a = 1.5 F/δ_a of one nut with δ_a = C_a F^(2/3) (§8.2).
+    """Axial stiffness dF/dδ_a = 1.5 F/δ_a of one nut with δ_a = C_a F^(2/3), (P4).
 
     Args:
         force: axial force F of the nut (>= 0), N.
@@ -140,7 +139,7 @@ def nut_axial_compliance(
 ) -> float:
     """Nut compliance constant C_a = (K_A + K_B) / [sinβ cosα (n_b sinβ cosα)^(2/3)], (E1.8).
 
-    Follows from δ_k = K_k Q^(2/3) (E1.5), Q = F/(n_b sinβ cosα) (E1.6) and (E1.7).
+    Follows from the Hertz deflection δ_k = K_k Q^(2/3), Q = F/(n_b sinβ cosα) (Q1) and (E1.7).
     Screw and nut body compliance is neglected.
 
     Args:

@@ -16,8 +16,8 @@ def preload_drag_torque(preload: float, lead: float, lead_angle: float) -> float
         T_p = K · F_p · L / (2π),   K = 0.05 / √(tan α)
 
     with the preload F_p [N], the lead L [m] and the lead angle α [rad]. This is the catalogue
-    formula of THK, HIWIN and NSK (ISO 3408 practice); contact-tcr.md (Q4),
-    kinematics-wear.md (E9.1). Example: F_p = 1500 N, L = 10 mm, d_m = 40 mm → K = 0.17725,
+    formula of THK, HIWIN and NSK (ISO 3408 practice); theory manual
+    ``docs/theory/loads.md`` (E9.1). Example: F_p = 1500 N, L = 10 mm, d_m = 40 mm → K = 0.17725,
     T_p = 0.42314 N·m.
     """
     if not preload >= 0.0:

@@ -1,10 +1,10 @@
 """Lubrication of the ball contacts: EHL film, rolling resistance and mixed-lubrication sharing.
 
 1. :func:`hamrock_dowson`: central and minimum film thickness of an elliptical EHL contact
-   (Hamrock & Dowson 1977; ``kinematics-wear.md`` §6.1).
-2. :func:`ehl_rolling_resistance`: hydrodynamic rolling force (Harris; (E3.4)).
+   (Hamrock & Dowson 1977; theory manual ``docs/theory/lubrication.md``).
+2. :func:`ehl_rolling_resistance`: hydrodynamic rolling force (Harris & Kotzalas 2006; (E3.4)).
 3. :func:`share_load`: Johnson–Greenwood–Poon (1972) split of the normal load between the film
-   and the fractal asperities of :mod:`ballscrew.fractal.yan_komvopoulos` (§6.2), and
+   and the fractal asperities of :mod:`ballscrew.fractal.yan_komvopoulos` ((E6.1)–(E6.5)), and
    :func:`asperity_pressure` for the per-cell asperity pressure ψ p.
 4. :data:`LUBRICANTS` / :func:`lubricant`: named oils and greases with their sources.
 """

@@ -1,8 +1,8 @@
 """Isothermal EHL film thickness of elliptical contacts (Hamrock & Dowson 1977).
 
 Hamrock, B. J. & Dowson, D. (1977), "Isothermal elastohydrodynamic lubrication of point
-contacts, Part III — fully flooded results", J. Lubr. Technol. 99:264. Physics reference:
-``kinematics-wear.md`` §6.1. SI units; E′ = 2E* is Hamrock's reduced modulus.
+contacts, Part III — fully flooded results", J. Lubr. Technol. 99:264. Theory manual:
+``docs/theory/lubrication.md``. SI units; E′ = 2E* is Hamrock's reduced modulus.
 """
 
 from __future__ import annotations
@@ -92,8 +92,9 @@ def hamrock_dowson(
     ball screw: u_e = V, E2.8); ``load`` Q_f [N], the load the film carries. u_e = 0 gives a
     zero film. Q_f → 0 makes the film grow without bound (W^−0.067); Q_f = 0 is rejected.
 
-    REF contact A (R_x = 2.820 mm, R_y = 34.93 mm, η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa,
-    u_e = 0.09333 m/s, Q = 39.41 N): h_c = 53.30 nm, h_min = 41.70 nm (T6.1).
+    Contact A of the reference screw of ``examples/wear_step_stress.toml`` (R_x = 2.820 mm, R_y =
+    34.93 mm, η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa, u_e = 0.09333 m/s, Q = 39.41 N): h_c = 53.30 nm,
+    h_min = 41.70 nm.
     """
     u, g, w, k = dimensionless_groups(
         rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, load

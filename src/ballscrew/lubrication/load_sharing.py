@@ -4,7 +4,7 @@ Johnson, K. L., Greenwood, J. A. & Poon, S. Y. (1972), "A simple theory of asper
 elastohydrodynamic lubrication", Wear 19:91 — the film is as thick as if it carried its own
 share alone, and the asperities at that separation carry the rest. Film: Hamrock & Dowson (1977);
 asperities: the 3-D fractal model of Yan & Komvopoulos (1998) with a Gaussian bearing ratio.
-Physics reference: ``kinematics-wear.md`` §6.2, (E6.1)–(E6.5).
+Theory manual: ``docs/theory/lubrication.md``, load sharing (E6.1)–(E6.5).
 """
 
 from __future__ import annotations
@@ -130,8 +130,8 @@ def share_load(
     ``nominal_area`` A_n: π a b of the Hertz ellipse (or the loaded cells' area). With no
     entrainment (u_e = 0) there is no film and ψ = 1 (dry contact).
 
-    REF contact A, Ds = 2.4, G = 1e-10 m, ΔA = 100 µm², A_n = π a b: Q = 39.41 N gives
-    ψ = 0.767, h = 58.76 nm (T6.4).
+    Contact A of the reference screw of ``examples/wear_step_stress.toml``, Ds = 2.4, G = 1e-10 m,
+    ΔA = 100 µm², A_n = π a b: Q = 39.41 N gives ψ = 0.767, h = 58.76 nm.
     """
     q = float(load)
     if not (math.isfinite(q) and q > 0.0):

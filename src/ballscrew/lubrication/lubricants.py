@@ -6,10 +6,11 @@ Data, not physics. Each entry says where its numbers come from:
   liquid lubricants — ISO viscosity classification": VG n has ν = n mm²/s at 40 °C, ±10 %).
 * Density: 870 kg/m³ at 40 °C for a paraffinic mineral oil [ASSUMED; typical 860–880 kg/m³],
   so η₀ = ρ ν.
-* α_p: 2.1e-8 Pa⁻¹ for the ISO VG 68 class is the REF value of ``kinematics-wear.md`` §10.2; the
-  other grades are graded around it within the range usually quoted for mineral oils at 40 °C,
-  about 1.5–2.5e-8 Pa⁻¹ (Hamrock, *Fundamentals of Fluid Film Lubrication*, 1994; Harris &
-  Kotzalas, *Rolling Bearing Analysis*, 2006) [ASSUMED: typical, not measured values].
+* α_p: 2.1e-8 Pa⁻¹ for the ISO VG 68 class is the value of the reference screw of
+  ``examples/wear_step_stress.toml``; the other grades are graded around it within the range usually
+  quoted for mineral oils at 40 °C, about 1.5–2.5e-8 Pa⁻¹ (Hamrock, *Fundamentals of Fluid Film
+  Lubrication*, 1994; Harris & Kotzalas, *Rolling Bearing Analysis*, 2006) [ASSUMED: typical, not
+  measured values].
 * Greases: EHL films of greased contacts are governed by the base oil (Harris & Kotzalas 2006),
   so a grease entry carries its base oil's values; it does not model starvation.
 

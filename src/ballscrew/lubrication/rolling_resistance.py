@@ -2,7 +2,7 @@
 
 Harris, T. A. & Kotzalas, M. N. (2006), *Rolling Bearing Analysis*, 5th ed., Vol. 2, ch. 3
 (hydrodynamic rolling force of a ball in an EHL contact); used for ball screws by Wei, Lin &
-Horng (2009), Tribol. Int. 42:1816. Physics reference: ``kinematics-wear.md`` (E3.4), with
+Horng (2009), Tribol. Int. 42:1816. Theory manual: ``docs/theory/lubrication.md``, (E3.4), with
 medium confidence in the coefficients.
 """
 
@@ -25,10 +25,11 @@ def ehl_rolling_resistance(
     """EHL rolling-resistance force F_R = 2.86 E′ R_x² κ^0.348 Ḡ^0.022 U^0.66 W^0.47, (E3.4), N.
 
     U, Ḡ, W and the ellipticity κ = κ_HD = 1.03 (R_y/R_x)^0.64 as in Hamrock–Dowson
-    (:func:`~ballscrew.lubrication.film.dimensionless_groups`); the document's T3.7 value is
-    reproduced with κ_HD (the exact Hertz a/b = 5.147 gives 4.634e-3 N). It acts on the ball
-    against its rolling direction relative to the raceway. REF contact A at Q = 68.69 N,
-    u_e = 0.09333 m/s, η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa: 4.637e-3 N (T3.7).
+    (:func:`~ballscrew.lubrication.film.dimensionless_groups`); the example value below is
+    reproduced with κ_HD (the exact Hertz a/b = 5.147 gives 4.634e-3 N). It acts on the ball against
+    its rolling direction relative to the raceway. Contact A of the reference screw of
+    ``examples/wear_step_stress.toml`` at Q = 68.69 N, u_e = 0.09333 m/s, η₀ = 0.06 Pa s, α_p =
+    2.1e-8 1/Pa: 4.637e-3 N.
     """
     u, g, w, kappa = dimensionless_groups(
         rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, load

@@ -6,9 +6,11 @@
   Zygo, MountainsMap exports) into a :class:`Profile` (heights and spacing in m).
 * :func:`weierstrass_mandelbrot_profile` — synthetic W–M profiles (F1) for tests.
 
-The profile dimension 1 < D < 2 and G in m are those of ``contact-tcr.md`` §5.1 (the 3-D surface
-dimension is Ds = D + 1). Sources: Majumdar & Bhushan (1990), J. Tribol. 112:205 and Wear
-136:313; Berry & Lewis (1980), Proc. R. Soc. Lond. A 370:459; ISO 25178-71:2017.
+The profile dimension 1 < D < 2 and G in m are those of the theory manual,
+``docs/theory/surface.md`` (the 3-D surface dimension is Ds = D + 1). Sources: Majumdar & Bhushan
+(1990), J. Tribol. 112:205; Majumdar & Tien (1990), "Fractal characterization and simulation of
+rough surfaces", Wear 136:313–327; Berry & Lewis (1980), Proc. R. Soc. Lond. A 370:459; ISO
+25178-71:2017.
 """
 
 from ballscrew.surface.fit import (

@@ -9,7 +9,7 @@ density per unit frequency when each line is spread over the band [γ^(n−½), 
 spectrum or a continuous one into a smooth density that can be fitted in log–log axes.
 
 Sources: Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205 (F2); Berry, M. V. & Lewis,
-Z. V. (1980), Proc. R. Soc. Lond. A 370:459. Physics reference: ``contact-tcr.md`` §5.1.
+Z. V. (1980), Proc. R. Soc. Lond. A 370:459. Theory manual: ``docs/theory/surface.md``.
 """
 
 from __future__ import annotations

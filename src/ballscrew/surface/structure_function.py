@@ -11,7 +11,7 @@ the G of (F1)/(F2). A sampled record only holds the band 1/L ≲ ω ≲ 1/(2Δx)
 (F4), used by the fit to correct both ends.
 
 Sources: Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205; Berry, M. V. & Lewis, Z. V.
-(1980), Proc. R. Soc. Lond. A 370:459. Physics reference: ``contact-tcr.md`` §5.1.
+(1980), Proc. R. Soc. Lond. A 370:459. Theory manual: ``docs/theory/surface.md``.
 """
 
 from __future__ import annotations

@@ -10,8 +10,9 @@ from the Nyquist limit (γ^(n_max) < 1/(2Δx)), so the profile holds exactly the
 measurement with this length and spacing would see.
 
 Sources: Berry, M. V. & Lewis, Z. V. (1980), Proc. R. Soc. Lond. A 370:459 (the W–M function);
-Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205 and Wear 136:313 (F1)–(F4). Physics
-reference: ``contact-tcr.md`` §5.1. ``D`` is the profile dimension 1 < D < 2, ``G`` in m.
+Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205 and Majumdar, A. & Tien, C. L. (1990),
+"Fractal characterization and simulation of rough surfaces", Wear 136:313–327 (F1)–(F4). Theory
+manual: ``docs/theory/surface.md``. ``D`` is the profile dimension 1 < D < 2, ``G`` in m.
 """
 
 from __future__ import annotations

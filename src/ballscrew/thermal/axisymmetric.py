@@ -1,8 +1,8 @@
 """2-D axisymmetric FE model (scikit-fem) of the screw shaft and the nut assembly.
 
-The (r, z) half-section is meshed with structured quadrilaterals, generated here without gmsh:
-a tensor grid for the shaft and one for the nut assembly, whose bore nodes duplicate the shaft
-surface nodes (thermal-fe-engines.md §4.1, "duplicated nodes"). The balls of each nut are the
+The (r, z) half-section is meshed with structured quadrilaterals, generated here without gmsh: a
+tensor grid for the shaft and one for the nut assembly, whose bore nodes duplicate the shaft surface
+nodes ("duplicated nodes"; theory manual ``docs/theory/thermal.md``). The balls of each nut are the
 interface term
     ∫_Γ h_c (T_n − T_s)(v_n − v_s) 2πr dΓ = h_c Jᵀ M_Γ J,
 with J the jump operator (+1 on a nut-bore DOF, −1 on the shaft-surface DOF it faces, found by

@@ -1,6 +1,7 @@
-"""Convective heat-transfer coefficients of the screw and the nut (contact-tcr.md §9.2, Q5–Q6).
+"""Convective heat-transfer coefficients of the screw and the nut (Q5–Q6).
 
-SI throughout: diameters and lengths in m, speeds in rad/s or m/s, h in W/(m² K).
+SI throughout: diameters and lengths in m, speeds in rad/s or m/s, h in W/(m² K). Theory manual:
+``docs/theory/thermal.md``, convection.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ GRAVITY = 9.81
 
 @dataclass(frozen=True)
 class Air:
-    """Properties of the surrounding air (defaults: dry air near 300 K, contact-tcr.md §9.2)."""
+    """Properties of the surrounding air (defaults: dry air near 300 K)."""
 
     kinematic_viscosity: float = 1.589e-5
     """ν [m²/s]."""
@@ -40,7 +41,7 @@ def rotating_cylinder(diameter: float, speed: float, air: Air = Air()) -> float:
 
     (Kreith, "Convection heat transfer in rotating systems", Adv. Heat Transfer 5 (1968); valid
     for Re_ω < 4.3·10⁵, 0.7 < Pr < 670; beyond that it is extrapolated). ``speed`` ω [rad/s].
-    Example (§9.2): d = 40 mm, 1000 r/min → Re = 10545, Nu = 56.97, h = 37.46 W/(m² K).
+    Example: d = 40 mm, 1000 r/min → Re = 10545, Nu = 56.97, h = 37.46 W/(m² K).
     """
     positive("diameter", diameter)
     re = abs(speed) * diameter**2 / air.kinematic_viscosity
@@ -56,7 +57,7 @@ def horizontal_cylinder_natural(
         Ra = g β ΔT d³/(ν a),   Nu = {0.60 + 0.387 Ra^{1/6} / [1 + (0.559/Pr)^{9/16}]^{8/27}}²
 
     (Churchill & Chu, Int. J. Heat Mass Transfer 18 (1975) 1049; valid 10⁻⁵ < Ra < 10¹²).
-    Example (§9.2): d = 70 mm, ΔT = 10 K → Ra = 3.14·10⁵, Nu = 10.55, h = 3.96 W/(m² K).
+    Example: d = 70 mm, ΔT = 10 K → Ra = 3.14·10⁵, Nu = 10.55, h = 3.96 W/(m² K).
     """
     positive("diameter", diameter)
     positive("temperature_difference", temperature_difference)

@@ -1,7 +1,8 @@
-"""Friction heat of the support bearings and of the ball screw (contact-tcr.md §9.1, Q2–Q4).
+"""Friction heat of the support bearings and of the ball screw (Q2–Q4).
 
 All functions take and return SI values: torques in N·m, speeds in rad/s, heat in W. The
 Palmgren coefficients are defined in N·mm, mm, mm²/s and r/min; the conversion happens inside.
+Theory manual: ``docs/theory/thermal.md``, heat sources.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ _RAD_S_TO_RPM = 60.0 / (2.0 * math.pi)
 
 
 def friction_heat(torque: float, speed: float) -> float:
-    """Heat of a friction torque, Q = M·ω [W] (Q2, Q4; Gao et al. 2019 §5).
+    """Heat of a friction torque, Q = M·ω [W] (Q2, Q4; Gao et al. 2019).
 
     ``torque`` M [N·m] ≥ 0, ``speed`` ω [rad/s] (its magnitude is used).
     """
@@ -56,7 +57,7 @@ def palmgren_torque(
 
     with ν₀ in mm²/s, n in r/min and d_m in mm (Palmgren 1959; Harris & Kotzalas, Rolling
     Bearing Analysis). P₀ = F_a is the static equivalent load of an axially loaded (preloaded)
-    bearing, as in the example of contact-tcr.md §9.1: f₀ = 2, ν₀ = 20 mm²/s, n = 1000 r/min,
+    bearing, as in this example: f₀ = 2, ν₀ = 20 mm²/s, n = 1000 r/min,
     d_m = 46 mm, F_a = 2000 N, C₀ = 12000 N → M₀ = 14.34 N·mm, M₁ = 50.93 N·mm.
 
     Inputs in SI: ``speed`` ω [rad/s], ``viscosity`` ν₀ [m²/s], ``mean_diameter`` [m], loads

@@ -1,6 +1,6 @@
 """Structured hexahedral mesh of the screw shaft and the nut assembly, generated in numpy.
 
-No gmsh (GPL; thermal-fe-engines.md §4): the cross-sections are built as quadrilateral
+No gmsh (GPL): the cross-sections are built as quadrilateral
 meshes and extruded along the axial grid lines into trilinear hexahedra (skfem ``MeshHex``).
 
 - Shaft: an O-grid disc, a square core of half-side c·R with (n/4)² cells plus an O-ring of
@@ -10,7 +10,7 @@ meshes and extruded along the axial grid lines into trilinear hexahedra (skfem `
 - Nut assembly: an annulus R … max outer radius on the same n angles, extruded along the
   ring's axial lines; elements beyond the outer radius of their part (nut or spacer) are
   dropped. Its bore nodes are separate copies of the shaft's surface nodes at the same
-  coordinates (duplicated interface nodes, thermal-fe-engines.md §4.1), so the contact is the
+  coordinates (duplicated interface nodes), so the contact is the
   jump term of :mod:`~ballscrew.thermal.threed`.
 
 The circumference is a polygon of n sides: its area is n/(2π)·sin(2π/n) of the circle's

@@ -1,6 +1,6 @@
 """1-D axial thermal network of the screw with the nut assembly (the fast model, for sweeps).
 
-Unknowns per axial cell (thermal-fe-engines.md §2, "1D axial network"):
+Unknowns per axial cell (theory manual ``docs/theory/thermal.md``, 1-D axial network):
 - shaft: mean temperature (capacity ρc·πR²·Δz) and a massless surface node. Mean-to-surface
   conductance 8πλΔz: the parabolic radial profile of a solid cylinder, T̄ − T_s = Q′/(8πλ).
 - nut assembly: mean temperature (capacity ρc·π(r_o² − R²)Δz) with massless bore and OD nodes;

@@ -5,8 +5,8 @@ axial parts (nut, spacer, nut) on the bore radius R. The balls of each nut are s
 its bore as an interface conductance; the ball-screw friction heat enters at that interface,
 part into the screw side and part into the nut side. Support bearings heat bands of the shaft
 surface. Every outer surface loses heat by convection to ambient; the spacer bore and the shaft
-surface under it are adiabatic (an air gap). The nut may reciprocate over a stroke (§ moving
-heat source). Temperatures are rises θ = T − T_ambient [K].
+surface under it are adiabatic (an air gap). The nut may reciprocate over a stroke (moving
+heat source, ``docs/theory/thermal.md``). Temperatures are rises θ = T − T_ambient [K].
 
 The models (:mod:`~ballscrew.thermal.network`, :mod:`~ballscrew.thermal.axisymmetric`) share
 :class:`AxialGrid`: a uniform axial spacing over the range the nut sweeps, so that every nut

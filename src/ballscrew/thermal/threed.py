@@ -1,9 +1,9 @@
 """Optional full 3-D FE model (scikit-fem, trilinear hexahedra) with helical contact patches.
 
-Issue #4's optional model "with the helical contact patches, for users who need the
-non-axisymmetric detail". Mesh: :mod:`~ballscrew.thermal.mesh3d` (O-grid shaft, annular
-nut assembly, duplicated interface nodes). Weak form of C θ̇ + A θ = f (thermal-fe-engines.md
-§4, in Cartesian coordinates, no 2πr weight):
+The optional model with the helical contact patches, for users who need the non-axisymmetric detail
+(theory manual ``docs/theory/thermal.md``, 3-D FE model). Mesh: :mod:`~ballscrew.thermal.mesh3d`
+(O-grid shaft, annular nut assembly, duplicated interface nodes). Weak form of C θ̇ + A θ = f (in
+Cartesian coordinates, no 2πr weight):
 
     ∫_Ω λ ∇θ·∇v + ∫_Ω ρc_p θ̇ v + Σ_faces ∫ h θ v
         + ∫_Γ h_c(x) (θ_s − θ_n)(v_s − v_n) dΓ  =  ∫_Γ (q_s v_s + q_n v_n) dΓ + bearing bands,
@@ -13,7 +13,8 @@ h_c Jᵀ M_Γ(h_c) J with J the jump operator (+1 on a bore DOF, −1 on the sha
 coordinates, found with a cKDTree; a stroke offset of m cells pairs it with the DOF m·Δz
 further along, time-averaged with the stroke weights as in the axisymmetric model).
 
-Helical contact patches (contact-tcr.md §1, §7 (A3–A4), §9). The centre of ball j of a nut
+Helical contact patches (``docs/theory/geometry.md``; (A3)–(A4) of
+``docs/theory/contact-resistance.md``; ``docs/theory/thermal.md``). The centre of ball j of a nut
 runs on the helix C(θ) = (r_m cos θ, r_m sin θ, p_h θ), p_h = L/(2π) (G1); its screw and nut
 contact points A, B lie at radii r_A, r_B and axial offsets ∓r_b sin β from C (G9–G12). The
 model collapses both raceways onto the one interface cylinder r = R, so a patch is centred at

@@ -1,6 +1,6 @@
 """Linear solves of the heat equation C dθ/dt + A θ = f: steady state and implicit Euler.
 
-Following the engine report (thermal-fe-engines.md §2–§3): a sparse LU (SuperLU, COLAMD
+Theory manual ``docs/theory/thermal.md``, time integration and solvers: a sparse LU (SuperLU, COLAMD
 ordering) up to about 60k unknowns, factorised once and reused for every step of a constant
 time step; above that smoothed-aggregation AMG preconditioned CG (pyamg). Implicit Euler with
 consistent matrices conserves energy discretely:

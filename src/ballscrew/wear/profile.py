@@ -2,7 +2,7 @@
 
 The raceway normal-section profile after wear is the nominal arc pushed back along its local
 normal by the wear depth h(y); since |y| ≪ r_s, y is the arc length across the groove and the
-push-back adds h(y) to the ball–raceway gap (``kinematics-wear.md`` (E8.5), (E4.8)).
+push-back adds h(y) to the ball–raceway gap (``docs/theory/wear.md`` (E8.5), (E4.8)).
 """
 
 from __future__ import annotations

@@ -4,13 +4,13 @@ Each grid cell of the contact solution is a micro-contact region of apparent are
 the asperity force F = p_asp ΔA (p_asp = ψ p, the film share removed, (E6.5)). The largest
 truncated area a_l follows from F_asp(a_l) = F (E5.16, Yan & Komvopoulos 1998); the cell's wear
 rate w (worn volume per unit time per unit apparent area = wear-depth speed, m/s) then follows
-from the local sliding speed |Δv| (E2.7). Physics reference: ``kinematics-wear.md`` §7.
+from the local sliding speed |Δv| (E2.7). Theory manual: ``docs/theory/wear.md``, cell wear rate.
 
-* Model A (§7.2, default): adhesive particles only at plastic asperities, hemispherical
+* Model A ((E7.2), default): adhesive particles only at plastic asperities, hemispherical
   particles of radius r' removed with probability K per encounter (Archard 1953):
   ``w = K |Δv| F_p(a_l) / (3 H ΔA)``; the Archard limit ``w = K |Δv| p/(3H)`` for fully plastic
-  cells (T7.3).
-* Model C (§7.3): cap volume a'δ(a')/2 per encounter summed over all asperities (Zhou, Leu &
+  cells.
+* Model C ((E7.3)): cap volume a'δ(a')/2 per encounter summed over all asperities (Zhou, Leu &
   Blackmore 1993): ``w = (K|Δv|/ΔA) √π (Ds−1)/(4(5−2Ds)) δ_l a_l^(Ds−2) a_up^((5−2Ds)/2)``,
   a_up = a_l; requires Ds < 2.5.
 
@@ -82,18 +82,18 @@ def wear_rate_model_a(
     coefficient: float,
     gamma: float = 1.5,
 ) -> FloatArray:
-    """Model A cell wear rate ``w = K |Δv| F_p(a_l) / (3 H ΔA)``, (E7.2 / §7.2), m/s.
+    """Model A cell wear rate ``w = K |Δv| F_p(a_l) / (3 H ΔA)``, (E7.2), m/s.
 
     Per plastic asperity v = (2/3)π r'³ removed with probability K per encounter of duration
     2r'/|Δv|, so dv/dt = (K/3) a' |Δv|; integrated over n(a') (E5.10) up to a_w = min(a_l, a_c)
     this is K|Δv| F_p/(3HΔA) with F_p of (E5.12). Fully plastic cells give Archard's
-    w = K|Δv| p_asp/(3H) (T7.3). T7.1: Ds = 2.4, G = 1e-10 m, ΔA = 100 µm², p_asp = 500 MPa,
+    w = K|Δv| p_asp/(3H). Example: Ds = 2.4, G = 1e-10 m, ΔA = 100 µm², p_asp = 500 MPa,
     |Δv| = 2.637e-3 m/s, K = 1e-4, H = 7 GPa → w = 1.328e-9 m/s.
 
     Args:
         asperity_pressure: p_asp = ψ p per cell [Pa].
         sliding_speed: local sliding speed |Δv| per cell [m/s] (sign ignored).
-        cell_area: ΔA [m²]; Ds, G [m], e_star [Pa], hardness [Pa]: the fractal raceway (§5).
+        cell_area: ΔA [m²]; Ds, G [m], e_star [Pa], hardness [Pa]: the fractal raceway.
         coefficient: wear coefficient K [-].
     """
     _check(coefficient, cell_area, hardness)
@@ -116,11 +116,11 @@ def wear_rate_model_c(
     coefficient: float,
     gamma: float = 1.5,
 ) -> FloatArray:
-    """Model C cell wear rate (cap volume, §7.3), m/s; requires Ds < 2.5.
+    """Model C cell wear rate (cap volume, (E7.3)), m/s; requires Ds < 2.5.
 
         w = (K |Δv| / ΔA) · √π (Ds−1)/(4(5−2Ds)) · δ_l · √a_l,   δ_l = δ(a_l) (E5.5)
 
-    (a_up = a_l). T7.2: the T7.1 inputs give w = 1.381e-9 m/s with δ_l = 6.246e-8 m.
+    (a_up = a_l). The Model A example's inputs give w = 1.381e-9 m/s with δ_l = 6.246e-8 m.
     Raises :class:`InputError` for Ds ≥ 2.5, where the sum over small asperities diverges.
     """
     _check(coefficient, cell_area, hardness)

@@ -1,9 +1,9 @@
-"""Wear strips across the groove, the working raceway length and reciprocation (§8.1).
+"""Wear strips across the groove, the working raceway length and reciprocation (E8.1)–(E8.4).
 
-Physics reference: ``kinematics-wear.md`` (E8.1)–(E8.4). The cell wear rates w_ij of one ball's
-contact (axis 0 = i along the helix tangent X_A, axis 1 = j across the groove Y_A) are summed
-along the rolling direction into strips, multiplied by the Z balls of the nut and spread over
-the whole working raceway of helix length L_w.
+Theory manual: ``docs/theory/wear.md``, wear strips and the working raceway. The cell wear rates
+w_ij of one ball's contact (axis 0 = i along the helix tangent X_A, axis 1 = j across the groove
+Y_A) are summed along the rolling direction into strips, multiplied by the Z balls of the nut and
+spread over the whole working raceway of helix length L_w.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ def strip_wear_speed(cell_rates: ArrayLike, dx: float) -> FloatArray:
     """Per-ball strip wear speed ``W_j = Σ_i w_ij Δx``, (E8.1), m²/s.
 
     ``cell_rates`` [m/s] has axis 0 along the helix tangent (i) and axis 1 across the groove (j).
-    T8.1: w = [[1, 2, 1], [0.5, 1, 0.5]]e-9 m/s, Δx = 10 µm → W = [1.5, 3.0, 1.5]e-14 m²/s.
+    Example: w = [[1, 2, 1], [0.5, 1, 0.5]]e-9 m/s, Δx = 10 µm → W = [1.5, 3.0, 1.5]e-14 m²/s.
     """
     w = nonnegative_array("cell_rates", cell_rates, "m/s")
     if w.ndim != 2:
@@ -44,7 +44,8 @@ def working_raceway_length(
 ) -> float:
     """Helix length of the worn raceway ``L_w = (S/L) √((2π ρ_A)² + L²)``, (E8.3), m.
 
-    ρ_A = r_m − r_b cosβ is the radius of contact A. T8.2 (REF, S = 0.3 m): ρ_A = 17.755 mm,
+    ρ_A = r_m − r_b cosβ is the radius of contact A. For the reference screw of
+    ``examples/wear_step_stress.toml`` with S = 0.3 m: ρ_A = 17.755 mm,
     one helix turn 112.00 mm, L_w = 3.3601 m.
     """
     s = positive("stroke", stroke, "m")
@@ -60,7 +61,8 @@ def working_raceway_length(
 def raceway_depth_rate(strip_speed: ArrayLike, balls: int, raceway_length: float) -> FloatArray:
     """Wear-depth speed of the raceway ``ḣ_j = Z W_j / L_w``, (E8.2), m/s.
 
-    T8.1: W = [1.5, 3.0, 1.5]e-14 m²/s, Z = 54, L_w = 3.3601 m → [2.411, 4.821, 2.411]e-13 m/s.
+    Example (that of :func:`strip_wear_speed`): W = [1.5, 3.0, 1.5]e-14 m²/s, Z = 54, L_w = 3.3601 m
+    → [2.411, 4.821, 2.411]e-13 m/s.
     """
     if not (isinstance(balls, int | np.integer) and balls >= 1):
         raise InputError("balls", balls, "an integer number of balls >= 1")
