@@ -10,26 +10,13 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-import pytest
-
 ROOT = Path(__file__).resolve().parents[1]
-SCANNED = ("src", "docs", "README.md")
+SCANNED = ("src", "docs", "examples", "README.md")
 FORBIDDEN = re.compile(
     r"contact-tcr|kinematics-wear|thermal-fe-engines|shared/|seed paper|physics reference"
     r"|physics notes|engine report|\bissue #?\d+",
     re.IGNORECASE,
 )
-# Files two other changes are rewriting right now; drop the xfail below once they are clean.
-BEING_REWRITTEN = (
-    "src/ballscrew/analyses/",
-    "src/ballscrew/results/",
-    "src/ballscrew/commands/",
-    "src/ballscrew/calibration/",
-    "src/ballscrew/wear/life.py",
-    "src/ballscrew/surface/fit.py",
-)
-
-
 def _files() -> list[Path]:
     found: list[Path] = []
     for name in SCANNED:
@@ -61,15 +48,6 @@ def _report(offences: list[str]) -> str:
     return f"{len(offences)} pointer(s) to files outside the repository:\n" + "\n".join(offences)
 
 
-@pytest.mark.xfail(
-    strict=False,
-    reason="still being rewritten elsewhere: " + ", ".join(BEING_REWRITTEN),
-)
 def test_no_external_references() -> None:
     offences = _offences()
-    assert not offences, _report(offences)
-
-
-def test_no_external_references_outside_the_files_being_rewritten() -> None:
-    offences = [line for line in _offences() if not line.startswith(BEING_REWRITTEN)]
     assert not offences, _report(offences)

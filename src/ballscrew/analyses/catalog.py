@@ -87,7 +87,7 @@ for _analysis in (
         key_figure="torque_preload.png",
     ),
     Analysis(
-        "calibration",
+        "calibrate",
         "wear coefficient (and torque scale) fitted to a measured history",
         headlines=(
             "wear_coefficient",

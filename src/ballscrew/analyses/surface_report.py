@@ -90,7 +90,7 @@ def summary(result: SurfaceCharacterisation) -> dict[str, Any]:
         "conventions": {
             "D": "profile fractal dimension, 1 < D < 2 (3-D surface Ds = D + 1)",
             "psd": "one-sided, frequency in cycles/m: S = G^(2(D-1))/(2 ln γ) ω^-(5-2D)",
-            "structure_function": "C_D G^(2(D-1)) (2π τ)^(4-2D) (contact-tcr.md F4)",
+            "structure_function": "C_D G^(2(D-1)) (2π τ)^(4-2D) (theory manual, Surface, F4)",
         },
     }
 

@@ -1,6 +1,6 @@
 """``thermal_field(case)``: temperature field and thermal elongation of the ball screw.
 
-After Gao, Wang & Liu (2019), §5: screw shaft, nut(s) and spacer, heated by the support bearings
+After Gao, Wang & Liu (2019), section 5: screw shaft, nut(s) and spacer, heated by the support bearings
 and the ball screw's friction, cooled by convection, with the thermal contact resistance of the
 TCR chain on the balls; steady state, the transient from ambient, and the elongation
 ΔL = α∫ΔT dz (theory manual: *Thermal*).

@@ -35,8 +35,8 @@ def _provenance(case: Case) -> str:
     if spec is not None and abs(spec.coefficient - default) > 1e-12:
         return "case file [wear] coefficient"
     return (
-        "kinematics-wear.md §10.3: calibrated so that h_max = 2.43 µm at 1.44e6 rev on the REF "
-        "screw (Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m)"
+        "calibrated so that h_max = 2.43 µm at 1.44e6 rev on the step-stress example screw "
+        "(examples/wear_step_stress.toml: Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m)"
     )
 
 

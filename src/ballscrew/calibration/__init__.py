@@ -9,7 +9,7 @@
 3. ``result.wear_coefficient``, ``result.standard_error``, ``result.torque_scale`` and
    ``result.rms_residual`` are the fit; ``ballscrew.results.write_results`` writes its folder.
 
-K is confounded with the stroke and the revolution count of the case (kinematics-wear.md §7.4):
+K is confounded with the stroke and the revolution count of the case (theory manual, *Wear*):
 report it together with them.
 """
 

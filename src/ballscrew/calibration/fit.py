@@ -11,13 +11,13 @@ interpolated linearly (``np.interp``) onto the measured revolutions, and the res
 are minimised with :func:`scipy.optimize.least_squares` (trust-region reflective). ``s`` is a
 fixed scale of the data (conditioning only). ``m`` multiplies the model's friction torque and is
 fitted only for torque data with ``fit_torque_scale``: the catalogue drag torque
-T_p = K_T F_p L/(2π) (kinematics-wear.md E9.1) is linear in K_T and the torque does not feed
+T_p = K_T F_p L/(2π) (E9.1, theory manual *Wear*) is linear in K_T and the torque does not feed
 back into the wear, so one model run per K serves every m, and the fitted torque scale is
 ``m`` times the case's ``wear.torque_scale``. This absorbs seal and lubricant drag (E9.3).
 
 K is fitted as ln K: it is positive, spans decades, and the model responds to it roughly
-multiplicatively (kinematics-wear.md §7.4: K is confounded with the stroke and the revolutions,
-so it is a calibration constant of the whole model, §10.3).
+multiplicatively (theory manual, *Wear*: K is confounded with the stroke and the revolutions,
+so it is a calibration constant of the whole model).
 
 Robust start: a coarse scan in ln K (one decade apart, starting at the case's K, extended
 towards lower residuals until the minimum is bracketed) picks the best decade, with m from its
@@ -77,7 +77,7 @@ HISTORY_FIELD: dict[str, str] = {
 }
 
 _LN10 = math.log(10.0)
-_K_MIN, _K_MAX = 1.0e-16, 1.0  # K is a probability per asperity encounter (§7.1)
+_K_MIN, _K_MAX = 1.0e-16, 1.0  # K is a probability per asperity encounter
 
 
 class CalibrationError(BallscrewError, ValueError):

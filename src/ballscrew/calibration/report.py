@@ -65,7 +65,7 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         },
         "options": dict(result.options),
         "note": "K is confounded with the stroke and the revolution count of the case "
-        "(kinematics-wear.md §7.4); quote it with them. Standard errors assume the model is "
+        "(theory manual, Wear); quote it with them. Standard errors assume the model is "
         "right and the noise independent with equal variance.",
     }
 

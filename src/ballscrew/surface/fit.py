@@ -44,7 +44,7 @@ and ``lnG_stderr`` (PSD) estimate this. Average several profiles (rows of an are
 compare G values only at equal D.
 
 Sources: Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205 and Wear 136:313; Berry, M. V. &
-Lewis, Z. V. (1980), Proc. R. Soc. Lond. A 370:459. Physics reference: ``contact-tcr.md`` §5.1.
+Lewis, Z. V. (1980), Proc. R. Soc. Lond. A 370:459.
 """
 
 from __future__ import annotations
@@ -143,7 +143,7 @@ class FractalFit:
 
     @property
     def surface_dimension(self) -> float:
-        """Ds = D + 1, the dimension of the 3-D surface (kinematics-wear.md §5 convention)."""
+        """Ds = D + 1, the dimension of the 3-D surface (the convention of the theory manual, *Fractal contact*)."""
         return self.D + 1.0
 
     def line(self, x: ArrayLike) -> FloatArray:

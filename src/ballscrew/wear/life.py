@@ -1,6 +1,6 @@
 """Wear life of a preloaded double-nut screw: wear profile, preload and drag torque vs revolutions.
 
-The time integration of ``kinematics-wear.md`` §8.2 over the load programme of ``[wear]``:
+The time integration of the wear over a load programme (theory manual, *Wear*):
 
 1. F_1, F_2 from the current preload and the level's axial load (E1.10–E1.11; lift-off gives
    F_2 = 0 and no wear from that nut).
@@ -8,7 +8,7 @@ The time integration of ``kinematics-wear.md`` §8.2 over the load programme of 
    Polonsky–Keer pressure on the fixed grid over the worn gap g_0 + h_s(y) (E8.5), warm-started
    from the previous pressure of the same flank and nut; the JGP asperity share ψ at u_e = V
    (E2.4, E2.8, E6.4) with A_n = the loaded cells' area and ΔA = the grid cell; the sliding speed
-   of (E2.7) with the curvature term; the cell wear rates of Model A or C (§7); strips (E8.1),
+   of (E2.7) with the curvature term; the cell wear rates of Model A or C (E7.2, E7.3); strips (E8.1),
    Z balls over L_w (E8.2–E8.3), reciprocation ½ F_1 + ½ F_2 (E8.4).
 3. Explicit step ΔN = min(max_depth_step / max_j ḣ_j, revolutions to the next level end or
    torque sample); h_s += ḣ_s ΔN.
@@ -152,7 +152,7 @@ def nut_force_pair(preload: float, axial_load: float) -> tuple[float, float]:
 
 @dataclass(frozen=True)
 class FlankRate:
-    """Wear of one flank under one nut force: the contact chain of §8.2 for one ball."""
+    """Wear of one flank under one nut force: the contact chain of one ball."""
 
     load: float
     """Ball load Q [N]."""
@@ -188,7 +188,7 @@ def flank_rate(
     depth: FloatArray,
     initial: FloatArray | None = None,
 ) -> FlankRate:
-    """Wear-depth rate across the groove of ``flank`` under one nut force (§8.2 inner loop)."""
+    """Wear-depth rate across the groove of ``flank`` under one nut force (the inner loop)."""
     q = setup.ball_load(nut_force)
     gap = worn_gap(setup.nominal_gap[flank], depth)
     sol = solve_normal(
