@@ -17,6 +17,8 @@ FORBIDDEN = re.compile(
     r"|physics notes|engine report|\bissue #?\d+",
     re.IGNORECASE,
 )
+
+
 def _files() -> list[Path]:
     found: list[Path] = []
     for name in SCANNED:

@@ -77,7 +77,7 @@ class NutTCR:
 
     @property
     def axial_stiffness(self) -> float:
-        """Preloaded axial stiffness dF/dδ_a = 1.5 F/δ_a of the nut (Hertz; theory manual, Loads) [N/m]."""
+        """Preloaded axial stiffness dF/dδ_a = 1.5 F/δ_a of the nut (Hertz; manual: Loads) [N/m]."""
         return float(preloaded_axial_stiffness(self.force, self.axial_deflection))
 
 
@@ -89,7 +89,9 @@ class ScrewTCR:
     variant: str
     """Element model that produced the numbers (V2, MT or V1)."""
     cell_size: float | None
-    """Fractal cell size Δ_f [m], None = the solver grid (results depend on it; theory manual, Contact resistance)."""
+    """Fractal cell size Δ_f [m], None = the solver grid.
+
+    The results depend on it (theory manual, *Contact resistance*)."""
     nut_forces: tuple[float, float]
     """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
     nuts: tuple[NutTCR, ...]

@@ -1,9 +1,9 @@
 """``thermal_field(case)``: temperature field and thermal elongation of the ball screw.
 
-After Gao, Wang & Liu (2019), section 5: screw shaft, nut(s) and spacer, heated by the support bearings
-and the ball screw's friction, cooled by convection, with the thermal contact resistance of the
-TCR chain on the balls; steady state, the transient from ambient, and the elongation
-ΔL = α∫ΔT dz (theory manual: *Thermal*).
+After Gao, Wang & Liu (2019), section 5: screw shaft, nut(s) and spacer, heated by the support
+bearings and the ball screw's friction, cooled by convection, with the thermal contact
+resistance of the TCR chain on the balls; steady state, the transient from ambient, and the
+elongation ΔL = α∫ΔT dz (theory manual: *Thermal*).
 
 Models: ``"axisymmetric"`` (default; 2-D scikit-fem), ``"network"`` (1-D axial, milliseconds)
 and ``"3d"`` (hexahedra, helical contact patches; :mod:`~ballscrew.thermal.threed`).

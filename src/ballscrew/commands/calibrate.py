@@ -43,9 +43,7 @@ def calibrate(
     from ballscrew.calibration import read_measured
     from ballscrew.calibration.report import fit_table
     from ballscrew.case import load_case
-    from ballscrew.files import atomic_file
     from ballscrew.results import claim_output, value, write_results
-    from ballscrew.results.folder import write_marker
 
     case = load_case(case_file)
     data = read_measured(measured, min_points=3 if fit_torque_scale else 2)
@@ -72,8 +70,6 @@ def calibrate(
             options["stroke"] = value(case.wear.stroke, "m")
             options["programme_revolutions"] = sum(lv.revolutions for lv in case.wear.programme)
         result = replace(result, case=case, options=options)
-        folder = write_results(result, out, case_file)
-        with atomic_file(folder / "fit.csv") as tmp:  # the fit table for spreadsheets
-            tmp.write_text(fit_table(result), encoding="utf-8")
-        write_marker(folder, "calibrate")
+        fit_csv = fit_table(result).encode("utf-8")  # the fit table for spreadsheets
+        folder = write_results(result, out, case_file, {"fit.csv": fit_csv})
         log.info("wrote %s", folder / "report.html")

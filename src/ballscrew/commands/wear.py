@@ -33,9 +33,8 @@ def wear(
     from ballscrew.analyses.wear import wear_life
     from ballscrew.case import load_case
     from ballscrew.errors import InputError
-    from ballscrew.files import atomic_file
     from ballscrew.results import claim_output, write_results
-    from ballscrew.results.folder import write_marker, writing
+    from ballscrew.results.folder import writing
 
     case = load_case(case_file)
     with claim_output(out, command="wear", force=force, inputs=[case_file]) as path, writing(path):
@@ -57,10 +56,8 @@ def wear(
             life.friction_torque[-1],
             life.revolutions[-1],
         )
-        folder = write_results(life, out, case_file)
-        if state.is_file():  # the final state, for a later run to continue from
-            with atomic_file(folder / "state.npz") as tmp:
-                tmp.write_bytes(state.read_bytes())
-            write_marker(folder, "wear")
+        # the final state, for a later run to continue from
+        extra = {"state.npz": state.read_bytes()} if state.is_file() else {}
+        folder = write_results(life, out, case_file, extra)
         state.unlink(missing_ok=True)
         log.info("wrote %s", folder / "report.html")

@@ -37,11 +37,16 @@ def _datasets(result: AnalysisResult) -> Mapping[str, xr.Dataset]:
 
 
 def write_results(
-    result: AnalysisResult, out: str | Path, case_file: str | Path | None = None
+    result: AnalysisResult,
+    out: str | Path,
+    case_file: str | Path | None = None,
+    extra_files: Mapping[str, bytes] | None = None,
 ) -> Path:
     """Write the results folder of ``result`` at ``out`` and return its path.
 
     ``case_file``: the case file as given, copied into the folder as ``case.toml``.
+    ``extra_files``: further files of the command (file name → content), written with the rest
+    so that the folder still appears complete or not at all.
     """
     with results_folder(out) as folder:
         summary = {
@@ -70,4 +75,6 @@ def write_results(
                 )
             )
         write_report(folder / "report.html", result.title, f"ballscrew {result.analysis}", sections)
+        for name, content in (extra_files or {}).items():
+            (folder / name).write_bytes(content)
     return Path(out).resolve()

@@ -143,7 +143,7 @@ class FractalFit:
 
     @property
     def surface_dimension(self) -> float:
-        """Ds = D + 1, the dimension of the 3-D surface (the convention of the theory manual, *Fractal contact*)."""
+        """Ds = D + 1, the dimension of the 3-D surface (theory manual, *Fractal contact*)."""
         return self.D + 1.0
 
     def line(self, x: ArrayLike) -> FloatArray:
