@@ -42,7 +42,7 @@ def test_a_case_field_accepts_exactly_the_registered_names():
         model: model_choice(table, "which model") = "a"
 
     assert Section().model == "a"
-    with pytest.raises(ValueError, match="'b' is not allowed: it must be one of a"):
+    with pytest.raises(ValueError, match="is not allowed: it must be one of a"):
         Section(model="b")
     table.add("b", "a rival published later", 2)
     assert Section(model="b").model == "b"
@@ -62,12 +62,12 @@ def test_case_files_refuse_unknown_model_names_with_the_list(gao_case_path, key,
     with pytest.raises(CaseError) as info:
         ballscrew.load_case(gao_case_path, {key: "nonsense"})
     message = str(info.value)
-    assert f"{key}: 'nonsense' is not allowed" in message
+    assert f"{key} = 'nonsense' is not allowed: it must be one of" in message
     assert ", ".join(registry.names) in message
 
 
 def test_wear_law_names_come_from_the_registry(wear_case_path):
-    with pytest.raises(CaseError, match=r"wear\.model: 'B' is not allowed: it must be one of A, C"):
+    with pytest.raises(CaseError, match=r"wear\.model = 'B' is not allowed: .* one of A, C"):
         ballscrew.load_case(wear_case_path, {"wear.model": "B"})
     assert WEAR_LAWS.names == ("A", "C")
 

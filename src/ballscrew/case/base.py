@@ -29,7 +29,7 @@ def model_choice(registry: Registry[Any], description: str) -> Any:
 
     def check(name: str) -> str:
         if name not in registry:
-            raise ValueError(f"{name!r} is not allowed: it must be one of {', '.join(registry)}")
+            raise ValueError(f"is not allowed: it must be one of {', '.join(registry)}")
         return name
 
     return Annotated[

@@ -356,6 +356,8 @@ def _describe(err: dict[str, Any]) -> str:
         message = str(err["ctx"]["error"])
         if " = " in message:  # a model validator naming its own field
             return f"{dotted}.{message}" if dotted else message
+        if message.startswith("is not allowed"):  # a validator of the value itself
+            return f"{dotted} = {err['input']!r} {message}"
         if spec.constraints or spec.kind:
             return f"{dotted}: {message}; {_range_text(loc, spec)}"
         return f"{dotted}: {message}"
