@@ -15,8 +15,7 @@ from ballscrew.analyses.wear import wear_life, wear_setup
 from ballscrew.case import with_overrides
 from ballscrew.errors import InputError
 from ballscrew.loads import nut_forces
-from ballscrew.wear import flank_rate
-from ballscrew.wear.life import GridEdgeWarning
+from ballscrew.wear import GridEdgeWarning, flank_rate
 
 SPEED = 10.0 * math.pi / 3.0
 

@@ -30,15 +30,10 @@ from ballscrew.geometry import gap_function, raceway_curvature
 from ballscrew.loads import ball_load, nut_axial_compliance, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
 from ballscrew.validation import case_with
-from ballscrew.wear.life import (
-    FLANKS,
-    WearLife,
-    WearSetup,
-    check_wear_work,
-    integrate_wear,
-    nut_force_pair,
-)
+from ballscrew.wear.history import WearLife
+from ballscrew.wear.life import check_wear_work, integrate_wear
 from ballscrew.wear.programme import WearLevel, WearOptions
+from ballscrew.wear.setup import FLANKS, WearSetup, nut_force_pair
 from ballscrew.wear.strips import working_raceway_length
 
 __all__ = ["WearResult", "fingerprint", "wear_life", "wear_options", "wear_setup"]

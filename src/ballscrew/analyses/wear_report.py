@@ -21,7 +21,7 @@ import xarray as xr
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.case import Case
-from ballscrew.wear.life import WearLife
+from ballscrew.wear.history import WearLife
 
 if TYPE_CHECKING:
     from ballscrew.analyses.wear import WearResult

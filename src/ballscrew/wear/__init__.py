@@ -12,10 +12,13 @@ reciprocation, worn groove, time integration, drag torque).
    ``ballscrew.wear_life(case)`` is :mod:`ballscrew.analyses.wear`.
 """
 
-from ballscrew.wear.life import FlankRate, WearLife, WearSetup, flank_rate, integrate_wear
+from ballscrew.wear.history import WearLife
+from ballscrew.wear.life import check_wear_work, integrate_wear
 from ballscrew.wear.profile import worn_gap, worn_gap_function
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.rates import WEAR_LAWS, cell_wear_rate, wear_rate_model_a, wear_rate_model_c
+from ballscrew.wear.setup import WearSetup
+from ballscrew.wear.step import FlankRate, GridEdgeWarning, flank_rate
 from ballscrew.wear.strips import (
     depth_per_revolution,
     raceway_depth_rate,
@@ -27,11 +30,13 @@ from ballscrew.wear.strips import (
 __all__ = [
     "WEAR_LAWS",
     "FlankRate",
+    "GridEdgeWarning",
     "WearLevel",
     "WearLife",
     "WearOptions",
     "WearSetup",
     "cell_wear_rate",
+    "check_wear_work",
     "depth_per_revolution",
     "flank_rate",
     "integrate_wear",

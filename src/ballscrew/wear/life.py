@@ -1,6 +1,8 @@
-"""Wear life of a preloaded double-nut screw: wear profile, preload and drag torque vs revolutions.
+"""Wear life of a preloaded double-nut screw: the integrator over the load programme.
 
-The time integration of the wear over a load programme (theory manual, *Wear*):
+The set-up is :mod:`.setup`, one contact of a step :mod:`.step`, the history :mod:`.history`
+and the checkpoint files :mod:`.checkpoint`. The time integration of the wear over a load
+programme (theory manual, *Wear*):
 
 1. F_1, F_2 from the current preload and the level's axial load (E1.10–E1.11; lift-off gives
    F_2 = 0 and no wear from that nut).
@@ -24,284 +26,25 @@ from __future__ import annotations
 import logging
 import math
 import time
-import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
 from ballscrew.budget import check_count, check_memory, check_work
-from ballscrew.contact import solve_normal
 from ballscrew.errors import InputError
-from ballscrew.geometry import ScrewGeometry
-from ballscrew.kinematics.sliding import sliding_field_closed_form
-from ballscrew.loads import (
-    ball_load,
-    nut_forces,
-    preload_after_wear,
-    preload_drag_torque,
-)
-from ballscrew.lubrication import AsperitySurface, share_load
 from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
-from ballscrew.wear.profile import worn_gap
+from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearOptions
-from ballscrew.wear.rates import cell_wear_rate
-from ballscrew.wear.strips import (
-    depth_per_revolution,
-    raceway_depth_rate,
-    reciprocating_rate,
-    strip_wear_speed,
-)
+from ballscrew.wear.setup import FLANKS, FloatArray, WearSetup, nut_force_pair
+from ballscrew.wear.step import flank_rate
+from ballscrew.wear.strips import reciprocating_rate
 
-__all__ = [
-    "FlankRate",
-    "GridEdgeWarning",
-    "WearLife",
-    "WearSetup",
-    "check_wear_work",
-    "flank_rate",
-    "integrate_wear",
-    "nut_force_pair",
-]
+__all__ = ["check_wear_work", "integrate_wear"]
 
-FloatArray = NDArray[np.float64]
-FLANKS: tuple[int, int] = (1, -1)
 log = logging.getLogger("ballscrew")
 _CHECKPOINT_VERSION = 1
-
-
-class GridEdgeWarning(UserWarning):
-    """The (worn) contact touches the edge of the fixed grid: the box is too small."""
-
-
-# --------------------------------------------------------------------------------- set-up
-
-
-@dataclass(frozen=True)
-class WearSetup:
-    """Everything fixed during a wear run (SI)."""
-
-    geometry: ScrewGeometry
-    spec: WearOptions
-    balls: int
-    e_star: float
-    hardness: float
-    surface: AsperitySurface
-    """Rough screw raceway; ``cell_area`` is the grid cell ΔA (σ from E5.3 with L_s = √ΔA)."""
-    viscosity: float | None
-    pressure_viscosity: float | None
-    rx: float
-    ry: float
-    x: FloatArray
-    y: FloatArray
-    dx: float
-    dy: float
-    nominal_gap: dict[int, FloatArray]
-    compliance: float
-    """C_a of (E1.8) [m N^(−2/3)]."""
-    raceway_length: float
-    """L_w of (E8.3) [m]."""
-    initial_preload: float
-    torque_factor: float
-    """Factor on the catalogue torque of (E9.1) (torque_scale or the initial-torque fit)."""
-    tolerance: float
-    max_iterations: int
-    film_model: str = "hamrock_dowson"
-    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
-
-    @property
-    def cell_area(self) -> float:
-        return self.dx * self.dy
-
-    @property
-    def lubricated(self) -> bool:
-        return self.viscosity is not None and self.pressure_viscosity is not None
-
-    def preload(self, max_depth: float) -> float:
-        """F_p after wear h_max (E1.13) [N]."""
-        g = self.geometry
-        return float(
-            preload_after_wear(
-                self.initial_preload, self.compliance, max_depth, g.contact_angle, g.lead_angle
-            )
-        )
-
-    def torque(self, preload: float) -> float:
-        """Drag torque T = f · K_T F_p L/(2π) (E9.1, E9.3) [N m]."""
-        g = self.geometry
-        return self.torque_factor * preload_drag_torque(preload, g.lead, g.lead_angle)
-
-    def ball_load(self, nut_force: float) -> float:
-        """Q = F/(Z sinβ cosλ) (E1.6) [N]."""
-        g = self.geometry
-        return float(ball_load(nut_force, self.balls, g.contact_angle, g.lead_angle))
-
-
-def nut_force_pair(preload: float, axial_load: float) -> tuple[float, float]:
-    """(F_1, F_2) of the double nut (E1.10–E1.11); without preload F_1 = F_a, F_2 = 0."""
-    if preload <= 0.0:
-        return float(axial_load), 0.0
-    f = nut_forces(preload, axial_load)
-    return float(f[0]), float(f[1])
-
-
-# ------------------------------------------------------------------------- one contact
-
-
-@dataclass(frozen=True)
-class FlankRate:
-    """Wear of one flank under one nut force: the contact chain of one ball."""
-
-    load: float
-    """Ball load Q [N]."""
-    pressure: FloatArray
-    """Pressure p [Pa] on the grid."""
-    psi: float
-    """Asperity share ψ (E6.4)."""
-    cell_rate: FloatArray
-    """Cell wear rates w [m/s]."""
-    depth_per_revolution: FloatArray
-    """Δh_j per screw revolution if this force acted all the time [m/rev]."""
-    iterations: int
-
-
-def entrainment_speed(geometry: ScrewGeometry, screw_speed: float) -> float:
-    """u_e = V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ), (E2.4), (E2.8), m/s (REF 100 rpm: 0.09333)."""
-    lam, beta = geometry.lead_angle, geometry.contact_angle
-    return (
-        0.5
-        * screw_speed
-        * (
-            geometry.pitch_radius / math.cos(lam)
-            - geometry.ball_radius * math.cos(beta) * math.cos(lam)
-        )
-    )
-
-
-def flank_rate(
-    setup: WearSetup,
-    flank: int,
-    nut_force: float,
-    screw_speed: float,
-    depth: FloatArray,
-    initial: FloatArray | None = None,
-) -> FlankRate:
-    """Wear-depth rate across the groove of ``flank`` under one nut force (the inner loop)."""
-    q = setup.ball_load(nut_force)
-    gap = worn_gap(setup.nominal_gap[flank], depth)
-    sol = solve_normal(
-        gap,
-        setup.dx,
-        setup.dy,
-        setup.e_star,
-        q,
-        setup.tolerance,
-        max_iterations=setup.max_iterations,
-        initial=initial,
-    )
-    p = np.asarray(sol.pressure, dtype=float)
-    if p[[0, -1], :].any() or p[:, [0, -1]].any():
-        warnings.warn(
-            f"the contact at Q = {q:.4g} N reaches the edge of the fixed wear grid; "
-            "increase wear.box_factor",
-            GridEdgeWarning,
-            stacklevel=2,
-        )
-    cell = setup.cell_area
-    if setup.lubricated:
-        area = float(np.count_nonzero(p > 0.0)) * cell
-        psi = share_load(
-            q,
-            setup.rx,
-            setup.ry,
-            setup.viscosity,
-            setup.pressure_viscosity,
-            entrainment_speed(setup.geometry, screw_speed),
-            area,
-            setup.surface,
-            film_model=setup.film_model,
-        ).psi
-    else:
-        psi = 1.0
-    speed = sliding_field_closed_form(
-        setup.geometry, screw_speed, setup.x, setup.y, flank, curvature=True
-    ).speed
-    s = setup.surface
-    w = cell_wear_rate(
-        setup.spec.model,
-        psi * p,
-        speed,
-        cell,
-        s.Ds,
-        s.G,
-        s.e_star,
-        s.hardness,
-        setup.spec.coefficient,
-        s.gamma,
-    )
-    rate = raceway_depth_rate(strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length)
-    return FlankRate(q, p, float(psi), w, depth_per_revolution(rate, screw_speed), sol.iterations)
-
-
-# ------------------------------------------------------------------------------ result
-
-
-@dataclass(frozen=True)
-class WearLife:
-    """History of a wear run; arrays have one entry per recorded step (index 0: N = 0)."""
-
-    revolutions: FloatArray
-    """Screw revolutions N [-]."""
-    max_wear_depth: FloatArray
-    """h_max(N), largest depth over both flanks [m]."""
-    preload: FloatArray
-    """F_p(N) (E1.13) [N]."""
-    friction_torque: FloatArray
-    """Drag torque T(N) (E9.1) [N m]."""
-    nut_forces: FloatArray
-    """(F_1, F_2) at each record, under the level then running [N]; shape (n, 2)."""
-    level: NDArray[np.int64]
-    """Index of the level each record belongs to (its end for boundaries)."""
-    sampled: NDArray[np.bool_]
-    """True at the torque-sampling revolutions (multiples of ``torque_sampling``, and N = 0)."""
-    y: FloatArray
-    """Grid positions across the groove [m]."""
-    profiles: FloatArray
-    """h_s(y) [m], shape (n, 2, ny): flank +1 then −1."""
-    level_boundaries: FloatArray
-    """Cumulative revolutions at the end of each level [-]."""
-    level_loads: FloatArray
-    """Axial load of each level [N]."""
-    ellipse_major_axis: float = math.nan
-    """Extent across the groove of the loaded cells under the loaded nut of the last level at
-    the end of the run (worn groove, flank +1) [m] (E8.6)."""
-    ellipse_major_axis_unworn: float = math.nan
-    """The same on the unworn groove at the same load [m]."""
-    worn_band_width: float = math.nan
-    """Width of the band with h > 5 % of h_max on flank +1 at the end [m]."""
-    final_pressure: FloatArray | None = None
-    """Pressure under the loaded nut of the last level at the end (worn groove) [Pa]."""
-    x: FloatArray | None = None
-    contact_solves: int = 0
-    steps: int = 0
-    wall_time: float = 0.0
-    complete: bool = True
-    model: str = "A"
-    coefficient: float = math.nan
-    raceway_length: float = math.nan
-    compliance: float = math.nan
-    cell_area: float = math.nan
-    initial_psi: dict[str, float] = field(default_factory=dict)
-
-    @property
-    def torque_samples(self) -> tuple[FloatArray, FloatArray]:
-        """(N, T) at the torque-sampling revolutions."""
-        return self.revolutions[self.sampled], self.friction_torque[self.sampled]
-
-
-# -------------------------------------------------------------------------- integration
 
 
 @dataclass

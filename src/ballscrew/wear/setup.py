@@ -1,0 +1,87 @@
+"""What stays fixed during a wear run: grid, gaps, surface, compliance and torque factor (SI)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ballscrew.geometry import ScrewGeometry
+from ballscrew.loads import ball_load, nut_forces, preload_after_wear, preload_drag_torque
+from ballscrew.lubrication import AsperitySurface
+from ballscrew.wear.programme import WearOptions
+
+__all__ = ["FLANKS", "WearSetup", "nut_force_pair"]
+
+FloatArray = NDArray[np.float64]
+FLANKS: tuple[int, int] = (1, -1)
+"""The two flanks of the screw groove: +1 loaded by nut 1, −1 by nut 2."""
+
+
+@dataclass(frozen=True)
+class WearSetup:
+    """Everything fixed during a wear run (SI)."""
+
+    geometry: ScrewGeometry
+    spec: WearOptions
+    balls: int
+    e_star: float
+    hardness: float
+    surface: AsperitySurface
+    """Rough screw raceway; ``cell_area`` is the grid cell ΔA (σ from E5.3 with L_s = √ΔA)."""
+    viscosity: float | None
+    pressure_viscosity: float | None
+    rx: float
+    ry: float
+    x: FloatArray
+    y: FloatArray
+    dx: float
+    dy: float
+    nominal_gap: dict[int, FloatArray]
+    compliance: float
+    """C_a of (E1.8) [m N^(−2/3)]."""
+    raceway_length: float
+    """L_w of (E8.3) [m]."""
+    initial_preload: float
+    torque_factor: float
+    """Factor on the catalogue torque of (E9.1) (torque_scale or the initial-torque fit)."""
+    tolerance: float
+    max_iterations: int
+    film_model: str = "hamrock_dowson"
+    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
+
+    @property
+    def cell_area(self) -> float:
+        return self.dx * self.dy
+
+    @property
+    def lubricated(self) -> bool:
+        return self.viscosity is not None and self.pressure_viscosity is not None
+
+    def preload(self, max_depth: float) -> float:
+        """F_p after wear h_max (E1.13) [N]."""
+        g = self.geometry
+        return float(
+            preload_after_wear(
+                self.initial_preload, self.compliance, max_depth, g.contact_angle, g.lead_angle
+            )
+        )
+
+    def torque(self, preload: float) -> float:
+        """Drag torque T = f · K_T F_p L/(2π) (E9.1, E9.3) [N m]."""
+        g = self.geometry
+        return self.torque_factor * preload_drag_torque(preload, g.lead, g.lead_angle)
+
+    def ball_load(self, nut_force: float) -> float:
+        """Q = F/(Z sinβ cosλ) (E1.6) [N]."""
+        g = self.geometry
+        return float(ball_load(nut_force, self.balls, g.contact_angle, g.lead_angle))
+
+
+def nut_force_pair(preload: float, axial_load: float) -> tuple[float, float]:
+    """(F_1, F_2) of the double nut (E1.10–E1.11); without preload F_1 = F_a, F_2 = 0."""
+    if preload <= 0.0:
+        return float(axial_load), 0.0
+    f = nut_forces(preload, axial_load)
+    return float(f[0]), float(f[1])

@@ -1,0 +1,119 @@
+"""One contact of a wear step: pressure, asperity share, sliding and the wear-depth rate."""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from ballscrew.contact import solve_normal
+from ballscrew.geometry import ScrewGeometry
+from ballscrew.kinematics.sliding import sliding_field_closed_form
+from ballscrew.lubrication import share_load
+from ballscrew.wear.profile import worn_gap
+from ballscrew.wear.rates import cell_wear_rate
+from ballscrew.wear.setup import FloatArray, WearSetup
+from ballscrew.wear.strips import depth_per_revolution, raceway_depth_rate, strip_wear_speed
+
+__all__ = ["FlankRate", "GridEdgeWarning", "entrainment_speed", "flank_rate"]
+
+
+class GridEdgeWarning(UserWarning):
+    """The (worn) contact touches the edge of the fixed grid: the box is too small."""
+
+
+@dataclass(frozen=True)
+class FlankRate:
+    """Wear of one flank under one nut force: the contact chain of one ball."""
+
+    load: float
+    """Ball load Q [N]."""
+    pressure: FloatArray
+    """Pressure p [Pa] on the grid."""
+    psi: float
+    """Asperity share ψ (E6.4)."""
+    cell_rate: FloatArray
+    """Cell wear rates w [m/s]."""
+    depth_per_revolution: FloatArray
+    """Δh_j per screw revolution if this force acted all the time [m/rev]."""
+    iterations: int
+
+
+def entrainment_speed(geometry: ScrewGeometry, screw_speed: float) -> float:
+    """u_e = V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ), (E2.4), (E2.8), m/s (REF 100 rpm: 0.09333)."""
+    lam, beta = geometry.lead_angle, geometry.contact_angle
+    return (
+        0.5
+        * screw_speed
+        * (
+            geometry.pitch_radius / math.cos(lam)
+            - geometry.ball_radius * math.cos(beta) * math.cos(lam)
+        )
+    )
+
+
+def flank_rate(
+    setup: WearSetup,
+    flank: int,
+    nut_force: float,
+    screw_speed: float,
+    depth: FloatArray,
+    initial: FloatArray | None = None,
+) -> FlankRate:
+    """Wear-depth rate across the groove of ``flank`` under one nut force (the inner loop)."""
+    q = setup.ball_load(nut_force)
+    gap = worn_gap(setup.nominal_gap[flank], depth)
+    sol = solve_normal(
+        gap,
+        setup.dx,
+        setup.dy,
+        setup.e_star,
+        q,
+        setup.tolerance,
+        max_iterations=setup.max_iterations,
+        initial=initial,
+    )
+    p = np.asarray(sol.pressure, dtype=float)
+    if p[[0, -1], :].any() or p[:, [0, -1]].any():
+        warnings.warn(
+            f"the contact at Q = {q:.4g} N reaches the edge of the fixed wear grid; "
+            "increase wear.box_factor",
+            GridEdgeWarning,
+            stacklevel=2,
+        )
+    cell = setup.cell_area
+    if setup.lubricated:
+        area = float(np.count_nonzero(p > 0.0)) * cell
+        psi = share_load(
+            q,
+            setup.rx,
+            setup.ry,
+            setup.viscosity,
+            setup.pressure_viscosity,
+            entrainment_speed(setup.geometry, screw_speed),
+            area,
+            setup.surface,
+            film_model=setup.film_model,
+        ).psi
+    else:
+        psi = 1.0
+    speed = sliding_field_closed_form(
+        setup.geometry, screw_speed, setup.x, setup.y, flank, curvature=True
+    ).speed
+    s = setup.surface
+    w = cell_wear_rate(
+        setup.spec.model,
+        psi * p,
+        speed,
+        cell,
+        s.Ds,
+        s.G,
+        s.e_star,
+        s.hardness,
+        setup.spec.coefficient,
+        s.gamma,
+    )
+    rate = raceway_depth_rate(strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length)
+    return FlankRate(q, p, float(psi), w, depth_per_revolution(rate, screw_speed), sol.iterations)
