@@ -8,16 +8,15 @@ Hamrock–Brewe solutions alongside for comparison (theory manual: *Geometry*, *
 from __future__ import annotations
 
 from dataclasses import dataclass
+from types import ModuleType
 from typing import Any, ClassVar
 
 import numpy as np
-import xarray as xr
 
 from ballscrew.analyses import contact_report
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
-from ballscrew.analyses.result import Figure, Section, recorded_warnings
+from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case, NumericsSpec
-from ballscrew.case.inputs import resolved_inputs
 from ballscrew.contact import hamrock_brewe, hertz, solve_contact
 from ballscrew.contact.hertz import HertzContact
 from ballscrew.errors import InputError
@@ -62,7 +61,7 @@ class RacewayContact:
 
 
 @dataclass(frozen=True)
-class BallContacts:
+class BallContacts(Presented):
     """Both contacts of one ball of the loaded nut."""
 
     case: Case
@@ -77,6 +76,7 @@ class BallContacts:
     """Warnings raised while solving (one line each)."""
 
     analysis: ClassVar[str] = "contact"
+    presentation: ClassVar[ModuleType] = contact_report
 
     def contact(self, side: Side) -> RacewayContact:
         """The contact on ``side``."""
@@ -85,22 +85,6 @@ class BallContacts:
     @property
     def title(self) -> str:
         return f"Ball–raceway contact: {self.case.name}"
-
-    @property
-    def inputs(self) -> dict[str, Any]:
-        return resolved_inputs(self.case)
-
-    def summary(self) -> dict[str, Any]:
-        return contact_report.summary(self)
-
-    def to_xarray(self) -> xr.Dataset:
-        return contact_report.fields(self)
-
-    def figures(self) -> list[Figure]:
-        return contact_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return contact_report.sections(self)
 
 
 def solve_raceway_contact(

@@ -23,18 +23,17 @@ import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
+from types import ModuleType
 from typing import Any, ClassVar
 
 import numpy as np
-import xarray as xr
 from numpy.typing import NDArray
 
 from ballscrew.analyses import kinematics_report
 from ballscrew.analyses.ball_contact import solve_raceway_contact
 from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.analyses.result import Figure, Section, recorded_warnings
+from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
-from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.kinematics.balance import LEVELS, BallState, solve_ball
@@ -360,7 +359,7 @@ def contact_fields(case: Case, model: BallModel, state: BallState) -> ContactFie
 
 
 @dataclass(frozen=True)
-class KinematicsRun:
+class KinematicsRun(Presented):
     """Everything the ``kinematics`` results folder shows."""
 
     case_name: str
@@ -393,26 +392,11 @@ class KinematicsRun:
     """Speed-limit messages and warnings raised while solving (one line each)."""
 
     analysis: ClassVar[str] = "kinematics"
+    presentation: ClassVar[ModuleType] = kinematics_report
 
     @property
     def title(self) -> str:
         return f"Ball kinematics, balance, lubrication and drag torque: {self.case.name}"
-
-    @property
-    def inputs(self) -> dict[str, Any]:
-        return resolved_inputs(self.case)
-
-    def summary(self) -> dict[str, Any]:
-        return kinematics_report.summary(self)
-
-    def to_xarray(self) -> xr.Dataset:
-        return kinematics_report.fields(self)
-
-    def figures(self) -> list[Figure]:
-        return kinematics_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return kinematics_report.sections(self)
 
 
 def _no_load(case: Case) -> Any:

@@ -23,10 +23,12 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Protocol, runtime_checkable
+from types import ModuleType
+from typing import Any, ClassVar, Protocol, runtime_checkable
 
 import xarray as xr
 
+from ballscrew.case.inputs import resolved_inputs
 from ballscrew.registry import Registry
 
 __all__ = [
@@ -34,6 +36,7 @@ __all__ = [
     "Analysis",
     "AnalysisResult",
     "Figure",
+    "Presented",
     "Section",
     "Table",
     "quantity",
@@ -124,6 +127,32 @@ class AnalysisResult(Protocol):
 
     def report(self) -> Sequence[Section]:
         """The sections of the report, after the inputs and the warnings."""
+
+
+class Presented:
+    """The protocol's methods for a result class whose presentation is one module.
+
+    The class sets ``presentation`` to a module with ``summary(result)``, ``fields(result)``,
+    ``figures(result)`` and ``sections(result)``; ``inputs`` resolves the result's ``case``.
+    """
+
+    presentation: ClassVar[ModuleType]
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case)  # type: ignore[attr-defined]
+
+    def summary(self) -> dict[str, Any]:
+        return self.presentation.summary(self)
+
+    def to_xarray(self) -> xr.Dataset | Mapping[str, xr.Dataset]:
+        return self.presentation.fields(self)
+
+    def figures(self) -> list[Figure]:
+        return self.presentation.figures(self)
+
+    def report(self) -> list[Section]:
+        return self.presentation.sections(self)
 
 
 @dataclass(frozen=True)

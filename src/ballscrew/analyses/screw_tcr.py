@@ -13,16 +13,14 @@ so one solve serves every contact of equal load and side.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar
-
-import xarray as xr
+from types import ModuleType
+from typing import ClassVar
 
 from ballscrew.analyses import tcr_report
 from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
-from ballscrew.analyses.result import Figure, Section, recorded_warnings
+from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case, TCRSpec
-from ballscrew.case.inputs import resolved_inputs
 from ballscrew.contact_resistance import (
     ContactTCR,
     FractalTCRModel,
@@ -82,7 +80,7 @@ class NutTCR:
 
 
 @dataclass(frozen=True)
-class ScrewTCR:
+class ScrewTCR(Presented):
     """Thermal contact resistance of the whole screw and of each nut and contact."""
 
     case_name: str
@@ -102,6 +100,7 @@ class ScrewTCR:
     """Warnings raised while solving (one line each)."""
 
     analysis: ClassVar[str] = "tcr"
+    presentation: ClassVar[ModuleType] = tcr_report
 
     @property
     def resistance(self) -> float:
@@ -121,22 +120,6 @@ class ScrewTCR:
     @property
     def title(self) -> str:
         return f"Thermal contact resistance: {self.case.name}"
-
-    @property
-    def inputs(self) -> dict[str, Any]:
-        return resolved_inputs(self.case)
-
-    def summary(self) -> dict[str, Any]:
-        return tcr_report.summary(self)
-
-    def to_xarray(self) -> xr.Dataset:
-        return tcr_report.fields(self)
-
-    def figures(self) -> list[Figure]:
-        return tcr_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return tcr_report.sections(self)
 
 
 def tcr_model(

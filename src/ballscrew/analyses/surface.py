@@ -9,12 +9,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from types import ModuleType
 from typing import Any, ClassVar
 
-import xarray as xr
-
 from ballscrew.analyses import surface_report
-from ballscrew.analyses.result import Figure, Section, quantity, recorded_warnings
+from ballscrew.analyses.result import Presented, quantity, recorded_warnings
 from ballscrew.surface import fractal_parameters, read_profile
 from ballscrew.surface.fit import SurfaceFit
 from ballscrew.surface.profile import Profile
@@ -23,7 +22,7 @@ __all__ = ["SurfaceCharacterisation", "surface_characterisation"]
 
 
 @dataclass(frozen=True)
-class SurfaceCharacterisation:
+class SurfaceCharacterisation(Presented):
     """The fractal fits of a profile with the profile and the options they used."""
 
     profile_file: str
@@ -38,6 +37,7 @@ class SurfaceCharacterisation:
     """Warnings raised while reading and fitting (one line each)."""
 
     analysis: ClassVar[str] = "surface"
+    presentation: ClassVar[ModuleType] = surface_report
 
     @property
     def title(self) -> str:
@@ -56,18 +56,6 @@ class SurfaceCharacterisation:
             "gamma": self.gamma,
             "resolution": None if self.resolution is None else quantity(self.resolution, "m"),
         }
-
-    def summary(self) -> dict[str, Any]:
-        return surface_report.summary(self)
-
-    def to_xarray(self) -> dict[str, xr.Dataset]:
-        return surface_report.fields(self)
-
-    def figures(self) -> list[Figure]:
-        return surface_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return surface_report.sections(self)
 
 
 def surface_characterisation(

@@ -13,12 +13,11 @@ from __future__ import annotations
 
 import time as _time
 from dataclasses import dataclass
-from typing import Any, ClassVar
-
-import xarray as xr
+from types import ModuleType
+from typing import ClassVar
 
 from ballscrew.analyses import thermal_report
-from ballscrew.analyses.result import Figure, Section, recorded_warnings
+from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.screw_tcr import ScrewTCR
 from ballscrew.analyses.thermal_setup import (
     ConvectionCoefficient,
@@ -30,7 +29,6 @@ from ballscrew.analyses.thermal_setup import (
 )
 from ballscrew.budget import check_memory
 from ballscrew.case import Case
-from ballscrew.case.inputs import resolved_inputs
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.thermal.elongation import thermoelastic_elongation
 from ballscrew.thermal.models import THERMAL_MODELS, MeshOptions, build_model
@@ -73,7 +71,7 @@ class SensorReading:
 
 
 @dataclass(frozen=True)
-class ThermalField:
+class ThermalField(Presented):
     """Temperature field and thermal elongation of the ball screw (attribute names are public).
 
     Temperatures in K, rises in K, lengths in m, heat in W, times in s.
@@ -100,6 +98,7 @@ class ThermalField:
     """Warnings raised while solving (one line each)."""
 
     analysis: ClassVar[str] = "thermal"
+    presentation: ClassVar[ModuleType] = thermal_report
 
     @property
     def problem(self) -> ThermalProblem:
@@ -185,23 +184,6 @@ class ThermalField:
     @property
     def title(self) -> str:
         return f"Temperature field and thermal elongation: {self.case_name}"
-
-    @property
-    def inputs(self) -> dict[str, Any]:
-        return resolved_inputs(self.case)
-
-    def summary(self) -> dict[str, Any]:
-        return thermal_report.summary(self)
-
-    def to_xarray(self) -> xr.Dataset:
-        """Fields and histories with units (temperatures in K)."""
-        return thermal_report.fields(self)
-
-    def figures(self) -> list[Figure]:
-        return thermal_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return thermal_report.sections(self)
 
 
 field_dataset = thermal_report.fields

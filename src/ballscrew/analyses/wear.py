@@ -11,17 +11,16 @@ import hashlib
 import json
 from dataclasses import dataclass
 from pathlib import Path
+from types import ModuleType
 from typing import Any, ClassVar
 
 import numpy as np
-import xarray as xr
 
 from ballscrew.analyses import wear_report
 from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.analyses.result import Figure, Section, recorded_warnings
+from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import Case
-from ballscrew.case.inputs import resolved_inputs
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import cell_centres, hertz
 from ballscrew.errors import InputError
@@ -40,7 +39,7 @@ __all__ = ["WearResult", "fingerprint", "wear_life", "wear_options", "wear_setup
 
 
 @dataclass(frozen=True)
-class WearResult:
+class WearResult(Presented):
     """The wear life of a case: its :class:`~ballscrew.wear.WearLife` history (every attribute
     of which it answers too: ``revolutions``, ``preload``, ``torque_samples``, …) with the case."""
 
@@ -50,6 +49,7 @@ class WearResult:
     """Warnings raised during the run (one line each)."""
 
     analysis: ClassVar[str] = "wear"
+    presentation: ClassVar[ModuleType] = wear_report
 
     def __getattr__(self, name: str) -> Any:
         life = vars(self).get("life")
@@ -60,22 +60,6 @@ class WearResult:
     @property
     def title(self) -> str:
         return f"Wear life: {self.case.name}"
-
-    @property
-    def inputs(self) -> dict[str, Any]:
-        return resolved_inputs(self.case)
-
-    def summary(self) -> dict[str, Any]:
-        return wear_report.summary(self)
-
-    def to_xarray(self) -> dict[str, xr.Dataset]:
-        return {"history": wear_report.history(self)}
-
-    def figures(self) -> list[Figure]:
-        return wear_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return wear_report.sections(self)
 
 
 def wear_options(case: Case) -> WearOptions:

@@ -82,6 +82,11 @@ def summary(result: WearResult) -> dict[str, Any]:
     }
 
 
+def fields(result: WearResult) -> dict[str, xr.Dataset]:
+    """The datasets of the results folder: ``history.nc``."""
+    return {"history": history(result)}
+
+
 def history(result: WearResult) -> xr.Dataset:
     """History over revolutions: wear profiles of both flanks, h_max, preload, forces, torque."""
     life, case = result.life, result.case

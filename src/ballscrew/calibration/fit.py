@@ -46,6 +46,7 @@ import math
 import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
+from types import ModuleType
 from typing import Any, ClassVar, Protocol
 
 import numpy as np
@@ -53,7 +54,7 @@ import xarray as xr
 from numpy.typing import NDArray
 from scipy.optimize import least_squares
 
-from ballscrew.analyses.result import Figure, Section, recorded_warnings
+from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.budget import BudgetError
 from ballscrew.calibration import report as calibration_report
 from ballscrew.calibration.measured import MeasuredHistory, check_values
@@ -94,7 +95,7 @@ class WearHistory(Protocol):
 
 
 @dataclass(frozen=True)
-class CalibrationResult:
+class CalibrationResult(Presented):
     """A fitted wear coefficient (and torque scale) with its uncertainty.
 
     Attributes:
@@ -149,6 +150,7 @@ class CalibrationResult:
     warnings: tuple[str, ...] = ()
 
     analysis: ClassVar[str] = "calibrate"
+    presentation: ClassVar[ModuleType] = calibration_report
 
     @property
     def title(self) -> str:
@@ -163,19 +165,10 @@ class CalibrationResult:
     def inputs(self) -> dict[str, Any]:
         return resolved_inputs(self.case) if self.case is not None else {}
 
-    def summary(self) -> dict[str, Any]:
-        return calibration_report.summary(self)
-
     def to_xarray(self) -> dict[str, xr.Dataset]:
         from ballscrew.calibration import report
 
         return {"fit": report.fit_dataset(self)}
-
-    def figures(self) -> list[Figure]:
-        return calibration_report.figures(self)
-
-    def report(self) -> list[Section]:
-        return calibration_report.sections(self)
 
     @property
     def relative_error(self) -> float:
