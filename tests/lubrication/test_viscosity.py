@@ -31,6 +31,14 @@ def test_walther_line_reproduces_its_two_anchor_points(nu40, nu100):
     assert line.temperature(line.kinematic(350.0)) == pytest.approx(350.0, rel=1e-12)
 
 
+def test_walther_line_matches_a_published_d341_worksheet():
+    """A D341 worksheet (T = °C + 273): 32 mm²/s at 313 K, 5.4 at 373 K → A = 9.5259,
+    B = 3.7449, ν(353 K) = 8.5 mm²/s."""
+    line = Walther.through(313.0, 32 * MM2, 373.0, 5.4 * MM2)
+    assert (line.a, line.b) == pytest.approx((9.5259, 3.7449), abs=5e-5)
+    assert line.kinematic(353.0) / MM2 == pytest.approx(8.5, abs=0.05)
+
+
 def test_walther_line_is_the_double_log_law():
     line = Walther.through(T40, 68 * MM2, T100, 8.6 * MM2)
     for t in (280.0, 330.0, 400.0):

@@ -10,6 +10,9 @@ Both multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a
 The registered models keep the registry's signature ``(rx, ry, E′, η₀, α_p, u_e, Q_f)``; their
 extra lubricant or supply inputs are keyword arguments with defaults. :func:`thermal_film_model`
 and :func:`starved_film_model` bind them for one lubricant or inlet. SI units.
+
+[UNVERIFIED: the coefficients of all three correlations are as quoted in the secondary EHL
+literature; the original papers were not available to check them.]
 """
 
 from __future__ import annotations

@@ -192,7 +192,8 @@ def thermal_conductivity(temperature: float, density_15: float) -> float:
 
     Cragoe (1929), *Thermal properties of petroleum products*, US Bureau of Standards Misc.
     Publ. 97, §VI: k = (0.813/d)[1 − 0.0003 (t − 32 °F)] Btu in/(h ft² °F), converted to SI
-    (0.813 Btu in/(h ft² °F) = 0.1172 W/(m K); 0.0003/°F = 0.00054/K). d is the specific gravity
+    (0.813 Btu in/(h ft² °F) = 0.1172 W/(m K); 0.0003/°F = 0.00054/K) [UNVERIFIED against the
+    original table; the SI constants follow from the quoted form]. d is the specific gravity
     at 15.6 °C, taken as ρ15/999 kg/m³; ``density_15`` ρ15 [kg/m³]; T [K].
     """
     t = positive("temperature", temperature, "K")
@@ -214,7 +215,8 @@ def pressure_viscosity_coefficient(kinematic: float, oil_class: str = "mineral")
 
     Gold, Schmidt, Dicke, Loos & Assmann (2001), "Viscosity–pressure–temperature behaviour of
     mineral and synthetic oils", J. Synthetic Lubrication 18(1):51–79; mineral oils:
-    s = 9.904, t = 0.1390. Fitted on oils of about 2–1000 mm²/s.
+    s = 9.904, t = 0.1390 [UNVERIFIED: coefficients as quoted in later literature, the original
+    table was not available to check]. Other oil classes are not included.
     """
     nu = positive("kinematic", kinematic, "m²/s") / _MM2
     try:
