@@ -1,0 +1,107 @@
+"""Inlet-heating and starvation corrections of the Hamrock–Dowson film (REF contact A)."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import pytest
+
+from ballscrew.contact.hertz import hamrock_brewe
+from ballscrew.errors import InputError
+from ballscrew.lubrication.film import FILM_MODELS, hamrock_dowson
+from ballscrew.lubrication.film_corrections import (
+    critical_inlet_ratio,
+    hamrock_dowson_starved,
+    hamrock_dowson_thermal,
+    starvation_factor,
+    starved_film_model,
+    thermal_film_model,
+    thermal_loading,
+    thermal_reduction_gupta,
+    thermal_reduction_murch_wilson,
+)
+
+LAM = math.atan(0.010 / (math.pi * 0.040))
+RX = 1.0 / (2 / 6.35e-3 + 2 * math.cos(math.pi / 4) * math.cos(LAM) / (0.040 - 6.35e-3 / 2**0.5))
+RY = 1.0 / (2 / 6.35e-3 - 1 / (0.55 * 6.35e-3))
+E_PRIME = 2.2637e11
+ARGS = (RX, RY, E_PRIME, 0.06, 2.1e-8, 0.09333, 39.41)
+
+
+def test_corrections_are_registered_film_models():
+    assert FILM_MODELS["hamrock_dowson_thermal"] is hamrock_dowson_thermal
+    assert FILM_MODELS["hamrock_dowson_starved"] is hamrock_dowson_starved
+
+
+def test_thermal_loading_is_beta_eta_u2_over_lambda():
+    assert thermal_loading(0.05, 0.06, 10.0, 0.13) == pytest.approx(0.05 * 0.06 * 100 / 0.13)
+
+
+def test_murch_wilson_factor():
+    assert thermal_reduction_murch_wilson(0.0) == 1.0
+    assert thermal_reduction_murch_wilson(1.0) == pytest.approx(3.94 / 4.94)
+    big = 1e6
+    assert thermal_reduction_murch_wilson(big) == pytest.approx(3.94 * big**-0.62, rel=1e-3)
+
+
+def test_gupta_factor_limits_and_trends():
+    assert thermal_reduction_gupta(0.0, 0.005, 0.3) == 1.0
+    assert thermal_reduction_gupta(2.0, 0.0) == pytest.approx(1 / (1 + 0.213 * 2.0**0.64))
+    loads = [0.1, 1.0, 10.0, 100.0]
+    phis = [thermal_reduction_gupta(x, 0.005) for x in loads]
+    assert all(a > b for a, b in itertools.pairwise(phis))
+    assert thermal_reduction_gupta(10.0, 0.005, 0.5) < thermal_reduction_gupta(10.0, 0.005, 0.0)
+    with pytest.raises(InputError, match=r"^thermal_loading = .*Gupta"):
+        thermal_reduction_gupta(1e6, 0.01)
+
+
+def test_no_inlet_heating_gives_the_isothermal_film():
+    flooded = hamrock_dowson(*ARGS)
+    assert hamrock_dowson_thermal(*ARGS, temperature_viscosity=0.0) == flooded
+    assert thermal_film_model(0.0, 0.13)(*ARGS) == flooded
+
+
+def test_thermal_film_at_speed():
+    fast = (*ARGS[:5], 10.0, ARGS[6])
+    film = thermal_film_model(0.05, 0.13, 0.0)(*fast)
+    p_h = hamrock_brewe(RX, RY, E_PRIME / 2, ARGS[6]).p0
+    phi = thermal_reduction_gupta(thermal_loading(0.05, 0.06, 10.0, 0.13), p_h / E_PRIME)
+    assert film.central == pytest.approx(hamrock_dowson(*fast).central * phi)
+    assert 0.5 < phi < 0.8
+
+
+def test_critical_inlet_distance_of_contact_a():
+    film = hamrock_dowson(*ARGS)
+    b = hamrock_brewe(RX, RY, E_PRIME / 2, ARGS[6]).a
+    group = RX * film.central / b**2
+    assert critical_inlet_ratio(RX, b, film.central) == pytest.approx(1 + 3.06 * group**0.58)
+    assert 1.2 < critical_inlet_ratio(RX, b, film.central) < 2.0
+
+
+def test_fully_flooded_inlet_leaves_the_film_unchanged():
+    flooded = hamrock_dowson(*ARGS)
+    assert hamrock_dowson_starved(*ARGS) == flooded
+    assert starved_film_model(5.0)(*ARGS) == flooded
+
+
+def test_starvation_reduces_the_film_towards_zero_at_the_hertz_edge():
+    flooded = hamrock_dowson(*ARGS)
+    b = hamrock_brewe(RX, RY, E_PRIME / 2, ARGS[6]).a
+    m_star = critical_inlet_ratio(RX, b, flooded.central)
+    half = starved_film_model(1 + (m_star - 1) / 2)(*ARGS)
+    assert half.central / flooded.central == pytest.approx(0.5**0.29)
+    ratios = [
+        hamrock_dowson_starved(*ARGS, inlet_ratio=m).central for m in (1.3, 1.1, 1.01, 1.0001)
+    ]
+    assert all(a > b for a, b in itertools.pairwise(ratios))
+    assert hamrock_dowson_starved(*ARGS, inlet_ratio=1.0).central == 0.0
+    assert starvation_factor(1.0 + 1e-12, 1.5) < 1e-3
+
+
+@pytest.mark.parametrize("m", [0.9, float("nan")])
+def test_meniscus_inside_the_hertz_zone_is_refused(m):
+    with pytest.raises(InputError, match=r"^inlet_ratio = "):
+        hamrock_dowson_starved(*ARGS, inlet_ratio=m)
+    with pytest.raises(InputError, match=r"^inlet_ratio = "):
+        starved_film_model(m)
