@@ -14,6 +14,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
@@ -200,6 +201,12 @@ class Case(Model):
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
+    duty: list[DutySegment] = Field(
+        default_factory=list,
+        max_length=10_000,
+        description="duty cycle: [[duty]] segments of speed, load, stroke, dwell and duration",
+    )
+    duty_repeat: DutyRepeat = 1
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:

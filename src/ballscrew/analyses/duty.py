@@ -1,0 +1,75 @@
+"""The duty cycle of a case as a schedule of constant phases in time.
+
+A case's ``[[duty]]`` segments, run ``duty_repeat`` times, become phases with a start and end
+time. Within a segment the nut runs strokes of length S at the feed v = ω L/(2π) and stands
+still for the dwell t_d at each stroke end, so the screw turns for the fraction
+
+    f = (S/v) / (S/v + t_d)
+
+of the segment (f = 1 without dwell or stroke). The time means of the speed and of the friction
+heat of the segment are then f·ω and f·Q(ω): the thermal time constants of a screw (minutes)
+are long against a stroke (seconds), so the model follows the mean of each segment.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ballscrew.case import Case
+
+__all__ = ["DutyPhase", "duty_schedule"]
+
+
+@dataclass(frozen=True)
+class DutyPhase:
+    """One constant phase of the duty cycle (SI)."""
+
+    start: float
+    """Start time [s]."""
+    end: float
+    """End time [s]."""
+    speed: float
+    """Screw speed while turning, ω [rad/s]."""
+    axial_load: float
+    """Axial load F_a [N]."""
+    stroke: float
+    """Stroke of the nut S [m] (0: the nut turns in place)."""
+    moving_fraction: float
+    """Share f of the phase during which the screw turns [-]."""
+
+    @property
+    def duration(self) -> float:
+        """Length of the phase [s]."""
+        return self.end - self.start
+
+    @property
+    def mean_speed(self) -> float:
+        """Time-mean screw speed f·ω [rad/s]."""
+        return self.moving_fraction * self.speed
+
+
+def moving_fraction(speed: float, lead: float, stroke: float, dwell: float) -> float:
+    """Share of the time the screw turns: (S/v)/(S/v + t_d), v = ω L/(2π); 1 without dwell."""
+    if speed <= 0.0:
+        return 0.0
+    if dwell <= 0.0 or stroke <= 0.0:
+        return 1.0
+    stroke_time = stroke / (speed * lead / (2.0 * math.pi))
+    return stroke_time / (stroke_time + dwell)
+
+
+def duty_schedule(case: Case) -> tuple[DutyPhase, ...]:
+    """The phases of ``case.duty`` run ``case.duty_repeat`` times (empty without a duty)."""
+    lead = case.screw.lead
+    phases: list[DutyPhase] = []
+    start = 0.0
+    for _ in range(case.duty_repeat):
+        for segment in case.duty:
+            end = start + segment.duration
+            fraction = moving_fraction(segment.speed, lead, segment.stroke, segment.dwell)
+            phases.append(
+                DutyPhase(start, end, segment.speed, segment.axial_load, segment.stroke, fraction)
+            )
+            start = end
+    return tuple(phases)

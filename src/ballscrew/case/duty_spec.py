@@ -1,0 +1,61 @@
+"""Case list ``[[duty]]``: a duty cycle of constant segments, run ``duty_repeat`` times.
+
+Each segment holds the screw speed, the axial load and the nut's stroke for a duration; a
+``dwell`` at each stroke end is time at standstill within the segment. Example::
+
+    duty_repeat = 8                # e.g. eight hours of a one-hour cycle
+
+    [[duty]]
+    speed = "1500 rpm"
+    axial_load = "2 kN"
+    stroke = "400 mm"
+    dwell = "2 s"
+    duration = "40 min"
+
+    [[duty]]                       # standstill
+    speed = 0
+    duration = "20 min"
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import Field, model_validator
+
+from ballscrew.case.base import MAX_SPEED, Model, quantity
+
+__all__ = ["MAX_DUTY_TIME", "DutySegment"]
+
+MAX_DUTY_TIME = 1.0e8
+"""Longest segment or cycle a case accepts, s (about three years)."""
+
+
+class DutySegment(Model):
+    """One segment of the duty cycle: constant speed, load and stroke for a duration."""
+
+    speed: quantity(
+        "angular_velocity", 'screw speed ω (rad/s; "1500 rpm" also works)', ge=0, le=MAX_SPEED
+    ) = 0.0
+    axial_load: quantity("force", "external axial load F_a during the segment", ge=0, le=1e8) = 0.0
+    stroke: quantity("length", "stroke of the nut (0: the nut turns in place)", ge=0, le=100.0) = (
+        0.0
+    )
+    dwell: quantity(
+        "time", "standstill at each stroke end, within the segment", ge=0, le=MAX_DUTY_TIME
+    ) = 0.0
+    duration: quantity("time", "length of the segment", gt=0, le=MAX_DUTY_TIME)
+
+    @model_validator(mode="after")
+    def _dwell_fits(self) -> DutySegment:
+        if self.dwell >= self.duration:
+            raise ValueError(
+                f"dwell = {self.dwell:g} s is not allowed: it must be shorter than the segment's "
+                f"duration = {self.duration:g} s"
+            )
+        return self
+
+
+DutyRepeat = Annotated[
+    int, Field(ge=1, le=100_000, description="how many times the [[duty]] list is run")
+]
