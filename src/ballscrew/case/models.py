@@ -14,6 +14,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
@@ -200,6 +201,7 @@ class Case(Model):
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
+    friction: FrictionSpec = FrictionSpec()
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:
