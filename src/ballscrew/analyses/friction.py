@@ -9,15 +9,14 @@ inlet viscosity (the viscosity at the operating temperature is passed by the cal
 from __future__ import annotations
 
 import dataclasses
-import math
 from functools import partial
 
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
-from ballscrew.errors import InputError
 from ballscrew.friction import FrictionInputs, FrictionTorque, ball_losses, nut_friction_torque
 from ballscrew.kinematics.model import BallModel
+from ballscrew.validation import nonnegative, positive
 
 __all__ = ["friction_torque", "seal_torque"]
 
@@ -30,24 +29,11 @@ def seal_torque(case: Case) -> float:
     return spec.seal_force * 0.5 * case.screw.pitch_diameter
 
 
-def _axial_load(case: Case, axial_load: float | None) -> float:
-    value = case.operating.axial_load if axial_load is None else axial_load
-    try:
-        force = float(value)
-    except (TypeError, ValueError):
-        raise InputError("axial_load", value, "a force >= 0 N") from None
-    if not (math.isfinite(force) and force >= 0.0):
-        raise InputError("axial_load", value, "a force >= 0 N")
-    return force
-
-
 def _ball_model(case: Case, viscosity: float | None) -> BallModel:
     model = ball_model(case)
     changes: dict[str, float] = {}
     if viscosity is not None:
-        if not (math.isfinite(viscosity) and viscosity > 0.0):
-            raise InputError("viscosity", viscosity, "a dynamic viscosity > 0 Pa s")
-        changes["viscosity"] = float(viscosity)
+        changes["viscosity"] = positive("viscosity", viscosity, "Pa s")
     if case.friction.boundary_friction is not None:
         changes["boundary_friction"] = case.friction.boundary_friction
     return dataclasses.replace(model, **changes) if changes else model
@@ -67,7 +53,9 @@ def friction_torque(
     nut forces of the preload alone (the working load enters through the efficiency).
     """
     omega = _speed(case, speed)
-    force = _axial_load(case, axial_load)
+    force = nonnegative(
+        "axial_load", case.operating.axial_load if axial_load is None else axial_load, "N"
+    )
     spec = case.friction
     params = ScrewParameters.from_case(case)
     geometry = params.geometry

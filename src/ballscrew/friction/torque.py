@@ -34,6 +34,7 @@ from ballscrew.friction.efficiency import (
 )
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
 from ballscrew.registry import Registry
+from ballscrew.validation import nonnegative
 
 __all__ = ["FRICTION_MODELS", "FrictionInputs", "FrictionTorque", "nut_friction_torque"]
 
@@ -103,14 +104,10 @@ class FrictionTorque:
 
 
 def _check(inputs: FrictionInputs) -> None:
-    if not (math.isfinite(inputs.speed) and inputs.speed >= 0.0):
-        raise InputError("speed", inputs.speed, "a screw speed >= 0 rad/s")
-    if not (math.isfinite(inputs.axial_load) and inputs.axial_load >= 0.0):
-        raise InputError("axial_load", inputs.axial_load, "a force >= 0 N")
+    nonnegative("speed", inputs.speed, "rad/s")
+    nonnegative("axial_load", inputs.axial_load, "N")
     for name in ("seal_torque", "recirculation_torque", "hysteresis"):
-        value = getattr(inputs, name)
-        if not (math.isfinite(value) and value >= 0.0):
-            raise InputError(f"friction.{name}", value, "a value >= 0")
+        nonnegative(f"friction.{name}", getattr(inputs, name))
     if inputs.seals < 0:
         raise InputError("friction.seals", inputs.seals, "a count >= 0")
 
