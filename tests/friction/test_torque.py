@@ -39,6 +39,7 @@ def test_heat_is_torque_times_speed_less_the_work(model, load, seals):
     r = nut_friction_torque(inputs, model)
     velocity = inputs.lead * inputs.speed / (2 * math.pi)
     assert r.heat == pytest.approx(r.total * inputs.speed - load * velocity)
+    assert r.heat == pytest.approx(r.friction * inputs.speed)
     assert r.heat >= 0.0 and r.total == pytest.approx(sum(r.parts.values()))
     assert r.heat_to_screw + r.heat_to_nut == pytest.approx(r.heat)
     assert 0.0 < r.heat_to_screw < r.heat

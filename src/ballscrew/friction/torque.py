@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from ballscrew.errors import InputError
 from ballscrew.friction.ball_losses import DEFAULT_HYSTERESIS, BallLosses, regime
@@ -95,7 +95,7 @@ class FrictionTorque:
     regime: str | None = None
     """boundary, mixed or EHL from Λ (ball model)."""
     speed: float = 0.0
-    notes: tuple[str, ...] = field(default_factory=tuple)
+    """ω_s [rad/s]."""
 
     @property
     def friction(self) -> float:
