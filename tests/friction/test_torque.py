@@ -8,6 +8,7 @@ import pytest
 
 import ballscrew
 from ballscrew.analyses.friction import friction_torque, seal_torque
+from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.case import CaseError
 from ballscrew.errors import InputError
 from ballscrew.friction import (
@@ -152,3 +153,14 @@ def test_case_names_come_from_the_registry(wear_case_path):
         ballscrew.load_case(wear_case_path, {"friction.model": "nonsense"})
     with pytest.raises(CaseError, match=r"friction\.seals"):
         ballscrew.load_case(wear_case_path, {"friction.seals": -1})
+
+
+def test_ball_parts_are_the_kinematics_drag_plus_hysteresis(wear_case_path):
+    case = ballscrew.load_case(
+        wear_case_path, {"friction.model": "ball_model", "operating.axial_load": 0.0}
+    )
+    r = friction_torque(case, speed=100.0)
+    drag = computed_drag_torque(case, speed=100.0)
+    assert r.parts["sliding"] + r.parts["ehl_rolling"] == pytest.approx(drag, rel=1e-12)
+    assert 0.0 < r.parts["hysteresis"] < 0.1 * drag
+    assert 0.0 < r.heat_to_screw < 0.5 * r.heat

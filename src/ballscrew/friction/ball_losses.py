@@ -94,15 +94,8 @@ def _one_ball(model: BallModel, state: BallState, fraction: float) -> tuple[floa
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
     rolling = drag.dissipation_torque - sliding
-    motion = ball_motion(
-        model.geometry,
-        omega,
-        state.flank,
-        angle_screw=state.angle_screw,
-        angle_nut=state.angle_nut,
-        ball_speed=state.ball_speed if state.screw_speed != 0.0 else None,
-    )
-    rolling_b = -float(drag.rolling_nut @ (motion.ball_speed * model.frame.t)) / omega
+    # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
+    rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
     ratio = _rolling_speed_ratio(model, state)
     hysteresis = []
     for contact, load in (("screw", state.load_screw), ("nut", state.load_nut)):
