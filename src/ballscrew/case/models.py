@@ -200,8 +200,8 @@ class Case(Model):
     tcr: TCRSpec = TCRSpec()
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
-    wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
     friction: FrictionSpec = FrictionSpec()
+    wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:
