@@ -22,7 +22,9 @@ from ballscrew import wear as W
 from ballscrew.errors import InputError
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "gao2019_tcr.toml"
-GEOMETRY = G.as_geometry(bs.load_case(EXAMPLE))
+CASE = bs.load_case(EXAMPLE)
+BALL_CASE = bs.load_case(EXAMPLE, {"friction.model": "ball_model"})
+GEOMETRY = G.as_geometry(CASE)
 X = np.linspace(-1e-4, 1e-4, 5)
 GAP = np.full((8, 8), 1e-6)
 HEIGHTS = np.sin(np.arange(64.0)) * 1e-6
@@ -86,6 +88,16 @@ CASES: dict[str, tuple[Callable[[], object], str]] = {
     "thermal_field of a number": (lambda: bs.thermal_field(5), "case"),
     "ball_kinematics of a number": (lambda: bs.ball_kinematics(5), "case"),
     "drag_torque of a number": (lambda: bs.drag_torque(None), "case"),
+    "friction_torque of a number": (lambda: bs.friction_torque(5), "case"),
+    "friction_torque complex speed": (lambda: bs.friction_torque(CASE, speed=1j), "speed"),
+    "friction_torque text load": (
+        lambda: bs.friction_torque(CASE, axial_load="1 kN"),
+        "axial_load",
+    ),
+    "friction_torque NaN viscosity": (
+        lambda: bs.friction_torque(BALL_CASE, viscosity=np.nan),
+        "viscosity",
+    ),
     "complex profile": (lambda: S.Profile(HEIGHTS + 1j, 1e-6), "heights"),
     "text profile": (lambda: S.Profile("abc", 1e-6), "heights"),
     "infinite profile height": (lambda: S.Profile(np.r_[HEIGHTS, np.inf], 1e-6), "heights"),

@@ -23,6 +23,7 @@ from ballscrew import (
     thermal,
     units,
 )
+from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
@@ -39,6 +40,7 @@ __all__ = [
     "drag_torque",
     "errors",
     "fractal",
+    "friction_torque",
     "geometry",
     "load_case",
     "loads",

@@ -9,6 +9,7 @@ from typing import Any
 import pytest
 
 import ballscrew
+from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.case import Case, case_from_dict
 
@@ -71,6 +72,23 @@ def test_thk_preload_torque_example(validation, dataset, base_raw) -> None:
     )
 
 
+PHYSICS_ASSUMPTIONS = (
+    "hysteresis loss fraction 0.01 (GUESS: the friction model's default); no seals, no "
+    "recirculation loss; kinematics level 2",
+)
+
+
+def _physics_torque(case: Case, speed: float) -> float:
+    """The physics friction model's screw torque at ``speed`` without seals, level 2."""
+    physics = case.model_copy(
+        update={
+            "friction": case.friction.model_copy(update={"model": "ball_model", "seals": 0}),
+            "kinematics": case.kinematics.model_copy(update={"level": 2}),
+        }
+    )
+    return friction_torque(physics, speed=speed).total
+
+
 BALL_MODEL_ASSUMPTIONS = (
     "speed 100 rpm (ASSUMED: the JIS B 1192 / HIWIN measuring speed; not published)",
     "lubricant ISO VG 68 mineral oil, 0.06 Pa s, α = 2.1e-8 1/Pa; boundary friction 0.1, "
@@ -94,6 +112,13 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
         "model should do at least as well",
     ),
+    "friction_ball_model": (
+        "friction_torque (ball_model: traction, EHL rolling, hysteresis; level 2)",
+        lambda case: _physics_torque(case, 100.0 * RPM),
+        (*BALL_MODEL_ASSUMPTIONS, *PHYSICS_ASSUMPTIONS),
+        f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
+        "model should do at least as well",
+    ),
 }
 
 
@@ -104,6 +129,8 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         pytest.param("catalogue", "down", True, id="catalogue-down"),
         pytest.param("ball_model", "up", True, id="ball_model-up"),
         pytest.param("ball_model", "down", True, id="ball_model-down"),
+        pytest.param("friction_ball_model", "up", True, id="friction_ball_model-up"),
+        pytest.param("friction_ball_model", "down", True, id="friction_ball_model-down"),
     ],
 )
 def test_xjtu_as_new_torque(validation, dataset, base_raw, name, direction, known_miss) -> None:
@@ -123,6 +150,63 @@ def test_xjtu_as_new_torque(validation, dataset, base_raw, name, direction, know
         tolerance_basis=basis,
         assumptions=(*XJTU_ASSUMPTIONS, *extra),
         known_miss=known_miss,
+    )
+
+
+def test_thk_driving_torque_example(validation, dataset, base_raw) -> None:
+    data = dataset("drag_torque", "thk_driving_torque_example")
+    base_raw["screw"].update(pitch_diameter=f"{data['pitch_diameter_mm']} mm", lead="10 mm", nuts=1)
+    base_raw["operating"].update(preload="0 N", axial_load=f"{data['axial_load_N']} N")
+    torque = friction_torque(case_from_dict(base_raw)).total
+    validation.check(
+        "thk_driving_torque_example",
+        kind="verification",
+        model="friction_torque (catalogue: F_a L/(2π η), η = tanλ/tan(λ+atan μ))",
+        source="THK General Catalog, A-664 to A-666",
+        reference=data,
+        quantity="driving torque against 14.7 N, d_m = 33 mm, L = 10 mm, μ = 0.003",
+        unit="N mm",
+        measured=data["torque_Nmm"],
+        predicted=torque * 1e3,
+        tolerance=0.5,
+        relative=False,
+        tolerance_basis="THK prints the result rounded to 1 N mm (with η read as 0.96 from its "
+        "chart; the formula gives 0.9695)",
+        assumptions=(
+            "d_m 33 mm, lead 10 mm, μ = 0.003, F_a = 14.7 N (source)",
+            "no preload, no seals (the example is the thrust torque alone)",
+        ),
+    )
+
+
+def test_thk_preload_torque_example_by_the_physics_model(validation, dataset, base_raw) -> None:
+    data = dataset("drag_torque", "thk_preload_torque_example")
+    base_raw["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
+    base_raw["operating"].update(preload=f"{data['preload_N']} N", axial_load="0 N")
+    torque = _physics_torque(case_from_dict(base_raw), 100.0 * RPM)
+    validation.check(
+        "thk_preload_torque_example_physics",
+        kind="verification",
+        model="friction_torque (ball_model: traction, EHL rolling, hysteresis; level 2)",
+        source=THK_SOURCE,
+        reference=data,
+        quantity="preload drag torque, BNFN4010-5, F_p = 3000 N",
+        unit="N mm",
+        measured=data["torque_Nmm"],
+        predicted=torque * 1e3,
+        tolerance=data["allowed_fluctuation"],
+        relative=True,
+        tolerance_basis="THK's allowed fluctuation of real preload torques about this value "
+        "(A-689: ±30 %); the value itself is the catalogue formula, not a measurement",
+        assumptions=(
+            "ball-centre diameter 41.75 mm, lead 10 mm, preload 3000 N (source)",
+            "double nut, each 103 balls of 6.35 mm (5 = 2.5 turns × 2 circuits), conformity "
+            "0.52/0.52, contact angle 45 deg (ASSUMED; not printed in the example)",
+            "speed 100 rpm (ASSUMED: the usual preload-torque measuring speed)",
+            *BALL_MODEL_ASSUMPTIONS[1:3],
+            *PHYSICS_ASSUMPTIONS,
+        ),
+        known_miss=True,
     )
 
 

@@ -15,6 +15,7 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
+from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
@@ -200,6 +201,7 @@ class Case(Model):
     tcr: TCRSpec = TCRSpec()
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
+    friction: FrictionSpec = FrictionSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
     duty: list[DutySegment] = Field(
         default_factory=list,

@@ -1,0 +1,81 @@
+"""The friction torque of the nut of one case: inputs from the case, physics from
+:mod:`ballscrew.friction` (theory manual: *Friction*).
+
+:func:`friction_torque` ``(case, speed=None, axial_load=None, viscosity=None)`` →
+:class:`~ballscrew.friction.FrictionTorque`; ``None`` takes the case's speed, axial load and
+inlet viscosity (the viscosity at the operating temperature is passed by the caller).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from functools import partial
+
+from ballscrew.analyses.kinematics import _level, _speed, ball_model
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.case import Case
+from ballscrew.friction import FrictionInputs, FrictionTorque, ball_losses, nut_friction_torque
+from ballscrew.kinematics.model import BallModel
+from ballscrew.validation import nonnegative, positive
+
+__all__ = ["friction_torque", "seal_torque"]
+
+
+def seal_torque(case: Case) -> float:
+    """Torque of one seal: ``friction.seal_torque`` or ``seal_force`` × d_m/2 [N m]."""
+    spec = case.friction
+    if spec.seal_torque is not None:
+        return spec.seal_torque
+    return spec.seal_force * 0.5 * case.screw.pitch_diameter
+
+
+def _ball_model(case: Case, viscosity: float | None) -> BallModel:
+    model = ball_model(case)
+    changes: dict[str, float] = {}
+    if viscosity is not None:
+        changes["viscosity"] = positive("viscosity", viscosity, "Pa s")
+    if case.friction.boundary_friction is not None:
+        changes["boundary_friction"] = case.friction.boundary_friction
+    return dataclasses.replace(model, **changes) if changes else model
+
+
+def friction_torque(
+    case: Case,
+    speed: float | None = None,
+    axial_load: float | None = None,
+    viscosity: float | None = None,
+) -> FrictionTorque:
+    """Friction torque of the nut, its parts, efficiencies and heat at one operating point.
+
+    ``speed`` [rad/s], ``axial_load`` [N] and ``viscosity`` [Pa s] default to the case's
+    ``operating.speed``, ``operating.axial_load`` and inlet viscosity; the model and its
+    parameters come from ``[friction]``. The ball model runs at ``[kinematics] level`` on the
+    nut forces of the preload alone (the working load enters through the efficiency).
+    """
+    omega = _speed(case, speed)
+    force = nonnegative(
+        "axial_load", case.operating.axial_load if axial_load is None else axial_load, "N"
+    )
+    spec = case.friction
+    params = ScrewParameters.from_case(case)
+    geometry = params.geometry
+    losses = None
+    if spec.model == "ball_model":
+        model = _ball_model(case, viscosity)
+        level = _level(case, None)
+        nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).nuts)
+        losses = partial(ball_losses, model, nuts=nuts, level=level, hysteresis=spec.hysteresis)
+    inputs = FrictionInputs(
+        lead=geometry.lead,
+        lead_angle=geometry.lead_angle,
+        preload=params.preload,
+        axial_load=force,
+        speed=omega,
+        rolling_friction=spec.rolling_friction,
+        seals=spec.seals,
+        seal_torque=seal_torque(case),
+        recirculation_torque=spec.recirculation_torque,
+        hysteresis=spec.hysteresis,
+        ball_losses=losses,
+    )
+    return nut_friction_torque(inputs, spec.model)

@@ -1,0 +1,64 @@
+"""Case section ``[friction]``: the friction-torque model of the nut and its parameters.
+
+Every key has a default, so a case without the section is valid. Theory manual:
+``docs/theory/friction.md``.
+
+Example::
+
+    [friction]
+    model = "ball_model"        # or "catalogue" (default)
+    seals = 2                   # contacting seals / wiper rings of the nut
+    seal_force = "5 N"          # friction force of one seal lip [GUESS], at the radius d_m/2
+    hysteresis = 0.01           # hysteresis loss fraction α of the Hertz contacts [GUESS]
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import Field
+
+from ballscrew.case.base import Model, model_choice, quantity
+from ballscrew.friction import CATALOGUE_ROLLING_FRICTION, DEFAULT_HYSTERESIS, FRICTION_MODELS
+
+#: Friction force of one contacting seal lip on the screw [N]: GUESS inside the makers' ranges of
+#: seal resistance of linear-guide blocks (NB: 2–5 N; THK A-372: 2–43 N by size).
+DEFAULT_SEAL_FORCE = 5.0
+
+
+class FrictionSpec(Model):
+    """Options of the friction torque of the nut (``ballscrew.analyses.friction``)."""
+
+    model: model_choice(
+        FRICTION_MODELS,
+        "friction model: catalogue (makers' preload torque) or ball_model (physics ball losses)",
+    ) = "catalogue"
+    rolling_friction: Annotated[
+        float,
+        Field(
+            ge=0.0,
+            lt=1.0,
+            description="effective friction coefficient μ of the efficiency η = tanλ/tan(λ+atan μ)"
+            " (THK: 0.003)",
+        ),
+    ] = CATALOGUE_ROLLING_FRICTION
+    seals: Annotated[int, Field(ge=0, le=8, description="contacting seals or wipers")] = 0
+    seal_force: quantity(
+        "force",
+        "friction force of one seal lip, acting at the radius d_m/2 [GUESS 5 N]",
+        ge=0,
+        le=1e4,
+    ) = DEFAULT_SEAL_FORCE
+    seal_torque: (
+        quantity("torque", "torque of one seal; None = seal_force × d_m/2", ge=0, le=1e3) | None
+    ) = None
+    hysteresis: Annotated[
+        float,
+        Field(ge=0.0, le=1.0, description="hysteresis loss fraction α of the Hertz contacts"),
+    ] = DEFAULT_HYSTERESIS
+    recirculation_torque: quantity(
+        "torque", "ball-return (recirculation) loss; no published model, default 0", ge=0, le=1e3
+    ) = 0.0
+    boundary_friction: (
+        Annotated[float, Field(ge=0.0, le=1.0, description="μ_b of the ball model")] | None
+    ) = Field(None, description="boundary friction of the ball model; None = [kinematics] value")

@@ -1,0 +1,51 @@
+"""Friction torque of the nut of a ball screw, its parts, efficiency and heat.
+
+1. :mod:`~ballscrew.friction.efficiency` — driving / back-driving efficiency and the torque of
+   the working load (makers' formulas, THK General Catalog A-664 to A-666).
+2. :mod:`~ballscrew.friction.ball_losses` — sliding and spin traction, EHL rolling and elastic
+   hysteresis of the loaded balls (kinematics model; Johnson 1985 §9.2; JGP 1972).
+3. :mod:`~ballscrew.friction.torque` — the parts together, the rival total models
+   (:data:`FRICTION_MODELS`) and :func:`nut_friction_torque`.
+
+The case-level composer is :func:`ballscrew.analyses.friction.friction_torque`.
+"""
+
+from ballscrew.friction.ball_losses import (
+    DEFAULT_HYSTERESIS,
+    BallLosses,
+    ball_losses,
+    film_parameter,
+    hysteresis_force,
+    regime,
+)
+from ballscrew.friction.efficiency import (
+    CATALOGUE_ROLLING_FRICTION,
+    backdriving_efficiency,
+    driving_efficiency,
+    load_friction_torque,
+    load_torque,
+)
+from ballscrew.friction.torque import (
+    FRICTION_MODELS,
+    FrictionInputs,
+    FrictionTorque,
+    nut_friction_torque,
+)
+
+__all__ = [
+    "CATALOGUE_ROLLING_FRICTION",
+    "DEFAULT_HYSTERESIS",
+    "FRICTION_MODELS",
+    "BallLosses",
+    "FrictionInputs",
+    "FrictionTorque",
+    "backdriving_efficiency",
+    "ball_losses",
+    "driving_efficiency",
+    "film_parameter",
+    "hysteresis_force",
+    "load_friction_torque",
+    "load_torque",
+    "nut_friction_torque",
+    "regime",
+]

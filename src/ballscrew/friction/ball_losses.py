@@ -1,0 +1,139 @@
+"""Losses of the loaded balls: sliding and spin traction, EHL rolling and elastic hysteresis.
+
+Per ball of each nut, from the quasi-static state of :mod:`ballscrew.kinematics`:
+
+* sliding and spin traction at the screw contact A, integrated over the Hertz pressure grid
+  (``docs/theory/kinematics.md`` (E3.3)). Its traction coefficient depends on the regime through
+  the Johnson, Greenwood & Poon (1972) asperity share ψ, itself a function of the film parameter
+  Λ = h/σ: boundary friction μ_b on the asperity-borne pressure ψ p, viscous film shear capped at
+  the limiting shear stress Λ_L p (Bair & Winer 1979) on the rest; Λ → 0 is boundary
+  (μ → μ_b), Λ ≳ 3 is full EHL (Hamrock 1994, ch. 1: Λ < 1 boundary, 1–3 mixed, > 3 full film);
+* EHL rolling resistance at A and B (Harris & Kotzalas 2007; (E3.4));
+* elastic hysteresis of the Hertz contacts A and B (Tabor 1955; Johnson 1985, *Contact
+  Mechanics*, §9.2: a sphere rolling on a plane loses the fraction α of the elastic work,
+  F_h = α (3/16) Q a/R). Applied with the semi-axis a along the rolling direction and the
+  relative radius R_x of each contact (an ASSUMED extension to the elliptical contact).
+
+Each loss is a torque of the screw, power/ω, so that its heat is the torque times ω. A loss at A
+is shared equally by the screw and the ball (same steel on both sides; Blok 1937 partition for
+equal bodies, ASSUMED); the ball's share and every loss at B reach the nut.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ballscrew.kinematics.balance import BallState, solve_ball
+from ballscrew.kinematics.model import BallModel
+from ballscrew.kinematics.motion import ball_motion
+from ballscrew.kinematics.torque import ball_drag
+
+__all__ = ["BallLosses", "ball_losses", "film_parameter", "hysteresis_force", "regime"]
+
+#: Hysteresis loss fraction α of hardened bearing steel in elastic rolling: GUESS of order 1 %
+#: (Tabor 1955 and Johnson 1985 §9.2 report small fractions for hard metals; not read here).
+DEFAULT_HYSTERESIS = 0.01
+
+#: Share of a loss at the screw contact A that goes into the screw (Blok 1937, equal bodies).
+SCREW_SHARE_AT_A = 0.5
+
+
+def hysteresis_force(load: float, semi_axis: float, radius: float, fraction: float) -> float:
+    """Rolling resistance of elastic hysteresis, F_h = α (3/16) Q a/R [N] (Johnson 1985 §9.2)."""
+    if load <= 0.0:
+        return 0.0
+    return fraction * 3.0 / 16.0 * load * semi_axis / radius
+
+
+def film_parameter(film_thickness: float, rms_height: float) -> float:
+    """Λ = h/σ, the film thickness over the composite RMS roughness (0 for a dry contact)."""
+    return film_thickness / rms_height if rms_height > 0.0 else math.inf
+
+
+def regime(film: float) -> str:
+    """Lubrication regime of a film parameter Λ (Hamrock 1994: <1 boundary, 1–3 mixed, >3 EHL)."""
+    if film < 1.0:
+        return "boundary"
+    return "mixed" if film < 3.0 else "EHL"
+
+
+@dataclass(frozen=True)
+class BallLosses:
+    """Screw torques [N m] of the ball losses of all loaded balls, and where their heat goes."""
+
+    sliding: float
+    """Sliding and spin traction at A."""
+    ehl_rolling: float
+    """EHL rolling resistance at A and B."""
+    hysteresis: float
+    """Elastic hysteresis at A and B."""
+    screw_share: float
+    """Torque whose heat goes into the screw (the rest goes into the nut)."""
+    film_parameter: float
+    """Λ = h/σ at A of the first loaded nut (0 dry)."""
+
+    @property
+    def total(self) -> float:
+        return self.sliding + self.ehl_rolling + self.hysteresis
+
+
+def _rolling_speed_ratio(model: BallModel, state: BallState) -> float:
+    """|V|/ω_s, the rolling (entrainment) speed per screw speed (E2.4 at ω_s → 0)."""
+    if state.screw_speed != 0.0:
+        return abs(state.ball_speed / state.screw_speed)
+    motion = ball_motion(
+        model.geometry, 1.0, state.flank, angle_screw=state.angle_screw, angle_nut=state.angle_nut
+    )
+    return abs(motion.ball_speed)
+
+
+def _one_ball(model: BallModel, state: BallState, fraction: float) -> tuple[float, ...]:
+    """(sliding, rolling A, rolling B, hysteresis A, hysteresis B) torques of one ball."""
+    drag = ball_drag(model, state)
+    omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
+    sliding = drag.traction.power_loss / omega
+    rolling = drag.dissipation_torque - sliding
+    # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
+    rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
+    ratio = _rolling_speed_ratio(model, state)
+    hysteresis = []
+    for contact, load in (("screw", state.load_screw), ("nut", state.load_nut)):
+        a, _ = model.hertz_semi_axes(contact, load)
+        force = hysteresis_force(load, a, model.curvature(contact).rx, fraction)
+        hysteresis.append(force * ratio)
+    return sliding, rolling - rolling_b, rolling_b, hysteresis[0], hysteresis[1]
+
+
+def ball_losses(
+    model: BallModel,
+    speed: float,
+    nuts: tuple[tuple[float, int], ...],
+    *,
+    level: int = 0,
+    hysteresis: float = DEFAULT_HYSTERESIS,
+) -> BallLosses:
+    """Losses of every loaded ball of the nuts ``(axial force, flank)`` at screw speed ω_s.
+
+    ω_s = 0 gives the ω_s → 0⁺ limit (dry breakaway: boundary traction, no film, hysteresis at
+    the rolling speed of a slowly turning screw).
+    """
+    sums = [0.0] * 5
+    film = 0.0
+    for index, (force, flank) in enumerate(nuts):
+        if force <= 0.0:
+            continue
+        state = solve_ball(model, speed, force, flank, level)
+        for k, value in enumerate(_one_ball(model, state, hysteresis)):
+            sums[k] += model.balls * float(value)
+        if index == 0 and model.lubricated and state.ball_speed != 0.0:
+            sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
+            film = film_parameter(sharing.separation, model.surface.rms_height)
+    sliding, rolling_a, rolling_b, hyst_a, hyst_b = sums
+    return BallLosses(
+        sliding=sliding,
+        ehl_rolling=rolling_a + rolling_b,
+        hysteresis=hyst_a + hyst_b,
+        screw_share=SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a),
+        film_parameter=film,
+    )

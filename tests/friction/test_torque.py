@@ -1,0 +1,166 @@
+"""Total friction torque: energy balance, limits, monotonicity, heat split and the registry."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import ballscrew
+from ballscrew.analyses.friction import friction_torque, seal_torque
+from ballscrew.analyses.kinematics import computed_drag_torque
+from ballscrew.case import CaseError
+from ballscrew.errors import InputError
+from ballscrew.friction import (
+    FRICTION_MODELS,
+    BallLosses,
+    FrictionInputs,
+    hysteresis_force,
+    nut_friction_torque,
+    regime,
+)
+from ballscrew.loads import preload_drag_torque
+
+LEAD, LAMBDA = 0.01, math.atan(0.01 / (math.pi * 0.04))
+
+
+def _losses(speed: float) -> BallLosses:
+    return BallLosses(0.05, 0.02 * (speed > 0), 0.003, 0.03, 2.0 if speed else 0.0)
+
+
+def _inputs(**kw: float) -> FrictionInputs:
+    base = dict(lead=LEAD, lead_angle=LAMBDA, preload=1500.0, axial_load=1000.0, speed=100.0)
+    return FrictionInputs(**{**base, **kw}, ball_losses=_losses)
+
+
+@pytest.mark.parametrize("model", FRICTION_MODELS.names)
+@pytest.mark.parametrize(("load", "seals"), [(0.0, 0), (1000.0, 2), (5000.0, 1)])
+def test_heat_is_torque_times_speed_less_the_work(model, load, seals):
+    inputs = _inputs(axial_load=load, seals=seals, seal_torque=0.1, recirculation_torque=0.01)
+    r = nut_friction_torque(inputs, model)
+    velocity = inputs.lead * inputs.speed / (2 * math.pi)
+    assert r.heat == pytest.approx(r.total * inputs.speed - load * velocity)
+    assert r.heat == pytest.approx(r.friction * inputs.speed)
+    assert r.heat >= 0.0 and r.total == pytest.approx(sum(r.parts.values()))
+    assert r.heat_to_screw + r.heat_to_nut == pytest.approx(r.heat)
+    assert 0.0 < r.heat_to_screw < r.heat
+    assert r.parts["seals"] == pytest.approx(0.1 * seals)
+
+
+@pytest.mark.parametrize("model", FRICTION_MODELS.names)
+def test_limits(model):
+    free = nut_friction_torque(_inputs(axial_load=0.0), model)
+    assert free.parts["work"] == 0.0 and free.parts["load"] == 0.0
+    assert free.parts["seals"] == 0.0 and free.parts["recirculation"] == 0.0
+    still = nut_friction_torque(_inputs(speed=0.0), model)
+    assert still.heat == 0.0 and still.total > still.parts["work"] > 0.0
+
+
+def test_catalogue_preload_part_is_the_catalogue_formula():
+    r = nut_friction_torque(_inputs(), "catalogue")
+    assert r.parts["preload"] == pytest.approx(preload_drag_torque(1500.0, LEAD, LAMBDA))
+    assert r.efficiency_driving == pytest.approx(0.9634, abs=1e-4)
+
+
+def test_ball_model_parts_and_regime():
+    r = nut_friction_torque(_inputs(), "ball_model")
+    assert (r.parts["sliding"], r.parts["ehl_rolling"], r.parts["hysteresis"]) == (
+        0.05,
+        0.02,
+        0.003,
+    )
+    assert r.film_parameter == 2.0 and r.regime == "mixed"
+    assert [regime(x) for x in (0.5, 2.0, 4.0)] == ["boundary", "mixed", "EHL"]
+
+
+def test_hysteresis_force_closed_form():
+    assert hysteresis_force(100.0, 2e-4, 3e-3, 0.01) == pytest.approx(
+        0.01 * 3 / 16 * 100 * 2e-4 / 3e-3
+    )
+    assert hysteresis_force(0.0, 2e-4, 3e-3, 0.01) == 0.0
+
+
+@pytest.mark.parametrize(
+    ("changes", "field"),
+    [
+        ({"speed": -1.0}, "speed"),
+        ({"axial_load": math.nan}, "axial_load"),
+        ({"seal_torque": -0.1}, "friction.seal_torque"),
+    ],
+)
+def test_bad_inputs_name_the_field(changes, field):
+    with pytest.raises(InputError, match=rf"^{field} = "):
+        nut_friction_torque(_inputs(**changes))
+
+
+def test_ball_model_needs_its_losses():
+    bare = FrictionInputs(lead=LEAD, lead_angle=LAMBDA, preload=1500.0)
+    with pytest.raises(InputError, match=r"friction\.model"):
+        nut_friction_torque(bare, "ball_model")
+
+
+# --- the composer on the example case --------------------------------------------------------
+
+
+@pytest.fixture
+def ball_case(wear_case_path):
+    return ballscrew.load_case(wear_case_path, {"friction.model": "ball_model"})
+
+
+def test_ball_model_rises_with_preload_and_load(wear_case_path):
+    torques = []
+    for preload in (1000.0, 2000.0):
+        case = ballscrew.load_case(
+            wear_case_path, {"friction.model": "ball_model", "operating.preload": preload}
+        )
+        torques.append([friction_torque(case, 50.0, fa).total for fa in (0.0, 1000.0)])
+    (low_0, low_1), (high_0, high_1) = torques
+    assert high_0 > low_0 and low_1 > low_0 and high_1 > high_0
+
+
+def test_ball_model_at_zero_speed_is_the_dry_breakaway_value(ball_case):
+    still = friction_torque(ball_case, speed=0.0, axial_load=0.0)
+    turning = friction_torque(ball_case, speed=100.0, axial_load=0.0)
+    assert still.heat == 0.0 and still.parts["ehl_rolling"] == 0.0 and still.regime == "boundary"
+    assert still.parts["sliding"] > turning.parts["sliding"] > 0.0
+    assert turning.film_parameter > 0.0 and turning.parts["ehl_rolling"] > 0.0
+
+
+def test_thinner_oil_thins_the_film(ball_case):
+    thick = friction_torque(ball_case, 100.0, viscosity=0.06)
+    thin = friction_torque(ball_case, 100.0, viscosity=0.01)
+    assert thin.film_parameter < thick.film_parameter
+    assert thin.parts["ehl_rolling"] < thick.parts["ehl_rolling"]
+    with pytest.raises(InputError, match=r"^viscosity = "):
+        friction_torque(ball_case, 100.0, viscosity=-1.0)
+
+
+def test_seal_defaults_and_overrides(wear_case_path):
+    sealed = ballscrew.load_case(wear_case_path, {"friction.seals": 2})
+    assert seal_torque(sealed) == pytest.approx(5.0 * 0.5 * sealed.screw.pitch_diameter)
+    given = ballscrew.load_case(wear_case_path, {"friction.seals": 2, "friction.seal_torque": 0.07})
+    assert friction_torque(given).parts["seals"] == pytest.approx(0.14)
+    assert friction_torque(ballscrew.load_case(wear_case_path)).parts["seals"] == 0.0
+
+
+def test_case_names_come_from_the_registry(wear_case_path):
+    assert FRICTION_MODELS.names == ("catalogue", "ball_model")
+    with pytest.raises(
+        CaseError,
+        match=r"friction\.model = 'nonsense' is not allowed: .*"
+        r"one of catalogue, ball_model",
+    ):
+        ballscrew.load_case(wear_case_path, {"friction.model": "nonsense"})
+    with pytest.raises(CaseError, match=r"friction\.seals"):
+        ballscrew.load_case(wear_case_path, {"friction.seals": -1})
+
+
+def test_ball_parts_are_the_kinematics_drag_plus_hysteresis(wear_case_path):
+    case = ballscrew.load_case(
+        wear_case_path, {"friction.model": "ball_model", "operating.axial_load": 0.0}
+    )
+    r = friction_torque(case, speed=100.0)
+    drag = computed_drag_torque(case, speed=100.0)
+    assert r.parts["sliding"] + r.parts["ehl_rolling"] == pytest.approx(drag, rel=1e-12)
+    assert 0.0 < r.parts["hysteresis"] < 0.1 * drag
+    assert 0.0 < r.heat_to_screw < 0.5 * r.heat
