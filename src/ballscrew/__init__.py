@@ -25,6 +25,7 @@ from ballscrew import (
 )
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
+from ballscrew.analyses.operating_point import operating_point
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
 from ballscrew.analyses.wear import wear_life
@@ -45,6 +46,7 @@ __all__ = [
     "load_case",
     "loads",
     "nut_forces",
+    "operating_point",
     "screw_tcr",
     "thermal",
     "thermal_field",

@@ -6,6 +6,7 @@ Adding an analysis is one composer module, one entry here and one command module
 from __future__ import annotations
 
 from ballscrew.analyses.ball_contact import contact_scalars
+from ballscrew.analyses.operating_point import operating_point_scalars
 from ballscrew.analyses.result import ANALYSES, Analysis
 from ballscrew.analyses.screw_tcr import tcr_scalars
 from ballscrew.analyses.thermal import (
@@ -60,6 +61,13 @@ for _analysis in (
         "steady temperature field of the axisymmetric FE model (sweeps)",
         scalars=thermal_fe_scalars,
         headlines=_THERMAL_HEADLINES,
+    ),
+    Analysis(
+        "operating-point",
+        "coupled friction torque, heat, temperatures, viscosity and film",
+        scalars=operating_point_scalars,
+        headlines=("friction_torque", "heat", "nut_temperature", "screw_temperature"),
+        key_figure="temperature_map.png",
     ),
     Analysis(
         "kinematics",

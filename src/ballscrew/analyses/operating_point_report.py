@@ -1,0 +1,70 @@
+"""What the operating-point analysis shows: the coupled state, then the temperature field."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import xarray as xr
+
+from ballscrew.analyses import thermal_report
+from ballscrew.analyses.result import Figure, Section, Table, quantity
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.operating_point import OperatingPoint
+
+CELSIUS = 273.15
+
+
+def summary(result: OperatingPoint) -> dict[str, Any]:
+    """Scalars of the operating point (SI, with units) and the thermal model used."""
+    return {
+        "case": result.case.name,
+        "speed": quantity(result.speed, "rad/s"),
+        "axial_load": quantity(result.axial_load, "N"),
+        "friction_torque": quantity(result.friction_torque, "N*m"),
+        "heat": quantity(result.heat, "W"),
+        "efficiency": quantity(result.efficiency, ""),
+        "nut_temperature": quantity(result.nut_temperature, "K"),
+        "screw_temperature": quantity(result.screw_temperature, "K"),
+        "viscosity": quantity(result.viscosity, "Pa*s"),
+        "film_thickness": quantity(result.film_thickness, "m"),
+        "iterations": result.iterations,
+        "thermal_model": result.field.model,
+    }
+
+
+def fields(result: OperatingPoint) -> xr.Dataset:
+    """The steady temperature field of the operating point."""
+    return thermal_report.fields(result.field)
+
+
+def figures(result: OperatingPoint) -> list[Figure]:
+    """The steady temperature field and the screw's elongation."""
+    return thermal_report.figures(result.field)
+
+
+def sections(result: OperatingPoint) -> list[Section]:
+    """The coupled state in engineering units, then the thermal model's own sections."""
+    rows: list[tuple[Any, ...]] = [
+        ("speed [rpm]", result.speed * 30.0 / 3.141592653589793),
+        ("axial load [N]", result.axial_load),
+        ("friction torque [N·m]", result.friction_torque),
+        ("friction heat [W]", result.heat),
+        ("driving efficiency [-]", result.efficiency),
+        ("nut temperature [°C]", result.nut_temperature - CELSIUS),
+        ("screw temperature under the nut [°C]", result.screw_temperature - CELSIUS),
+        ("lubricant viscosity at the contacts [mPa·s]", 1e3 * result.viscosity),
+        ("central film thickness, screw contact [nm]", 1e9 * result.film_thickness),
+        ("fixed-point iterations", result.iterations),
+    ]
+    coupled = Section(
+        "Coupled operating point",
+        paragraphs=(
+            "Temperature, lubricant viscosity, friction torque and heat solved together: the "
+            "friction heat of the nut heats screw and nut, which thins the lubricant, which "
+            f"changes the friction; the {result.field.model} thermal model in steady state, "
+            "iterated to 0.01 K.",
+        ),
+        tables=(Table(("quantity", "value"), tuple(rows)),),
+    )
+    return [coupled, *thermal_report.sections(result.field)]

@@ -1,0 +1,105 @@
+"""The coupled operating point: fixed point, energy balance, viscosity with temperature, CLI."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import ballscrew
+from ballscrew.analyses.operating_point import operating_point
+from ballscrew.analyses.result import AnalysisResult
+from ballscrew.cli import app
+
+RPM = 2 * math.pi / 60
+LIBRARY_OIL = {
+    "medium.viscosity": None,
+    "medium.pressure_viscosity": None,
+    "kinematics.lubricant": "iso_vg_68",
+    "friction.model": "ball_model",
+}
+
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
+
+
+@pytest.fixture(scope="module")
+def case():
+    return ballscrew.load_case(EXAMPLE, {"numerics.cells_across": 16})
+
+
+def test_friction_heat_is_torque_times_speed_less_the_work_done(case):
+    point = operating_point(case, speed=1500 * RPM, axial_load=2000.0)
+    work = 2000.0 * case.screw.lead / (2 * math.pi) * point.speed
+    assert point.heat == pytest.approx(point.friction_torque * point.speed - work, rel=1e-12)
+    balls = sum(s.heat for s in point.field.sources if "balls" in s.name)
+    assert balls == pytest.approx(point.heat, rel=1e-9)  # all of it reaches the thermal model
+    assert 0.0 < point.efficiency < 1.0
+    assert point.nut_temperature > point.field.ambient_temperature
+
+
+def test_the_fixed_point_does_not_depend_on_where_it_starts(case):
+    oil = ballscrew.case.with_overrides(case, LIBRARY_OIL)
+    cold = operating_point(oil, speed=1000 * RPM)
+    hot = operating_point(oil, speed=1000 * RPM, start_temperature=400.0)
+    assert hot.nut_temperature == pytest.approx(cold.nut_temperature, abs=0.05)
+    assert hot.friction_torque == pytest.approx(cold.friction_torque, rel=1e-3)
+
+
+def test_a_named_oil_thins_as_the_screw_heats(case):
+    oil = ballscrew.case.with_overrides(case, LIBRARY_OIL)
+    point = operating_point(oil, speed=1500 * RPM)
+    at_40 = ballscrew.lubrication.lubricant_library.LUBRICANT_LIBRARY["iso_vg_68"].at(313.15)
+    assert point.contact_temperature > 313.15
+    assert point.viscosity < at_40.viscosity
+    assert point.film_thickness > 0.0
+
+
+def test_at_rest_there_is_no_friction_heat(case):
+    point = operating_point(case, speed=0.0)
+    assert point.heat == 0.0
+    assert point.nut_temperature == pytest.approx(point.field.ambient_temperature, abs=1e-9)
+
+
+def test_a_hot_nut_is_a_warning(case):
+    point = operating_point(case, speed=1500 * RPM, axial_load=3000.0)
+    assert point.nut_temperature > 333.15
+    assert any("the nut runs at" in w for w in point.warnings)
+
+
+def test_python_equals_the_command_line(tmp_path):
+    out = tmp_path / "op"
+    result = CliRunner().invoke(
+        app,
+        [
+            "operating-point",
+            str(EXAMPLE),
+            "--out",
+            str(out),
+            "--speed",
+            "1200 rpm",
+            "--axial-load",
+            "1 kN",
+        ],
+    )
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    full = ballscrew.load_case(EXAMPLE)
+    point = operating_point(full, speed=1200 * RPM, axial_load=1000.0)
+    assert isinstance(point, AnalysisResult)
+    for key in ("friction_torque", "heat", "nut_temperature", "screw_temperature"):
+        assert summary[key]["value"] == pytest.approx(getattr(point, key), rel=1e-12)
+    assert "inputs" in summary and (out / "report.html").read_text().count("Inputs")
+
+
+def test_bad_speed_is_one_line(tmp_path):
+    result = CliRunner().invoke(
+        app,
+        ["operating-point", str(EXAMPLE), "--out", str(tmp_path / "x"),
+         "--speed", "9**9**9 rpm"],
+    )  # fmt: skip
+    assert result.exit_code == 2 and result.output.startswith("error: --speed")
+    assert not (tmp_path / "x").exists()
