@@ -160,6 +160,18 @@ def test_iteration_that_cannot_converge_reports_its_residual(case):
         field(case, {"thermal.mounting.kind": "free", "thermal.convection.max_iterations": 1})
 
 
+def with_key(text: str, key: str, value: str) -> str:
+    """The case text with ``key = value`` set in its section (added where absent)."""
+    section, name = key.rsplit(".", 1)
+    header = f"[{section}]\n"
+    if header not in text:
+        return text + f"\n{header}{name} = {value}\n"
+    head, body = text.split(header, 1)
+    block, sep, rest = body.partition("\n[")
+    lines = [line for line in block.splitlines() if not line.startswith(f"{name} =")]
+    return head + header + "\n".join([f"{name} = {value}", *lines]) + "\n" + sep + rest
+
+
 @pytest.mark.parametrize(
     ("key", "value"),
     [
@@ -170,9 +182,8 @@ def test_iteration_that_cannot_converge_reports_its_residual(case):
     ],
 )
 def test_bad_boundary_input_is_one_line_and_exit_2(tmp_path, key, value):
-    section, name = key.rsplit(".", 1)
     path = tmp_path / "case.toml"
-    path.write_text(EXAMPLE.read_text() + f"\n[{section}]\n{name} = {value}\n")
+    path.write_text(with_key(EXAMPLE.read_text(), key, value))
     out = tmp_path / "out"
     result = CliRunner().invoke(app, ["thermal", str(path), "--out", str(out)])
     assert result.exit_code == 2, result.output
