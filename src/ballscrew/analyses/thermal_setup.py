@@ -334,9 +334,8 @@ def _coefficients(
 
     def natural(diameter: float, rise: float) -> tuple[str, float]:
         dt = max(rise, MIN_RISE)
-        label = (
-            f"Churchill–Chu natural, ΔT = {dt:.4g} K (Q6{', iterated' if _iterated(spec) else ''})"
-        )
+        how = ", iterated" if _iterated(spec) else ""
+        label = f"Churchill–Chu natural, ΔT = {dt:.4g} K (Q6{how})"
         return label, horizontal_cylinder_natural(diameter, dt, air(dt))
 
     def pick(name: str, override: float | None, options: dict[str, float]) -> float:
@@ -430,7 +429,10 @@ def _nut_probes(problem: ThermalProblem) -> tuple[Sensor, ...]:
 
 
 def _surface_rises(solution: Solution, probes: tuple[Sensor, ...]) -> tuple[float, float]:
-    """(length-mean rise of the shaft, outer-area-mean rise of the nut assembly) [K]."""
+    """(length-mean rise of the shaft, rise of the nut assembly's outer surface) [K].
+
+    The nut's is the mean of the probes at the centre of each part, weighted by its outer area.
+    """
     disc = solution.discretisation
     z, axis = disc.axis_z, solution.axis
     screw = float(np.trapezoid(axis, z) / (z[-1] - z[0])) if z.size > 1 else float(axis[0])
