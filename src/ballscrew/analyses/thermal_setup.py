@@ -17,6 +17,7 @@ import numpy as np
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.budget import check_memory
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
@@ -47,6 +48,7 @@ __all__ = [
     "NutInterface",
     "ball_patches",
     "build_problem",
+    "check_mesh",
     "thermal_spec",
 ]
 
@@ -405,6 +407,7 @@ def _cooled(
     cs = spec.convection
     start = (cs.temperature_difference, cs.temperature_difference)
     if _iterated(spec):
+        check_mesh(spec, problem, "network")
         probes = _nut_probes(problem)
 
         def update(rises: tuple[float, ...]) -> tuple[float, float]:
@@ -439,6 +442,30 @@ def _surface_rises(solution: Solution, probes: tuple[Sensor, ...]) -> tuple[floa
     weights = np.array([p.outer_radius * p.length for p in disc.problem.parts])
     nut = float(weights @ solution.sensors[: len(probes)] / weights.sum())
     return screw, nut
+
+
+def check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
+    """Refuse (naming the mesh key) a mesh whose matrices would not fit the memory budget.
+
+    Unknowns: the shaft length and the largest outer radius over the element size (times the
+    element order) for the axisymmetric model, axial planes × divisions × (layers + 6) for the
+    3-D model, one per cell for the network; about 2 KiB (2-D, network) or 4 KiB (3-D) per
+    unknown for the sparse matrices and a direct factorisation.
+    """
+    ms = spec.mesh
+    length = problem.shaft_length
+    if model == "network":
+        field, value, per = "thermal.mesh.network_cell", ms.network_cell, 2048.0
+        unknowns = length / ms.network_cell + 1.0
+    elif model == "3d":
+        field, value, per = "thermal.mesh.size_3d", ms.size_3d, 4096.0
+        planes = (problem.ring_length + problem.stroke) / ms.size_3d + length / ms.far_size_3d
+        unknowns = (planes + 1.0) * ms.divisions_3d * (ms.layers_3d + 6.0)
+    else:
+        field, value, per = "thermal.mesh.size", ms.size, 2048.0
+        radius = max(part.outer_radius for part in problem.parts)
+        unknowns = (ms.order * length / ms.size + 1.0) * (ms.order * radius / ms.size + 1.0)
+    check_memory(field, value, unknowns * per, f"a {model} mesh of about {unknowns:.3g} unknowns")
 
 
 def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = None) -> tuple:
