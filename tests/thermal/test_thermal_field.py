@@ -18,6 +18,8 @@ from ballscrew.errors import InputError
 
 RPM = 2 * math.pi / 60
 FAST = {"thermal.mesh.size": "5 mm", "thermal.transient.time_step": "300 s"}
+FREE_NUT = {"thermal.mounting.kind": "free", "thermal.convection.natural": "fixed"}
+"""The boundary conditions these tests pinned: nut in still air, natural convection at 10 K."""
 
 
 @pytest.fixture(scope="module")
@@ -25,7 +27,7 @@ def case():
     from pathlib import Path
 
     path = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
-    return bs.load_case(path, FAST)
+    return bs.load_case(path, FAST | FREE_NUT)
 
 
 @pytest.fixture(scope="module")

@@ -27,7 +27,11 @@ ASSUMPTIONS = (
     "support bearings' heat neglected (ASSUMED; mounting not published; the example case's "
     "bearings at both ends add 0.02 K at mid-shaft)",
     "convection: the model's correlations (Kreith rotating cylinder for the screw, laminar flat "
-    "plate for the nut); ambient = initial temperature 25.6 °C = 34.5 − 8.9 (source)",
+    "plate for the nut, Churchill–Chu at the computed surface rise); ambient = initial "
+    "temperature 25.6 °C = 34.5 − 8.9 (source)",
+    "nut seated in a table: the model's default [thermal.mounting] (GUESS: h_c = 2000 W/(m² K) "
+    "over half the nut's outer area, a 1 m² table at 10 W/(m² K)); the test bed's mounting was "
+    "not published (a free nut in still air gives 10.7 K)",
     "sensor on the shaft axis at mid-length ('temperature at shaft center area'; ASSUMED), "
     "value at 90 min (the end of the printed curve)",
     "ball contact: fractal TCR of the example case's raceway (D = 1.59, G = 9e-10 m; ASSUMED)",

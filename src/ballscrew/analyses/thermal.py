@@ -25,9 +25,9 @@ from ballscrew.analyses.thermal_setup import (
     NutInterface,
     ball_patches,
     build_problem,
+    check_mesh,
     thermal_spec,
 )
-from ballscrew.budget import check_memory
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.thermal.elongation import thermoelastic_elongation
@@ -212,7 +212,7 @@ def thermal_field(
         check_transient(None, spec.transient.duration, spec.transient.time_step)
     with recorded_warnings() as messages:
         problem, sources, convection, interfaces, speed = build_problem(case, tcr)
-        _check_mesh(spec, problem, model)
+        check_mesh(spec, problem, model)
         helical = model == "3d" and spec.mesh.helical_patches
         patches = ball_patches(case, problem, tcr) if helical else None
         disc = build_model(model, problem, _mesh_options(spec), patches)
@@ -259,30 +259,6 @@ def _mesh_options(spec: ThermalSpec) -> MeshOptions:
         divisions_3d=ms.divisions_3d,
         layers_3d=ms.layers_3d,
     )
-
-
-def _check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
-    """Refuse (naming the mesh key) a mesh whose matrices would not fit the memory budget.
-
-    Unknowns: the shaft length and the largest outer radius over the element size (times the
-    element order) for the axisymmetric model, axial planes × divisions × (layers + 6) for the
-    3-D model, one per cell for the network; about 2 KiB (2-D, network) or 4 KiB (3-D) per
-    unknown for the sparse matrices and a direct factorisation.
-    """
-    ms = spec.mesh
-    length = problem.shaft_length
-    if model == "network":
-        field, value, per = "thermal.mesh.network_cell", ms.network_cell, 2048.0
-        unknowns = length / ms.network_cell + 1.0
-    elif model == "3d":
-        field, value, per = "thermal.mesh.size_3d", ms.size_3d, 4096.0
-        planes = (problem.ring_length + problem.stroke) / ms.size_3d + length / ms.far_size_3d
-        unknowns = (planes + 1.0) * ms.divisions_3d * (ms.layers_3d + 6.0)
-    else:
-        field, value, per = "thermal.mesh.size", ms.size, 2048.0
-        radius = max(part.outer_radius for part in problem.parts)
-        unknowns = (ms.order * length / ms.size + 1.0) * (ms.order * radius / ms.size + 1.0)
-    check_memory(field, value, unknowns * per, f"a {model} mesh of about {unknowns:.3g} unknowns")
 
 
 def thermal_scalars(case: Case, model: str | None = None) -> dict[str, tuple[float, str]]:

@@ -8,18 +8,22 @@ chain (A1–A4) and, for the 3-D model, the helical ball patches (theory manual:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
 from typing import Any
+
+import numpy as np
 
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.budget import check_memory
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.errors import InputError
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
+from ballscrew.thermal.boundary import fixed_point, mounting_coefficient
 from ballscrew.thermal.convection import (
     Air,
     flat_plate_laminar,
@@ -27,6 +31,7 @@ from ballscrew.thermal.convection import (
     rotating_cylinder,
 )
 from ballscrew.thermal.heat_sources import friction_heat, nut_heat_shares, palmgren_torque
+from ballscrew.thermal.network import build_network
 from ballscrew.thermal.problem import (
     BandHeat,
     Convection,
@@ -35,6 +40,7 @@ from ballscrew.thermal.problem import (
     Solid,
     ThermalProblem,
 )
+from ballscrew.thermal.simulate import Solution, simulate
 
 __all__ = [
     "ConvectionCoefficient",
@@ -42,6 +48,7 @@ __all__ = [
     "NutInterface",
     "ball_patches",
     "build_problem",
+    "check_mesh",
     "thermal_spec",
 ]
 
@@ -207,48 +214,10 @@ def build_problem(
         sources.append(HeatSource(b.name, how, m_be, q, b.shaft_fraction * q, 0.0))
         bands.append(BandHeat(b.name, b.position, b.width, b.shaft_fraction * q))
 
-    # convection (Q5, Q6)
-    cs = spec.convection
-    dT = cs.temperature_difference
-    air = Air(
-        cs.air_kinematic_viscosity,
-        cs.air_conductivity,
-        cs.air_prandtl,
-        spec.ambient_temperature + 0.5 * dT,
-    )
+    # convection (Q5, Q6), the table (Q8), a cooled nut (Q10)
     nuts_count = screw.nuts
     spacer_len = spec.spacer_length if nuts_count == 2 else 0.0
-    ring_length = nuts_count * nut_len + spacer_len
-    coefficients: list[ConvectionCoefficient] = []
-
-    def pick(name: str, override: float | None, options: dict[str, float]) -> float:
-        if override is not None:
-            coefficients.append(ConvectionCoefficient(name, float(override), "override"))
-            return float(override)
-        label, value = max(options.items(), key=lambda kv: kv[1])
-        coefficients.append(ConvectionCoefficient(name, value, label))
-        return value
-
-    h_screw = pick(
-        "screw",
-        cs.screw,
-        {
-            "Kreith rotating cylinder (Q5)": rotating_cylinder(shaft_d, omega, air),
-            f"Churchill–Chu natural, ΔT = {dT:g} K (Q6)": horizontal_cylinder_natural(
-                shaft_d, dT, air
-            ),
-        },
-    )
-    h_screw_ends = pick("screw ends", cs.screw_ends, {"= screw": h_screw})
-    nut_options = {
-        f"Churchill–Chu natural, ΔT = {dT:g} K (Q6)": horizontal_cylinder_natural(nut_d, dT, air)
-    }
-    if spec.stroke.length > 0 and feed > 0:
-        nut_options["laminar flat plate at the feed speed (Q6)"] = flat_plate_laminar(
-            ring_length, feed, air
-        )
-    h_nut = pick("nut", cs.nut, nut_options)
-    h_nut_ends = pick("nut ends", cs.nut_ends, {"= nut": h_nut})
+    surfaces = Surfaces(shaft_d, nut_d, spacer_d, nut_len, spacer_len, nuts_count, omega, feed)
 
     # the balls: TCR chain (A1–A4) + macro-constriction, or a given R″
     radius = 0.5 * shaft_d
@@ -311,13 +280,192 @@ def build_problem(
         ring=_solid(mats.nut),
         parts=tuple(parts),
         ring_centre=spec.nut_position if spec.nut_position is not None else 0.5 * length,
-        convection=Convection(h_screw, h_screw_ends, h_nut, h_nut_ends),
+        convection=Convection(0.0, 0.0, 0.0, 0.0),
         bearings=tuple(bands),
         stroke=spec.stroke.length,
         expansion=mats.screw.thermal_expansion,
         sensors=tuple(Sensor(s.name, s.body, s.r, s.z, s.theta) for s in spec.sensors),
     )
-    return problem, tuple(sources), tuple(coefficients), tuple(interfaces), feed
+    problem, coefficients = _cooled(spec, surfaces, problem)
+    return problem, tuple(sources), coefficients, tuple(interfaces), feed
+
+
+@dataclass(frozen=True)
+class Surfaces:
+    """What the convection coefficients of a case depend on besides the temperatures (SI)."""
+
+    shaft_diameter: float
+    nut_diameter: float
+    spacer_diameter: float
+    nut_length: float
+    spacer_length: float
+    nuts: int
+    speed: float
+    """Screw speed ω [rad/s]."""
+    feed: float
+    """Nut speed [m/s]."""
+
+    @property
+    def ring_length(self) -> float:
+        """Length of the nut assembly [m]."""
+        return self.nuts * self.nut_length + self.spacer_length
+
+    @property
+    def outer_area(self) -> float:
+        """Outer (cylindrical) area of the nut assembly A_od [m²]."""
+        return math.pi * (
+            self.nuts * self.nut_diameter * self.nut_length
+            + self.spacer_diameter * self.spacer_length
+        )
+
+
+MIN_RISE = 0.01
+"""Smallest surface ΔT at which natural convection is evaluated [K] (Nu → 0.36 below)."""
+
+
+def _coefficients(
+    spec: ThermalSpec, surfaces: Surfaces, rise_screw: float, rise_nut: float
+) -> tuple[Convection, tuple[ConvectionCoefficient, ...]]:
+    """Coefficients of every surface with natural convection at the given rises (Q5–Q10)."""
+    cs = spec.convection
+    coefficients: list[ConvectionCoefficient] = []
+
+    def air(rise: float) -> Air:
+        film = spec.ambient_temperature + 0.5 * rise
+        return Air(cs.air_kinematic_viscosity, cs.air_conductivity, cs.air_prandtl, film)
+
+    def natural(diameter: float, rise: float) -> tuple[str, float]:
+        dt = max(rise, MIN_RISE)
+        how = ", iterated" if _iterated(spec) else ""
+        label = f"Churchill–Chu natural, ΔT = {dt:.4g} K (Q6{how})"
+        return label, horizontal_cylinder_natural(diameter, dt, air(dt))
+
+    def pick(name: str, override: float | None, options: dict[str, float]) -> float:
+        if override is not None:
+            coefficients.append(ConvectionCoefficient(name, float(override), "override"))
+            return float(override)
+        label, value = max(options.items(), key=lambda kv: kv[1])
+        coefficients.append(ConvectionCoefficient(name, value, label))
+        return value
+
+    d_s, w = surfaces.shaft_diameter, surfaces.speed
+    h_screw = pick(
+        "screw",
+        cs.screw,
+        {
+            "Kreith rotating cylinder (Q5)": rotating_cylinder(d_s, w, air(rise_screw)),
+            **dict([natural(d_s, rise_screw)]),
+        },
+    )
+    h_screw_ends = pick("screw ends", cs.screw_ends, {"= screw": h_screw})
+    nut_options = dict([natural(surfaces.nut_diameter, rise_nut)])
+    if spec.stroke.length > 0 and surfaces.feed > 0:
+        nut_options["laminar flat plate at the feed speed (Q6)"] = flat_plate_laminar(
+            surfaces.ring_length, surfaces.feed, air(rise_nut)
+        )
+    h_nut = pick("nut", cs.nut, nut_options)
+    h_nut_ends = pick("nut ends", cs.nut_ends, {"= nut": h_nut})
+    h_extra = 0.0
+    mounting = spec.mounting
+    if mounting.kind == "table":
+        area = surfaces.outer_area
+        contact = mounting.contact_area
+        contact = mounting.contact_fraction * area if contact is None else contact
+        h_mount = mounting_coefficient(
+            mounting.contact_conductance, contact, area, mounting.table_conductance
+        )
+        table = "at ambient" if mounting.table_area is None else "a sink to ambient"
+        coefficients.append(
+            ConvectionCoefficient(
+                "nut mounting", h_mount, f"table joint h_c A_c in series with {table} (Q8)"
+            )
+        )
+        h_extra += h_mount
+    coolant = spec.coolant
+    if coolant.nut_coefficient > 0 and coolant.nut_channel_area > 0:
+        h_cool = coolant.nut_coefficient * coolant.nut_channel_area / surfaces.outer_area
+        coefficients.append(
+            ConvectionCoefficient("nut coolant", h_cool, "given h over the channel area (Q10)")
+        )
+        h_extra += h_cool
+    return Convection(h_screw, h_screw_ends, h_nut + h_extra, h_nut_ends), tuple(coefficients)
+
+
+def _iterated(spec: ThermalSpec) -> bool:
+    cs = spec.convection
+    return cs.natural == "iterated" and None in (cs.screw, cs.nut)
+
+
+def _cooled(
+    spec: ThermalSpec, surfaces: Surfaces, problem: ThermalProblem
+) -> tuple[ThermalProblem, tuple[ConvectionCoefficient, ...]]:
+    """``problem`` with its coefficients; natural convection at the computed surface rises.
+
+    The fixed point runs on the network model (milliseconds; its surface rises agree with the
+    FE models' to about 1 %), started from ``convection.temperature_difference``.
+    """
+    cs = spec.convection
+    start = (cs.temperature_difference, cs.temperature_difference)
+    if _iterated(spec):
+        check_mesh(spec, problem, "network")
+        probes = _nut_probes(problem)
+
+        def update(rises: tuple[float, ...]) -> tuple[float, float]:
+            conv, _ = _coefficients(spec, surfaces, *rises)
+            trial = replace(problem, convection=conv, sensors=probes)
+            solution = simulate(build_network(trial, spec.mesh.network_cell), None)
+            return _surface_rises(solution, probes)
+
+        start, _ = fixed_point(update, start, cs.tolerance, cs.max_iterations)
+    conv, coefficients = _coefficients(spec, surfaces, *start)
+    return replace(problem, convection=conv), coefficients
+
+
+def _nut_probes(problem: ThermalProblem) -> tuple[Sensor, ...]:
+    """A sensor on the outer surface at the centre of every part of the nut assembly."""
+    z = problem.ring_centre - 0.5 * problem.ring_length
+    probes = []
+    for k, part in enumerate(problem.parts):
+        probes.append(Sensor(f"od{k}", "nut", part.outer_radius, z + 0.5 * part.length))
+        z += part.length
+    return tuple(probes)
+
+
+def _surface_rises(solution: Solution, probes: tuple[Sensor, ...]) -> tuple[float, float]:
+    """(length-mean rise of the shaft, rise of the nut assembly's outer surface) [K].
+
+    The nut's is the mean of the probes at the centre of each part, weighted by its outer area.
+    """
+    disc = solution.discretisation
+    z, axis = disc.axis_z, solution.axis
+    screw = float(np.trapezoid(axis, z) / (z[-1] - z[0])) if z.size > 1 else float(axis[0])
+    weights = np.array([p.outer_radius * p.length for p in disc.problem.parts])
+    nut = float(weights @ solution.sensors[: len(probes)] / weights.sum())
+    return screw, nut
+
+
+def check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
+    """Refuse (naming the mesh key) a mesh whose matrices would not fit the memory budget.
+
+    Unknowns: the shaft length and the largest outer radius over the element size (times the
+    element order) for the axisymmetric model, axial planes × divisions × (layers + 6) for the
+    3-D model, one per cell for the network; about 2 KiB (2-D, network) or 4 KiB (3-D) per
+    unknown for the sparse matrices and a direct factorisation.
+    """
+    ms = spec.mesh
+    length = problem.shaft_length
+    if model == "network":
+        field, value, per = "thermal.mesh.network_cell", ms.network_cell, 2048.0
+        unknowns = length / ms.network_cell + 1.0
+    elif model == "3d":
+        field, value, per = "thermal.mesh.size_3d", ms.size_3d, 4096.0
+        planes = (problem.ring_length + problem.stroke) / ms.size_3d + length / ms.far_size_3d
+        unknowns = (planes + 1.0) * ms.divisions_3d * (ms.layers_3d + 6.0)
+    else:
+        field, value, per = "thermal.mesh.size", ms.size, 2048.0
+        radius = max(part.outer_radius for part in problem.parts)
+        unknowns = (ms.order * length / ms.size + 1.0) * (ms.order * radius / ms.size + 1.0)
+    check_memory(field, value, unknowns * per, f"a {model} mesh of about {unknowns:.3g} unknowns")
 
 
 def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = None) -> tuple:

@@ -121,10 +121,22 @@ class ConvectionSpec(Model):
     ) = None
     temperature_difference: quantity(
         "temperature_difference",
-        'surface − air ΔT used by the natural-convection correlation ("10 degC" = 10 K)',
+        "surface − air ΔT of the natural-convection correlation: the starting guess of the "
+        'iteration, or the value used with natural = "fixed" ("10 degC" = 10 K)',
         gt=0,
         le=1000.0,
     ) = 10.0
+    natural: Literal["iterated", "fixed"] = Field(
+        "iterated",
+        description="'iterated': natural convection at the computed mean surface rise of the "
+        "screw and of the nut (fixed point); 'fixed': at temperature_difference",
+    )
+    tolerance: Annotated[
+        float, Field(gt=0, le=0.1, description="relative tolerance of the ΔT iteration")
+    ] = 1e-6
+    max_iterations: Annotated[
+        int, Field(ge=1, le=1000, description="most iterations of the ΔT fixed point")
+    ] = 50
     air_kinematic_viscosity: quantity(
         "kinematic_viscosity", "kinematic viscosity ν of air", gt=0, le=1.0
     ) = 1.589e-5
@@ -132,6 +144,69 @@ class ConvectionSpec(Model):
         "thermal_conductivity", "thermal conductivity λ of air", gt=0, le=10.0
     ) = 0.0263
     air_prandtl: Annotated[float, Field(gt=0, le=1e5, description="Prandtl number of air")] = 0.707
+
+
+class MountingSpec(Model):
+    """The nut assembly seated in a table or housing: its heat path besides convection (Q8).
+
+    Defaults: a nut on a machine axis bolted to a table. ``kind = "free"`` is the nut in still
+    air only (before this section existed).
+    """
+
+    kind: Literal["table", "free"] = Field(
+        "table", description="'table': the nut's outer surface conducts into a table; 'free': none"
+    )
+    contact_conductance: quantity(
+        "heat_transfer_coefficient",
+        "contact conductance h_c of the nut–table joint (GUESS: 2000, in the 10³–10⁴ range of "
+        "ground steel/cast-iron joints at ~1 MPa in air, Madhusudana 2014)",
+        ge=0,
+        le=MAX_H,
+    ) = 2000.0
+    contact_fraction: Annotated[
+        float,
+        Field(
+            ge=0,
+            le=1,
+            description="share of the nut-assembly outer area in contact with the table (GUESS: "
+            "0.5, the flange face and the pilot bore); contact_area overrides",
+        ),
+    ] = 0.5
+    contact_area: quantity("area", "nut–table contact area A_c", ge=0, le=100.0) | None = None
+    table_area: (
+        quantity(
+            "area",
+            "area of the table losing heat to ambient (GUESS: 1 m², a machine table and its "
+            "saddle); None = a table held at ambient",
+            gt=0,
+            le=1e4,
+        )
+        | None
+    ) = 1.0
+    table_coefficient: quantity(
+        "heat_transfer_coefficient",
+        "h of the table to ambient (GUESS: 10, natural convection and radiation of cast iron "
+        "a few K above the air)",
+        ge=0,
+        le=MAX_H,
+    ) = 10.0
+
+    @property
+    def table_conductance(self) -> float | None:
+        """G_t = h_t A_t of the table to ambient [W/K]; None for a table held at ambient."""
+        return None if self.table_area is None else self.table_area * self.table_coefficient
+
+
+class CoolantSpec(Model):
+    """A cooled nut: a given h over the area of its cooling channels (Q10), coolant at ambient."""
+
+    nut_coefficient: quantity(
+        "heat_transfer_coefficient",
+        "h of the nut's cooling channels (e.g. pipe_coefficient of the flow)",
+        ge=0,
+        le=MAX_H,
+    ) = 0.0
+    nut_channel_area: quantity("area", "wetted area of the nut's channels", ge=0, le=100.0) = 0.0
 
 
 class ContactSpec(Model):
@@ -284,6 +359,8 @@ class ThermalSpec(Model):
     bearings: list[BearingSpec] = Field(default_factory=list, description="support bearings")
     drag_torque: DragTorqueSpec = DragTorqueSpec()
     convection: ConvectionSpec = ConvectionSpec()
+    mounting: MountingSpec = MountingSpec()
+    coolant: CoolantSpec = CoolantSpec()
     contact: ContactSpec = ContactSpec()
     stroke: StrokeSpec = StrokeSpec()
     transient: TransientSpec = TransientSpec()

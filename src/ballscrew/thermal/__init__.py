@@ -1,6 +1,7 @@
 """Temperature field and thermal elongation of the ball screw (theory manual: *Thermal*).
 
-Heat sources in :mod:`.heat_sources`, convection in :mod:`.convection`, the problem in
+Heat sources in :mod:`.heat_sources`, convection in :mod:`.convection`, the table, coolant and
+the natural-convection fixed point in :mod:`.boundary`, the problem in
 :mod:`.problem`, the rival discretisations in :mod:`.models` (the 1-D network in
 :mod:`.network`, the 2-D axisymmetric scikit-fem model in :mod:`.axisymmetric` and the 3-D model
 in :mod:`.threed`, imported on use), solves in :mod:`.simulate`, the elongation in
@@ -8,6 +9,13 @@ in :mod:`.threed`, imported on use), solves in :mod:`.simulate`, the elongation 
 contact resistance of the balls is :mod:`ballscrew.contact_resistance`.
 """
 
+from ballscrew.thermal.boundary import (
+    dittus_boelter,
+    fixed_point,
+    gnielinski,
+    mounting_coefficient,
+    pipe_coefficient,
+)
 from ballscrew.thermal.convection import (
     Air,
     flat_plate_laminar,
@@ -57,11 +65,16 @@ __all__ = [
     "build_model",
     "build_network",
     "displacement_profile",
+    "dittus_boelter",
+    "fixed_point",
     "flat_plate_laminar",
     "friction_heat",
+    "gnielinski",
     "horizontal_cylinder_natural",
+    "mounting_coefficient",
     "nut_heat_shares",
     "palmgren_torque",
+    "pipe_coefficient",
     "rotating_cylinder",
     "simulate",
     "thermal_elongation",

@@ -7,12 +7,16 @@ SI throughout: diameters and lengths in m, speeds in rad/s or m/s, h in W/(m² K
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 from ballscrew.validation import positive
 
 GRAVITY = 9.81
 """Standard gravity g [m/s²]."""
+
+KREITH_MAX_REYNOLDS = 4.3e5
+"""Largest rotational Reynolds number ω d²/ν of the measurements behind (Q5)."""
 
 
 @dataclass(frozen=True)
@@ -40,11 +44,18 @@ def rotating_cylinder(diameter: float, speed: float, air: Air = Air()) -> float:
         Nu_d = 0.133 Re_ω^{2/3} Pr^{1/3},   Re_ω = ω d²/ν,   h = Nu λ/d
 
     (Kreith, "Convection heat transfer in rotating systems", Adv. Heat Transfer 5 (1968); valid
-    for Re_ω < 4.3·10⁵, 0.7 < Pr < 670; beyond that it is extrapolated). ``speed`` ω [rad/s].
-    Example: d = 40 mm, 1000 r/min → Re = 10545, Nu = 56.97, h = 37.46 W/(m² K).
+    for Re_ω < 4.3·10⁵, 0.7 < Pr < 670; beyond that it is extrapolated with a warning).
+    ``speed`` ω [rad/s]. Example: d = 40 mm, 1000 r/min → Re = 10545, Nu = 56.97,
+    h = 37.46 W/(m² K).
     """
     positive("diameter", diameter)
     re = abs(speed) * diameter**2 / air.kinematic_viscosity
+    if re > KREITH_MAX_REYNOLDS:
+        warnings.warn(
+            f"rotating screw: Re_ω = {re:.3g} > {KREITH_MAX_REYNOLDS:.2g}, the range of Kreith's "
+            "correlation (Q5); its h is extrapolated",
+            stacklevel=2,
+        )
     nu = 0.133 * re ** (2.0 / 3.0) * air.prandtl ** (1.0 / 3.0)
     return nu * air.conductivity / diameter
 
