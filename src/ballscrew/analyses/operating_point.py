@@ -6,8 +6,8 @@ point is the fixed point of
 
     T_c → η(T_c), α_p(T_c) → friction torque M(η) → heat M·ω − F_a·v → steady field → T_c,
 
-with T_c the mean of the nut and screw temperatures at the nut, solved by under-relaxed
-fixed-point iteration until the computed T_c moves by less than 0.01 K (theory manual,
+with T_c the mean of the nut and screw temperatures at the nut, solved by fixed-point
+iteration (damped whenever the residual does not shrink) to a residual of 0.01 K (theory manual,
 *Thermal* and *Lubrication*). A case without a named lubricant keeps its ``[medium]``
 viscosity at every temperature.
 """
@@ -42,8 +42,6 @@ MAX_ITERATIONS = 60
 NUT_WARNING_TEMPERATURE = 333.15
 """Nut temperature above which the result warns [K] (60 °C; nuts on machine axes run 5–30 K
 above ambient)."""
-RELAXATION = 0.6
-"""Share of the new temperature taken at each iteration (damps the viscosity feedback)."""
 
 
 @dataclass(frozen=True)
@@ -147,22 +145,25 @@ def operating_point(
     base = with_overrides(case, {"operating.speed": omega, "operating.axial_load": load})
     law = _viscosity_law(base)
     ambient = base.thermal.ambient_temperature if base.thermal is not None else 293.15
-    start = ambient if start_temperature is None else float(start_temperature)
-    contact, previous, change, iterations = start, math.inf, math.inf, 0
+    contact = ambient if start_temperature is None else float(start_temperature)
+    relaxation, residual, iterations = 1.0, math.inf, 0
     with recorded_warnings() as messages:
-        while change > TOLERANCE:
+        while True:
             if iterations == MAX_ITERATIONS:
-                raise ConvergenceError("coupled operating point", iterations, change, TOLERANCE)
+                raise ConvergenceError("coupled operating point", iterations, residual, TOLERANCE)
             iterations += 1
             eta, _ = law(contact)
             friction = friction_torque(base, viscosity=eta)
             overrides = _heat_overrides(friction.heat, friction.heat_to_screw, omega)
             field = thermal_field(with_overrides(base, overrides), model, transient=False)
             nut, screw = _nut_and_screw(field)
-            new = 0.5 * (nut + screw)
-            change = abs(new - previous)  # the answer no longer moves
-            previous = new
-            contact += RELAXATION * (new - contact)
+            new = 0.5 * (nut + screw) - contact  # the fixed point's residual T(T_c) − T_c
+            if abs(new) <= TOLERANCE:
+                break
+            if abs(new) >= residual:  # not contracting: damp the update
+                relaxation *= 0.5
+            residual = abs(new)
+            contact += relaxation * new
     eta, alpha = law(contact)
     params = ScrewParameters.from_case(base)
     balls = dataclasses.replace(ball_model(base), viscosity=eta, pressure_viscosity=alpha)
