@@ -37,6 +37,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_tcr.py
 	$(PY) benchmarks/bench_thermal.py
 	$(PY) benchmarks/bench_wear.py
+	$(PY) benchmarks/bench_operating_point.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
