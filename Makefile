@@ -19,6 +19,8 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew tcr examples/gao2019_tcr.toml --out $(DEMO)/tcr
 	$(VENV)/bin/ballscrew sweep examples/sweeps/fig13_tcr_vs_axial_load.toml --out $(DEMO)/fig13
 	$(VENV)/bin/ballscrew thermal examples/gao2019_tcr.toml --out $(DEMO)/thermal
+	$(VENV)/bin/ballscrew operating-point examples/gao2019_tcr.toml --speed "1500 rpm" \
+		--axial-load "2 kN" --out $(DEMO)/operating-point
 	$(VENV)/bin/ballscrew kinematics examples/wear_step_stress.toml --out $(DEMO)/kinematics
 	$(VENV)/bin/ballscrew wear examples/wear_step_stress.toml --out $(DEMO)/wear
 	$(VENV)/bin/ballscrew surface examples/profiles/synthetic_wm_D1.59_G9e-10.sdf --out $(DEMO)/surface
