@@ -39,7 +39,7 @@ def test_moving_fraction_is_stroke_time_over_stroke_and_dwell_time():
 
 
 def test_no_duty_is_an_empty_schedule(gao_case_path):
-    assert duty_schedule(ballscrew.load_case(gao_case_path)) == ()
+    assert duty_schedule(ballscrew.load_case(gao_case_path, {"duty": []})) == ()
 
 
 @pytest.mark.parametrize(

@@ -70,6 +70,12 @@ for _analysis in (
         key_figure="temperature_map.png",
     ),
     Analysis(
+        "duty",
+        "temperatures and thermal elongation over the [[duty]] cycle",
+        headlines=("peak_elongation", "final_elongation", "peak_temperature"),
+        key_figure="duty_day.png",
+    ),
+    Analysis(
         "kinematics",
         "ball speeds, spins, loads, film, asperity share and drag torque",
         headlines=(

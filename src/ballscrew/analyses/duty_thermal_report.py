@@ -1,0 +1,137 @@
+"""What the duty-cycle run shows: elongation and temperatures over the day, per segment."""
+
+from __future__ import annotations
+
+from functools import partial
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+
+from ballscrew.analyses.result import Figure, Section, Table, quantity
+from ballscrew.plotting import plain
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.duty_thermal import DutyThermal
+
+CELSIUS = 273.15
+
+
+def summary(result: DutyThermal) -> dict[str, Any]:
+    """Peak and final elongation and temperatures, the heat of each segment, the balance."""
+    return {
+        "case": result.case.name,
+        "model": result.model,
+        "duration": quantity(result.time[-1], "s"),
+        "peak_elongation": quantity(float(result.elongation.max()), "m"),
+        "final_elongation": quantity(float(result.elongation[-1]), "m"),
+        "peak_temperature": quantity(float(result.max_temperature.max()), "K"),
+        "final_temperature": quantity(float(result.max_temperature[-1]), "K"),
+        "segment_heat": [quantity(q, "W") for q in result.segment_heat],
+        "heat_in": quantity(result.heat_in, "J"),
+        "heat_balance_error": quantity(result.heat_balance_error, ""),
+    }
+
+
+def fields(result: DutyThermal) -> xr.Dataset:
+    """The time histories with units."""
+    return xr.Dataset(
+        {
+            "max_temperature": ("time", result.max_temperature, {"units": "K"}),
+            "elongation": ("time", result.elongation, {"units": "m"}),
+            "sensor_temperature": (("time", "sensor"), result.sensors, {"units": "K"}),
+        },
+        coords={
+            "time": ("time", result.time, {"units": "s"}),
+            "sensor": ("sensor", list(result.sensor_names)),
+        },
+        attrs={"case": result.case.name, "model": result.model},
+    )
+
+
+def day_plot(result: DutyThermal, path: Path) -> Path:
+    """Elongation and temperatures against time, the moving segments shaded."""
+    hours = result.time / 3600.0
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.5, 5.5), sharex=True, layout="constrained")
+    for ax in (top, bottom):
+        for phase in result.phases:
+            if phase.mean_speed > 0.0:
+                ax.axvspan(phase.start / 3600.0, phase.end / 3600.0, color="0.93", lw=0)
+    top.plot(hours, 1e6 * result.elongation, color="C0")
+    top.set_ylabel("thermal elongation [µm]")
+    bottom.plot(hours, result.max_temperature - CELSIUS, color="C3", label="largest")
+    for k, name in enumerate(result.sensor_names):
+        bottom.plot(hours, result.sensors[:, k] - CELSIUS, lw=1, label=plain(name))
+    bottom.set_ylabel("temperature [°C]")
+    bottom.set_xlabel("time [h] (shaded: the screw turns)")
+    bottom.legend(fontsize=8, loc="lower right")
+    fig.suptitle(plain(f"{result.case.name}: duty cycle ({result.model} model)"), fontsize=10)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def figures(result: DutyThermal) -> list[Figure]:
+    """The day's elongation and temperatures."""
+    return [
+        Figure(
+            "duty_day",
+            "Thermal elongation and temperatures over the duty cycle.",
+            partial(day_plot, result),
+        )
+    ]
+
+
+def sections(result: DutyThermal) -> list[Section]:
+    """The segments with their mean heat, then the day's peaks."""
+    rows = tuple(
+        (
+            k + 1,
+            segment.speed * 30.0 / np.pi,
+            segment.axial_load,
+            1e3 * segment.stroke,
+            segment.dwell,
+            segment.duration / 60.0,
+            heat,
+        )
+        for k, (segment, heat) in enumerate(zip(result.case.duty, result.segment_heat, strict=True))
+    )
+    peaks = (
+        ("peak elongation [µm]", 1e6 * float(result.elongation.max())),
+        ("final elongation [µm]", 1e6 * float(result.elongation[-1])),
+        ("peak temperature [°C]", float(result.max_temperature.max()) - CELSIUS),
+        ("heat balance error [-]", result.heat_balance_error),
+    )
+    return [
+        Section(
+            "Duty cycle",
+            paragraphs=(
+                f"{len(result.case.duty)} segments run {result.case.duty_repeat} times; each at "
+                "its steady coupled operating point, averaged over strokes and dwells.",
+            ),
+            tables=(
+                Table(
+                    (
+                        "segment",
+                        "speed [rpm]",
+                        "axial load [N]",
+                        "stroke [mm]",
+                        "dwell [s]",
+                        "duration [min]",
+                        "mean friction heat [W]",
+                    ),
+                    rows,
+                ),
+            ),
+        ),
+        Section(
+            "Temperatures and elongation over the day",
+            tables=(Table(("quantity", "value"), peaks),),
+            figures=("duty_day",),
+        ),
+    ]
