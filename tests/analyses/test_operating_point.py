@@ -110,3 +110,13 @@ def test_bad_speed_is_one_line(tmp_path):
     )  # fmt: skip
     assert result.exit_code == 2 and result.output.startswith("error: --speed")
     assert not (tmp_path / "x").exists()
+
+
+def test_speed_limits_and_boundary_lubrication_are_warnings(case):
+    fast = operating_point(case, speed=3000 * RPM)  # d·n = 40 mm × 3000 rpm = 120 000
+    assert any("d·n" in w for w in fast.warnings)
+    thin = ballscrew.case.with_overrides(
+        case, {"friction.model": "ball_model", "medium.viscosity": "1 mPa*s"}
+    )
+    slow = operating_point(thin, speed=30 * RPM)
+    assert any("boundary lubrication" in w for w in slow.warnings)

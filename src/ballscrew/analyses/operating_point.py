@@ -25,12 +25,14 @@ import numpy as np
 
 from ballscrew.analyses import operating_point_report
 from ballscrew.analyses.friction import friction_torque
-from ballscrew.analyses.kinematics import ball_model
+from ballscrew.analyses.kinematics import ball_model, speed_limit_messages
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import ThermalField, thermal_field
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
+from ballscrew.friction.torque import FrictionTorque
+from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.wear.step import entrainment_speed
 
@@ -98,6 +100,34 @@ def _viscosity_law(case: Case) -> Callable[[float], tuple[float, float | None]]:
         return law
     constant = (params.lubrication.viscosity or math.nan, params.lubrication.pressure_viscosity)
     return lambda _: constant
+
+
+def _warnings(case: Case, omega: float, nut: float, friction: FrictionTorque) -> list[str]:
+    """What the user must know about an operating point."""
+    out = speed_limit_messages(case, omega) if omega > 0.0 else []
+    if nut > NUT_WARNING_TEMPERATURE:
+        out.append(
+            f"the nut runs at {nut - 273.15:.0f} °C, above "
+            f"{NUT_WARNING_TEMPERATURE - 273.15:.0f} °C: check its cooling and mounting"
+        )
+    film = friction.film_parameter
+    if film is not None and film < 1.0:
+        out.append(
+            f"film parameter Λ = {film:.2g} < 1 at the screw contact: boundary lubrication, "
+            "outside the range of the EHL film and traction models"
+        )
+    if friction.model != "catalogue" and omega > 0.0:
+        params = ScrewParameters.from_case(case)
+        g = params.geometry
+        catalogue = preload_drag_torque(params.preload, g.lead, g.lead_angle)
+        preload_part = friction.total - friction.parts.get("work", 0.0)
+        if not 0.5 * catalogue <= preload_part <= 2.0 * catalogue:
+            out.append(
+                f"the {friction.model} friction torque without the work on the load, "
+                f"{preload_part:.3g} N·m, is outside 0.5–2 × the catalogue preload torque "
+                f"{catalogue:.3g} N·m"
+            )
+    return out
 
 
 def _heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]:
@@ -168,11 +198,7 @@ def operating_point(
     params = ScrewParameters.from_case(base)
     balls = dataclasses.replace(ball_model(base), viscosity=eta, pressure_viscosity=alpha)
     film = balls.film(params.loaded_nut.ball_load, entrainment_speed(params.geometry, omega))
-    if nut > NUT_WARNING_TEMPERATURE:
-        messages.append(
-            f"the nut runs at {nut - 273.15:.0f} °C, above "
-            f"{NUT_WARNING_TEMPERATURE - 273.15:.0f} °C: check its cooling and mounting"
-        )
+    messages += _warnings(base, omega, nut, friction)
     return OperatingPoint(
         case=base,
         speed=omega,
