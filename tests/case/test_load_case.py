@@ -114,8 +114,11 @@ def test_missing_key_names_the_field(tmp_path, gao_case_path):
 
 def test_toml_syntax_error_gives_the_line(tmp_path, gao_case_path):
     path = tmp_path / "broken.toml"
-    path.write_text(gao_case_path.read_text().replace('lead = "10 mm"', 'lead = "10 mm'))
-    with pytest.raises(CaseError, match=r"TOML syntax error: .*line 13"):
+    text = gao_case_path.read_text()
+    path.write_text(text.replace('lead = "10 mm"', 'lead = "10 mm'))
+    lines = text.splitlines()
+    number = next(k for k, line in enumerate(lines, 1) if line.startswith('lead = "10 mm"'))
+    with pytest.raises(CaseError, match=rf"TOML syntax error: .*line {number}\b"):
         load_case(path)
 
 
