@@ -23,6 +23,7 @@ from ballscrew import (
     thermal,
     units,
 )
+from ballscrew.analyses.design_check import design_check
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
@@ -36,6 +37,7 @@ __all__ = [
     "case",
     "contact",
     "contact_resistance",
+    "design_check",
     "drag_torque",
     "errors",
     "fractal",

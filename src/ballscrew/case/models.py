@@ -14,6 +14,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
@@ -201,6 +202,7 @@ class Case(Model):
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
+    design: DesignSpec | None = None
     duty: list[DutySegment] = Field(
         default_factory=list,
         max_length=10_000,
