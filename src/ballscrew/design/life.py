@@ -110,9 +110,9 @@ def preloaded_half_loads(axial_load: ArrayLike, preload: float) -> tuple[NDArray
 
 def combined_life(lives: Sequence[float]) -> float:
     """Life of a nut of several loaded halves, (Σ L_i^(−10/9))^(−9/10) (HIWIN F 3.12)."""
-    terms = [nonnegative("life", life) for life in lives]
-    if not terms or min(terms) <= 0.0:
-        raise InputError("lives", list(lives), "one or more lives > 0 rev")
+    terms = [float(life) for life in lives]
+    if not terms or not all(t > 0.0 for t in terms):  # inf (an unloaded half) is allowed
+        raise InputError("lives", list(lives), "one or more lives > 0 rev (inf: unloaded)")
     inverse = sum(0.0 if math.isinf(t) else t ** (-10.0 / 9.0) for t in terms)
     return math.inf if inverse == 0.0 else inverse ** (-9.0 / 10.0)
 
