@@ -73,9 +73,7 @@ def test_mean_load_with_sign_change() -> None:
 def test_buckling_constant_form_and_euler_form(d_root, length, mounting, expected) -> None:
     maker = design.maker_buckling_load(d_root * MM, length * MM, mounting, "THK")
     assert printed(maker, 3) == expected
-    euler = design.BUCKLING_SAFETY * design.buckling_load(
-        d_root * MM, length * MM, E_THK, mounting
-    )
+    euler = design.BUCKLING_SAFETY * design.buckling_load(d_root * MM, length * MM, E_THK, mounting)
     assert euler == pytest.approx(maker, rel=2.5e-3)  # THK rounds η₁π³E/64·0.5 = 19.96 to 20
 
 

@@ -148,6 +148,8 @@ def _life_figure(result: DesignCheck, path: Path) -> Path:
     for k, f in enumerate(result.equivalent_loads):
         if f > 0:
             ax.axvline(f, ls="--", c=f"C{k + 2}", lw=0.8, label=f"F_bm, nut half {k + 1}")
+    if result.rating_life is not None and math.isfinite(result.rating_life):
+        ax.axhline(result.rating_life, ls=":", c="k", lw=0.8, label="rating life, both halves")
     ax.set_xlabel("axial load [N]")
     ax.set_ylabel("rating life [rev]")
     ax.legend(fontsize=8)
