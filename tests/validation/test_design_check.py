@@ -88,7 +88,6 @@ def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
     row = next(r for r in _hiwin_rows(dataset) if r["model"] == model)
     validation.check(
         "hiwin_fdc_rigidity_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
-        +("_" + model.split()[-1][:-1] if "(" in model else ""),
         kind="comparison with a maker's calculation",
         model="Hertz nut stiffness (nut_stiffness, 2 halves at 0.1 C_a preload)",
         source=HIWIN_SOURCE,
