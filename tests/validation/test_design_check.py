@@ -41,9 +41,12 @@ RIGIDITY_TOLERANCE = (
 )
 
 
-def _hiwin_rows(dataset) -> list[dict[str, Any]]:
-    data = dataset("design_check", "hiwin_fdc_rigidity")
-    return [dict(zip(data["columns"], row, strict=True)) for row in data["rows"]]
+def _catalogue_row(dataset, key: str, model: str) -> tuple[dict[str, Any], dict[str, Any]]:
+    """(the row of ``model`` as a dict, the reference: the entry's citation with that row)."""
+    data = dataset("design_check", key)
+    rows = (dict(zip(data["columns"], r, strict=True)) for r in data["rows"])
+    row = next(r for r in rows if r["model"] == model)
+    return row, {k: v for k, v in data.items() if k not in ("rows", "columns")} | {"row": row}
 
 
 def _nut_rigidity(base_raw: dict[str, Any], row: dict[str, Any]) -> float:
@@ -85,13 +88,13 @@ HIWIN_MODELS = [
 
 @pytest.mark.parametrize("model", HIWIN_MODELS)
 def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
-    row = next(r for r in _hiwin_rows(dataset) if r["model"] == model)
+    row, reference = _catalogue_row(dataset, "hiwin_fdc_rigidity", model)
     validation.check(
         "hiwin_fdc_rigidity_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
         kind="comparison with a maker's calculation",
         model="Hertz nut stiffness (nut_stiffness, 2 halves at 0.1 C_a preload)",
         source=HIWIN_SOURCE,
-        reference=row,
+        reference=reference,
         quantity=f"axial rigidity of the double nut {model}",
         unit="N/µm",
         measured=row["rigidity_N_per_um"],
@@ -105,13 +108,12 @@ def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
 
 
 def test_thk_sbn_rigidity(validation, dataset) -> None:
-    data = dataset("design_check", "thk_sbn_rigidity")
-    row = dict(zip(data["columns"], data["rows"][0], strict=True))
+    row, reference = _catalogue_row(dataset, "thk_sbn_rigidity", "SBN3210-7")
     validation.not_compared(
         "thk_sbn_rigidity_SBN3210-7",
         model="Hertz nut stiffness (nut_stiffness)",
         source="THK General Catalog, B-576 (model SBN)",
-        reference=row,
+        reference=reference,
         quantity="axial rigidity of SBN3210-7 (preload 0.1 C_a, axial load 3 × preload)",
         unit="N/µm",
         measured=row["rigidity_N_per_um"],
