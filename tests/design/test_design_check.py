@@ -72,7 +72,7 @@ def test_duty_spectrum_weights_by_revolutions() -> None:
 @pytest.mark.parametrize(
     ("overrides", "operating", "warning"),
     [
-        ({"dynamic_load_rating": "10 kN"}, {}, "preload vs its largest share"),
+        ({"dynamic_load_rating": "10 kN", "required_life": "1 h"}, {}, "preload vs its largest"),
         ({"unsupported_length": "4 m"}, {}, "speed vs 0.8 × critical speed"),
         ({"static_load_rating": "2.5 kN"}, {}, "f_s vs its minimum"),
         ({}, {"speed": "3000 rpm"}, "d·n vs its limit"),
