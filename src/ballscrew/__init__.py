@@ -23,6 +23,7 @@ from ballscrew import (
     thermal,
     units,
 )
+from ballscrew.analyses.design_check import design_check
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
 from ballscrew.analyses.operating_point import operating_point
@@ -38,6 +39,7 @@ __all__ = [
     "case",
     "contact",
     "contact_resistance",
+    "design_check",
     "drag_torque",
     "errors",
     "fractal",

@@ -46,6 +46,7 @@ SI_UNITS: dict[str, str] = {
     "kinematic_viscosity": "m^2/s",
     "power": "W",
     "torque": "N*m",
+    "stiffness": "N/m",
     "dimensionless": "",
 }
 

@@ -6,6 +6,7 @@ Adding an analysis is one composer module, one entry here and one command module
 from __future__ import annotations
 
 from ballscrew.analyses.ball_contact import contact_scalars
+from ballscrew.analyses.design_check import design_scalars
 from ballscrew.analyses.operating_point import operating_point_scalars
 from ballscrew.analyses.result import ANALYSES, Analysis
 from ballscrew.analyses.screw_tcr import tcr_scalars
@@ -74,6 +75,18 @@ for _analysis in (
         "temperatures and thermal elongation over the [[duty]] cycle",
         headlines=("peak_elongation", "final_elongation", "peak_temperature"),
         key_figure="duty_day.png",
+    ),
+    Analysis(
+        "check",
+        "design check: life, static safety, speed, buckling and stiffness with margins",
+        scalars=design_scalars,
+        headlines=(
+            "rating_life",
+            "static_safety_factor",
+            "axial_stiffness",
+            "margins.speed.ratio",
+        ),
+        key_figure="stiffness_curve.png",
     ),
     Analysis(
         "kinematics",

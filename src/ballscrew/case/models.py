@@ -14,6 +14,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec
@@ -203,6 +204,7 @@ class Case(Model):
     kinematics: KinematicsSpec = KinematicsSpec()
     friction: FrictionSpec = FrictionSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
+    design: DesignSpec | None = None
     duty: list[DutySegment] = Field(
         default_factory=list,
         max_length=10_000,

@@ -1,0 +1,389 @@
+"""The design check an engineer runs first: life, static safety, speed, buckling, stiffness.
+
+case → :class:`ScrewParameters` and ``[design]`` → the load spectrum (the ``[[duty]]`` segments,
+weighted by their revolutions, else the ``[operating]`` point) → the makers' formulas of
+:mod:`ballscrew.design` and the Hertz model of the preloaded nut → values with margins.
+
+The load ratings C_a and C_0a are catalogue inputs: computing them from the geometry needs
+ISO 3408-5, which is not implemented.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+from types import ModuleType
+from typing import ClassVar, Literal
+
+import numpy as np
+
+from ballscrew import design
+from ballscrew.analyses import design_check_report
+from ballscrew.analyses.duty import moving_fraction
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.case import Case
+from ballscrew.case.design_spec import DesignSpec
+from ballscrew.contact import hertz
+from ballscrew.errors import InputError
+from ballscrew.geometry import raceway_curvature
+from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
+from ballscrew.loads import nut_axial_compliance, preload_drag_torque
+
+__all__ = [
+    "AMBER_BAND",
+    "DesignCheck",
+    "DesignWarning",
+    "LoadSpectrum",
+    "Margin",
+    "design_check",
+    "design_scalars",
+    "hertz_nut_compliance",
+    "load_spectrum",
+]
+
+AMBER_BAND = 0.25
+"""A margin is amber when the capacity exceeds the demand by less than this share."""
+
+PRELOAD_SHARE = {1: 0.05, 2: 0.10}
+"""Largest preload / C_a by nut count (HIWIN §3.6.2; THK A-687: 0.1 C_a)."""
+
+DRAG_TORQUE_BAND = 0.30
+"""± share of the real preload torque about the formula (THK A-689 worked example)."""
+
+Status = Literal["green", "amber", "red"]
+
+
+class DesignWarning(UserWarning):
+    """A design value outside the makers' limits."""
+
+
+@dataclass(frozen=True)
+class Margin:
+    """One design value against its allowed value."""
+
+    name: str
+    label: str
+    demand: float
+    """What the case asks for (load, speed, preload, required life), SI."""
+    capacity: float
+    """What the screw allows, SI."""
+    unit: str
+
+    @property
+    def ratio(self) -> float:
+        """capacity / demand (inf without demand)."""
+        return math.inf if self.demand == 0.0 else self.capacity / self.demand
+
+    @property
+    def status(self) -> Status:
+        """green: ≥ (1 + AMBER_BAND) × the demand; amber: ≥ the demand; red: below it."""
+        if self.ratio >= 1.0 + AMBER_BAND:
+            return "green"
+        return "amber" if self.ratio >= 1.0 else "red"
+
+
+@dataclass(frozen=True)
+class LoadSpectrum:
+    """Axial load levels and the revolutions share of each (sum 1)."""
+
+    loads: tuple[float, ...]
+    """Axial load F_a of each level [N] (≥ 0: it loads nut 1)."""
+    shares: tuple[float, ...]
+    """Share of the screw revolutions at each level [-]."""
+    mean_speed: float
+    """Time-mean screw speed over the cycle [rad/s] (0: no running time known)."""
+    max_speed: float
+    """Highest screw speed [rad/s]."""
+    source: str
+    """'duty' or 'operating'."""
+
+
+@dataclass(frozen=True)
+class DesignCheck(Presented):
+    """Design values of the screw with their margins (SI)."""
+
+    case: Case
+    spectrum: LoadSpectrum
+    dynamic_load_rating: float | None
+    """C_a [N] (catalogue; None = not given)."""
+    static_load_rating: float | None
+    """C_0a [N] (catalogue; None = not given)."""
+    equivalent_loads: tuple[float, float]
+    """Cube-mean equivalent loads F_bm of nut half 1 and 2 [N] (half 2 = 0 for a single nut)."""
+    rating_life: float | None
+    """L10 (× a₁) in revolutions [-]; None without C_a."""
+    life_hours: float | None
+    """Rating life in hours of the cycle [h]; None without C_a or without running time."""
+    life_travel: float | None
+    """Rating life as travel [m]."""
+    static_safety_factor: float | None
+    """f_s = C_0a / F_a,max [-]; None without C_0a."""
+    root_diameter: float
+    """d_r [m]."""
+    critical_speed: float
+    """First whirling speed of the shaft, Euler beam [rad/s] (the makers allow 0.8×)."""
+    buckling_load: float
+    """Euler buckling load of the shaft [N] (the makers allow 0.5×)."""
+    permissible_tension: float
+    """σ_perm A of the shaft [N]."""
+    dn: float
+    """d·n at the highest speed [mm·rpm]."""
+    compliance: float
+    """Hertz nut compliance C, δ = C F^(2/3) per nut half [m N^(-2/3)]."""
+    nut_stiffness: float
+    """Hertz contacts of the preloaded nut at the case's preload and axial load [N/m]."""
+    catalogue_nut_stiffness: float | None
+    """0.8 K (F_p/0.1 C_a)^(1/3) from the catalogue rigidity [N/m]; None without it."""
+    shaft_stiffness: float
+    """Shaft between the fixed bearing and the nut [N/m]."""
+    axial_stiffness: float
+    """Nut contacts in series with the shaft [N/m]."""
+    drive_stiffness: float | None
+    """Axial stiffness with the support bearings in series [N/m]; None without them."""
+    preload_drag_torque: float
+    """Catalogue preload drag torque [N·m]."""
+    thermal_elongation: float | None
+    """Free elongation of the unsupported length at the temperature rise [m]."""
+    thermal_pretension: float | None
+    """Pretension E A α ΔT that takes it up [N]."""
+    margins: tuple[Margin, ...]
+    warnings: tuple[str, ...] = ()
+
+    analysis: ClassVar[str] = "check"
+    presentation: ClassVar[ModuleType] = design_check_report
+
+    @property
+    def title(self) -> str:
+        return f"Design check: {self.case.name}"
+
+    @property
+    def spec(self) -> DesignSpec:
+        """The case's ``[design]`` section."""
+        return self.case.design  # type: ignore[return-value]
+
+
+def load_spectrum(case: Case) -> LoadSpectrum:
+    """Load levels weighted by revolutions: the ``[[duty]]`` segments, else ``[operating]``."""
+    op = case.operating
+    if not case.duty:
+        speed = op.speed
+        return LoadSpectrum((op.axial_load,), (1.0,), speed, speed, "operating")
+    lead = case.screw.lead
+    revs, loads, time = [], [], 0.0
+    for seg in case.duty:
+        fraction = moving_fraction(seg.speed, lead, seg.stroke, seg.dwell)
+        revs.append(fraction * seg.speed * seg.duration)
+        loads.append(seg.axial_load)
+        time += seg.duration
+    total = sum(revs)
+    if not total > 0.0:
+        raise InputError(
+            "duty", "no segment turns the screw", "one [[duty]] segment with speed > 0"
+        )
+    return LoadSpectrum(
+        tuple(loads),
+        tuple(r / total for r in revs),
+        total / time,
+        max(seg.speed for seg in case.duty),
+        "duty",
+    )
+
+
+def hertz_nut_compliance(params: ScrewParameters) -> float:
+    """Compliance C of one nut half, δ = C F^(2/3), from the Hertz constants of both contacts."""
+    geometry = params.geometry
+    k = [
+        hertz(c.rx, c.ry, params.contact_modulus(side), 1.0).approach
+        for side, c in ((s, raceway_curvature(geometry, s)) for s in ("screw", "nut"))
+    ]
+    return nut_axial_compliance(
+        k[0], k[1], params.balls_per_nut, geometry.contact_angle, geometry.lead_angle
+    )
+
+
+def _equivalent_loads(spectrum: LoadSpectrum, preload: float, nuts: int) -> tuple[float, float]:
+    loads = np.asarray(spectrum.loads)
+    if nuts == 2:
+        halves = design.preloaded_half_loads(loads, preload)
+    elif preload > 0.0:
+        halves = (design.preloaded_half_loads(loads, preload)[0], np.zeros_like(loads))
+    else:
+        halves = (loads, np.zeros_like(loads))
+    return tuple(design.cube_mean_loads(h, spectrum.shares)[0] for h in halves)  # type: ignore[return-value]
+
+
+def _life(spec: DesignSpec, equivalent: tuple[float, float]) -> float | None:
+    if spec.dynamic_load_rating is None:
+        return None
+    lives = [
+        float(design.rating_life(spec.dynamic_load_rating, f, spec.load_factor, spec.reliability))
+        for f in equivalent
+        if f > 0.0
+    ]
+    return design.combined_life(lives) if lives else math.inf
+
+
+def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
+    s = check["spectrum"]
+    f_max = max(s.loads)
+    out = [
+        Margin(
+            "speed",
+            "speed vs 0.8 × critical speed",
+            s.max_speed,
+            design.SPEED_SAFETY * check["critical_speed"],
+            "rad/s",
+        ),
+        Margin("dn", "d·n vs its limit", check["dn"], spec.dn_limit, "mm rpm"),
+        Margin(
+            "buckling",
+            "axial load vs 0.5 × buckling load",
+            f_max,
+            design.BUCKLING_SAFETY * check["buckling_load"],
+            "N",
+        ),
+        Margin(
+            "tension",
+            "axial load vs permissible tension/compression",
+            f_max,
+            check["permissible_tension"],
+            "N",
+        ),
+    ]
+    if check["static_safety_factor"] is not None:
+        out.append(
+            Margin(
+                "static_safety",
+                "f_s vs its minimum",
+                spec.min_static_safety,
+                check["static_safety_factor"],
+                "",
+            )
+        )
+    if spec.dynamic_load_rating is not None:
+        share = spec.max_preload_share or PRELOAD_SHARE[case.screw.nuts]
+        out.append(
+            Margin(
+                "preload",
+                "preload vs its largest share of C_a",
+                case.operating.preload,
+                share * spec.dynamic_load_rating,
+                "N",
+            )
+        )
+        if spec.required_life is not None and check["life_hours"] is not None:
+            out.append(
+                Margin(
+                    "life",
+                    "required life vs rating life",
+                    spec.required_life / 3600.0,
+                    check["life_hours"],
+                    "h",
+                )
+            )
+    return tuple(out)
+
+
+def _warn(margins: tuple[Margin, ...], spec: DesignSpec) -> None:
+    if spec.dynamic_load_rating is None or spec.static_load_rating is None:
+        warnings.warn(
+            "design.dynamic_load_rating / static_load_rating not given: no rating life or static "
+            "safety (computing them from the geometry needs ISO 3408-5, not implemented)",
+            DesignWarning,
+            stacklevel=3,
+        )
+    for m in margins:
+        if m.status == "red":
+            warnings.warn(
+                f"{m.label}: {m.demand:.4g} against {m.capacity:.4g} {m.unit}".strip(),
+                DesignWarning,
+                stacklevel=3,
+            )
+
+
+def design_check(case: Case) -> DesignCheck:
+    """Every design value of the case's screw with its margin (needs ``[design]``)."""
+    spec = case.design
+    if spec is None:
+        raise InputError("design", None, "a [design] section (at least unsupported_length)")
+    params = ScrewParameters.from_case(case)
+    geometry, screw = params.geometry, params.screw
+    spectrum = load_spectrum(case)
+    preload, nuts = case.operating.preload, case.screw.nuts
+    root = spec.root_diameter or groove_root_diameter(geometry)
+    length = spec.unsupported_length
+    equivalent = _equivalent_loads(spectrum, preload, nuts)
+    life = _life(spec, equivalent)
+    running = life is not None and math.isfinite(life) and spectrum.mean_speed > 0.0
+    compliance = hertz_nut_compliance(params)
+    nut_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
+    shaft_k = design.shaft_axial_stiffness(
+        root, spec.nut_distance or length, screw.youngs_modulus, spec.mounting
+    )
+    axial_k = design.series_stiffness(nut_k, shaft_k)
+    catalogue_k = None
+    if spec.catalogue_rigidity is not None and spec.dynamic_load_rating is not None and preload:
+        catalogue_k = design.catalogue_nut_rigidity(
+            spec.catalogue_rigidity, preload, 0.1 * spec.dynamic_load_rating
+        )
+    rise = spec.temperature_rise
+    values = {
+        "spectrum": spectrum,
+        "dynamic_load_rating": spec.dynamic_load_rating,
+        "static_load_rating": spec.static_load_rating,
+        "equivalent_loads": equivalent,
+        "rating_life": life,
+        "life_hours": design.life_hours(life, spectrum.mean_speed) if running else None,
+        "life_travel": design.life_travel(life, geometry.lead) if life is not None else None,
+        "static_safety_factor": None
+        if spec.static_load_rating is None
+        else design.static_safety_factor(spec.static_load_rating, max(spectrum.loads)),
+        "root_diameter": root,
+        "critical_speed": critical_speed(
+            root, length, screw.youngs_modulus, screw.density, spec.mounting
+        ),
+        "buckling_load": design.buckling_load(root, length, screw.youngs_modulus, spec.mounting),
+        "permissible_tension": design.permissible_tension(root),
+        "dn": dn_value(geometry.pitch_diameter, spectrum.max_speed),
+        "compliance": compliance,
+        "nut_stiffness": nut_k,
+        "catalogue_nut_stiffness": catalogue_k,
+        "shaft_stiffness": shaft_k,
+        "axial_stiffness": axial_k,
+        "drive_stiffness": None
+        if spec.bearing_stiffness is None
+        else design.series_stiffness(axial_k, spec.bearing_stiffness),
+        "preload_drag_torque": preload_drag_torque(preload, geometry.lead, geometry.lead_angle),
+        "thermal_elongation": None
+        if rise is None
+        else design.thermal_elongation(length, screw.thermal_expansion, rise),
+        "thermal_pretension": None
+        if rise is None
+        else design.thermal_pretension(root, screw.youngs_modulus, screw.thermal_expansion, rise),
+    }
+    margins = _margins(values, spec, case)
+    with recorded_warnings() as messages:
+        _warn(margins, spec)
+    return DesignCheck(case=case, margins=margins, warnings=tuple(messages), **values)
+
+
+def design_scalars(case: Case) -> dict[str, tuple[float, str]]:
+    """Sweepable scalars of :func:`design_check` (those the case defines), with units."""
+    result = design_check(case)
+    names = {
+        "rating_life": "",
+        "life_hours": "h",
+        "static_safety_factor": "",
+        "critical_speed": "rad/s",
+        "buckling_load": "N",
+        "axial_stiffness": "N/m",
+        "nut_stiffness": "N/m",
+        "preload_drag_torque": "N*m",
+    }
+    return {
+        name: (float(getattr(result, name)), unit)
+        for name, unit in names.items()
+        if getattr(result, name) is not None
+    }

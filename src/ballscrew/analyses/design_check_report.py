@@ -1,0 +1,228 @@
+"""What the design check shows: design values with margins, the stiffness curve, the life."""
+
+from __future__ import annotations
+
+import math
+from functools import partial
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+
+from ballscrew import design
+from ballscrew.analyses.result import Figure, Section, Table
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.design_check import DesignCheck
+
+__all__ = ["fields", "figures", "sections", "stiffness_curve", "summary"]
+
+_CURVE_POINTS = 121
+
+# name → (unit, label, display scale, display unit)
+_VALUES: dict[str, tuple[str, str, float, str]] = {
+    "dynamic_load_rating": ("N", "dynamic load rating C_a", 1e-3, "kN"),
+    "static_load_rating": ("N", "static load rating C_0a", 1e-3, "kN"),
+    "rating_life": ("", "rating life L", 1.0, "rev"),
+    "life_hours": ("h", "rating life L_h", 1.0, "h"),
+    "life_travel": ("m", "rating life as travel", 1e-3, "km"),
+    "static_safety_factor": ("", "static safety factor f_s", 1.0, "-"),
+    "critical_speed": ("rad/s", "critical speed (Euler beam)", 60.0 / (2.0 * math.pi), "rpm"),
+    "buckling_load": ("N", "buckling load (Euler)", 1e-3, "kN"),
+    "permissible_tension": ("N", "permissible tension/compression", 1e-3, "kN"),
+    "dn": ("", "d·n at the highest speed", 1.0, "mm rpm"),
+    "nut_stiffness": ("N/m", "nut stiffness, Hertz contacts", 1e-6, "N/µm"),
+    "catalogue_nut_stiffness": ("N/m", "nut stiffness, catalogue 0.8 K", 1e-6, "N/µm"),
+    "shaft_stiffness": ("N/m", "shaft stiffness", 1e-6, "N/µm"),
+    "axial_stiffness": ("N/m", "axial stiffness, nut and shaft", 1e-6, "N/µm"),
+    "drive_stiffness": ("N/m", "drive stiffness with bearings", 1e-6, "N/µm"),
+    "preload_drag_torque": ("N*m", "preload drag torque", 1e3, "N mm"),
+    "thermal_elongation": ("m", "thermal elongation", 1e6, "µm"),
+    "thermal_pretension": ("N", "pretension for the temperature rise", 1e-3, "kN"),
+}
+
+
+def _quantity(number: float | None, unit: str) -> dict[str, Any] | None:
+    if number is None:
+        return None
+    if math.isinf(number):
+        return {"value": None, "unit": unit, "note": "infinite"}
+    return {"value": float(number), "unit": unit}
+
+
+def summary(result: DesignCheck) -> dict[str, Any]:
+    """Design values (SI) and every margin with its status."""
+    values = {name: _quantity(getattr(result, name), unit) for name, (unit, *_) in _VALUES.items()}
+    s = result.spectrum
+    return {
+        "case": result.case.name,
+        **{k: v for k, v in values.items() if v is not None},
+        "equivalent_loads": [_quantity(f, "N") for f in result.equivalent_loads],
+        "load_spectrum": {
+            "source": s.source,
+            "loads": [_quantity(f, "N") for f in s.loads],
+            "shares": list(s.shares),
+            "mean_speed": _quantity(s.mean_speed, "rad/s"),
+            "max_speed": _quantity(s.max_speed, "rad/s"),
+        },
+        "margins": {
+            m.name: {
+                "demand": _quantity(m.demand, m.unit),
+                "capacity": _quantity(m.capacity, m.unit),
+                "ratio": None if math.isinf(m.ratio) else m.ratio,
+                "status": m.status,
+            }
+            for m in result.margins
+        },
+    }
+
+
+def stiffness_curve(result: DesignCheck) -> xr.Dataset:
+    """Nut displacement and stiffness (Hertz contacts) against the axial load, with units."""
+    fp, nuts = result.case.operating.preload, result.case.screw.nuts
+    lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
+    top = max(1.5 * lift_off, 1.2 * max(result.spectrum.loads), 3.0 * fp, 1.0)
+    loads = np.linspace(0.0, top, _CURVE_POINTS)
+    x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
+    k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
+    return xr.Dataset(
+        {
+            "deflection": ("axial_load", x, {"units": "m", "long_name": "nut displacement"}),
+            "stiffness": ("axial_load", k, {"units": "N/m", "long_name": "tangent stiffness"}),
+        },
+        coords={"axial_load": ("axial_load", loads, {"units": "N"})},
+        attrs={"lift_off_load_N": lift_off, "preload_N": fp, "nuts": nuts},
+    )
+
+
+def fields(result: DesignCheck) -> xr.Dataset:
+    """The stiffness curve."""
+    return stiffness_curve(result)
+
+
+def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
+    curve = stiffness_curve(result)
+    loads = curve["axial_load"].values * 1e-3
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
+    axes[0].plot(loads, curve["deflection"].values * 1e6)
+    axes[0].set_ylabel("nut displacement [µm]")
+    axes[1].plot(loads, curve["stiffness"].values * 1e-6)
+    axes[1].set_ylabel("stiffness [N/µm]")
+    for ax in axes:
+        if curve.attrs["lift_off_load_N"] > 0:
+            ax.axvline(
+                curve.attrs["lift_off_load_N"] * 1e-3,
+                ls="--",
+                c="k",
+                lw=0.8,
+                label="lift-off 2^1.5 F_p",
+            )
+        ax.axvline(result.case.operating.axial_load * 1e-3, ls=":", c="C3", label="case")
+        ax.set_xlabel("axial load [kN]")
+        ax.set_ylim(bottom=0)
+    axes[0].legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _life_figure(result: DesignCheck, path: Path) -> Path:
+    spec, s = result.spec, result.spectrum
+    top = max(max(result.equivalent_loads), max(s.loads), 1.0) * 2.0
+    loads = np.linspace(top / 100.0, top, 100)
+    life = design.rating_life(spec.dynamic_load_rating, loads, spec.load_factor, spec.reliability)
+    fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
+    ax.loglog(loads, life, label="L(F) at constant load")
+    ax.scatter(
+        np.maximum(s.loads, top / 100.0),
+        np.interp(s.loads, loads, life),
+        s=20 + 200 * np.asarray(s.shares),
+        c="C1",
+        label="spectrum (size: share)",
+    )
+    for k, f in enumerate(result.equivalent_loads):
+        if f > 0:
+            ax.axvline(f, ls="--", c=f"C{k + 2}", lw=0.8, label=f"F_bm, nut half {k + 1}")
+    if result.rating_life is not None and math.isfinite(result.rating_life):
+        ax.axhline(result.rating_life, ls=":", c="k", lw=0.8, label="rating life, both halves")
+    ax.set_xlabel("axial load [N]")
+    ax.set_ylabel("rating life [rev]")
+    ax.legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def figures(result: DesignCheck) -> list[Figure]:
+    """Stiffness curve with lift-off; rating life against the load spectrum (with C_a)."""
+    out = [
+        Figure(
+            "stiffness_curve",
+            "Nut displacement and stiffness (Hertz contacts) vs axial load; dashed: lift-off.",
+            partial(_stiffness_figure, result),
+        )
+    ]
+    if result.dynamic_load_rating is not None:
+        out.append(
+            Figure(
+                "life_spectrum",
+                "Rating life against the axial load, the spectrum's levels and F_bm.",
+                partial(_life_figure, result),
+            )
+        )
+    return out
+
+
+def _value_rows(result: DesignCheck) -> tuple[tuple[object, ...], ...]:
+    rows = []
+    for name, (_, label, scale, unit) in _VALUES.items():
+        number = getattr(result, name)
+        if number is not None:
+            rows.append((f"{label} [{unit}]", number * scale))
+    return tuple(rows)
+
+
+def sections(result: DesignCheck) -> list[Section]:
+    """Margins (green/amber/red), design values, stiffness curve and life."""
+    margins = tuple(
+        (m.label, m.demand, m.capacity, m.unit, m.ratio, m.status.upper()) for m in result.margins
+    )
+    s = result.spectrum
+    spectrum = tuple(
+        (k + 1, f, share) for k, (f, share) in enumerate(zip(s.loads, s.shares, strict=True))
+    )
+    return [
+        Section(
+            "Margins",
+            paragraphs=(
+                "capacity / demand: GREEN ≥ 1.25, AMBER ≥ 1, RED < 1. Speed and buckling against "
+                "the makers' 0.8 × critical speed and 0.5 × buckling load (THK, HIWIN).",
+            ),
+            tables=(Table(("check", "demand", "capacity", "unit", "ratio", "status"), margins),),
+        ),
+        Section(
+            "Design values",
+            paragraphs=(
+                "Load ratings are the catalogue's; life, static safety, speed and buckling by "
+                "the makers' formulas (THK General Catalog, HIWIN Ballscrews & Accessories); "
+                "nut stiffness from the Hertz contacts of the preloaded nut.",
+            ),
+            tables=(Table(("quantity", "value"), _value_rows(result)),),
+            figures=("stiffness_curve",),
+        ),
+        Section(
+            "Life against the load spectrum",
+            paragraphs=(
+                f"Load spectrum from [{s.source}]. Cube-mean equivalent loads of the nut halves "
+                f"(preload included, HIWIN F 3.5–3.9): "
+                + ", ".join(f"{f:.4g} N" for f in result.equivalent_loads),
+            ),
+            tables=(Table(("level", "axial load [N]", "revolutions share"), spectrum),),
+            figures=("life_spectrum",) if result.dynamic_load_rating is not None else (),
+        ),
+    ]

@@ -1,0 +1,68 @@
+"""Design check of a ball screw by the makers' formulas: life, static safety, speed and
+buckling limits, stiffness of the nut, the shaft and the drive, thermal pretension.
+
+Plain functions of SI numbers; no case. The load ratings C_a and C_0a are inputs (catalogue
+values).
+"""
+
+from ballscrew.design.life import (
+    LIFT_OFF_FACTOR,
+    RELIABILITY_FACTORS,
+    combined_life,
+    cube_mean_loads,
+    life_hours,
+    life_travel,
+    preloaded_half_loads,
+    rating_life,
+    reliability_factor,
+    static_safety_factor,
+)
+from ballscrew.design.shaft import (
+    BUCKLING_SAFETY,
+    MOUNTINGS,
+    PERMISSIBLE_STRESS,
+    SPEED_SAFETY,
+    buckling_load,
+    maker_buckling_load,
+    maker_critical_speed,
+    permissible_tension,
+    shaft_axial_stiffness,
+    thermal_elongation,
+    thermal_pretension,
+)
+from ballscrew.design.stiffness import (
+    CATALOGUE_RIGIDITY_SHARE,
+    catalogue_nut_rigidity,
+    nut_load_deflection,
+    nut_stiffness,
+    series_stiffness,
+)
+
+__all__ = [
+    "BUCKLING_SAFETY",
+    "CATALOGUE_RIGIDITY_SHARE",
+    "LIFT_OFF_FACTOR",
+    "MOUNTINGS",
+    "PERMISSIBLE_STRESS",
+    "RELIABILITY_FACTORS",
+    "SPEED_SAFETY",
+    "buckling_load",
+    "catalogue_nut_rigidity",
+    "combined_life",
+    "cube_mean_loads",
+    "life_hours",
+    "life_travel",
+    "maker_buckling_load",
+    "maker_critical_speed",
+    "nut_load_deflection",
+    "nut_stiffness",
+    "permissible_tension",
+    "preloaded_half_loads",
+    "rating_life",
+    "reliability_factor",
+    "series_stiffness",
+    "shaft_axial_stiffness",
+    "static_safety_factor",
+    "thermal_elongation",
+    "thermal_pretension",
+]

@@ -1,0 +1,85 @@
+"""Axial stiffness of the nut, and of the drive in series with the shaft and the bearings.
+
+* Catalogue nut rigidity (THK General Catalog A-709 eqs. 35–36; HIWIN §3.7.7): the tables give
+  the theoretical rigidity K at a reference load (preloaded nut: preload 0.1 C_a; without
+  preload: axial load 0.3 C_a); at another load K_N = 0.8 K (F/F_ref)^(1/3).
+* Hertz model of the preloaded double nut: each half deflects δ = C F^(2/3)
+  (:func:`ballscrew.loads.nut_axial_deflection`); the spacer holds the halves at the preload
+  deflection δ₀ = C F_p^(2/3), and an axial load F_a moves the nut body by x = δ₁ − δ₀ with
+  F₁ − F₂ = F_a (:func:`ballscrew.loads.nut_forces`). The halves act in parallel, so the
+  stiffness is the sum of the halves' 1.5 F_i/δ_i
+  (:func:`ballscrew.loads.preloaded_axial_stiffness`) until the second half lifts off at
+  F_a = 2^(3/2) F_p. A single nut carries F_p + F_a.
+* Bodies in series: 1/K = Σ 1/K_i.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ballscrew.errors import InputError
+from ballscrew.loads import nut_axial_deflection, nut_forces, preloaded_axial_stiffness
+from ballscrew.validation import nonnegative, nonnegative_array, positive
+
+__all__ = [
+    "CATALOGUE_RIGIDITY_SHARE",
+    "catalogue_nut_rigidity",
+    "nut_load_deflection",
+    "nut_stiffness",
+    "series_stiffness",
+]
+
+CATALOGUE_RIGIDITY_SHARE = 0.8
+"""Share of the catalogue's theoretical rigidity the makers advise to use (THK, HIWIN)."""
+
+
+def catalogue_nut_rigidity(table_rigidity: float, load: float, reference_load: float) -> float:
+    """Nut rigidity 0.8 K (F/F_ref)^(1/3) from the table value K at F_ref, N/m.
+
+    Preloaded nut: ``load`` = preload F_a0 and ``reference_load`` = 0.1 C_a; nut without
+    preload: the axial load and 0.3 C_a (THK) or 0.28 C_a (HIWIN).
+    """
+    k = positive("table_rigidity", table_rigidity, "N/m")
+    ratio = positive("load", load, "N") / positive("reference_load", reference_load, "N")
+    return CATALOGUE_RIGIDITY_SHARE * k * ratio ** (1.0 / 3.0)
+
+
+def _half_forces(axial_load: float, preload: float, nuts: int) -> tuple[float, float]:
+    if nuts == 1:
+        return preload + axial_load, 0.0
+    if nuts == 2:
+        return tuple(float(f) for f in nut_forces(preload, axial_load))  # type: ignore[return-value]
+    raise InputError("nuts", nuts, "1 or 2")
+
+
+def nut_load_deflection(
+    axial_load: ArrayLike, preload: float, compliance: float, nuts: int = 2
+) -> NDArray[np.float64]:
+    """Axial displacement x(F_a) of the nut body from the preloaded state, m.
+
+    x = δ(F₁) − δ(F_p) for a double nut (F₁ the loaded half), δ(F_p + F_a) − δ(F_p) for one nut.
+    """
+    fp = nonnegative("preload", preload, "N")
+    loads = nonnegative_array("axial_load", axial_load, "N")
+    first = np.array([_half_forces(float(f), fp, nuts)[0] for f in loads.ravel()])
+    x = nut_axial_deflection(first, compliance) - nut_axial_deflection(fp, compliance)
+    return x.reshape(loads.shape)
+
+
+def nut_stiffness(axial_load: float, preload: float, compliance: float, nuts: int = 2) -> float:
+    """Tangent axial stiffness dF_a/dx of the nut (both halves in parallel), N/m."""
+    fp = nonnegative("preload", preload, "N")
+    fa = nonnegative("axial_load", axial_load, "N")
+    forces = [f for f in _half_forces(fa, fp, nuts) if f > 0.0]
+    if not forces:
+        raise InputError("preload", preload, "> 0 N where the axial load is 0 N")
+    deflections = nut_axial_deflection(np.array(forces), compliance)
+    return float(np.sum(preloaded_axial_stiffness(np.array(forces), deflections)))
+
+
+def series_stiffness(*stiffnesses: float) -> float:
+    """Stiffness of springs in series, 1/Σ(1/K_i), N/m."""
+    if not stiffnesses:
+        raise InputError("stiffnesses", (), "one or more stiffnesses > 0 N/m")
+    return 1.0 / sum(1.0 / positive("stiffness", k, "N/m") for k in stiffnesses)

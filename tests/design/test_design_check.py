@@ -1,0 +1,125 @@
+"""``ballscrew.design_check`` and ``ballscrew check``: values, margins, warnings, the folder."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+
+import pytest
+from tests.protocol_check import assert_protocol_folder
+from tests.quick_cases import dump_toml
+from typer.testing import CliRunner
+
+import ballscrew
+from ballscrew import design
+from ballscrew.analyses.design_check import design_check, load_spectrum
+from ballscrew.case import case_from_dict
+from ballscrew.cli import app
+from ballscrew.errors import InputError
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
+DESIGN = {
+    "dynamic_load_rating": "52.7 kN",
+    "static_load_rating": "141.1 kN",
+    "unsupported_length": "1.3 m",
+    "catalogue_rigidity": "1000 N/um",
+    "bearing_stiffness": "1000 N/um",
+    "temperature_rise": "3 K",
+    "required_life": "20000 h",
+}
+
+
+def raw_case(**design_overrides: object) -> dict:
+    raw = tomllib.loads(EXAMPLE.read_text())
+    raw["design"] = DESIGN | design_overrides
+    raw["operating"].update(axial_load="2000 N", speed="1000 rpm")
+    return raw
+
+
+def test_api_contract_values() -> None:
+    result = ballscrew.design_check(case_from_dict(raw_case()))
+    assert result.dynamic_load_rating == 52_700.0 and result.static_load_rating == 141_100.0
+    assert result.static_safety_factor == pytest.approx(141_100.0 / 2000.0)
+    fb1, fb2 = design.preloaded_half_loads(2000.0, 1500.0)
+    expected = design.combined_life(
+        [float(design.rating_life(52_700.0, f, 1.2)) for f in (float(fb1), float(fb2))]
+    )
+    assert result.rating_life == pytest.approx(expected)
+    assert result.preload_drag_torque == pytest.approx(0.42314, rel=1e-4)
+    assert 1.0 / result.axial_stiffness == pytest.approx(
+        1.0 / result.nut_stiffness + 1.0 / result.shaft_stiffness
+    )
+    assert result.drive_stiffness < result.axial_stiffness < result.nut_stiffness
+    assert result.critical_speed > 0 and result.buckling_load > 0
+    assert {m.status for m in result.margins} <= {"green", "amber", "red"}
+    assert result.warnings == ()
+
+
+def test_duty_spectrum_weights_by_revolutions() -> None:
+    raw = raw_case()
+    raw["duty"] = [
+        {"speed": "1000 rpm", "axial_load": "3 kN", "duration": "1 min"},
+        {"speed": "500 rpm", "axial_load": "1 kN", "duration": "2 min"},
+        {"speed": 0.0, "duration": "1 min"},
+    ]
+    spectrum = load_spectrum(case_from_dict(raw))
+    assert spectrum.source == "duty" and spectrum.loads == (3000.0, 1000.0, 0.0)
+    assert spectrum.shares == pytest.approx((0.5, 0.5, 0.0))
+    assert spectrum.mean_speed == pytest.approx(2000.0 * 2 * math.pi / 60 / 4.0)
+
+
+@pytest.mark.parametrize(
+    ("overrides", "operating", "warning"),
+    [
+        ({"dynamic_load_rating": "10 kN", "required_life": "1 h"}, {}, "preload vs its largest"),
+        ({"unsupported_length": "4 m"}, {}, "speed vs 0.8 × critical speed"),
+        ({"static_load_rating": "2.5 kN"}, {}, "f_s vs its minimum"),
+        ({}, {"speed": "3000 rpm"}, "d·n vs its limit"),
+    ],
+)
+def test_red_margins_warn(overrides, operating, warning) -> None:
+    raw = raw_case(**overrides)
+    raw["operating"].update(operating)
+    with pytest.warns(UserWarning, match=warning):
+        result = design_check(case_from_dict(raw))
+    assert any(warning in w for w in result.warnings)
+    assert any(m.status == "red" for m in result.margins)
+
+
+def test_missing_ratings_are_said_not_guessed() -> None:
+    raw = raw_case()
+    del raw["design"]["dynamic_load_rating"], raw["design"]["static_load_rating"]
+    with pytest.warns(UserWarning, match="ISO 3408-5"):
+        result = design_check(case_from_dict(raw))
+    assert result.rating_life is None and result.static_safety_factor is None
+    assert "rating_life" not in result.summary()
+
+
+def test_no_design_section_is_a_one_line_error() -> None:
+    raw = raw_case()
+    del raw["design"]
+    with pytest.raises(InputError, match=r"^design = None is not allowed"):
+        design_check(case_from_dict(raw))
+
+
+def test_check_command_writes_the_folder(tmp_path: Path) -> None:
+    case_file = tmp_path / "case.toml"
+    case_file.write_text(dump_toml(raw_case()))
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["check", str(case_file), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert {"stiffness_curve.png", "life_spectrum.png"} <= {p.name for p in out.iterdir()}
+    api = design_check(case_from_dict(raw_case()))
+    summary = assert_protocol_folder(api, out)
+    assert summary["rating_life"]["value"] == pytest.approx(api.rating_life)
+    assert summary["margins"]["speed"]["status"] == "green"
+
+
+def test_check_command_bad_input_exit_2(tmp_path: Path) -> None:
+    raw = raw_case(mounting="clamped")
+    case_file = tmp_path / "case.toml"
+    case_file.write_text(dump_toml(raw))
+    result = CliRunner().invoke(app, ["check", str(case_file), "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2 and "design.mounting" in result.output
+    assert not (tmp_path / "o").exists()
