@@ -10,7 +10,6 @@ from typing import Any
 import pytest
 
 from ballscrew import design
-from ballscrew.analyses.design_check import hertz_nut_compliance
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import case_from_dict
 from ballscrew.kinematics.limits import critical_speed
@@ -67,7 +66,7 @@ def _nut_rigidity(base_raw: dict[str, Any], row: dict[str, Any]) -> float:
     preload = 0.1 * row["Ca_N"]
     base_raw["operating"].update(preload=preload, axial_load=0.0)
     params = ScrewParameters.from_case(case_from_dict(base_raw))
-    return design.nut_stiffness(0.0, preload, hertz_nut_compliance(params), nuts=2)
+    return design.nut_stiffness(0.0, preload, params.nut_compliance, nuts=2)
 
 
 HIWIN_MODELS = [

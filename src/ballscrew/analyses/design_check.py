@@ -25,11 +25,9 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
 from ballscrew.case.design_spec import DesignSpec
-from ballscrew.contact import hertz
 from ballscrew.errors import InputError
-from ballscrew.geometry import raceway_curvature
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
-from ballscrew.loads import nut_axial_compliance, preload_drag_torque
+from ballscrew.loads import preload_drag_torque
 
 __all__ = [
     "AMBER_BAND",
@@ -39,7 +37,6 @@ __all__ = [
     "Margin",
     "design_check",
     "design_scalars",
-    "hertz_nut_compliance",
     "load_spectrum",
 ]
 
@@ -191,18 +188,6 @@ def load_spectrum(case: Case) -> LoadSpectrum:
     )
 
 
-def hertz_nut_compliance(params: ScrewParameters) -> float:
-    """Compliance C of one nut half, δ = C F^(2/3), from the Hertz constants of both contacts."""
-    geometry = params.geometry
-    k = [
-        hertz(c.rx, c.ry, params.contact_modulus(side), 1.0).approach
-        for side, c in ((s, raceway_curvature(geometry, s)) for s in ("screw", "nut"))
-    ]
-    return nut_axial_compliance(
-        k[0], k[1], params.balls_per_nut, geometry.contact_angle, geometry.lead_angle
-    )
-
-
 def _equivalent_loads(spectrum: LoadSpectrum, preload: float, nuts: int) -> tuple[float, float]:
     loads = np.asarray(spectrum.loads)
     if nuts == 2:
@@ -317,7 +302,7 @@ def design_check(case: Case) -> DesignCheck:
     equivalent = _equivalent_loads(spectrum, preload, nuts)
     life = _life(spec, equivalent)
     running = life is not None and math.isfinite(life) and spectrum.mean_speed > 0.0
-    compliance = hertz_nut_compliance(params)
+    compliance = params.nut_compliance
     nut_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
     shaft_k = design.shaft_axial_stiffness(
         root, spec.nut_distance or length, screw.youngs_modulus, spec.mounting

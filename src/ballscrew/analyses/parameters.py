@@ -21,9 +21,10 @@ from dataclasses import dataclass
 
 from ballscrew.case import Case
 from ballscrew.contact.elastic import composite_modulus
-from ballscrew.geometry import ScrewGeometry
+from ballscrew.contact.hertz import hertz
+from ballscrew.geometry import ScrewGeometry, raceway_curvature
 from ballscrew.geometry.screw import SIDES, Side
-from ballscrew.loads import ball_load, nut_forces
+from ballscrew.loads import ball_load, nut_axial_compliance, nut_forces
 from ballscrew.lubrication import lubricant
 
 __all__ = ["SIDES", "Lubrication", "Material", "NutLoad", "ScrewParameters", "Side"]
@@ -209,6 +210,19 @@ class ScrewParameters:
     def hardness(self, side: Side) -> float:
         """Hardness of the softer of ball and ``side`` raceway [Pa]."""
         return min(self.ball.hardness, self.material(side).hardness)
+
+    @property
+    def nut_compliance(self) -> float:
+        """C_a of one nut, δ_a = C_a F^(2/3): the Hertz constants of both contacts of a ball
+        (Hertz point contacts, rigid bodies; theory manual, *Loads*) [m N^(−2/3)]."""
+        g = self.geometry
+        k = [
+            hertz(c.rx, c.ry, self.contact_modulus(side), 1.0).approach
+            for side, c in ((s, raceway_curvature(g, s)) for s in SIDES)
+        ]
+        return float(
+            nut_axial_compliance(k[0], k[1], self.balls_per_nut, g.contact_angle, g.lead_angle)
+        )
 
     @property
     def axial_projection(self) -> float:

@@ -26,7 +26,7 @@ from ballscrew.contact import cell_centres, hertz
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import gap_function, raceway_curvature
-from ballscrew.loads import ball_load, nut_axial_compliance, preload_drag_torque
+from ballscrew.loads import ball_load, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
 from ballscrew.validation import case_with
 from ballscrew.wear.history import WearLife
@@ -93,10 +93,8 @@ def wear_setup(case: Case) -> WearSetup:
     balls = params.balls_per_nut
     e_star = params.contact_modulus("screw")
     hardness = case.materials.screw.hardness
-    ca, cb = raceway_curvature(geometry, "screw"), raceway_curvature(geometry, "nut")
-    k_a = hertz(ca.rx, ca.ry, e_star, 1.0).approach
-    k_b = hertz(cb.rx, cb.ry, params.contact_modulus("nut"), 1.0).approach
-    compliance = nut_axial_compliance(k_a, k_b, balls, geometry.contact_angle, geometry.lead_angle)
+    ca = raceway_curvature(geometry, "screw")
+    compliance = params.nut_compliance
     preload = case.operating.preload
     if not preload > 0.0:
         raise InputError("operating.preload", preload, "an initial preload > 0 N")
