@@ -22,6 +22,7 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew operating-point examples/gao2019_tcr.toml --speed "1500 rpm" \
 		--axial-load "2 kN" --out $(DEMO)/operating-point
 	$(VENV)/bin/ballscrew duty examples/gao2019_tcr.toml --out $(DEMO)/duty
+	$(VENV)/bin/ballscrew check examples/gao2019_tcr.toml --out $(DEMO)/check
 	$(VENV)/bin/ballscrew kinematics examples/wear_step_stress.toml --out $(DEMO)/kinematics
 	$(VENV)/bin/ballscrew wear examples/wear_step_stress.toml --out $(DEMO)/wear
 	$(VENV)/bin/ballscrew surface examples/profiles/synthetic_wm_D1.59_G9e-10.sdf --out $(DEMO)/surface
