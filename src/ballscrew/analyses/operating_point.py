@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import ModuleType
@@ -36,7 +37,7 @@ from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.wear.step import entrainment_speed
 
-__all__ = ["OperatingPoint", "operating_point", "operating_point_scalars"]
+__all__ = ["OperatingPoint", "OperatingPointWarning", "operating_point", "operating_point_scalars"]
 
 TOLERANCE = 0.01
 """Change of the contact temperature [K] at which the fixed point is reached."""
@@ -44,6 +45,10 @@ MAX_ITERATIONS = 60
 NUT_WARNING_TEMPERATURE = 333.15
 """Nut temperature above which the result warns [K] (60 °C; nuts on machine axes run 5–30 K
 above ambient)."""
+
+
+class OperatingPointWarning(UserWarning):
+    """The operating point is outside what the screw or the models are made for."""
 
 
 @dataclass(frozen=True)
@@ -86,19 +91,19 @@ class OperatingPoint(Presented):
         return f"Operating point: {self.case.name}"
 
 
-def _viscosity_law(case: Case) -> Callable[[float], tuple[float, float | None]]:
+def _viscosity_law(case: Case) -> Callable[[float], tuple[float | None, float | None]]:
     """T → (η, α_p) of the case's lubricant: the library's laws, or its constant values."""
     params = ScrewParameters.from_case(case)
     name = case.kinematics.lubricant
     if name is not None and name in LUBRICANT_LIBRARY and case.medium.viscosity is None:
         entry = LUBRICANT_LIBRARY[name]
 
-        def law(temperature: float) -> tuple[float, float | None]:
+        def law(temperature: float) -> tuple[float | None, float | None]:
             state = entry.at(temperature)
             return state.viscosity, state.pressure_viscosity
 
         return law
-    constant = (params.lubrication.viscosity or math.nan, params.lubrication.pressure_viscosity)
+    constant = (params.lubrication.viscosity, params.lubrication.pressure_viscosity)
     return lambda _: constant
 
 
@@ -194,11 +199,14 @@ def operating_point(
                 relaxation *= 0.5
             residual = abs(new)
             contact += relaxation * new
+        for text in _warnings(base, omega, nut, friction):
+            warnings.warn(text, OperatingPointWarning, stacklevel=2)
     eta, alpha = law(contact)
     params = ScrewParameters.from_case(base)
-    balls = dataclasses.replace(ball_model(base), viscosity=eta, pressure_viscosity=alpha)
+    balls = ball_model(base)
+    if eta is not None:
+        balls = dataclasses.replace(balls, viscosity=eta, pressure_viscosity=alpha)
     film = balls.film(params.loaded_nut.ball_load, entrainment_speed(params.geometry, omega))
-    messages += _warnings(base, omega, nut, friction)
     return OperatingPoint(
         case=base,
         speed=omega,
@@ -208,7 +216,7 @@ def operating_point(
         efficiency=friction.efficiency_driving,
         nut_temperature=nut,
         screw_temperature=screw,
-        viscosity=eta,
+        viscosity=math.nan if eta is None else eta,
         film_thickness=film.central if film is not None else math.nan,
         iterations=iterations,
         field=field,
