@@ -23,6 +23,7 @@ from ballscrew import (
     thermal,
     units,
 )
+from ballscrew.analyses.ball_loads import ball_loads
 from ballscrew.analyses.design_check import design_check
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_kinematics, drag_torque
@@ -36,6 +37,7 @@ from ballscrew.loads import nut_forces
 __all__ = [
     "__version__",
     "ball_kinematics",
+    "ball_loads",
     "case",
     "contact",
     "contact_resistance",
