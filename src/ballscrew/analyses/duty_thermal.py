@@ -22,8 +22,7 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses import duty_thermal_report
 from ballscrew.analyses.duty import DutyPhase, duty_schedule
-from ballscrew.analyses.friction import friction_torque
-from ballscrew.analyses.operating_point import operating_point
+from ballscrew.analyses.operating_point import heat_overrides, operating_point
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import _mesh_options
 from ballscrew.analyses.thermal_setup import build_problem, check_mesh, thermal_spec
@@ -76,17 +75,14 @@ def _segment_case(case: Case, phase: DutyPhase) -> tuple[Case, float]:
     base = with_overrides(
         case, {"operating.speed": phase.speed, "operating.axial_load": phase.axial_load}
     )
-    heat, share = 0.0, 0.5
+    heat, to_screw = 0.0, 0.0
     if phase.mean_speed > 0.0:
         point = operating_point(base, model="network")
-        friction = friction_torque(base, viscosity=point.viscosity)
-        heat = phase.moving_fraction * friction.heat
-        share = friction.heat_to_screw / friction.heat if friction.heat > 0.0 else 0.5
+        heat = phase.moving_fraction * point.heat
+        to_screw = phase.moving_fraction * point.heat_to_screw
     overrides = {
         "operating.speed": phase.mean_speed,
-        "thermal.drag_torque.source": "given",
-        "thermal.drag_torque.torque": heat / phase.mean_speed if phase.mean_speed > 0 else 0.0,
-        "thermal.screw_heat_fraction": share,
+        **heat_overrides(heat, to_screw, phase.mean_speed),
     }
     return with_overrides(base, overrides), heat
 

@@ -37,7 +37,13 @@ from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.wear.step import entrainment_speed
 
-__all__ = ["OperatingPoint", "OperatingPointWarning", "operating_point", "operating_point_scalars"]
+__all__ = [
+    "OperatingPoint",
+    "OperatingPointWarning",
+    "heat_overrides",
+    "operating_point",
+    "operating_point_scalars",
+]
 
 TOLERANCE = 0.01
 """Change of the contact temperature [K] at which the fixed point is reached."""
@@ -64,6 +70,8 @@ class OperatingPoint(Presented):
     """Friction torque of the nut(s) [N·m]."""
     heat: float
     """Friction heat of the nut(s) [W]."""
+    heat_to_screw: float
+    """Part of the heat that goes into the screw shaft [W]."""
     efficiency: float
     """Driving efficiency (work out / work in) [-]."""
     nut_temperature: float
@@ -135,8 +143,9 @@ def _warnings(case: Case, omega: float, nut: float, friction: FrictionTorque) ->
     return out
 
 
-def _heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]:
-    """The friction heat as the thermal model's given torque (heat/ω) and screw share."""
+def heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]:
+    """Case overrides that feed ``heat`` [W] (``to_screw`` of it into the screw) at ``omega``
+    [rad/s] to the thermal model: a given torque heat/ω and the screw share."""
     return {
         "thermal.drag_torque.source": "given",
         "thermal.drag_torque.torque": heat / omega if omega > 0.0 else 0.0,
@@ -189,7 +198,7 @@ def operating_point(
             iterations += 1
             eta, _ = law(contact)
             friction = friction_torque(base, viscosity=eta)
-            overrides = _heat_overrides(friction.heat, friction.heat_to_screw, omega)
+            overrides = heat_overrides(friction.heat, friction.heat_to_screw, omega)
             field = thermal_field(with_overrides(base, overrides), model, transient=False)
             nut, screw = _nut_and_screw(field)
             new = 0.5 * (nut + screw) - contact  # the fixed point's residual T(T_c) − T_c
@@ -213,6 +222,7 @@ def operating_point(
         axial_load=load,
         friction_torque=friction.total,
         heat=friction.heat,
+        heat_to_screw=friction.heat_to_screw,
         efficiency=friction.efficiency_driving,
         nut_temperature=nut,
         screw_temperature=screw,
