@@ -62,9 +62,9 @@ def recorded_warnings() -> Iterator[list[str]]:
         yield messages
     for w in caught:
         text = " ".join(str(w.message).split())
-        if text not in messages:
+        if text not in messages:  # each warning once, however often the physics raised it
             messages.append(text)
-        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
 @dataclass(frozen=True)
