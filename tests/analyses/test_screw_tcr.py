@@ -150,3 +150,50 @@ def test_fractal_cell_result_is_smooth_in_the_axial_load(gao_case_path):
     ]
     assert np.all(np.diff(r) > 0), r  # flat, then rising as nut 2 unloads (paper Fig. 14)
     assert r[-1] / r[0] < 1.1
+
+
+def test_every_model_on_the_same_contacts(doc_case):
+    result = ballscrew.screw_tcr(doc_case)
+    assert tuple(result.models) == ("V2", "MT", "V1", "CMY", "Mikic")
+    headline = result.models[result.variant]
+    assert headline.resistance == pytest.approx(result.resistance, rel=1e-12)
+    assert headline.resistance_per_area == pytest.approx(result.resistance_per_area, rel=1e-12)
+    spread = result.uncertainty
+    values = [m.resistance_per_area for m in result.models.values()]
+    assert spread.low == min(values) and spread.high == max(values)
+    assert spread.ratio > 1.0
+    # The Gaussian correlations sit above the fractal variants on this ground raceway.
+    assert result.models["CMY"].resistance > result.models["V2"].resistance
+
+
+def test_correlations_take_measured_roughness(doc_case):
+    rough = ballscrew.case.with_overrides(
+        doc_case, {"tcr.models": ["CMY"], "tcr.rms_roughness": 0.6e-6, "tcr.rms_slope": 0.06}
+    )
+    smooth = ballscrew.case.with_overrides(rough, {"tcr.rms_roughness": 0.3e-6})
+    r_rough = ballscrew.screw_tcr(rough).models["CMY"].resistance
+    r_smooth = ballscrew.screw_tcr(smooth).models["CMY"].resistance
+    assert ballscrew.screw_tcr(rough).uncertainty is None  # one model: no spread
+    assert r_rough > r_smooth  # h_c ∝ m/σ: rougher conducts less
+
+
+def test_a_correlation_outside_its_range_is_left_out_with_a_warning(doc_case):
+    soft = ballscrew.case.with_overrides(
+        doc_case, {"materials.screw.hardness": 1.5e9, "materials.nut.hardness": 1.5e9}
+    )
+    with pytest.warns(UserWarning, match=r"CMY left out"):
+        result = ballscrew.screw_tcr(soft)
+    assert "CMY" not in result.models and "V2" in result.models
+
+
+@pytest.mark.parametrize(
+    ("overrides", "field"),
+    [
+        ({"tcr.models": ["V2", "nope"]}, "tcr.models"),
+        ({"tcr.cutoff_length": 1e-3, "tcr.sampling_length": 1e-4}, "tcr"),
+        ({"tcr.rms_roughness": 1e-6}, "tcr"),
+    ],
+)
+def test_bad_model_options_are_refused(doc_case, overrides, field):
+    with pytest.raises(CaseError, match=field):
+        ballscrew.case.with_overrides(doc_case, overrides)

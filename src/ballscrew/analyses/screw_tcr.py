@@ -12,7 +12,7 @@ so one solve serves every contact of equal load and side.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import ModuleType
 from typing import ClassVar
 
@@ -20,6 +20,7 @@ from ballscrew.analyses import tcr_report
 from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.analyses.tcr_models import ModelSpread, ModelTCR, compare_models
 from ballscrew.case import Case, TCRSpec
 from ballscrew.contact_resistance import (
     ContactTCR,
@@ -98,6 +99,10 @@ class ScrewTCR(Presented):
     """The case that was solved."""
     warnings: tuple[str, ...] = ()
     """Warnings raised while solving (one line each)."""
+    models: dict[str, ModelTCR] = field(default_factory=dict)
+    """Every model of ``[tcr] models`` on the same contacts: name → R and R″."""
+    uncertainty: ModelSpread | None = None
+    """Spread of R″ over :attr:`models` (None with fewer than two models)."""
 
     analysis: ClassVar[str] = "tcr"
     presentation: ClassVar[ModuleType] = tcr_report
@@ -214,6 +219,8 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
                     axial_deflection=approach / params.axial_projection,
                 )
             )
+        area = sum(n.apparent_area for n in nuts)
+        compared, spread = compare_models(params, case.tcr, models, nuts, area)
     return ScrewTCR(
         case_name=case.name,
         variant=models["screw"].variant,
@@ -222,6 +229,8 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         nuts=tuple(nuts),
         case=case,
         warnings=tuple(messages),
+        models=compared,
+        uncertainty=spread,
     )
 
 

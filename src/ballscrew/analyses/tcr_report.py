@@ -57,6 +57,29 @@ def _nut_summary(nut: NutTCR) -> dict[str, Any]:
     }
 
 
+def _spread_summary(result: ScrewTCR) -> dict[str, Any] | None:
+    spread = result.uncertainty
+    if spread is None:
+        return None
+    return {
+        "low": value(spread.low, "m^2*K/W"),
+        "high": value(spread.high, "m^2*K/W"),
+        "ratio": spread.ratio,
+        "models": list(spread.models),
+    }
+
+
+def _roughness_summary(case: Any) -> dict[str, Any]:
+    tcr = case.tcr
+    if tcr.rms_roughness is not None:
+        return {"sigma": value(tcr.rms_roughness, "m"), "slope": tcr.rms_slope}
+    return {
+        "from": "D, G",
+        "sampling_length": value(tcr.sampling_length, "m"),
+        "cutoff_length": value(tcr.cutoff_length, "m"),
+    }
+
+
 def summary(result: ScrewTCR) -> dict[str, Any]:
     """Scalars of the whole screw, per nut and per contact, with the options that produced them."""
     case = result.case
@@ -67,6 +90,14 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
         "apparent_area": value(result.apparent_area, "m^2"),
         "nut_forces": [value(f, "N") for f in result.nut_forces],
         "nuts": {f"nut{n.index}": _nut_summary(n) for n in result.nuts},
+        "models": {
+            name: {
+                "resistance": value(m.resistance, "K/W"),
+                "resistance_per_area": value(m.resistance_per_area, "m^2*K/W"),
+            }
+            for name, m in result.models.items()
+        },
+        "uncertainty": _spread_summary(result),
         "options": {
             "variant": result.variant,
             "cell_size": value(result.cell_size, "m") if result.cell_size else "solver grid",
@@ -75,6 +106,7 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
             "cutoff_area": value(case.tcr.cutoff_area, "m^2"),
             "load_threshold": case.tcr.load_threshold,
             "surface": {"D": case.surface.D, "G": value(case.surface.G, "m")},
+            "correlation_roughness": _roughness_summary(case),
             "medium_conductivity": value(case.medium.thermal_conductivity, "W/(m*K)"),
             "contact_gap_model": case.numerics.gap_model,
         },
@@ -224,6 +256,40 @@ def sections(result: ScrewTCR) -> list[Section]:
             ),
             figures=tuple(
                 f"{kind}_{tag}" for _, _, tag in _contacts(result) for kind in ("pressure", "tcr")
+            ),
+        ),
+        *_models_section(result),
+    ]
+
+
+def _models_section(result: ScrewTCR) -> list[Section]:
+    """Every model of ``[tcr] models`` on the same contacts, and their spread."""
+    if not result.models:
+        return []
+    spread = result.uncertainty
+    text = (
+        "The same solved contacts evaluated by every model: the fractal element variants on the "
+        "same cells, the Gaussian correlations integrated over the pressure field (no cell "
+        "size; σ and m from D and G over the stated wavelength band unless measured values "
+        "are given). "
+    )
+    if spread is not None:
+        text += (
+            f"R″ spans {spread.low:.3g} … {spread.high:.3g} m²K/W (a factor "
+            f"{spread.ratio:.3g}): the modelling uncertainty of the TCR."
+        )
+    return [
+        Section(
+            "Rival models of the contact resistance",
+            paragraphs=(text,),
+            tables=(
+                Table(
+                    ("model", "R [K/W]", "R″ [m²K/W]", "what it is"),
+                    tuple(
+                        (name, m.resistance, m.resistance_per_area, m.description)
+                        for name, m in result.models.items()
+                    ),
+                ),
             ),
         )
     ]

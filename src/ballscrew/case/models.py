@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.design_spec import DesignSpec
@@ -26,6 +26,7 @@ from ballscrew.contact import (
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
 )
+from ballscrew.contact_resistance.correlations import CORRELATIONS
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
 from ballscrew.lubrication.film import FILM_MODELS
@@ -186,6 +187,45 @@ class TCRSpec(Model):
     load_threshold: Annotated[
         float, Field(ge=0, lt=1, description="cells below this × the peak load are skipped")
     ] = 1e-8
+    models: list[str] = Field(
+        default_factory=lambda: [*ELEMENT_MODELS.names, *CORRELATIONS.names],
+        description="models reported side by side (element variants and correlations)",
+    )
+    sampling_length: quantity(
+        "length", "longest roughness wavelength L_u for σ and m of the correlations", gt=0, le=1
+    ) = 8e-4
+    cutoff_length: quantity(
+        "length", "shortest roughness wavelength l_c for σ and m of the correlations", gt=0, le=1e-2
+    ) = 2.5e-6
+    rms_roughness: (
+        quantity("length", "measured RMS roughness σ (overrides D, G)", gt=0, le=1e-3) | None
+    ) = None
+    rms_slope: (
+        Annotated[
+            float, Field(gt=0, le=10, description="measured RMS profile slope m (overrides D, G)")
+        ]
+        | None
+    ) = None
+
+    @field_validator("models")
+    @classmethod
+    def _known_models(cls, names: list[str]) -> list[str]:
+        known = (*ELEMENT_MODELS.names, *CORRELATIONS.names)
+        for name in names:
+            if name not in known:
+                raise ValueError(f"unknown model {name!r}; allowed: {', '.join(known)}")
+        return names
+
+    @model_validator(mode="after")
+    def _roughness_band(self) -> TCRSpec:
+        if not self.cutoff_length < self.sampling_length:
+            raise ValueError(
+                f"cutoff_length = {self.cutoff_length:g} m must be < sampling_length"
+                f" = {self.sampling_length:g} m"
+            )
+        if (self.rms_roughness is None) != (self.rms_slope is None):
+            raise ValueError("give both rms_roughness and rms_slope, or neither")
+        return self
 
 
 class Case(Model):
