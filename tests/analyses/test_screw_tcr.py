@@ -154,7 +154,10 @@ def test_fractal_cell_result_is_smooth_in_the_axial_load(gao_case_path):
 
 def test_every_model_on_the_same_contacts(doc_case):
     result = ballscrew.screw_tcr(doc_case)
-    assert tuple(result.models) == ("V2", "MT", "V1", "CMY", "Mikic")
+    assert tuple(result.models) == (
+        *("V2", "MT", "V1", "CMY", "Mikic"),
+        *("V2/patch", "MT/patch", "V1/patch"),
+    )
     headline = result.models[result.variant]
     assert headline.resistance == pytest.approx(result.resistance, rel=1e-12)
     assert headline.resistance_per_area == pytest.approx(result.resistance_per_area, rel=1e-12)
@@ -197,3 +200,17 @@ def test_a_correlation_outside_its_range_is_left_out_with_a_warning(doc_case):
 def test_bad_model_options_are_refused(doc_case, overrides, field):
     with pytest.raises(CaseError, match=field):
         ballscrew.case.with_overrides(doc_case, overrides)
+
+
+def test_patch_models_have_no_cell_size_and_converge_with_the_grid(gao_case_path):
+    """MB on the whole Hertz patch: the same R″ for any Δ_f, and grid-converged to 5 %."""
+
+    def r2(**overrides):
+        case = load_case(gao_case_path, {"tcr.models": ["V2"], **overrides})
+        return {k: m.resistance_per_area for k, m in ballscrew.screw_tcr(case).models.items()}
+
+    fine, coarse = r2(**{"tcr.cell_size": 4e-6}), r2(**{"tcr.cell_size": 16e-6})
+    assert coarse["V2"] / fine["V2"] > 1.5  # the cell model follows Δ_f
+    assert coarse["V2/patch"] == pytest.approx(fine["V2/patch"], rel=1e-12)
+    grid = [r2(**{"numerics.cells_across": n})["V2/patch"] for n in (24, 48)]
+    assert grid[1] == pytest.approx(grid[0], rel=0.05)

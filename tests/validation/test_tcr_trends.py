@@ -19,7 +19,11 @@ from ballscrew import load_case
 from ballscrew.contact_resistance import ELEMENT_MODELS
 from ballscrew.contact_resistance.correlations import CORRELATIONS
 
-MODELS = (*ELEMENT_MODELS.names, *CORRELATIONS.names)
+MODELS = (
+    *ELEMENT_MODELS.names,
+    *CORRELATIONS.names,
+    *(f"{name}/patch" for name in ELEMENT_MODELS.names),
+)
 COARSE = {"numerics.cells_across": 24}
 PRELOAD = 1500.0  # N, the example's preload; the second nut lifts off at 2^(3/2) F_p ≈ 4243 N
 
@@ -39,7 +43,7 @@ def _ratio(case_path: str, model: str, **overrides: float) -> float:
 
 # Models that do not reproduce the rise after lift-off: with one nut left, their per-ball
 # conductance grows faster than the number of conducting balls falls (R″ at 5 kN / at 0 kN).
-AFTER_LIFT_OFF_MISSES = {"MT": 0.769, "CMY": 0.708, "Mikic": 0.700}
+AFTER_LIFT_OFF_MISSES = {"MT": 0.769, "CMY": 0.708, "Mikic": 0.700, "MT/patch": 0.730}
 
 
 def _trend_cases() -> list:

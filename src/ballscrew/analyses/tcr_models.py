@@ -101,22 +101,30 @@ ContactResistance = Callable[["RacewayTCR", Side], float]
 
 
 def _element_resistance(
-    models: dict[Side, FractalTCRModel], options: TCRSpec, variant: str
+    models: dict[Side, FractalTCRModel], options: TCRSpec, variant: str, patch: bool
 ) -> ContactResistance:
     def resistance(raceway: RacewayTCR, side: Side) -> float:
         sol = raceway.contact.solution
-        model = replace(models[side], variant=variant)
+        if patch:  # one cell that holds the whole grid: MB on the real contact
+            nx, ny = sol.pressure.shape
+            cell: float | None = 1.01 * max(nx * sol.dx, ny * sol.dy)
+        else:
+            cell = options.cell_size if options.rebin else None
         return contact_tcr(
             sol.pressure,
             sol.dx,
             sol.dy,
-            model,
-            cell_size=options.cell_size if options.rebin else None,
+            replace(models[side], variant=variant),
+            cell_size=cell,
             load_threshold=options.load_threshold,
-            partial_cells=options.partial_cells,
+            partial_cells="contact_area",
         ).resistance
 
     return resistance
+
+
+PATCH = "/patch"
+"""Suffix of an element variant evaluated on the whole Hertz patch instead of fractal cells."""
 
 
 def _correlation_resistance(joints: dict[Side, GaussianJoint], name: str) -> ContactResistance:
@@ -146,6 +154,12 @@ def _screw_resistance(nuts: Sequence[NutTCR], contact: ContactResistance) -> flo
     return float(parallel_resistance(per_nut))
 
 
+def _expanded(names: Sequence[str]) -> list[str]:
+    """The models with each element variant also evaluated on the whole patch."""
+    element = [n for n in names if n in ELEMENT_MODELS]
+    return [*names, *(n + PATCH for n in element)]
+
+
 def compare_models(
     params: ScrewParameters,
     options: TCRSpec,
@@ -161,9 +175,13 @@ def compare_models(
     joints = {side: gaussian_joint(params, options, side) for side in element_models}
     out_of_range = _peak_relative_pressure(nuts, joints)
     results: dict[str, ModelTCR] = {}
-    for name in options.models:
-        if name in ELEMENT_MODELS:
-            contact = _element_resistance(element_models, options, name)
+    for name in _expanded(options.models):
+        if name.endswith(PATCH):
+            variant = name.removesuffix(PATCH)
+            contact = _element_resistance(element_models, options, variant, patch=True)
+            description = f"{variant} on the whole Hertz patch (no fractal cell size)"
+        elif name in ELEMENT_MODELS:
+            contact = _element_resistance(element_models, options, name, patch=False)
             description = ELEMENT_MODELS.entry(name).description
         else:
             contact = _correlation_resistance(joints, name)
