@@ -90,3 +90,18 @@ def test_bad_sweep_axes_are_refused_before_any_work(coarse_case, tmp_path):
     ):
         run_sweep(coarse_case, [parse_axis("surface.D=1.5,2.1")], tcr_scalars, "tcr", tmp_path)
     assert not (tmp_path / "points").exists()
+
+
+def test_sweeps_of_one_process_share_one_cluster(tmp_path, coarse_case):
+    from ballscrew.sweep.cluster import close_clients, shared_client
+
+    axes = [parse_axis("surface.D=1.45,1.5")]
+    run_sweep(coarse_case, axes, tcr_scalars, "tcr", tmp_path / "a", workers=1)
+    client = shared_client(None, 1)
+    assert client.status == "running"  # kept for the next sweep
+    run_sweep(coarse_case, axes, tcr_scalars, "tcr", tmp_path / "b", workers=1)
+    assert shared_client(None, 1) is client
+    close_clients()
+    assert client.status == "closed"
+    assert shared_client(None, 1) is not client  # a closed client is replaced
+    close_clients()

@@ -16,6 +16,7 @@ from ballscrew.cli import app
 from ballscrew.results import ResultsWriteError
 from ballscrew.results.folder import MARKER_NAME, claim_output, prepare_sweep_folder
 from ballscrew.results.sweep_report import write_sweep
+from ballscrew.sweep import cluster as sweep_cluster
 from ballscrew.sweep import runner as sweep_runner
 
 cli = CliRunner()
@@ -23,7 +24,7 @@ cli = CliRunner()
 
 @pytest.mark.parametrize("address", ["garbage", "foo://bar", "tcp://127.0.0.1:1"])
 def test_a_bad_scheduler_is_one_line_at_once(tmp_path, gao_case_path, monkeypatch, address):
-    monkeypatch.setattr(sweep_runner, "CONNECT_TIMEOUT", "1s")
+    monkeypatch.setattr(sweep_cluster, "CONNECT_TIMEOUT", "1s")
     out = tmp_path / "sweep"
     args = ["sweep", str(gao_case_path), "--vary", "operating.axial_load=0,1000"]
     start = time.perf_counter()

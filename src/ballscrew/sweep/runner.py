@@ -1,12 +1,10 @@
 """Run a parameter sweep on Dask and collect it into one labelled xarray Dataset.
 
 Each point runs ``analysis(case) -> {name: (value, unit)}`` on a Dask worker: a local cluster
-by default, or any running scheduler given by address. A point that raises is recorded with
+by default, or any running scheduler given by address; the client is shared by every sweep of
+the process (:mod:`ballscrew.sweep.cluster`). A point that raises is recorded with
 its error and does not stop the sweep. Finished points are stored one JSON file each under
 ``points/``, so re-running into the same folder computes only what is missing.
-
-A scheduler given by address is trusted: Dask exchanges pickled functions and results with it.
-The local cluster listens on the loopback interface only.
 """
 
 from __future__ import annotations
@@ -14,7 +12,6 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
-import os
 import time
 import traceback
 from collections.abc import Callable, Sequence
@@ -26,15 +23,12 @@ import xarray as xr
 
 from ballscrew.backend import limited_fft_threads
 from ballscrew.case import Case
-from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
+from ballscrew.sweep.cluster import shared_client
 from ballscrew.sweep.spec import check_sweep_size
 
 log = logging.getLogger(__name__)
-
-#: How long connecting to a scheduler given by address may take.
-CONNECT_TIMEOUT = "5s"
 
 #: An analysis maps a validated case to named scalars with their SI units.
 Analysis = Callable[[Case], dict[str, tuple[float, str]]]
@@ -93,37 +87,6 @@ def _needs_run(path: Path, retry_failed: bool) -> bool:
     return retry_failed and record.error is not None
 
 
-def _client(scheduler: str | None, workers: int | None):  # -> distributed.Client
-    # Worker processes read their log level from the environment when they import distributed.
-    quiet = "DEBUG" if log.isEnabledFor(logging.DEBUG) else "ERROR"
-    os.environ.setdefault("DASK_LOGGING__DISTRIBUTED", quiet.lower())
-    import dask
-
-    dask.config.set({"logging.distributed": quiet.lower()})
-    from distributed import Client, LocalCluster
-
-    logging.getLogger("distributed").setLevel(quiet)
-
-    if scheduler:
-        try:  # not the default client: a failed one would stay registered as the default
-            return Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False), None
-        except Exception as exc:  # any failure to reach it is the address's
-            reason = (str(exc).splitlines() or [type(exc).__name__])[0][:200]
-            raise InputError(
-                "--scheduler",
-                scheduler,
-                f"the address of a running Dask scheduler, e.g. tcp://host:8786 ({reason})",
-            ) from None
-    cluster = LocalCluster(
-        n_workers=workers,
-        threads_per_worker=1,
-        processes=True,
-        host="127.0.0.1",
-        dashboard_address="127.0.0.1:0",  # its HTTP server on loopback, any free port
-    )
-    return Client(cluster), cluster
-
-
 def run_sweep(
     base: Case,
     axes: Sequence[SweepAxis],
@@ -153,11 +116,11 @@ def run_sweep(
     if todo:
         from distributed import as_completed
 
-        client, cluster = _client(scheduler, workers)
+        client = shared_client(scheduler, workers)
+        futures = {
+            client.submit(run_point, analysis, cases[i], points[i], pure=False): i for i in todo
+        }
         try:
-            futures = {
-                client.submit(run_point, analysis, cases[i], points[i], pure=False): i for i in todo
-            }
             for future in as_completed(futures, loop=client.loop):
                 i = futures[future]
                 _save(folder / f"{keys[i]}.json", future.result())
@@ -165,9 +128,7 @@ def run_sweep(
                 if progress:
                     progress(done, len(points))
         finally:
-            client.close()
-            if cluster is not None:
-                cluster.close()
+            client.cancel(list(futures))  # an interrupted sweep leaves no work behind
     records = [_load(folder / f"{key}.json") for key in keys]
     return assemble(axes, records, analysis_name, base), len(todo)
 

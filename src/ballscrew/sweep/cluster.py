@@ -1,0 +1,85 @@
+"""One Dask client per scheduler and worker count, reused by every sweep of the process.
+
+Starting a local cluster costs seconds (worker processes import numpy, scipy and ballscrew); a
+notebook or script that runs several sweeps pays it once. The clients are closed when the
+interpreter exits, or by :func:`close_clients`.
+"""
+
+from __future__ import annotations
+
+import atexit
+import logging
+import os
+from typing import Any
+
+from ballscrew.errors import InputError
+
+log = logging.getLogger(__name__)
+
+#: How long connecting to a scheduler given by address may take.
+CONNECT_TIMEOUT = "5s"
+
+_CLIENTS: dict[tuple[str | None, int | None], tuple[Any, Any]] = {}
+
+
+def _quiet_dask() -> None:
+    # Worker processes read their log level from the environment when they import distributed.
+    quiet = "DEBUG" if log.isEnabledFor(logging.DEBUG) else "ERROR"
+    os.environ.setdefault("DASK_LOGGING__DISTRIBUTED", quiet.lower())
+    import dask
+
+    dask.config.set({"logging.distributed": quiet.lower()})
+    logging.getLogger("distributed").setLevel(quiet)
+
+
+def _connect(scheduler: str) -> Any:
+    from distributed import Client
+
+    try:  # not the default client: a failed one would stay registered as the default
+        return Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False)
+    except Exception as exc:  # any failure to reach it is the address's
+        reason = (str(exc).splitlines() or [type(exc).__name__])[0][:200]
+        raise InputError(
+            "--scheduler",
+            scheduler,
+            f"the address of a running Dask scheduler, e.g. tcp://host:8786 ({reason})",
+        ) from None
+
+
+def _local(workers: int | None) -> tuple[Any, Any]:
+    from distributed import Client, LocalCluster
+
+    cluster = LocalCluster(
+        n_workers=workers,
+        threads_per_worker=1,
+        processes=True,
+        host="127.0.0.1",  # the local cluster listens on the loopback interface only
+        dashboard_address="127.0.0.1:0",  # its HTTP server on loopback, any free port
+    )
+    return Client(cluster, set_as_default=False), cluster
+
+
+def shared_client(scheduler: str | None = None, workers: int | None = None) -> Any:
+    """The process's client of ``scheduler`` (an address) or of a local cluster of ``workers``.
+
+    A client that has been closed is replaced. A scheduler given by address is trusted: Dask
+    exchanges pickled functions and results with it.
+    """
+    key = (scheduler, None if scheduler else workers)
+    cached = _CLIENTS.get(key)
+    if cached is not None and cached[0].status == "running":
+        return cached[0]
+    _quiet_dask()
+    entry = (_connect(scheduler), None) if scheduler else _local(workers)
+    _CLIENTS[key] = entry
+    return entry[0]
+
+
+@atexit.register
+def close_clients() -> None:
+    """Close every shared client and the local clusters behind them."""
+    while _CLIENTS:
+        _, (client, cluster) = _CLIENTS.popitem()
+        client.close()
+        if cluster is not None:
+            cluster.close()
