@@ -1,13 +1,14 @@
-"""Named lubricants and how a case picks its lubricant."""
+"""Named lubricants and how a case picks its lubricant: one library for every key."""
 
 from __future__ import annotations
 
 import pytest
 
 from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.case import load_case
+from ballscrew.case import CaseError, load_case
 from ballscrew.errors import InputError
 from ballscrew.lubrication import LUBRICANTS, lubricant
+from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY, library_lubricant
 
 
 def case_lubricant(case):
@@ -16,12 +17,20 @@ def case_lubricant(case):
     return lubrication.viscosity, lubrication.pressure_viscosity
 
 
-def test_iso_grades_follow_iso_3448_midpoints():
-    # η₀ = ρ ν with ν = grade mm²/s at 40 °C and ρ = 870 kg/m³.
-    assert lubricant("iso_vg_68").viscosity == pytest.approx(870 * 68e-6)
-    assert lubricant("iso_vg_68").pressure_viscosity == 2.1e-8  # wear reference screw
-    for entry in LUBRICANTS.values():
-        assert 1e-3 < entry.viscosity < 1.0 and 1e-8 < entry.pressure_viscosity < 3e-8
+def test_the_40c_table_is_a_view_of_the_library():
+    # The old table had η₀ = 870 kg/m³ × ν40 and a guessed α_p = 2.1e-8 1/Pa for VG 68; the view
+    # takes both from the library's laws at 40 °C: ρ(40 °C) = 880 (1 − 6.4e-4 × 25) kg/m³ and
+    # Gold et al. (2001) α_p = 9.904 ν^0.139 1/GPa.
+    assert set(LUBRICANTS) == set(LUBRICANT_LIBRARY)
+    vg68 = lubricant("iso_vg_68")
+    assert vg68.viscosity == pytest.approx(880.0 * (1 - 6.4e-4 * 25.0) * 68e-6, rel=1e-9)
+    assert vg68.pressure_viscosity == pytest.approx(9.904e-9 * 68**0.139, rel=1e-12)
+    for key, entry in LUBRICANTS.items():
+        state = library_lubricant(key).at(313.15)
+        assert (entry.viscosity, entry.pressure_viscosity) == (
+            state.viscosity,
+            state.pressure_viscosity,
+        )
         assert entry.source
 
 
@@ -50,4 +59,47 @@ def test_medium_values_take_precedence_over_a_named_lubricant(tmp_path, wear_cas
     text = text.replace("[numerics]", '[kinematics]\nlubricant = "iso_vg_32"\n\n[numerics]', 1)
     (tmp_path / "b.toml").write_text(text)
     eta, alpha = case_lubricant(load_case(tmp_path / "b.toml"))
-    assert eta == pytest.approx(870 * 32e-6) and alpha == 2.1e-8
+    assert eta == pytest.approx(lubricant("iso_vg_32").viscosity) and alpha == 2.1e-8
+
+
+def test_medium_lubricant_is_the_same_key_and_follows_the_inlet_temperature(
+    tmp_path, wear_case_path
+):
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', "")
+    text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', 'lubricant = "iso_vg_68"\n')
+    (tmp_path / "a.toml").write_text(text)
+    eta40, alpha40 = case_lubricant(load_case(tmp_path / "a.toml"))
+    assert eta40 == pytest.approx(865.92 * 68e-6, rel=1e-9)  # ρ(40 °C) ν40
+    assert alpha40 == pytest.approx(9.904e-9 * 68**0.139, rel=1e-12)
+    hot = text + '\n[lubrication]\ntemperature = "80 degC"\n'
+    (tmp_path / "b.toml").write_text(hot)
+    eta80, alpha80 = case_lubricant(load_case(tmp_path / "b.toml"))
+    state = library_lubricant("iso_vg_68").at(353.15)
+    assert (eta80, alpha80) == (state.viscosity, state.pressure_viscosity)
+    assert eta80 < 0.3 * eta40
+
+
+@pytest.mark.parametrize("section", ["medium", "kinematics"])
+def test_unknown_lubricant_in_either_section_is_one_line_listing_the_library(
+    tmp_path, wear_case_path, section
+):
+    text = wear_case_path.read_text()
+    if section == "medium":
+        text = text.replace("[medium]\n", '[medium]\nlubricant = "motor oil"\n', 1)
+    else:
+        text = text.replace("[numerics]", '[kinematics]\nlubricant = "motor oil"\n\n[numerics]')
+    (tmp_path / "c.toml").write_text(text)
+    with pytest.raises(CaseError) as err:
+        load_case(tmp_path / "c.toml")
+    message = str(err.value)
+    assert "\n" not in message.strip()
+    assert f"{section}.lubricant" in message and "iso_vg_460" in message
+    assert "lithium_nlgi2_vg100" in message
+
+
+def test_two_different_lubricants_are_refused(tmp_path, wear_case_path):
+    text = wear_case_path.read_text().replace("[medium]\n", '[medium]\nlubricant = "iso_vg_46"\n')
+    text = text.replace("[numerics]", '[kinematics]\nlubricant = "iso_vg_68"\n\n[numerics]')
+    (tmp_path / "d.toml").write_text(text)
+    with pytest.raises(CaseError, match="name one lubricant"):
+        load_case(tmp_path / "d.toml")

@@ -14,11 +14,17 @@ from functools import partial
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
-from ballscrew.friction import FrictionInputs, FrictionTorque, ball_losses, nut_friction_torque
+from ballscrew.friction import (
+    FrictionInputs,
+    FrictionTorque,
+    NutLossParameters,
+    ball_losses,
+    nut_friction_torque,
+)
 from ballscrew.kinematics.model import BallModel
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["friction_torque", "seal_torque"]
+__all__ = ["friction_torque", "nut_loss_parameters", "seal_torque"]
 
 
 def seal_torque(case: Case) -> float:
@@ -27,6 +33,18 @@ def seal_torque(case: Case) -> float:
     if spec.seal_torque is not None:
         return spec.seal_torque
     return spec.seal_force * 0.5 * case.screw.pitch_diameter
+
+
+def nut_loss_parameters(case: Case) -> NutLossParameters:
+    """Ball–ball, drag and ball-return parameters of ``[friction]`` and the lubricant density."""
+    spec = case.friction
+    return NutLossParameters(
+        ball_ball_load_ratio=spec.ball_ball_load_ratio,
+        ball_ball_friction=spec.ball_ball_friction,
+        lubricant_fill=spec.lubricant_fill,
+        lubricant_density=ScrewParameters.from_case(case).lubrication.density,
+        circuits=spec.circuits,
+    )
 
 
 def _ball_model(case: Case, viscosity: float | None) -> BallModel:
@@ -64,7 +82,14 @@ def friction_torque(
         model = _ball_model(case, viscosity)
         level = _level(case, None)
         nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).nuts)
-        losses = partial(ball_losses, model, nuts=nuts, level=level, hysteresis=spec.hysteresis)
+        losses = partial(
+            ball_losses,
+            model,
+            nuts=nuts,
+            level=level,
+            hysteresis=spec.hysteresis,
+            nut=nut_loss_parameters(case),
+        )
     inputs = FrictionInputs(
         lead=geometry.lead,
         lead_angle=geometry.lead_angle,

@@ -11,13 +11,14 @@ from __future__ import annotations
 import math
 from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.friction_spec import FrictionSpec
-from ballscrew.case.kinematics_spec import KinematicsSpec
+from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
+from ballscrew.case.lubrication_spec import LubricationSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import (
@@ -115,6 +116,13 @@ class MediumSpec(Model):
     film_model: model_choice(
         FILM_MODELS, "EHL film-thickness model of the ball contacts (kinematics and wear)"
     ) = "hamrock_dowson"
+    lubricant: str | None = Field(
+        None,
+        description="named lubricant of the library (ballscrew.lubrication.LUBRICANT_LIBRARY) "
+        "for the values not given here; None = these values only",
+    )
+
+    _known_lubricant = field_validator("lubricant")(known_lubricant)
 
 
 class OperatingSpec(Model):
@@ -203,6 +211,7 @@ class Case(Model):
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
     friction: FrictionSpec = FrictionSpec()
+    lubrication: LubricationSpec = LubricationSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
     design: DesignSpec | None = None
     duty: list[DutySegment] = Field(
@@ -211,6 +220,16 @@ class Case(Model):
         description="duty cycle: [[duty]] segments of speed, load, stroke, dwell and duration",
     )
     duty_repeat: DutyRepeat = 1
+
+    @model_validator(mode="after")
+    def _one_lubricant(self) -> Case:
+        named = {self.medium.lubricant, self.kinematics.lubricant} - {None}
+        if len(named) > 1:
+            raise ValueError(
+                f"medium.lubricant = {self.medium.lubricant!r} is not allowed with "
+                f"kinematics.lubricant = {self.kinematics.lubricant!r}: name one lubricant"
+            )
+        return self
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:

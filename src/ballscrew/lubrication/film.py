@@ -15,7 +15,7 @@ from ballscrew.errors import InputError
 from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["FilmThickness", "dimensionless_groups", "hamrock_dowson"]
+__all__ = ["FilmModel", "FilmThickness", "dimensionless_groups", "film_function", "hamrock_dowson"]
 
 
 @dataclass(frozen=True)
@@ -65,10 +65,17 @@ def dimensionless_groups(
     )
 
 
-FILM_MODELS: Registry[Callable[..., FilmThickness]] = Registry(
-    "film thickness model", "medium.film_model"
-)
+FilmModel = Callable[..., FilmThickness]
+"""A film-thickness model ``(rx, ry, E′, η₀, α_p, u_e, Q_f) → FilmThickness``."""
+
+FILM_MODELS: Registry[FilmModel] = Registry("film thickness model", "medium.film_model")
 """Rival EHL film-thickness models, each ``(rx, ry, E′, η₀, α_p, u_e, Q_f) → FilmThickness``."""
+
+
+def film_function(model: str | FilmModel) -> FilmModel:
+    """The film model ``model``: a registered name, or a model already bound to its supply and
+    lubricant (``ballscrew.lubrication.supply.supplied_film_model``), returned as it is."""
+    return FILM_MODELS[model] if isinstance(model, str) else model
 
 
 @FILM_MODELS.register("hamrock_dowson", "Hamrock & Dowson (1977), isothermal, fully flooded")

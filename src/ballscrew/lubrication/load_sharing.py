@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.fractal import yan_komvopoulos as yk
-from ballscrew.lubrication.film import FILM_MODELS, FilmThickness
+from ballscrew.lubrication.film import FilmModel, FilmThickness, film_function
 from ballscrew.validation import real_array, real_number
 
 __all__ = [
@@ -98,10 +98,10 @@ def _film(
     viscosity: float,
     pressure_viscosity: float,
     speed: float,
-    film_model: str = "hamrock_dowson",
+    film_model: str | FilmModel = "hamrock_dowson",
 ) -> FilmThickness:
     film_load = film_fraction * load  # (1 − ψ) Q, passed as 1 − ψ to keep it > 0 near ψ = 1
-    film = FILM_MODELS[film_model]
+    film = film_function(film_model)
     return film(rx, ry, e_prime, viscosity, pressure_viscosity, speed, film_load)
 
 
@@ -116,7 +116,7 @@ def share_load(
     surface: AsperitySurface,
     *,
     xtol: float = 1e-14,
-    film_model: str = "hamrock_dowson",
+    film_model: str | FilmModel = "hamrock_dowson",
 ) -> LoadSharing:
     """Asperity share ψ of the normal load Q of one EHL contact, (E6.1)–(E6.4).
 
@@ -173,7 +173,7 @@ def load_sharing_residual(
     entrainment_speed: float,
     nominal_area: float,
     surface: AsperitySurface,
-    film_model: str = "hamrock_dowson",
+    film_model: str | FilmModel = "hamrock_dowson",
 ) -> NDArray[np.float64]:
     """r(ψ) = F_asp(h_c((1−ψ)Q)) − ψQ of (E6.4) at each ψ in [0, 1), N (for checks and plots)."""
     e_prime = 2.0 * surface.e_star
