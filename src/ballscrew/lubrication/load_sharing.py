@@ -10,6 +10,7 @@ Theory manual: ``docs/theory/lubrication.md``, load sharing (E6.1)–(E6.5).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -153,14 +154,33 @@ def share_load(
         psi = 0.0
     else:
         # Solve in t = ln(1 − ψ): h_c grows only as W^−0.067, so for rough surfaces the root
-        # lies within 1e-12 of ψ = 1; at t = ln(1e-300) the film is ~1e20 times thicker than at
-        # ψ = 0 and r = −ψQ < 0, so [ln 1e-300, 0] always brackets the root.
-        t, info = brentq(residual_t, _T_MIN, 0.0, xtol=xtol, rtol=1e-14, full_output=True)
+        # lies within 1e-12 of ψ = 1; at t = ln(1e-300) the flooded film is ~1e20 times thicker
+        # than at ψ = 0 and r = −ψQ < 0, so [ln 1e-300, 0] brackets the root. A starved film
+        # shrinks again as its load vanishes (its Hertz zone and so its meniscus distance do):
+        # then the first sign change on a grid in t brackets the root, and none means the film
+        # carries nothing (ψ = 1, dry).
+        low = _bracket(residual_t)
+        if low is None:
+            return LoadSharing(1.0, q, 0.0, None)
+        t, info = brentq(residual_t, low[0], low[1], xtol=xtol, rtol=1e-14, full_output=True)
         if not info.converged:  # pragma: no cover - brentq on a bracketed monotone function
             raise ConvergenceError("JGP load sharing", info.iterations, residual_t(t), xtol)
         psi = -math.expm1(t)
     film = _film(math.exp(t), *args)
     return LoadSharing(float(psi), q, film.central, film)
+
+
+def _bracket(residual: Callable[[float], float]) -> tuple[float, float] | None:
+    """[a, b] ⊂ [ln 1e-300, 0] with r(a) ≤ 0 < r(b), b the largest such (r(0) > 0 given)."""
+    if residual(_T_MIN) <= 0.0:
+        return _T_MIN, 0.0
+    grid = -np.geomspace(1e-12, -_T_MIN, 97)
+    upper = 0.0
+    for t in grid:
+        if residual(float(t)) <= 0.0:
+            return float(t), upper
+        upper = float(t)
+    return None
 
 
 def load_sharing_residual(
