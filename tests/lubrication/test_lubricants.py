@@ -103,3 +103,22 @@ def test_two_different_lubricants_are_refused(tmp_path, wear_case_path):
     (tmp_path / "d.toml").write_text(text)
     with pytest.raises(CaseError, match="name one lubricant"):
         load_case(tmp_path / "d.toml")
+
+
+def test_a_given_viscosity_sets_the_named_lubricant_at_its_temperature(tmp_path, wear_case_path):
+    # Two routes to the same state: the inlet temperature of the case, or the viscosity the
+    # operating point passes at its contact temperature.
+    from ballscrew.analyses.friction import friction_torque
+
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', "")
+    text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', 'lubricant = "iso_vg_68"\n')
+    text += '\n[friction]\nmodel = "ball_model"\n\n[lubrication]\nthermal = true\n'
+    (tmp_path / "a.toml").write_text(text)
+    (tmp_path / "b.toml").write_text(text + 'temperature = "70 degC"\n')
+    cold, hot = load_case(tmp_path / "a.toml"), load_case(tmp_path / "b.toml")
+    eta70 = library_lubricant("iso_vg_68").at(343.15).viscosity
+    passed = friction_torque(cold, speed=100.0, viscosity=eta70)
+    inlet = friction_torque(hot, speed=100.0)
+    assert passed.film_parameter == pytest.approx(inlet.film_parameter, rel=1e-9)
+    assert passed.total == pytest.approx(inlet.total, rel=1e-9)
+    assert friction_torque(cold, speed=100.0).film_parameter > passed.film_parameter

@@ -27,10 +27,24 @@ from ballscrew.geometry import ScrewGeometry, raceway_curvature
 from ballscrew.geometry.screw import SIDES, Side
 from ballscrew.loads import ball_load, nut_axial_compliance, nut_forces
 from ballscrew.lubrication.film import FilmModel
-from ballscrew.lubrication.lubricant_library import LubricantState, library_lubricant
+from ballscrew.lubrication.lubricant_library import (
+    LibraryLubricant,
+    LubricantState,
+    library_lubricant,
+)
 from ballscrew.lubrication.supply import supplied_film_model
 
-__all__ = ["SIDES", "Lubrication", "Material", "NutLoad", "ScrewParameters", "Side"]
+__all__ = [
+    "SIDES",
+    "Lubrication",
+    "Material",
+    "NutLoad",
+    "ScrewParameters",
+    "Side",
+    "film_model",
+    "library_entry",
+    "lubricant_state",
+]
 
 
 @dataclass(frozen=True)
@@ -98,19 +112,29 @@ class Lubrication:
         return self.viscosity is not None and self.pressure_viscosity is not None
 
 
-def _named_lubricant(case: Case) -> LubricantState | None:
-    """The named lubricant of ``[medium]`` or ``[kinematics]`` at the inlet temperature."""
+def library_entry(case: Case) -> LibraryLubricant | None:
+    """The library lubricant named by ``[medium] lubricant`` or ``[kinematics] lubricant``."""
     name = case.medium.lubricant or case.kinematics.lubricant
-    if name is None:
+    return None if name is None else library_lubricant(name)
+
+
+def lubricant_state(case: Case, viscosity: float | None = None) -> LubricantState | None:
+    """The named lubricant at ``[lubrication] temperature``, or, for a given ``viscosity``
+    [Pa s] when ``[medium]`` gives none, at the temperature where it has that viscosity
+    (the caller's contact temperature); None without a named lubricant."""
+    entry = library_entry(case)
+    if entry is None:
         return None
-    return library_lubricant(name).at(case.lubrication.temperature)
+    if viscosity is None or case.medium.viscosity is not None:
+        return entry.at(case.lubrication.temperature)
+    return entry.at(entry.temperature_at(viscosity))
 
 
-def _film_model(case: Case, named: LubricantState | None) -> str | FilmModel:
+def film_model(case: Case, named: LubricantState | None) -> str | FilmModel:
     """``medium.film_model`` bound to the supply state and inlet heating of ``[lubrication]``.
 
-    The thermal correction takes β and λ of the named lubricant at the inlet temperature, or of
-    ISO VG 68 mineral oil when no lubricant is named (its density-based λ is then ASSUMED).
+    The thermal correction takes β and λ of the named lubricant ``named``, or of ISO VG 68
+    mineral oil at the inlet temperature when no lubricant is named (ASSUMED).
     """
     spec = case.lubrication
     thermal = None
@@ -159,7 +183,7 @@ class ScrewParameters:
         geometry = ScrewGeometry.from_spec(spec)
         medium = case.medium
         eta, alpha = medium.viscosity, medium.pressure_viscosity
-        named = _named_lubricant(case)
+        named = lubricant_state(case)
         if named is not None:
             eta = named.viscosity if eta is None else eta
             alpha = named.pressure_viscosity if alpha is None else alpha
@@ -182,7 +206,7 @@ class ScrewParameters:
                 medium.thermal_conductivity,
                 eta,
                 alpha,
-                _film_model(case, named),
+                film_model(case, named),
                 named.density if named is not None else 870.0,
             ),
             nuts=(),
