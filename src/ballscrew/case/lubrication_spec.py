@@ -21,9 +21,9 @@ from pydantic import Field, model_validator
 from ballscrew.case.base import Model, quantity
 
 #: Inlet meniscus ratio m of a greased contact: GUESS. Grease supplies its base oil by bleeding
-#: slowly into the track, so a greased contact runs starved (Cann & Lubrecht; Damiens et al.
-#: 2004); no closed form gives m from the grease, and m = 1.5 (film ≈ 0.6–0.8 of flooded for
-#: usual ball-screw contacts) is taken as a moderate starvation.
+#: slowly into the track, so a greased contact runs starved (Damiens, Venner, Cann & Lubrecht
+#: 2004); no closed form gives m from the grease, and m = 1.5 (film 0.8–1.0 of flooded for
+#: ball-screw contacts at 0.1–1 m/s) is taken as a moderate starvation.
 DEFAULT_GREASE_INLET_RATIO = 1.5
 
 Supply = Literal["flooded", "starved", "grease"]
