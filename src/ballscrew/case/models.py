@@ -1,7 +1,8 @@
 """Pydantic models of a ballscrew case file.
 
 A case is one TOML file with the sections ``[screw]``, ``[materials.ball|screw|nut]``,
-``[surface]``, ``[medium]``, ``[operating]`` and ``[numerics]``. Every number is SI; a string
+``[surface]``, ``[medium]``, ``[operating]`` and ``[numerics]`` (and the optional analysis
+sections, ``[lubrication]`` among them). Every number is SI; a string
 with a unit (``lead = "10 mm"``) is converted by pint. Unknown keys are errors, so a misspelt
 parameter is never silently ignored.
 """
