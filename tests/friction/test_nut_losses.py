@@ -20,8 +20,8 @@ from ballscrew.friction.nut_losses import (
 
 def test_ball_ball_power_is_friction_times_force_times_twice_the_surface_speed():
     # neighbours turning alike slide at 2 r_b |Ω × t|: μ_bb F_B 2 v
-    assert ball_ball_power(0.35, 0.1, 2.38e-3, 0.084) == pytest.approx(0.1 * 0.35 * 2 * 0.084)
-    assert ball_ball_power(0.0, 0.1, 2.38e-3, 0.084) == 0.0
+    assert ball_ball_power(0.35, 0.1, 0.084) == pytest.approx(0.1 * 0.35 * 2 * 0.084)
+    assert ball_ball_power(0.0, 0.1, 0.084) == 0.0
 
 
 def test_sphere_drag_coefficient_stokes_limit_and_newton_regime():
@@ -51,7 +51,7 @@ def test_recirculation_power_closed_form():
 @pytest.mark.parametrize(
     ("call", "field"),
     [
-        (lambda: ball_ball_power(-1.0, 0.1, 1e-3, 1.0), "ball_ball_force"),
+        (lambda: ball_ball_power(-1.0, 0.1, 1.0), "ball_ball_force"),
         (lambda: drag_power(1.0, 1e-3, 870.0, 0.06, -0.1), "friction.lubricant_fill"),
         (lambda: sphere_drag_coefficient(0.0), "reynolds"),
     ],

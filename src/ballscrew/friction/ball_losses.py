@@ -118,7 +118,7 @@ def _ball_ball_torque(model: BallModel, state: BallState, nut: NutLossParameters
     r_b = model.geometry.ball_radius
     surface = r_b * float(np.linalg.norm(np.cross(motion.angular_velocity, model.frame.t)))
     force = nut.ball_ball_load_ratio * state.load_screw
-    return ball_ball_power(force, nut.ball_ball_friction, r_b, surface) / omega
+    return ball_ball_power(force, nut.ball_ball_friction, surface) / omega
 
 
 def _one_ball(

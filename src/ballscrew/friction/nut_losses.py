@@ -75,20 +75,17 @@ class NutLossParameters:
     """Ball circuits per nut."""
 
 
-def ball_ball_power(
-    contact_force: float, friction: float, ball_radius: float, sliding_speed: float
-) -> float:
-    """P_bb = μ_bb F_B v_bb [W] at one ball–ball contact.
+def ball_ball_power(contact_force: float, friction: float, surface_speed: float) -> float:
+    """P_bb = μ_bb F_B · 2 v_s [W] at one ball–ball contact.
 
     Two neighbours with the same angular velocity Ω touch at ±r_b t (t the direction of the
-    track), so their surfaces slide at v_bb = 2 r_b |Ω × t|; the friction moment on each ball
-    is M_B = μ_bb F_B r_b (Olaru et al. 2005) and the power of the pair μ_bb F_B v_bb.
-    ``sliding_speed`` = |Ω × t| r_b, the surface speed of one ball [m/s] (doubled here).
+    track), so their surfaces slide past each other at 2 v_s, v_s = r_b |Ω × t| the surface
+    speed of one ball [m/s]; the friction moment on each ball is M_B = μ_bb F_B r_b (Olaru et
+    al. 2005). ``contact_force`` F_B [N]; ``friction`` μ_bb.
     """
     nonnegative("ball_ball_force", contact_force, "N")
     nonnegative("friction.ball_ball_friction", friction)
-    positive("ball_radius", ball_radius, "m")
-    return friction * contact_force * 2.0 * abs(sliding_speed)
+    return friction * contact_force * 2.0 * abs(surface_speed)
 
 
 def sphere_drag_coefficient(reynolds: float) -> float:
