@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.friction import friction_torque
+from ballscrew.analyses.parameters import ScrewParameters, library_entry
 from ballscrew.case import CaseError, load_case
 from ballscrew.errors import InputError
 from ballscrew.lubrication import LUBRICANTS, lubricant
@@ -108,8 +109,6 @@ def test_two_different_lubricants_are_refused(tmp_path, wear_case_path):
 def test_a_given_viscosity_sets_the_named_lubricant_at_its_temperature(tmp_path, wear_case_path):
     # Two routes to the same state: the inlet temperature of the case, or the viscosity the
     # operating point passes at its contact temperature.
-    from ballscrew.analyses.friction import friction_torque
-
     text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', "")
     text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', 'lubricant = "iso_vg_68"\n')
     text += '\n[friction]\nmodel = "ball_model"\n\n[lubrication]\nthermal = true\n'
@@ -122,3 +121,41 @@ def test_a_given_viscosity_sets_the_named_lubricant_at_its_temperature(tmp_path,
     assert passed.film_parameter == pytest.approx(inlet.film_parameter, rel=1e-9)
     assert passed.total == pytest.approx(inlet.total, rel=1e-9)
     assert friction_torque(cold, speed=100.0).film_parameter > passed.film_parameter
+
+
+def _unnamed_oil(tmp_path, wear_case_path, lines):
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', lines)
+    text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', "")
+    (tmp_path / "oil.toml").write_text(text)
+    return load_case(tmp_path / "oil.toml")
+
+
+def test_an_unnamed_oil_by_two_viscosities_follows_astm_d341(tmp_path, wear_case_path):
+    # the same anchors as the library's VG 68 give the library's state, at 40 °C and at 70 °C
+    lines = 'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "8.6 mm^2/s"\ndensity_15 = "880 kg/m^3"\n'
+    case = _unnamed_oil(tmp_path, wear_case_path, lines)
+    vg68 = library_lubricant("iso_vg_68")
+    state = vg68.at(313.15)
+    assert case_lubricant(case) == (
+        pytest.approx(state.viscosity, rel=1e-12),
+        pytest.approx(state.pressure_viscosity, rel=1e-12),
+    )
+    entry = library_entry(case)
+    assert entry.at(343.15).viscosity == pytest.approx(vg68.at(343.15).viscosity, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("lines", "text"),
+    [
+        ('viscosity_40 = "68 mm^2/s"\nviscosity_100 = "80 mm^2/s"\n', "falls with temperature"),
+        ('viscosity_40 = "68 mm^2/s"\n', "viscosity_100 is missing"),
+        (
+            'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "8 mm^2/s"\nlubricant = "iso_vg_68"\n',
+            "give the oil one way",
+        ),
+    ],
+)
+def test_bad_oil_viscosities_are_one_line_errors(tmp_path, wear_case_path, lines, text):
+    with pytest.raises(CaseError) as err:
+        _unnamed_oil(tmp_path, wear_case_path, lines)
+    assert text in str(err.value) and "\n" not in str(err.value).strip()

@@ -113,8 +113,20 @@ class Lubrication:
 
 
 def library_entry(case: Case) -> LibraryLubricant | None:
-    """The library lubricant named by ``[medium] lubricant`` or ``[kinematics] lubricant``."""
-    name = case.medium.lubricant or case.kinematics.lubricant
+    """The case's lubricant with its laws against temperature: the library entry named by
+    ``[medium] lubricant`` or ``[kinematics] lubricant``, or the oil given by ``[medium]
+    viscosity_40``, ``viscosity_100`` and ``density_15``; None without either."""
+    medium = case.medium
+    if medium.viscosity_40 is not None and medium.viscosity_100 is not None:
+        return LibraryLubricant(
+            medium.name,
+            "oil",
+            medium.viscosity_40,
+            medium.viscosity_100,
+            medium.density_15,
+            "[medium] viscosity_40, viscosity_100, density_15 of the case",
+        )
+    name = medium.lubricant or case.kinematics.lubricant
     return None if name is None else library_lubricant(name)
 
 

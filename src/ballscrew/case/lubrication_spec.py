@@ -14,7 +14,7 @@ Example::
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
@@ -27,6 +27,30 @@ from ballscrew.case.base import Model, quantity
 DEFAULT_GREASE_INLET_RATIO = 1.5
 
 Supply = Literal["flooded", "starved", "grease"]
+
+
+def check_oil_viscosities(medium: Any) -> Any:
+    """``[medium]`` validator: an unnamed oil by two viscosities that fall with temperature,
+    not together with a named lubricant or a dynamic viscosity."""
+    nu40, nu100 = medium.viscosity_40, medium.viscosity_100
+    if nu40 is None and nu100 is None:
+        return medium
+    if nu40 is None or nu100 is None:
+        given = "viscosity_40" if nu100 is None else "viscosity_100"
+        missing = "viscosity_100" if nu100 is None else "viscosity_40"
+        raise ValueError(f"{missing} is missing: an oil by viscosities needs it with {given}")
+    if nu100 >= nu40:
+        raise ValueError(
+            f"viscosity_100 = {nu100:g} m^2/s is not allowed: it must be below viscosity_40 = "
+            f"{nu40:g} m^2/s (the viscosity falls with temperature)"
+        )
+    for other in ("lubricant", "viscosity"):
+        if getattr(medium, other) is not None:
+            raise ValueError(
+                f"{other} = {getattr(medium, other)!r} is not allowed with viscosity_40/100: "
+                "give the oil one way"
+            )
+    return medium
 
 
 class LubricationSpec(Model):

@@ -19,7 +19,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
-from ballscrew.case.lubrication_spec import LubricationSpec
+from ballscrew.case.lubrication_spec import LubricationSpec, check_oil_viscosities
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import (
@@ -100,6 +100,9 @@ class SurfaceSpec(FractalSurface):
     ball: FractalSurface | None = Field(None, description="ball roughness; None = smooth ball")
 
 
+_KinematicViscosity = quantity("kinematic_viscosity", "kinematic viscosity", gt=0, le=1.0)
+
+
 class MediumSpec(Model):
     """The interstitial medium between the asperities: lubricant, grease or air."""
 
@@ -122,8 +125,18 @@ class MediumSpec(Model):
         description="named lubricant of the library (ballscrew.lubrication.LUBRICANT_LIBRARY) "
         "for the values not given here; None = these values only",
     )
+    viscosity_40: _KinematicViscosity | None = Field(
+        None, description="an unnamed oil: kinematic viscosity at 40 °C (ASTM D341 with _100)"
+    )
+    viscosity_100: _KinematicViscosity | None = Field(
+        None, description="an unnamed oil: kinematic viscosity at 100 °C"
+    )
+    density_15: quantity(
+        "density", "an unnamed oil: density at 15 °C [ASSUMED 870]", gt=0, le=1e4
+    ) = 870.0
 
     _known_lubricant = field_validator("lubricant")(known_lubricant)
+    _one_oil = model_validator(mode="after")(check_oil_viscosities)
 
 
 class OperatingSpec(Model):
