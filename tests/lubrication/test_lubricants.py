@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import pytest
+from typer.testing import CliRunner
 
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.parameters import ScrewParameters, library_entry
 from ballscrew.case import CaseError, load_case
+from ballscrew.cli import app
 from ballscrew.errors import InputError
 from ballscrew.lubrication import LUBRICANTS, lubricant
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY, library_lubricant
@@ -159,3 +161,24 @@ def test_bad_oil_viscosities_are_one_line_errors(tmp_path, wear_case_path, lines
     with pytest.raises(CaseError) as err:
         _unnamed_oil(tmp_path, wear_case_path, lines)
     assert text in str(err.value) and "\n" not in str(err.value).strip()
+
+
+@pytest.mark.parametrize(
+    ("insert", "message"),
+    [
+        ('lubricant = "motor oil"\n', "medium.lubricant: unknown lubricant; known: "),
+        (
+            'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "90 mm^2/s"\n',
+            "(the viscosity falls with temperature)",
+        ),
+    ],
+)
+def test_cli_refuses_a_bad_lubricant_in_one_line_with_exit_2(
+    tmp_path, wear_case_path, insert, message
+):
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', insert)
+    (tmp_path / "case.toml").write_text(text)
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["kinematics", str(tmp_path / "case.toml"), "--out", str(out)])
+    assert result.exit_code == 2 and message in result.output
+    assert len(result.output.strip().splitlines()) == 1 and not out.exists()
