@@ -12,15 +12,12 @@ from ballscrew.errors import InputError
 from ballscrew.lubrication.film import FILM_MODELS, hamrock_dowson
 from ballscrew.lubrication.film_corrections import (
     critical_inlet_ratio,
-    hamrock_dowson_starved,
-    hamrock_dowson_thermal,
     starvation_factor,
-    starved_film_model,
-    thermal_film_model,
     thermal_loading,
     thermal_reduction_gupta,
     thermal_reduction_murch_wilson,
 )
+from ballscrew.lubrication.supply import supplied_film_model
 
 LAM = math.atan(0.010 / (math.pi * 0.040))
 RX = 1.0 / (2 / 6.35e-3 + 2 * math.cos(math.pi / 4) * math.cos(LAM) / (0.040 - 6.35e-3 / 2**0.5))
@@ -29,9 +26,18 @@ E_PRIME = 2.2637e11
 ARGS = (RX, RY, E_PRIME, 0.06, 2.1e-8, 0.09333, 39.41)
 
 
-def test_corrections_are_registered_film_models():
-    assert FILM_MODELS["hamrock_dowson_thermal"] is hamrock_dowson_thermal
-    assert FILM_MODELS["hamrock_dowson_starved"] is hamrock_dowson_starved
+def thermal_film_model(beta, conductivity):
+    return supplied_film_model("hamrock_dowson", thermal=(beta, conductivity))
+
+
+def starved_film_model(m):
+    return supplied_film_model("hamrock_dowson", inlet_ratio=m)
+
+
+def test_corrections_are_case_options_not_rival_film_models():
+    # the case applies them through [lubrication] supply / thermal, on any film model
+    assert "hamrock_dowson_thermal" not in FILM_MODELS
+    assert "hamrock_dowson_starved" not in FILM_MODELS
 
 
 def test_thermal_loading_is_beta_eta_u2_over_lambda():
@@ -58,13 +64,12 @@ def test_gupta_factor_limits_and_trends():
 
 def test_no_inlet_heating_gives_the_isothermal_film():
     flooded = hamrock_dowson(*ARGS)
-    assert hamrock_dowson_thermal(*ARGS, temperature_viscosity=0.0) == flooded
     assert thermal_film_model(0.0, 0.13)(*ARGS) == flooded
 
 
 def test_thermal_film_at_speed():
     fast = (*ARGS[:5], 10.0, ARGS[6])
-    film = thermal_film_model(0.05, 0.13, 0.0)(*fast)
+    film = thermal_film_model(0.05, 0.13)(*fast)
     p_h = hamrock_brewe(RX, RY, E_PRIME / 2, ARGS[6]).p0
     phi = thermal_reduction_gupta(thermal_loading(0.05, 0.06, 10.0, 0.13), p_h / E_PRIME)
     assert film.central == pytest.approx(hamrock_dowson(*fast).central * phi)
@@ -81,7 +86,7 @@ def test_critical_inlet_distance_of_contact_a():
 
 def test_fully_flooded_inlet_leaves_the_film_unchanged():
     flooded = hamrock_dowson(*ARGS)
-    assert hamrock_dowson_starved(*ARGS) == flooded
+    assert supplied_film_model("hamrock_dowson") == "hamrock_dowson"
     assert starved_film_model(5.0)(*ARGS) == flooded
 
 
@@ -91,17 +96,15 @@ def test_starvation_reduces_the_film_towards_zero_at_the_hertz_edge():
     m_star = critical_inlet_ratio(RX, b, flooded.central)
     half = starved_film_model(1 + (m_star - 1) / 2)(*ARGS)
     assert half.central / flooded.central == pytest.approx(0.5**0.29)
-    ratios = [
-        hamrock_dowson_starved(*ARGS, inlet_ratio=m).central for m in (1.3, 1.1, 1.01, 1.0001)
-    ]
+    ratios = [starved_film_model(m)(*ARGS).central for m in (1.3, 1.1, 1.01, 1.0001)]
     assert all(a > b for a, b in itertools.pairwise(ratios))
-    assert hamrock_dowson_starved(*ARGS, inlet_ratio=1.0).central == 0.0
+    assert starved_film_model(1.0)(*ARGS).central == 0.0
     assert starvation_factor(1.0 + 1e-12, 1.5) < 1e-3
 
 
 @pytest.mark.parametrize("m", [0.9, float("nan")])
 def test_meniscus_inside_the_hertz_zone_is_refused(m):
-    with pytest.raises(InputError, match=r"^inlet_ratio = "):
-        hamrock_dowson_starved(*ARGS, inlet_ratio=m)
-    with pytest.raises(InputError, match=r"^inlet_ratio = "):
+    with pytest.raises(InputError, match=r"^lubrication.inlet_ratio = "):
         starved_film_model(m)
+    with pytest.raises(InputError, match=r"^inlet_ratio = "):
+        starvation_factor(m, 1.5)

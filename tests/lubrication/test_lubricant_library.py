@@ -62,3 +62,11 @@ def test_an_entry_whose_viscosity_rises_with_temperature_is_refused():
         LibraryLubricant("bad", "oil", 10e-6, 12e-6, 870.0, "test")
     with pytest.raises(InputError, match=r"^kind = 'paste'"):
         LibraryLubricant("bad", "paste", 10e-6, 2.6e-6, 870.0, "test")
+
+
+@pytest.mark.parametrize("name", ["iso_vg_10", "iso_vg_68", "lithium_complex_nlgi2_vg220"])
+def test_temperature_at_inverts_the_viscosity_law(name):
+    lub = LUBRICANT_LIBRARY[name]
+    for temperature in (273.15, 313.15, 353.15, 393.15):
+        eta = lub.at(temperature).viscosity
+        assert lub.temperature_at(eta) == pytest.approx(temperature, abs=1e-6)

@@ -1,13 +1,17 @@
-"""Named lubricants and how a case picks its lubricant."""
+"""Named lubricants and how a case picks its lubricant: one library for every key."""
 
 from __future__ import annotations
 
 import pytest
+from typer.testing import CliRunner
 
-from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.case import load_case
+from ballscrew.analyses.friction import friction_torque
+from ballscrew.analyses.parameters import ScrewParameters, library_entry
+from ballscrew.case import CaseError, load_case
+from ballscrew.cli import app
 from ballscrew.errors import InputError
 from ballscrew.lubrication import LUBRICANTS, lubricant
+from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY, library_lubricant
 
 
 def case_lubricant(case):
@@ -16,12 +20,20 @@ def case_lubricant(case):
     return lubrication.viscosity, lubrication.pressure_viscosity
 
 
-def test_iso_grades_follow_iso_3448_midpoints():
-    # η₀ = ρ ν with ν = grade mm²/s at 40 °C and ρ = 870 kg/m³.
-    assert lubricant("iso_vg_68").viscosity == pytest.approx(870 * 68e-6)
-    assert lubricant("iso_vg_68").pressure_viscosity == 2.1e-8  # wear reference screw
-    for entry in LUBRICANTS.values():
-        assert 1e-3 < entry.viscosity < 1.0 and 1e-8 < entry.pressure_viscosity < 3e-8
+def test_the_40c_table_is_a_view_of_the_library():
+    # The old table had η₀ = 870 kg/m³ × ν40 and a guessed α_p = 2.1e-8 1/Pa for VG 68; the view
+    # takes both from the library's laws at 40 °C: ρ(40 °C) = 880 (1 − 6.4e-4 × 25) kg/m³ and
+    # Gold et al. (2001) α_p = 9.904 ν^0.139 1/GPa.
+    assert set(LUBRICANTS) == set(LUBRICANT_LIBRARY)
+    vg68 = lubricant("iso_vg_68")
+    assert vg68.viscosity == pytest.approx(880.0 * (1 - 6.4e-4 * 25.0) * 68e-6, rel=1e-9)
+    assert vg68.pressure_viscosity == pytest.approx(9.904e-9 * 68**0.139, rel=1e-12)
+    for key, entry in LUBRICANTS.items():
+        state = library_lubricant(key).at(313.15)
+        assert (entry.viscosity, entry.pressure_viscosity) == (
+            state.viscosity,
+            state.pressure_viscosity,
+        )
         assert entry.source
 
 
@@ -50,4 +62,123 @@ def test_medium_values_take_precedence_over_a_named_lubricant(tmp_path, wear_cas
     text = text.replace("[numerics]", '[kinematics]\nlubricant = "iso_vg_32"\n\n[numerics]', 1)
     (tmp_path / "b.toml").write_text(text)
     eta, alpha = case_lubricant(load_case(tmp_path / "b.toml"))
-    assert eta == pytest.approx(870 * 32e-6) and alpha == 2.1e-8
+    assert eta == pytest.approx(lubricant("iso_vg_32").viscosity) and alpha == 2.1e-8
+
+
+def test_medium_lubricant_is_the_same_key_and_follows_the_inlet_temperature(
+    tmp_path, wear_case_path
+):
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', "")
+    text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', 'lubricant = "iso_vg_68"\n')
+    (tmp_path / "a.toml").write_text(text)
+    eta40, alpha40 = case_lubricant(load_case(tmp_path / "a.toml"))
+    assert eta40 == pytest.approx(865.92 * 68e-6, rel=1e-9)  # ρ(40 °C) ν40
+    assert alpha40 == pytest.approx(9.904e-9 * 68**0.139, rel=1e-12)
+    hot = text + '\n[lubrication]\ntemperature = "80 degC"\n'
+    (tmp_path / "b.toml").write_text(hot)
+    eta80, alpha80 = case_lubricant(load_case(tmp_path / "b.toml"))
+    state = library_lubricant("iso_vg_68").at(353.15)
+    assert (eta80, alpha80) == (state.viscosity, state.pressure_viscosity)
+    assert eta80 < 0.3 * eta40
+
+
+@pytest.mark.parametrize("section", ["medium", "kinematics"])
+def test_unknown_lubricant_in_either_section_is_one_line_listing_the_library(
+    tmp_path, wear_case_path, section
+):
+    text = wear_case_path.read_text()
+    if section == "medium":
+        text = text.replace("[medium]\n", '[medium]\nlubricant = "motor oil"\n', 1)
+    else:
+        text = text.replace("[numerics]", '[kinematics]\nlubricant = "motor oil"\n\n[numerics]')
+    (tmp_path / "c.toml").write_text(text)
+    with pytest.raises(CaseError) as err:
+        load_case(tmp_path / "c.toml")
+    message = str(err.value)
+    assert "\n" not in message.strip()
+    assert f"{section}.lubricant" in message and "iso_vg_460" in message
+    assert "lithium_nlgi2_vg100" in message
+
+
+def test_two_different_lubricants_are_refused(tmp_path, wear_case_path):
+    text = wear_case_path.read_text().replace("[medium]\n", '[medium]\nlubricant = "iso_vg_46"\n')
+    text = text.replace("[numerics]", '[kinematics]\nlubricant = "iso_vg_68"\n\n[numerics]')
+    (tmp_path / "d.toml").write_text(text)
+    with pytest.raises(CaseError, match="name one lubricant"):
+        load_case(tmp_path / "d.toml")
+
+
+def test_a_given_viscosity_sets_the_named_lubricant_at_its_temperature(tmp_path, wear_case_path):
+    # Two routes to the same state: the inlet temperature of the case, or the viscosity the
+    # operating point passes at its contact temperature.
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', "")
+    text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', 'lubricant = "iso_vg_68"\n')
+    text += '\n[friction]\nmodel = "ball_model"\n\n[lubrication]\nthermal = true\n'
+    (tmp_path / "a.toml").write_text(text)
+    (tmp_path / "b.toml").write_text(text + 'temperature = "70 degC"\n')
+    cold, hot = load_case(tmp_path / "a.toml"), load_case(tmp_path / "b.toml")
+    eta70 = library_lubricant("iso_vg_68").at(343.15).viscosity
+    passed = friction_torque(cold, speed=100.0, viscosity=eta70)
+    inlet = friction_torque(hot, speed=100.0)
+    assert passed.film_parameter == pytest.approx(inlet.film_parameter, rel=1e-9)
+    assert passed.total == pytest.approx(inlet.total, rel=1e-9)
+    assert friction_torque(cold, speed=100.0).film_parameter > passed.film_parameter
+
+
+def _unnamed_oil(tmp_path, wear_case_path, lines):
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', lines)
+    text = text.replace('pressure_viscosity = "2.1e-8 1/Pa"\n', "")
+    (tmp_path / "oil.toml").write_text(text)
+    return load_case(tmp_path / "oil.toml")
+
+
+def test_an_unnamed_oil_by_two_viscosities_follows_astm_d341(tmp_path, wear_case_path):
+    # the same anchors as the library's VG 68 give the library's state, at 40 °C and at 70 °C
+    lines = 'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "8.6 mm^2/s"\ndensity_15 = "880 kg/m^3"\n'
+    case = _unnamed_oil(tmp_path, wear_case_path, lines)
+    vg68 = library_lubricant("iso_vg_68")
+    state = vg68.at(313.15)
+    assert case_lubricant(case) == (
+        pytest.approx(state.viscosity, rel=1e-12),
+        pytest.approx(state.pressure_viscosity, rel=1e-12),
+    )
+    entry = library_entry(case)
+    assert entry.at(343.15).viscosity == pytest.approx(vg68.at(343.15).viscosity, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("lines", "text"),
+    [
+        ('viscosity_40 = "68 mm^2/s"\nviscosity_100 = "80 mm^2/s"\n', "falls with temperature"),
+        ('viscosity_40 = "68 mm^2/s"\n', "viscosity_100 is missing"),
+        (
+            'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "8 mm^2/s"\nlubricant = "iso_vg_68"\n',
+            "give the oil one way",
+        ),
+    ],
+)
+def test_bad_oil_viscosities_are_one_line_errors(tmp_path, wear_case_path, lines, text):
+    with pytest.raises(CaseError) as err:
+        _unnamed_oil(tmp_path, wear_case_path, lines)
+    assert text in str(err.value) and "\n" not in str(err.value).strip()
+
+
+@pytest.mark.parametrize(
+    ("insert", "message"),
+    [
+        ('lubricant = "motor oil"\n', "medium.lubricant: unknown lubricant; known: "),
+        (
+            'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "90 mm^2/s"\n',
+            "(the viscosity falls with temperature)",
+        ),
+    ],
+)
+def test_cli_refuses_a_bad_lubricant_in_one_line_with_exit_2(
+    tmp_path, wear_case_path, insert, message
+):
+    text = wear_case_path.read_text().replace('viscosity = "0.06 Pa*s"\n', insert)
+    (tmp_path / "case.toml").write_text(text)
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["kinematics", str(tmp_path / "case.toml"), "--out", str(out)])
+    assert result.exit_code == 2 and message in result.output
+    assert len(result.output.strip().splitlines()) == 1 and not out.exists()

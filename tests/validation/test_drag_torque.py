@@ -73,8 +73,13 @@ def test_thk_preload_torque_example(validation, dataset, base_raw) -> None:
 
 
 PHYSICS_ASSUMPTIONS = (
-    "hysteresis loss fraction 0.01 (GUESS: the friction model's default); no seals, no "
-    "recirculation loss; kinematics level 2",
+    "hysteresis loss fraction 0.01; force between adjacent balls 1 % of the ball load with "
+    "friction 0.1; lubricant fill of the nut 0.1; 2 circuits per nut (GUESS: the friction "
+    "model's defaults); no seals; flooded, isothermal film; kinematics level 2",
+)
+PHYSICS_MODEL = (
+    "friction_torque (ball_model: traction, EHL rolling, hysteresis, ball–ball friction, drag, "
+    "ball returns; level 2)"
 )
 
 
@@ -113,7 +118,7 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         "model should do at least as well",
     ),
     "friction_ball_model": (
-        "friction_torque (ball_model: traction, EHL rolling, hysteresis; level 2)",
+        PHYSICS_MODEL,
         lambda case: _physics_torque(case, 100.0 * RPM),
         (*BALL_MODEL_ASSUMPTIONS, *PHYSICS_ASSUMPTIONS),
         f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
@@ -187,7 +192,7 @@ def test_thk_preload_torque_example_by_the_physics_model(validation, dataset, ba
     validation.check(
         "thk_preload_torque_example_physics",
         kind="verification",
-        model="friction_torque (ball_model: traction, EHL rolling, hysteresis; level 2)",
+        model=PHYSICS_MODEL,
         source=THK_SOURCE,
         reference=data,
         quantity="preload drag torque, BNFN4010-5, F_p = 3000 N",

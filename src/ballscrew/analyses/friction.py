@@ -12,13 +12,19 @@ import dataclasses
 from functools import partial
 
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
-from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
 from ballscrew.case import Case
-from ballscrew.friction import FrictionInputs, FrictionTorque, ball_losses, nut_friction_torque
+from ballscrew.friction import (
+    FrictionInputs,
+    FrictionTorque,
+    NutLossParameters,
+    ball_losses,
+    nut_friction_torque,
+)
 from ballscrew.kinematics.model import BallModel
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["friction_torque", "seal_torque"]
+__all__ = ["friction_torque", "nut_loss_parameters", "seal_torque"]
 
 
 def seal_torque(case: Case) -> float:
@@ -29,11 +35,33 @@ def seal_torque(case: Case) -> float:
     return spec.seal_force * 0.5 * case.screw.pitch_diameter
 
 
+def nut_loss_parameters(case: Case, viscosity: float | None = None) -> NutLossParameters:
+    """Ball–ball, drag and ball-return parameters of ``[friction]`` and the lubricant density
+    (of the named lubricant at the temperature of ``viscosity`` [Pa s], see
+    :func:`~ballscrew.analyses.parameters.lubricant_state`; 870 kg/m³ without one)."""
+    spec = case.friction
+    state = lubricant_state(case, viscosity)
+    return NutLossParameters(
+        ball_ball_load_ratio=spec.ball_ball_load_ratio,
+        ball_ball_friction=spec.ball_ball_friction,
+        lubricant_fill=spec.lubricant_fill,
+        lubricant_density=state.density if state is not None else 870.0,
+        circuits=spec.circuits,
+    )
+
+
 def _ball_model(case: Case, viscosity: float | None) -> BallModel:
+    """The case's ball model; a given ``viscosity`` (the caller's contact temperature) also
+    sets α_p and the film's inlet heating of a named lubricant at that temperature."""
     model = ball_model(case)
-    changes: dict[str, float] = {}
+    changes: dict[str, object] = {}
     if viscosity is not None:
         changes["viscosity"] = positive("viscosity", viscosity, "Pa s")
+        state = lubricant_state(case, viscosity)
+        if state is not None and case.medium.viscosity is None:
+            if case.medium.pressure_viscosity is None:
+                changes["pressure_viscosity"] = state.pressure_viscosity
+            changes["film_model"] = film_model(case, state)
     if case.friction.boundary_friction is not None:
         changes["boundary_friction"] = case.friction.boundary_friction
     return dataclasses.replace(model, **changes) if changes else model
@@ -49,8 +77,11 @@ def friction_torque(
 
     ``speed`` [rad/s], ``axial_load`` [N] and ``viscosity`` [Pa s] default to the case's
     ``operating.speed``, ``operating.axial_load`` and inlet viscosity; the model and its
-    parameters come from ``[friction]``. The ball model runs at ``[kinematics] level`` on the
-    nut forces of the preload alone (the working load enters through the efficiency).
+    parameters come from ``[friction]``. With a named lubricant (and no ``[medium]``
+    viscosity) a given ``viscosity`` also sets α_p, the density and the inlet heating of the
+    film at the temperature where the lubricant has that viscosity. The ball model runs at
+    ``[kinematics] level`` on the nut forces of the preload alone (the working load enters
+    through the efficiency).
     """
     omega = _speed(case, speed)
     force = nonnegative(
@@ -64,7 +95,14 @@ def friction_torque(
         model = _ball_model(case, viscosity)
         level = _level(case, None)
         nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).nuts)
-        losses = partial(ball_losses, model, nuts=nuts, level=level, hysteresis=spec.hysteresis)
+        losses = partial(
+            ball_losses,
+            model,
+            nuts=nuts,
+            level=level,
+            hysteresis=spec.hysteresis,
+            nut=nut_loss_parameters(case, viscosity),
+        )
     inputs = FrictionInputs(
         lead=geometry.lead,
         lead_angle=geometry.lead_angle,

@@ -3,8 +3,9 @@
 Every analysis starts here. A validated :class:`~ballscrew.case.Case` holds what the user wrote;
 :class:`ScrewParameters` holds what the physics needs, derived once and in one place: the screw
 geometry, the composite moduli E* of the ball against each raceway, the hardness, the fractal
-roughness, the lubricant (the ``[medium]`` values completed by a named lubricant), and the nuts
-with their axial forces and loaded flanks. The physics packages never see the case; they take
+roughness, the lubricant (the ``[medium]`` values completed by a named lubricant of the library
+at ``[lubrication] temperature``, its film bound to the ``[lubrication]`` supply state), and the
+nuts with their axial forces and loaded flanks. The physics packages never see the case; they take
 these numbers and small frozen dataclasses.
 
 The nut forces of a spacer-preloaded double nut follow from equal Hertz deflection of the two
@@ -25,9 +26,25 @@ from ballscrew.contact.hertz import hertz
 from ballscrew.geometry import ScrewGeometry, raceway_curvature
 from ballscrew.geometry.screw import SIDES, Side
 from ballscrew.loads import ball_load, nut_axial_compliance, nut_forces
-from ballscrew.lubrication import lubricant
+from ballscrew.lubrication.film import FilmModel
+from ballscrew.lubrication.lubricant_library import (
+    LibraryLubricant,
+    LubricantState,
+    library_lubricant,
+)
+from ballscrew.lubrication.supply import supplied_film_model
 
-__all__ = ["SIDES", "Lubrication", "Material", "NutLoad", "ScrewParameters", "Side"]
+__all__ = [
+    "SIDES",
+    "Lubrication",
+    "Material",
+    "NutLoad",
+    "ScrewParameters",
+    "Side",
+    "film_model",
+    "library_entry",
+    "lubricant_state",
+]
 
 
 @dataclass(frozen=True)
@@ -82,13 +99,61 @@ class Lubrication:
     """Inlet dynamic viscosity η₀ [Pa s]; None = no lubricant data (dry contacts)."""
     pressure_viscosity: float | None
     """Barus coefficient α_p [1/Pa]; None = unknown."""
-    film_model: str = "hamrock_dowson"
-    """Registered EHL film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
+    film_model: str | FilmModel = "hamrock_dowson"
+    """Registered EHL film-thickness model (``ballscrew.lubrication.FILM_MODELS``), or that
+    model bound to the supply state and the inlet heating of ``[lubrication]``."""
+    density: float = 870.0
+    """ρ of the lubricant at the inlet [kg/m³] (the named lubricant's; 870 otherwise, ASSUMED
+    paraffinic mineral oil)."""
 
     @property
     def lubricated(self) -> bool:
         """True when η₀ and α_p are both known."""
         return self.viscosity is not None and self.pressure_viscosity is not None
+
+
+def library_entry(case: Case) -> LibraryLubricant | None:
+    """The case's lubricant with its laws against temperature: the library entry named by
+    ``[medium] lubricant`` or ``[kinematics] lubricant``, or the oil given by ``[medium]
+    viscosity_40``, ``viscosity_100`` and ``density_15``; None without either."""
+    medium = case.medium
+    if medium.viscosity_40 is not None and medium.viscosity_100 is not None:
+        return LibraryLubricant(
+            medium.name,
+            "oil",
+            medium.viscosity_40,
+            medium.viscosity_100,
+            medium.density_15,
+            "[medium] viscosity_40, viscosity_100, density_15 of the case",
+        )
+    name = medium.lubricant or case.kinematics.lubricant
+    return None if name is None else library_lubricant(name)
+
+
+def lubricant_state(case: Case, viscosity: float | None = None) -> LubricantState | None:
+    """The named lubricant at ``[lubrication] temperature``, or, for a given ``viscosity``
+    [Pa s] when ``[medium]`` gives none, at the temperature where it has that viscosity
+    (the caller's contact temperature); None without a named lubricant."""
+    entry = library_entry(case)
+    if entry is None:
+        return None
+    if viscosity is None or case.medium.viscosity is not None:
+        return entry.at(case.lubrication.temperature)
+    return entry.at(entry.temperature_at(viscosity))
+
+
+def film_model(case: Case, named: LubricantState | None) -> str | FilmModel:
+    """``medium.film_model`` bound to the supply state and inlet heating of ``[lubrication]``.
+
+    The thermal correction takes β and λ of the named lubricant ``named``, or of ISO VG 68
+    mineral oil at the inlet temperature when no lubricant is named (ASSUMED).
+    """
+    spec = case.lubrication
+    thermal = None
+    if spec.thermal:
+        oil = named or library_lubricant("iso_vg_68").at(spec.temperature)
+        thermal = (oil.temperature_viscosity, oil.conductivity)
+    return supplied_film_model(case.medium.film_model, spec.meniscus, thermal)
 
 
 @dataclass(frozen=True)
@@ -130,8 +195,8 @@ class ScrewParameters:
         geometry = ScrewGeometry.from_spec(spec)
         medium = case.medium
         eta, alpha = medium.viscosity, medium.pressure_viscosity
-        if case.kinematics.lubricant is not None:
-            named = lubricant(case.kinematics.lubricant)
+        named = lubricant_state(case)
+        if named is not None:
             eta = named.viscosity if eta is None else eta
             alpha = named.pressure_viscosity if alpha is None else alpha
         params = cls(
@@ -149,7 +214,12 @@ class ScrewParameters:
             G=case.surface.G,
             smooth_ball=case.surface.ball is None,
             lubrication=Lubrication(
-                medium.name, medium.thermal_conductivity, eta, alpha, medium.film_model
+                medium.name,
+                medium.thermal_conductivity,
+                eta,
+                alpha,
+                film_model(case, named),
+                named.density if named is not None else 870.0,
             ),
             nuts=(),
         )

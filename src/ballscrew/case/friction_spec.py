@@ -10,6 +10,8 @@ Example::
     seals = 2                   # contacting seals / wiper rings of the nut
     seal_force = "5 N"          # friction force of one seal lip [GUESS], at the radius d_m/2
     hysteresis = 0.01           # hysteresis loss fraction α of the Hertz contacts [GUESS]
+    ball_ball_load_ratio = 0.01 # force between adjacent balls / ball load [GUESS]
+    circuits = 2                # ball circuits (returns) per nut [GUESS]
 """
 
 from __future__ import annotations
@@ -20,6 +22,12 @@ from pydantic import Field
 
 from ballscrew.case.base import Model, model_choice, quantity
 from ballscrew.friction import CATALOGUE_ROLLING_FRICTION, DEFAULT_HYSTERESIS, FRICTION_MODELS
+from ballscrew.friction.nut_losses import (
+    DEFAULT_BALL_BALL_FRICTION,
+    DEFAULT_BALL_BALL_LOAD_RATIO,
+    DEFAULT_CIRCUITS,
+    DEFAULT_LUBRICANT_FILL,
+)
 
 #: Friction force of one contacting seal lip on the screw [N]: GUESS inside the makers' ranges of
 #: seal resistance of linear-guide blocks (NB: 2–5 N; THK A-372: 2–43 N by size).
@@ -62,3 +70,28 @@ class FrictionSpec(Model):
     boundary_friction: (
         Annotated[float, Field(ge=0.0, le=1.0, description="μ_b of the ball model")] | None
     ) = Field(None, description="boundary friction of the ball model; None = [kinematics] value")
+    ball_ball_load_ratio: Annotated[
+        float,
+        Field(
+            ge=0.0,
+            le=1.0,
+            description="contact force between adjacent balls / ball load, F_B/Q (ball model) "
+            "[GUESS 0.01]",
+        ),
+    ] = DEFAULT_BALL_BALL_LOAD_RATIO
+    ball_ball_friction: Annotated[
+        float,
+        Field(ge=0.0, le=1.0, description="friction coefficient between balls μ_bb [GUESS 0.1]"),
+    ] = DEFAULT_BALL_BALL_FRICTION
+    lubricant_fill: Annotated[
+        float,
+        Field(
+            ge=0.0,
+            le=1.0,
+            description="volume fraction of lubricant in the nut for the drag of the balls "
+            "[GUESS 0.1]",
+        ),
+    ] = DEFAULT_LUBRICANT_FILL
+    circuits: Annotated[
+        int, Field(ge=1, le=64, description="ball circuits (returns) per nut [GUESS 2]")
+    ] = DEFAULT_CIRCUITS

@@ -22,9 +22,17 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, quantity
-from ballscrew.lubrication.lubricants import LUBRICANTS
+from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 
 Mounting = Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"]
+
+
+def known_lubricant(cls: type, name: str | None) -> str | None:
+    """``name`` if the lubricant library has it (validator of every lubricant key)."""
+    if name is not None and name not in LUBRICANT_LIBRARY:
+        raise ValueError(f"unknown lubricant; known: {', '.join(sorted(LUBRICANT_LIBRARY))}")
+    return name
+
 
 _Speed = quantity(
     "angular_velocity", 'screw speed (rad/s; "3000 rpm" also works)', ge=0, le=MAX_SPEED
@@ -49,8 +57,8 @@ class KinematicsSpec(Model):
     ] = 13
     lubricant: str | None = Field(
         None,
-        description="named lubricant (ballscrew.lubrication.LUBRICANTS) for medium values that "
-        "are not given; None = [medium] only",
+        description="named lubricant of the library (ballscrew.lubrication.LUBRICANT_LIBRARY) "
+        "for medium values that are not given; the same as medium.lubricant; None = [medium] only",
     )
     boundary_friction: Annotated[
         float, Field(ge=0.0, le=1.0, description="μ_b on the asperity-borne pressure (E3.3)")
@@ -91,12 +99,7 @@ class KinematicsSpec(Model):
         True, description="warn when the speed exceeds the whirling-speed or d·n limit"
     )
 
-    @field_validator("lubricant")
-    @classmethod
-    def _known_lubricant(cls, name: str | None) -> str | None:
-        if name is not None and name not in LUBRICANTS:
-            raise ValueError(f"unknown lubricant; known: {', '.join(sorted(LUBRICANTS))}")
-        return name
+    _known_lubricant = field_validator("lubricant")(known_lubricant)
 
     @model_validator(mode="after")
     def _range_increases(self) -> KinematicsSpec:

@@ -1,7 +1,8 @@
 """Pydantic models of a ballscrew case file.
 
 A case is one TOML file with the sections ``[screw]``, ``[materials.ball|screw|nut]``,
-``[surface]``, ``[medium]``, ``[operating]`` and ``[numerics]``. Every number is SI; a string
+``[surface]``, ``[medium]``, ``[operating]`` and ``[numerics]`` (and the optional analysis
+sections, ``[lubrication]`` among them). Every number is SI; a string
 with a unit (``lead = "10 mm"``) is converted by pint. Unknown keys are errors, so a misspelt
 parameter is never silently ignored.
 """
@@ -17,7 +18,8 @@ from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.friction_spec import FrictionSpec
-from ballscrew.case.kinematics_spec import KinematicsSpec
+from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
+from ballscrew.case.lubrication_spec import LubricationSpec, check_oil_viscosities
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import (
@@ -99,6 +101,9 @@ class SurfaceSpec(FractalSurface):
     ball: FractalSurface | None = Field(None, description="ball roughness; None = smooth ball")
 
 
+_KinematicViscosity = quantity("kinematic_viscosity", "kinematic viscosity", gt=0, le=1.0)
+
+
 class MediumSpec(Model):
     """The interstitial medium between the asperities: lubricant, grease or air."""
 
@@ -116,6 +121,23 @@ class MediumSpec(Model):
     film_model: model_choice(
         FILM_MODELS, "EHL film-thickness model of the ball contacts (kinematics and wear)"
     ) = "hamrock_dowson"
+    lubricant: str | None = Field(
+        None,
+        description="named lubricant of the library (ballscrew.lubrication.LUBRICANT_LIBRARY) "
+        "for the values not given here; None = these values only",
+    )
+    viscosity_40: _KinematicViscosity | None = Field(
+        None, description="an unnamed oil: kinematic viscosity at 40 °C (ASTM D341 with _100)"
+    )
+    viscosity_100: _KinematicViscosity | None = Field(
+        None, description="an unnamed oil: kinematic viscosity at 100 °C"
+    )
+    density_15: quantity(
+        "density", "an unnamed oil: density at 15 °C [ASSUMED 870]", gt=0, le=1e4
+    ) = 870.0
+
+    _known_lubricant = field_validator("lubricant")(known_lubricant)
+    _one_oil = model_validator(mode="after")(check_oil_viscosities)
 
 
 class OperatingSpec(Model):
@@ -243,6 +265,7 @@ class Case(Model):
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
     friction: FrictionSpec = FrictionSpec()
+    lubrication: LubricationSpec = LubricationSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
     design: DesignSpec | None = None
     duty: list[DutySegment] = Field(
@@ -251,6 +274,16 @@ class Case(Model):
         description="duty cycle: [[duty]] segments of speed, load, stroke, dwell and duration",
     )
     duty_repeat: DutyRepeat = 1
+
+    @model_validator(mode="after")
+    def _one_lubricant(self) -> Case:
+        named = {self.medium.lubricant, self.kinematics.lubricant} - {None}
+        if len(named) > 1:
+            raise ValueError(
+                f"medium.lubricant = {self.medium.lubricant!r} is not allowed with "
+                f"kinematics.lubricant = {self.kinematics.lubricant!r}: name one lubricant"
+            )
+        return self
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:

@@ -12,11 +12,14 @@ Per ball of each nut, from the quasi-static state of :mod:`ballscrew.kinematics`
 * elastic hysteresis of the Hertz contacts A and B (Tabor 1955; Johnson 1985, *Contact
   Mechanics*, §9.2: a sphere rolling on a plane loses the fraction α of the elastic work,
   F_h = α (3/16) Q a/R). Applied with the semi-axis a along the rolling direction and the
-  relative radius R_x of each contact (an ASSUMED extension to the elliptical contact).
+  relative radius R_x of each contact (an ASSUMED extension to the elliptical contact);
+* ball–ball friction, drag of the balls in the lubricant and the ball-return loss of
+  :mod:`ballscrew.friction.nut_losses`.
 
 Each loss is a torque of the screw, power/ω, so that its heat is the torque times ω. A loss at A
 is shared equally by the screw and the ball (same steel on both sides; Blok 1937 partition for
-equal bodies, ASSUMED); the ball's share and every loss at B reach the nut.
+equal bodies, ASSUMED); the ball's share, every loss at B and the losses of
+:mod:`~ballscrew.friction.nut_losses` (balls, lubricant and returns inside the nut) reach the nut.
 """
 
 from __future__ import annotations
@@ -24,9 +27,17 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
+from ballscrew.friction.nut_losses import (
+    NutLossParameters,
+    ball_ball_power,
+    drag_power,
+    recirculation_power,
+)
 from ballscrew.kinematics.balance import BallState, solve_ball
 from ballscrew.kinematics.model import BallModel
-from ballscrew.kinematics.motion import ball_motion
+from ballscrew.kinematics.motion import BallMotion, ball_motion
 from ballscrew.kinematics.torque import ball_drag
 
 __all__ = ["BallLosses", "ball_losses", "film_parameter", "hysteresis_force", "regime"]
@@ -72,37 +83,89 @@ class BallLosses:
     """Torque whose heat goes into the screw (the rest goes into the nut)."""
     film_parameter: float
     """Λ = h/σ at A of the first loaded nut (0 dry)."""
+    ball_ball: float = 0.0
+    """Sliding friction between adjacent balls."""
+    drag: float = 0.0
+    """Drag of the balls in the lubricant of the nut."""
+    recirculation: float = 0.0
+    """Kinetic energy of the balls lost in the ball returns."""
 
     @property
     def total(self) -> float:
-        return self.sliding + self.ehl_rolling + self.hysteresis
+        return (
+            self.sliding
+            + self.ehl_rolling
+            + self.hysteresis
+            + self.ball_ball
+            + self.drag
+            + self.recirculation
+        )
 
 
-def _rolling_speed_ratio(model: BallModel, state: BallState) -> float:
-    """|V|/ω_s, the rolling (entrainment) speed per screw speed (E2.4 at ω_s → 0)."""
+def _unit_motion(model: BallModel, state: BallState) -> BallMotion:
+    """The ball's motion per unit screw speed (E2.4; the limit ω_s → 0⁺ at rest)."""
     if state.screw_speed != 0.0:
-        return abs(state.ball_speed / state.screw_speed)
-    motion = ball_motion(
+        return state.motion
+    return ball_motion(
         model.geometry, 1.0, state.flank, angle_screw=state.angle_screw, angle_nut=state.angle_nut
     )
-    return abs(motion.ball_speed)
 
 
-def _one_ball(model: BallModel, state: BallState, fraction: float) -> tuple[float, ...]:
-    """(sliding, rolling A, rolling B, hysteresis A, hysteresis B) torques of one ball."""
+def _ball_ball_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
+    """Screw torque of the friction of one ball against its leading neighbour (P_bb/ω_s)."""
+    motion = _unit_motion(model, state)
+    omega = motion.screw_speed
+    r_b = model.geometry.ball_radius
+    surface = r_b * float(np.linalg.norm(np.cross(motion.angular_velocity, model.frame.t)))
+    force = nut.ball_ball_load_ratio * state.load_screw
+    return ball_ball_power(force, nut.ball_ball_friction, surface) / omega
+
+
+def _one_ball(
+    model: BallModel, state: BallState, fraction: float, nut: NutLossParameters
+) -> tuple[float, ...]:
+    """(sliding, rolling A, rolling B, hysteresis A, hysteresis B, ball–ball, drag) torques of
+    one ball."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
     rolling = drag.dissipation_torque - sliding
     # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
     rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
-    ratio = _rolling_speed_ratio(model, state)
+    unit = _unit_motion(model, state)
+    ratio = abs(unit.ball_speed / unit.screw_speed)  # |V|/ω_s, the rolling speed per ω_s
     hysteresis = []
     for contact, load in (("screw", state.load_screw), ("nut", state.load_nut)):
         a, _ = model.hertz_semi_axes(contact, load)
         force = hysteresis_force(load, a, model.curvature(contact).rx, fraction)
         hysteresis.append(force * ratio)
-    return sliding, rolling - rolling_b, rolling_b, hysteresis[0], hysteresis[1]
+    viscous = 0.0
+    if model.lubricated and state.screw_speed != 0.0:
+        power = drag_power(
+            state.ball_speed,
+            model.geometry.ball_diameter,
+            nut.lubricant_density,
+            model.viscosity,
+            nut.lubricant_fill,
+        )
+        viscous = power / state.screw_speed
+    balls = _ball_ball_torque(model, state, nut)
+    return sliding, rolling - rolling_b, rolling_b, hysteresis[0], hysteresis[1], balls, viscous
+
+
+def _recirculation_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
+    """Screw torque of the ball-return loss of one nut (0 at rest)."""
+    if state.screw_speed == 0.0:
+        return 0.0
+    power = recirculation_power(
+        state.ball_speed,
+        state.motion.rolling_speed,
+        model.mass,
+        model.inertia,
+        model.geometry.ball_diameter,
+        nut.circuits,
+    )
+    return power / state.screw_speed
 
 
 def ball_losses(
@@ -112,28 +175,37 @@ def ball_losses(
     *,
     level: int = 0,
     hysteresis: float = DEFAULT_HYSTERESIS,
+    nut: NutLossParameters | None = None,
 ) -> BallLosses:
     """Losses of every loaded ball of the nuts ``(axial force, flank)`` at screw speed ω_s.
 
     ω_s = 0 gives the ω_s → 0⁺ limit (dry breakaway: boundary traction, no film, hysteresis at
-    the rolling speed of a slowly turning screw).
+    the rolling speed of a slowly turning screw, ball–ball friction at its rolling speed, no drag
+    or return loss). ``nut``: the parameters of :mod:`~ballscrew.friction.nut_losses` (default
+    :class:`~ballscrew.friction.nut_losses.NutLossParameters`).
     """
-    sums = [0.0] * 5
+    nut = NutLossParameters() if nut is None else nut
+    sums = [0.0] * 7
+    returns = 0.0
     film = 0.0
     for index, (force, flank) in enumerate(nuts):
         if force <= 0.0:
             continue
         state = solve_ball(model, speed, force, flank, level)
-        for k, value in enumerate(_one_ball(model, state, hysteresis)):
+        for k, value in enumerate(_one_ball(model, state, hysteresis, nut)):
             sums[k] += model.balls * float(value)
+        returns += _recirculation_torque(model, state, nut)
         if index == 0 and model.lubricated and state.ball_speed != 0.0:
             sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
             film = film_parameter(sharing.separation, model.surface.rms_height)
-    sliding, rolling_a, rolling_b, hyst_a, hyst_b = sums
+    sliding, rolling_a, rolling_b, hyst_a, hyst_b, balls, drag = sums
     return BallLosses(
         sliding=sliding,
         ehl_rolling=rolling_a + rolling_b,
         hysteresis=hyst_a + hyst_b,
+        ball_ball=balls,
+        drag=drag,
+        recirculation=returns,
         screw_share=SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a),
         film_parameter=film,
     )

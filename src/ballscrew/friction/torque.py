@@ -8,9 +8,10 @@ the work F_a L/(2π) on the load plus friction parts; the heat is everything not
 work, Q = T ω_s − F_a v = (T − F_a L/2π) ω_s ≥ 0 with v = L ω_s/(2π). T_load = F_a L/(2π)(1/η − 1)
 is the makers' efficiency form (:mod:`ballscrew.friction.efficiency`). The preload part is the
 makers' catalogue torque (``"catalogue"``) or the ball losses of
-:mod:`ballscrew.friction.ball_losses` at the preload (``"ball_model"``). A seal's torque is a
-parameter (its default is set by the case); the recirculation loss has no published model that
-ballscrew uses and defaults to 0.
+:mod:`ballscrew.friction.ball_losses` at the preload (``"ball_model"``: traction, EHL rolling,
+hysteresis, ball–ball friction, drag in the lubricant and the ball-return loss). A seal's torque
+is a parameter (its default is set by the case); ``recirculation_torque`` is a given ball-return
+torque added to the modelled one (the catalogue model has only the given one, default 0).
 
 Heat split: the catalogue preload and load parts are not located; half of each is ASSUMED at
 the screw contact A (shared equally by screw and ball), half at the nut contact B. A seal rubs
@@ -63,7 +64,7 @@ class FrictionInputs:
     seal_torque: float = 0.0
     """Torque of one seal [N m]."""
     recirculation_torque: float = 0.0
-    """Ball-return loss [N m] (no published model; default 0)."""
+    """Given ball-return loss [N m], added to the modelled one of ``ball_model`` (default 0)."""
     hysteresis: float = DEFAULT_HYSTERESIS
     """Hysteresis loss fraction α of the Hertz contacts (ball model)."""
     ball_losses: Callable[[float], BallLosses] | None = None
@@ -77,8 +78,8 @@ class FrictionTorque:
     total: float
     """Screw torque T [N m] (work on the load included)."""
     parts: dict[str, float]
-    """Its parts [N m]: ``work``, ``load``, ``preload`` or the ball losses, ``seals``,
-    ``recirculation``."""
+    """Its parts [N m]: ``work``, ``load``, ``preload`` or the ball losses (``sliding``,
+    ``ehl_rolling``, ``hysteresis``, ``ball_ball``, ``drag``), ``seals``, ``recirculation``."""
     efficiency_driving: float
     """η = tan λ/tan(λ + ρ′)."""
     efficiency_backdriving: float
@@ -118,11 +119,14 @@ def _result(
     friction: dict[str, float],
     screw_torque: float,
     losses: BallLosses | None = None,
+    recirculation: float = 0.0,
 ) -> FrictionTorque:
-    """Assemble the result from the friction parts and the torque whose heat goes to the screw."""
+    """Assemble the result from the friction parts and the torque whose heat goes to the screw;
+    ``recirculation`` is the modelled ball-return torque added to the given one."""
     work = inputs.axial_load * inputs.lead / (2.0 * math.pi)
     seals = inputs.seals * inputs.seal_torque
-    parts = {"work": work, **friction, "seals": seals, "recirculation": inputs.recirculation_torque}
+    returns = inputs.recirculation_torque + recirculation
+    parts = {"work": work, **friction, "seals": seals, "recirculation": returns}
     omega = inputs.speed
     heat = (sum(parts.values()) - work) * omega
     to_screw = (screw_torque + 0.5 * seals) * omega
@@ -169,7 +173,8 @@ def catalogue_friction(inputs: FrictionInputs) -> FrictionTorque:
 
 @FRICTION_MODELS.register(
     "ball_model",
-    "ball losses at the preload (traction, EHL rolling, hysteresis) + load torque + seals",
+    "ball losses at the preload (traction, EHL rolling, hysteresis, ball–ball friction, drag, "
+    "ball returns) + load torque + seals",
 )
 def ball_model_friction(inputs: FrictionInputs) -> FrictionTorque:
     """Physics ball losses at the preload, efficiency load torque, seals and recirculation."""
@@ -182,9 +187,11 @@ def ball_model_friction(inputs: FrictionInputs) -> FrictionTorque:
         "sliding": losses.sliding,
         "ehl_rolling": losses.ehl_rolling,
         "hysteresis": losses.hysteresis,
+        "ball_ball": losses.ball_ball,
+        "drag": losses.drag,
     }
     screw = losses.screw_share + UNLOCATED_SCREW_SHARE * load
-    return _result(inputs, "ball_model", parts, screw, losses)
+    return _result(inputs, "ball_model", parts, screw, losses, losses.recirculation)
 
 
 def nut_friction_torque(inputs: FrictionInputs, model: str = "catalogue") -> FrictionTorque:

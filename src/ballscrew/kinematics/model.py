@@ -19,13 +19,13 @@ from ballscrew.kinematics.frames import BallFrame, ball_frame
 from ballscrew.kinematics.inertia import ball_inertia, ball_mass
 from ballscrew.kinematics.sliding import deformed_radius
 from ballscrew.lubrication import (
-    FILM_MODELS,
     AsperitySurface,
     FilmThickness,
     LoadSharing,
     ehl_rolling_resistance,
     share_load,
 )
+from ballscrew.lubrication.film import FilmModel, film_function
 
 __all__ = ["BallModel"]
 
@@ -49,8 +49,9 @@ class BallModel:
     boundary_friction: float = 0.1
     limiting_shear: float = 0.07
     traction_cells: int = 32
-    film_model: str = "hamrock_dowson"
-    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
+    film_model: str | FilmModel = "hamrock_dowson"
+    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``), or one bound to
+    the supply state (``ballscrew.lubrication.supply``)."""
 
     @property
     def lubricated(self) -> bool:
@@ -105,7 +106,7 @@ class BallModel:
         if not self.lubricated or speed == 0.0 or load <= 0.0:
             return None
         c = self.curvature(contact)
-        return FILM_MODELS[self.film_model](
+        return film_function(self.film_model)(
             c.rx,
             c.ry,
             2.0 * self.e_star(contact),

@@ -15,7 +15,7 @@ from ballscrew.errors import InputError
 from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["FilmThickness", "dimensionless_groups", "hamrock_dowson"]
+__all__ = ["FilmModel", "FilmThickness", "dimensionless_groups", "film_function", "hamrock_dowson"]
 
 
 @dataclass(frozen=True)
@@ -65,10 +65,17 @@ def dimensionless_groups(
     )
 
 
-FILM_MODELS: Registry[Callable[..., FilmThickness]] = Registry(
-    "film thickness model", "medium.film_model"
-)
+FilmModel = Callable[..., FilmThickness]
+"""A film-thickness model ``(rx, ry, E′, η₀, α_p, u_e, Q_f) → FilmThickness``."""
+
+FILM_MODELS: Registry[FilmModel] = Registry("film thickness model", "medium.film_model")
 """Rival EHL film-thickness models, each ``(rx, ry, E′, η₀, α_p, u_e, Q_f) → FilmThickness``."""
+
+
+def film_function(model: str | FilmModel) -> FilmModel:
+    """The film model ``model``: a registered name, or a model already bound to its supply and
+    lubricant (``ballscrew.lubrication.supply.supplied_film_model``), returned as it is."""
+    return FILM_MODELS[model] if isinstance(model, str) else model
 
 
 @FILM_MODELS.register("hamrock_dowson", "Hamrock & Dowson (1977), isothermal, fully flooded")
@@ -86,8 +93,9 @@ def hamrock_dowson(
         h_c   = R_x · 2.69 U^0.67 Ḡ^0.53 W^−0.067 (1 − 0.61 e^(−0.73 κ_HD))
         h_min = R_x · 3.63 U^0.68 Ḡ^0.49 W^−0.073 (1 − e^(−0.68 κ_HD))
 
-    Hamrock & Dowson (1977), isothermal, fully flooded. ``rx`` along the entrainment direction,
-    ``ry`` across it [m]; ``e_prime`` = E′ = 2E* [Pa]; ``viscosity`` η₀ [Pa s];
+    Hamrock & Dowson (1977), isothermal, fully flooded; the h_min formula and κ_HD are as
+    printed in the paper's abstract (J. Lubr. Technol. 99(2):264). ``rx`` along the entrainment
+    direction, ``ry`` across it [m]; ``e_prime`` = E′ = 2E* [Pa]; ``viscosity`` η₀ [Pa s];
     ``pressure_viscosity`` α_p [1/Pa]; ``entrainment_speed`` u_e [m/s] (mean rolling speed; a
     ball screw: u_e = V, E2.8); ``load`` Q_f [N], the load the film carries. u_e = 0 gives a
     zero film. Q_f → 0 makes the film grow without bound (W^−0.067); Q_f = 0 is rejected.

@@ -2,14 +2,13 @@
 
 Both multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a factor ≤ 1:
 
-* inlet shear heating: Gupta, Cheng, Zhu, Forster & Schrand (1992) (registered as
-  ``hamrock_dowson_thermal``), and Murch & Wilson (1975) for line contacts in pure rolling;
+* inlet shear heating: Gupta, Cheng, Zhu, Forster & Schrand (1992), and Murch & Wilson (1975)
+  for line contacts in pure rolling;
 * starvation by an inlet meniscus closer than the critical distance: Hamrock & Dowson (1977,
-  Part IV) (registered as ``hamrock_dowson_starved``).
+  Part IV).
 
-The registered models keep the registry's signature ``(rx, ry, E′, η₀, α_p, u_e, Q_f)``; their
-extra lubricant or supply inputs are keyword arguments with defaults. :func:`thermal_film_model`
-and :func:`starved_film_model` bind them for one lubricant or inlet. SI units.
+:func:`ballscrew.lubrication.supply.supplied_film_model` applies them to a film model for the
+case's ``[lubrication]`` section. SI units.
 
 [UNVERIFIED: the coefficients of all three correlations are as quoted in the secondary EHL
 literature; the original papers were not available to check them.]
@@ -18,29 +17,17 @@ literature; the original papers were not available to check them.]
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import replace
 
-from ballscrew.contact.hertz import hamrock_brewe
 from ballscrew.errors import InputError
-from ballscrew.lubrication.film import FILM_MODELS, FilmThickness, hamrock_dowson
-from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.validation import nonnegative, positive
 
 __all__ = [
     "critical_inlet_ratio",
-    "hamrock_dowson_starved",
-    "hamrock_dowson_thermal",
     "starvation_factor",
-    "starved_film_model",
-    "thermal_film_model",
     "thermal_loading",
     "thermal_reduction_gupta",
     "thermal_reduction_murch_wilson",
 ]
-
-_REF_OIL = LUBRICANT_LIBRARY["iso_vg_68"].at(313.15)
-"""Defaults of the registered thermal model: ISO VG 68 mineral oil at 40 °C (β, λ)."""
 
 
 def thermal_loading(
@@ -121,108 +108,3 @@ def starvation_factor(inlet_ratio: float, critical_ratio: float, central: bool =
     if m >= m_star:
         return 1.0
     return ((m - 1.0) / (m_star - 1.0)) ** (0.29 if central else 0.25)
-
-
-def _scaled(film: FilmThickness, central: float, minimum: float) -> FilmThickness:
-    return replace(film, central=film.central * central, minimum=film.minimum * minimum)
-
-
-@FILM_MODELS.register(
-    "hamrock_dowson_thermal",
-    "Hamrock & Dowson (1977) × inlet shear-heating factor of Gupta et al. (1992)",
-)
-def hamrock_dowson_thermal(
-    rx: float,
-    ry: float,
-    e_prime: float,
-    viscosity: float,
-    pressure_viscosity: float,
-    entrainment_speed: float,
-    load: float,
-    *,
-    temperature_viscosity: float = _REF_OIL.temperature_viscosity,
-    conductivity: float = _REF_OIL.conductivity,
-    slide_roll: float = 0.0,
-) -> FilmThickness:
-    """Hamrock–Dowson film times φ_T of :func:`thermal_reduction_gupta`, m.
-
-        h = φ_T(L, p_h/E′, S) · h_HD,   L = β η₀ u_e²/λ,   p_h: Hertz peak pressure
-        (Hamrock & Brewe 1983 fits, E* = E′/2)
-
-    Positional arguments as :func:`ballscrew.lubrication.film.hamrock_dowson`. Keyword:
-    ``temperature_viscosity`` β [1/K] and ``conductivity`` λ [W/(m K)] of the lubricant at the
-    inlet (defaults: ISO VG 68 mineral oil at 40 °C of the lubricant library), ``slide_roll`` S.
-    Both central and minimum films take the same factor.
-    """
-    film = hamrock_dowson(rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, load)
-    p_h = hamrock_brewe(rx, ry, 0.5 * e_prime, load).p0
-    loading = thermal_loading(temperature_viscosity, viscosity, entrainment_speed, conductivity)
-    phi = thermal_reduction_gupta(loading, p_h / e_prime, slide_roll)
-    return _scaled(film, phi, phi)
-
-
-@FILM_MODELS.register(
-    "hamrock_dowson_starved",
-    "Hamrock & Dowson (1977) with the starved-inlet reduction of Hamrock & Dowson (1977, IV)",
-)
-def hamrock_dowson_starved(
-    rx: float,
-    ry: float,
-    e_prime: float,
-    viscosity: float,
-    pressure_viscosity: float,
-    entrainment_speed: float,
-    load: float,
-    *,
-    inlet_ratio: float = math.inf,
-) -> FilmThickness:
-    """Hamrock–Dowson film reduced for an inlet meniscus at ``inlet_ratio`` m, m.
-
-        h_c = h_c,F [(m − 1)/(m*_c − 1)]^0.29,   h_min = h_min,F [(m − 1)/(m*_min − 1)]^0.25
-
-    with m*_c, m*_min of :func:`critical_inlet_ratio` and b the Hertz semi-axis along the rolling
-    direction x (Hamrock & Brewe 1983 fits, E* = E′/2). Positional arguments as
-    :func:`ballscrew.lubrication.film.hamrock_dowson`; ``inlet_ratio`` m = meniscus distance from
-    the contact centre over b (default ∞: fully flooded).
-    """
-    film = hamrock_dowson(rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, load)
-    b = hamrock_brewe(rx, ry, 0.5 * e_prime, load).a
-    factors = (
-        starvation_factor(inlet_ratio, critical_inlet_ratio(rx, b, h, central), central)
-        for h, central in ((film.central, True), (film.minimum, False))
-    )
-    return _scaled(film, *factors)
-
-
-def thermal_film_model(
-    temperature_viscosity: float, conductivity: float, slide_roll: float = 0.0
-) -> Callable[..., FilmThickness]:
-    """:func:`hamrock_dowson_thermal` bound to one lubricant (β [1/K], λ [W/(m K)]) and S.
-
-    The result has the registry signature ``(rx, ry, E′, η₀, α_p, u_e, Q_f) → FilmThickness``;
-    feed it ``LibraryLubricant.at(T)``'s ``temperature_viscosity`` and ``conductivity``.
-    """
-    nonnegative("temperature_viscosity", temperature_viscosity, "1/K")
-    positive("conductivity", conductivity, "W/(m K)")
-    nonnegative("slide_roll", slide_roll)
-
-    def model(*args: float) -> FilmThickness:
-        return hamrock_dowson_thermal(
-            *args,
-            temperature_viscosity=temperature_viscosity,
-            conductivity=conductivity,
-            slide_roll=slide_roll,
-        )
-
-    return model
-
-
-def starved_film_model(inlet_ratio: float) -> Callable[..., FilmThickness]:
-    """:func:`hamrock_dowson_starved` bound to one inlet meniscus ratio m (≥ 1)."""
-    if not float(inlet_ratio) >= 1.0:
-        raise InputError("inlet_ratio", inlet_ratio, ">= 1 (meniscus outside the Hertz zone)")
-
-    def model(*args: float) -> FilmThickness:
-        return hamrock_dowson_starved(*args, inlet_ratio=inlet_ratio)
-
-    return model

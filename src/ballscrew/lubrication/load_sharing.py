@@ -10,6 +10,7 @@ Theory manual: ``docs/theory/lubrication.md``, load sharing (E6.1)–(E6.5).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,7 +19,7 @@ from scipy.optimize import brentq
 
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.fractal import yan_komvopoulos as yk
-from ballscrew.lubrication.film import FILM_MODELS, FilmThickness
+from ballscrew.lubrication.film import FilmModel, FilmThickness, film_function
 from ballscrew.validation import real_array, real_number
 
 __all__ = [
@@ -98,10 +99,10 @@ def _film(
     viscosity: float,
     pressure_viscosity: float,
     speed: float,
-    film_model: str = "hamrock_dowson",
+    film_model: str | FilmModel = "hamrock_dowson",
 ) -> FilmThickness:
     film_load = film_fraction * load  # (1 − ψ) Q, passed as 1 − ψ to keep it > 0 near ψ = 1
-    film = FILM_MODELS[film_model]
+    film = film_function(film_model)
     return film(rx, ry, e_prime, viscosity, pressure_viscosity, speed, film_load)
 
 
@@ -116,7 +117,7 @@ def share_load(
     surface: AsperitySurface,
     *,
     xtol: float = 1e-14,
-    film_model: str = "hamrock_dowson",
+    film_model: str | FilmModel = "hamrock_dowson",
 ) -> LoadSharing:
     """Asperity share ψ of the normal load Q of one EHL contact, (E6.1)–(E6.4).
 
@@ -153,14 +154,33 @@ def share_load(
         psi = 0.0
     else:
         # Solve in t = ln(1 − ψ): h_c grows only as W^−0.067, so for rough surfaces the root
-        # lies within 1e-12 of ψ = 1; at t = ln(1e-300) the film is ~1e20 times thicker than at
-        # ψ = 0 and r = −ψQ < 0, so [ln 1e-300, 0] always brackets the root.
-        t, info = brentq(residual_t, _T_MIN, 0.0, xtol=xtol, rtol=1e-14, full_output=True)
+        # lies within 1e-12 of ψ = 1; at t = ln(1e-300) the flooded film is ~1e20 times thicker
+        # than at ψ = 0 and r = −ψQ < 0, so [ln 1e-300, 0] brackets the root. A starved film
+        # shrinks again as its load vanishes (its Hertz zone and so its meniscus distance do):
+        # then the first sign change on a grid in t brackets the root, and none means the film
+        # carries nothing (ψ = 1, dry).
+        low = _bracket(residual_t)
+        if low is None:
+            return LoadSharing(1.0, q, 0.0, None)
+        t, info = brentq(residual_t, low[0], low[1], xtol=xtol, rtol=1e-14, full_output=True)
         if not info.converged:  # pragma: no cover - brentq on a bracketed monotone function
             raise ConvergenceError("JGP load sharing", info.iterations, residual_t(t), xtol)
         psi = -math.expm1(t)
     film = _film(math.exp(t), *args)
     return LoadSharing(float(psi), q, film.central, film)
+
+
+def _bracket(residual: Callable[[float], float]) -> tuple[float, float] | None:
+    """[a, b] ⊂ [ln 1e-300, 0] with r(a) ≤ 0 < r(b), b the largest such (r(0) > 0 given)."""
+    if residual(_T_MIN) <= 0.0:
+        return _T_MIN, 0.0
+    grid = -np.geomspace(1e-12, -_T_MIN, 97)
+    upper = 0.0
+    for t in grid:
+        if residual(float(t)) <= 0.0:
+            return float(t), upper
+        upper = float(t)
+    return None
 
 
 def load_sharing_residual(
@@ -173,7 +193,7 @@ def load_sharing_residual(
     entrainment_speed: float,
     nominal_area: float,
     surface: AsperitySurface,
-    film_model: str = "hamrock_dowson",
+    film_model: str | FilmModel = "hamrock_dowson",
 ) -> NDArray[np.float64]:
     """r(ψ) = F_asp(h_c((1−ψ)Q)) − ψQ of (E6.4) at each ψ in [0, 1), N (for checks and plots)."""
     e_prime = 2.0 * surface.e_star

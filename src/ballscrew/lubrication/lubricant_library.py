@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ballscrew.errors import InputError
+from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.lubrication.viscosity import (
     T_REF_15C,
     Walther,
@@ -108,6 +108,23 @@ class LibraryLubricant:
             conductivity=thermal_conductivity(temperature, self.density_15),
             temperature_viscosity=walther.temperature_coefficient(temperature) + beta_rho,
         )
+
+    def temperature_at(self, viscosity: float) -> float:
+        """The temperature [K] at which the dynamic viscosity is ``viscosity`` [Pa s].
+
+        Inverse of :meth:`at`: T = T_D341(η/ρ(T)), the ASTM D341 line inverted at the
+        kinematic viscosity, iterated on the density (α_ρ (ΔT) ≪ 1: a few steps).
+        """
+        eta = positive("viscosity", viscosity, "Pa s")
+        walther = self.walther
+        temperature = walther.temperature(eta / self.density_15)
+        for _ in range(50):
+            rho = density(temperature, self.density_15, _EXPANSION)
+            new = walther.temperature(eta / rho)
+            if abs(new - temperature) < 1e-9:
+                return new
+            temperature = new
+        raise ConvergenceError("lubricant temperature", 50, abs(new - temperature), 1e-9)
 
 
 _MM2 = 1e-6

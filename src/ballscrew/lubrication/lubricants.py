@@ -1,21 +1,12 @@
-"""Named lubricants: inlet viscosity η₀ and Barus pressure–viscosity coefficient α_p at 40 °C.
+"""Named lubricants at 40 °C: a view of the lubricant library.
 
-Data, not physics. Each entry says where its numbers come from:
-
-* Kinematic viscosity: the mid-point of the ISO viscosity grade (ISO 3448:1992, "Industrial
-  liquid lubricants — ISO viscosity classification": VG n has ν = n mm²/s at 40 °C, ±10 %).
-* Density: 870 kg/m³ at 40 °C for a paraffinic mineral oil [ASSUMED; typical 860–880 kg/m³],
-  so η₀ = ρ ν.
-* α_p: 2.1e-8 Pa⁻¹ for the ISO VG 68 class is the value of the reference screw of
-  ``examples/wear_step_stress.toml``; the other grades are graded around it within the range usually
-  quoted for mineral oils at 40 °C, about 1.5–2.5e-8 Pa⁻¹ (Hamrock, *Fundamentals of Fluid Film
-  Lubrication*, 1994; Harris & Kotzalas, *Rolling Bearing Analysis*, 2006) [ASSUMED: typical, not
-  measured values].
-* Greases: EHL films of greased contacts are governed by the base oil (Harris & Kotzalas 2006),
-  so a grease entry carries its base oil's values; it does not model starvation.
-
-Use measured η₀ and α_p of the actual lubricant in ``[medium]`` when they are known; they take
-precedence over a named lubricant.
+:data:`LUBRICANTS` holds, for every entry of
+:data:`~ballscrew.lubrication.lubricant_library.LUBRICANT_LIBRARY`, its dynamic viscosity η₀
+and Barus coefficient α_p at 40 °C (ISO 3448's reference temperature), computed by the
+library's laws (ASTM D341 viscosity, linear density, Gold et al. 2001 α_p). It is kept for code
+that wants a lubricant at one temperature; a case takes its named lubricant from the library at
+``[lubrication] temperature`` (default 40 °C), and the operating point at the contact
+temperature.
 """
 
 from __future__ import annotations
@@ -23,15 +14,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ballscrew.errors import InputError
+from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY, T40
 
 __all__ = ["LUBRICANTS", "Lubricant", "lubricant"]
-
-_DENSITY = 870.0  # kg/m³, paraffinic mineral oil at 40 °C [ASSUMED]
 
 
 @dataclass(frozen=True)
 class Lubricant:
-    """EHL properties of a lubricant at its inlet temperature."""
+    """EHL properties of a lubricant at 40 °C."""
 
     name: str
     viscosity: float
@@ -42,33 +32,24 @@ class Lubricant:
     """Where the numbers come from."""
 
 
-def _mineral(grade: int, alpha: float, label: str | None = None) -> Lubricant:
+def _at_40c(key: str) -> Lubricant:
+    entry = LUBRICANT_LIBRARY[key]
+    state = entry.at(T40)
     return Lubricant(
-        name=label or f"ISO VG {grade} mineral oil",
-        viscosity=_DENSITY * grade * 1e-6,
-        pressure_viscosity=alpha,
-        source=(
-            f"ν = {grade} mm²/s at 40 °C (ISO 3448 grade mid-point), ρ = 870 kg/m³ [ASSUMED]; "
-            f"α_p = {alpha:.2g} 1/Pa, typical mineral oil at 40 °C [ASSUMED]"
-        ),
+        entry.name,
+        state.viscosity,
+        state.pressure_viscosity,
+        f"{entry.source}; at 40 °C: η = ρ(40 °C) ν40, α_p of Gold et al. (2001)",
     )
 
 
-LUBRICANTS: dict[str, Lubricant] = {
-    "iso_vg_32": _mineral(32, 1.9e-8),
-    "iso_vg_68": _mineral(68, 2.1e-8),
-    "iso_vg_100": _mineral(100, 2.2e-8),
-    "iso_vg_220": _mineral(220, 2.4e-8),
-    "lithium_grease_vg_100": _mineral(
-        100, 2.2e-8, "lithium-soap grease, ISO VG 100 mineral base oil (base-oil values)"
-    ),
-}
-"""Named lubricants by key (``[kinematics] lubricant = "iso_vg_68"``)."""
+LUBRICANTS: dict[str, Lubricant] = {key: _at_40c(key) for key in LUBRICANT_LIBRARY}
+"""Named lubricants by key at 40 °C (the keys of the library, ``"iso_vg_68"`` …)."""
 
 
 def lubricant(name: str) -> Lubricant:
-    """The named lubricant ``name``; :class:`InputError` lists the known names otherwise."""
+    """The named lubricant ``name`` at 40 °C; :class:`InputError` lists the known names."""
     try:
         return LUBRICANTS[name]
-    except KeyError:
+    except (KeyError, TypeError):
         raise InputError("lubricant", name, "one of " + ", ".join(sorted(LUBRICANTS))) from None

@@ -1,0 +1,106 @@
+"""Case section ``[lubrication]``: supply state of the contacts and the film corrections.
+
+Every key has a default, so a case without the section is valid (fully flooded, isothermal: the
+film of ``[medium] film_model`` unchanged). Theory manual: ``docs/theory/lubrication.md``.
+
+Example::
+
+    [lubrication]
+    supply = "starved"          # "flooded" (default), "starved" or "grease"
+    inlet_ratio = 2.0           # inlet meniscus distance / Hertz semi-axis b (starved, grease)
+    thermal = true              # inlet shear-heating reduction (Gupta et al. 1992)
+    temperature = "40 degC"     # inlet temperature of the named lubricant's properties
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, model_validator
+
+from ballscrew.case.base import Model, quantity
+
+#: Inlet meniscus ratio m of a greased contact: GUESS. Grease supplies its base oil by bleeding
+#: slowly into the track, so a greased contact runs starved (Damiens, Venner, Cann & Lubrecht
+#: 2004); no closed form gives m from the grease, and m = 1.5 (film 0.8–1.0 of flooded for
+#: ball-screw contacts at 0.1–1 m/s) is taken as a moderate starvation.
+DEFAULT_GREASE_INLET_RATIO = 1.5
+
+Supply = Literal["flooded", "starved", "grease"]
+
+
+def check_oil_viscosities(medium: Any) -> Any:
+    """``[medium]`` validator: an unnamed oil by two viscosities that fall with temperature,
+    not together with a named lubricant or a dynamic viscosity."""
+    nu40, nu100 = medium.viscosity_40, medium.viscosity_100
+    if nu40 is None and nu100 is None:
+        return medium
+    if nu40 is None or nu100 is None:
+        given = "viscosity_40" if nu100 is None else "viscosity_100"
+        missing = "viscosity_100" if nu100 is None else "viscosity_40"
+        raise ValueError(f"{missing} is missing: an oil by viscosities needs it with {given}")
+    if nu100 >= nu40:
+        raise ValueError(
+            f"viscosity_100 = {nu100:g} m^2/s is not allowed: it must be below viscosity_40 = "
+            f"{nu40:g} m^2/s (the viscosity falls with temperature)"
+        )
+    for other in ("lubricant", "viscosity"):
+        if getattr(medium, other) is not None:
+            raise ValueError(
+                f"{other} = {getattr(medium, other)!r} is not allowed with viscosity_40/100: "
+                "give the oil one way"
+            )
+    return medium
+
+
+class LubricationSpec(Model):
+    """Supply state of the ball contacts and the thermal correction of the film."""
+
+    supply: Supply = Field(
+        "flooded",
+        description="flooded: Hamrock–Dowson film; starved: inlet meniscus at inlet_ratio "
+        "(Hamrock & Dowson 1977, IV); grease: base-oil film, starved at inlet_ratio",
+    )
+    inlet_ratio: (
+        Annotated[
+            float,
+            Field(
+                ge=1.0,
+                le=1e3,
+                description="inlet meniscus distance from the contact centre / Hertz semi-axis "
+                "along rolling, m >= 1 (starved: required; grease: default 1.5 [GUESS])",
+            ),
+        ]
+        | None
+    ) = None
+    thermal: bool = Field(
+        False, description="reduce the film for inlet shear heating (Gupta et al. 1992)"
+    )
+    temperature: quantity(
+        "temperature",
+        "inlet temperature at which a named lubricant's properties are taken",
+        gt=0,
+        le=700,
+    ) = 313.15
+
+    @model_validator(mode="after")
+    def _inlet_for_starved(self) -> LubricationSpec:
+        if self.supply == "starved" and self.inlet_ratio is None:
+            raise ValueError(
+                "inlet_ratio is missing: supply = 'starved' needs the inlet meniscus ratio m >= 1"
+            )
+        if self.supply == "flooded" and self.inlet_ratio is not None:
+            raise ValueError(
+                f"inlet_ratio = {self.inlet_ratio:g} is not allowed with supply = "
+                "'flooded': use 'starved' or 'grease'"
+            )
+        return self
+
+    @property
+    def meniscus(self) -> float | None:
+        """The inlet ratio m of a starved or greased supply (None: flooded)."""
+        if self.supply == "flooded":
+            return None
+        if self.inlet_ratio is not None:
+            return self.inlet_ratio
+        return DEFAULT_GREASE_INLET_RATIO

@@ -1,0 +1,106 @@
+"""The supplied film: starved and greased inlets, inlet heating, the [lubrication] section."""
+
+from __future__ import annotations
+
+import itertools
+
+import pytest
+
+import ballscrew
+from ballscrew.analyses.friction import friction_torque
+from ballscrew.analyses.kinematics import ball_model
+from ballscrew.case import CaseError
+from ballscrew.contact.hertz import hamrock_brewe
+from ballscrew.lubrication import hamrock_dowson
+from ballscrew.lubrication.film_corrections import (
+    critical_inlet_ratio,
+    thermal_loading,
+    thermal_reduction_gupta,
+)
+from ballscrew.lubrication.lubricant_library import library_lubricant
+from ballscrew.lubrication.supply import supplied_film_model
+
+# contact A of the reference screw (tests/lubrication/test_film.py)
+RX, RY, E_PRIME = 2.820e-3, 34.93e-3, 2.2637e11
+ETA, ALPHA, U, Q = 0.06, 2.1e-8, 0.09333, 39.41
+ARGS = (RX, RY, E_PRIME, ETA, ALPHA, U, Q)
+
+
+def test_nothing_to_correct_keeps_the_registered_name():
+    assert supplied_film_model("hamrock_dowson") == "hamrock_dowson"
+
+
+def test_starved_film_is_the_published_power_of_the_inlet_distance():
+    flooded = hamrock_dowson(*ARGS)
+    b = hamrock_brewe(RX, RY, 0.5 * E_PRIME, Q).a
+    m_star = critical_inlet_ratio(RX, b, flooded.central, True)
+    assert m_star > 1.0
+    m = 1.0 + 0.25 * (m_star - 1.0)
+    starved = supplied_film_model("hamrock_dowson", inlet_ratio=m)(*ARGS)
+    # Hamrock & Dowson (1977, IV): h_c,S/h_c,F = ((m − 1)/(m* − 1))^0.29
+    assert starved.central / flooded.central == pytest.approx(0.25**0.29, rel=1e-12)
+    at_critical = supplied_film_model("hamrock_dowson", inlet_ratio=m_star)(*ARGS)
+    assert at_critical.central == pytest.approx(flooded.central, rel=1e-12)
+
+
+def test_starvation_drives_the_film_to_zero_as_the_meniscus_reaches_the_hertz_edge():
+    flooded = hamrock_dowson(*ARGS).central
+    films = [
+        supplied_film_model("hamrock_dowson", inlet_ratio=m)(*ARGS).central
+        for m in (1.5, 1.1, 1.01, 1.0001, 1.0)
+    ]
+    assert all(b < a for a, b in itertools.pairwise(films))
+    assert films[0] < flooded and films[-2] < 0.1 * flooded and films[-1] == 0.0
+
+
+def test_thermal_factor_is_gupta_at_the_lubricants_loading():
+    oil = library_lubricant("iso_vg_68").at(313.15)
+    thermal = (oil.temperature_viscosity, oil.conductivity)
+    fast = (RX, RY, E_PRIME, ETA, ALPHA, 20.0, Q)
+    film = supplied_film_model("hamrock_dowson", thermal=thermal)(*fast)
+    loading = thermal_loading(*thermal[:1], ETA, 20.0, thermal[1])
+    p_h = hamrock_brewe(RX, RY, 0.5 * E_PRIME, Q).p0
+    phi = thermal_reduction_gupta(loading, p_h / E_PRIME)
+    assert film.central == pytest.approx(phi * hamrock_dowson(*fast).central, rel=1e-12)
+    assert phi == pytest.approx(0.438, abs=1e-3)  # L = 9.3 at 20 m/s, VG 68 at 40 °C
+    slow = supplied_film_model("hamrock_dowson", thermal=thermal)(*ARGS)
+    assert slow.central == pytest.approx(hamrock_dowson(*ARGS).central, rel=5e-3)
+
+
+def _case(path, overrides):
+    return ballscrew.load_case(path, {"friction.model": "ball_model", **overrides})
+
+
+def test_case_supply_thins_the_film_of_every_chain(wear_case_path):
+    flooded = _case(wear_case_path, {})
+    starved = _case(
+        wear_case_path, {"lubrication.supply": "starved", "lubrication.inlet_ratio": 1.05}
+    )
+    grease = _case(wear_case_path, {"lubrication.supply": "grease"})
+    hot = _case(wear_case_path, {"lubrication.thermal": True})
+    films = {
+        name: ball_model(case).film(60.0, 0.5).central
+        for name, case in (("flooded", flooded), ("starved", starved), ("grease", grease))
+    }
+    assert films["starved"] < films["grease"] < films["flooded"]
+    assert ball_model(hot).film(60.0, 5.0).central < ball_model(flooded).film(60.0, 5.0).central
+    dry = friction_torque(starved, speed=100.0)
+    wet = friction_torque(flooded, speed=100.0)
+    assert dry.film_parameter < wet.film_parameter
+    assert dry.parts["sliding"] > wet.parts["sliding"]  # more asperity (boundary) traction
+
+
+@pytest.mark.parametrize(
+    ("overrides", "text"),
+    [
+        ({"lubrication.supply": "starved"}, "inlet_ratio is missing"),
+        ({"lubrication.supply": "starved", "lubrication.inlet_ratio": 0.5}, "inlet_ratio"),
+        ({"lubrication.supply": "oil bath"}, "supply"),
+        ({"lubrication.inlet_ratio": 2.0}, "not allowed with supply = 'flooded'"),
+    ],
+)
+def test_bad_supply_is_a_one_line_error(wear_case_path, overrides, text):
+    with pytest.raises(CaseError) as err:
+        ballscrew.load_case(wear_case_path, overrides)
+    message = str(err.value)
+    assert text in message and "\n" not in message.strip()
