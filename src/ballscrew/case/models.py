@@ -18,6 +18,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec
+from ballscrew.case.loads_spec import LoadsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import (
@@ -203,6 +204,7 @@ class Case(Model):
     thermal: ThermalSpec | None = Field(None, description="thermal model; needed by `thermal`")
     kinematics: KinematicsSpec = KinematicsSpec()
     friction: FrictionSpec = FrictionSpec()
+    loads: LoadsSpec = LoadsSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
     design: DesignSpec | None = None
     duty: list[DutySegment] = Field(
