@@ -32,9 +32,10 @@ from ballscrew.validation import as_case_fields
 __all__ = [
     "NUT_DIAMETER_BALLS",
     "BallLoads",
+    "NutBallLoad",
     "ball_loads",
+    "chain_ball_loads",
     "elastic_distribution",
-    "loaded_ball_load",
     "nut_model",
 ]
 
@@ -128,8 +129,8 @@ def elastic_distribution(
             params.axial_load if axial_load is None else axial_load,
             params.preload,
             bodies,
-            lead_error=spec.lead_error if errors else None,
-            ball_excess=spec.ball_diameter_error if errors else None,
+            lead_error=spec.lead_error or None if errors else None,
+            ball_excess=spec.ball_diameter_error or None if errors else None,
             interference=interference,
         )
 
@@ -159,12 +160,24 @@ def ball_loads(case: Case) -> BallLoads:
     )
 
 
-def loaded_ball_load(case: Case, params: ScrewParameters) -> tuple[float, float]:
-    """(Q, spread): the ball load the contact and TCR chains use for nut 1.
+@dataclass(frozen=True)
+class NutBallLoad:
+    """What the contact and TCR chains take of one nut's distribution."""
 
-    Uniform: the nut's ball load, spread 1. Elastic: the most loaded ball and max/mean.
-    """
+    force: float
+    """Axial force of the nut [N]."""
+    ball_load: float
+    """Uniform: every ball's load; elastic: the most loaded ball's [N]."""
+    spread: float
+    """Largest over mean ball load of the nut [-] (1 uniform or lifted off)."""
+
+
+def chain_ball_loads(case: Case, params: ScrewParameters) -> tuple[NutBallLoad, ...]:
+    """Per nut (nut 1 first) the force and ball load the contact and TCR chains use."""
     if case.loads.distribution == "uniform":
-        return params.loaded_nut.ball_load, 1.0
+        return tuple(NutBallLoad(n.force, n.ball_load, 1.0) for n in params.nuts)
     result = ball_loads(case)
-    return result.max_load, result.spread
+    return tuple(
+        NutBallLoad(float(force), float(q.max()), float(q.max() / q.mean()) if q.max() > 0 else 1.0)
+        for force, q in zip(result.axial_forces, result.loads, strict=True)
+    )

@@ -35,22 +35,28 @@ class LoadsSpec(Model):
         quantity("length", "outer diameter of the nut body; None = d_m + 5 D_b", gt=0, le=10.0)
         | None
     ) = None
-    spacer: quantity(
-        "length", "axial gap between the nearest balls of the two nuts; None = the lead", gt=0,
-        le=10.0,
-    ) | None = None
+    spacer: (
+        quantity(
+            "length",
+            "axial gap between the nearest balls of the two nuts; None = the lead",
+            gt=0,
+            le=10.0,
+        )
+        | None
+    ) = None
     flange: Literal["loaded_end", "free_end"] = Field(
         "loaded_end",
         description="nut flange at the end where the shaft carries the load out, or the other",
     )
-    lead_error: list[Deviation] | None = Field(
-        None,
+    lead_error: list[Deviation] = Field(
+        default_factory=list,
         max_length=100_000,
         description="axial lead error of the screw relative to the nut [m], per ball or per "
-        "turn, nut 1 first, each nut from its loaded end",
+        "turn, nut 1 first, each nut from its loaded end; empty = none",
     )
-    ball_diameter_error: list[Deviation] | None = Field(
-        None,
+    ball_diameter_error: list[Deviation] = Field(
+        default_factory=list,
         max_length=100_000,
-        description="ball diameter minus nominal [m], per ball or per turn, nut 1 first",
+        description="ball diameter minus nominal [m], per ball or per turn, nut 1 first; "
+        "empty = none",
     )

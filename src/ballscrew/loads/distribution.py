@@ -17,21 +17,21 @@ so with c = 1/(EA) the flexibility is
 (the screw carries the load out at the loaded end z → +∞). e_j is the lead error (axial, screw
 relative to nut), Δd_j the ball-diameter excess, g the interference the spacer of a double nut
 builds in (found from the preload), K = K_A + K_B the Hertz constants of a ball's two contacts.
-The nut ring widens and the shaft shrinks under the radial line load f_j = cosβ Σ Q_i / L of the
-turn around ball j (Lamé thick ring; solid shaft), c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n)
+The nut ring widens and the shaft shrinks under the radial line load f_j = cosβ n_t ⟨Q⟩_j / L of
+the turn around ball j (n_t balls per turn, ⟨Q⟩_j their mean load) (Lamé thick ring; solid shaft), c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n)
 + (1 − ν_s)/(2π E_s) (the expansion of the MESYS manual's thick-ring option).
 
 One Newton solve on (Q, x[, g]) with a dense Jacobian (no loop over balls) and a backtracking
 line search; the force balance Σ σ_j s Q_j = F_a is a linear row of the system, so it holds to
 rounding. The contact angle under load follows the distance of the groove curvature centres
 A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007, §1.7); the
-axial share s keeps β₀ (the change is of order δ/A < 1 %). Theory manual, *Loads*.
+axial share s keeps β₀ (the change is of order δ/A, 1–2 %). Theory manual, *Loads*.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -213,7 +213,6 @@ class Distribution:
     compliance: float
     """Tangent dD/dF_a [m/N]."""
     iterations: int
-    extra: dict = field(default_factory=dict, compare=False)
 
     @property
     def stiffness(self) -> float:
@@ -240,10 +239,13 @@ def _flexibility(layout: BallLayout, bodies: NutBodies) -> tuple[NDArray[np.floa
 
 
 def _window(layout: BallLayout) -> NDArray[np.float64]:
-    """W_ji = 1 for balls of the same nut within half a lead of each other."""
+    """Averaging over the balls of the same nut within half a lead: f_j = cosβ n_t ⟨Q⟩_j / L
+    with n_t balls per turn, so a nut's end turns see the local mean load, not half of it."""
     same = layout.nut[:, None] == layout.nut[None, :]
     near = np.abs(layout.z[:, None] - layout.z[None, :]) <= 0.5 * layout.lead * (1 + 1e-12)
-    return (same & near).astype(float)
+    w = (same & near).astype(float)
+    per_turn = layout.lead / float(np.abs(layout.z[1] - layout.z[0])) if layout.balls > 1 else 1.0
+    return w * (per_turn / w.sum(axis=1, keepdims=True))
 
 
 def _newton(
@@ -357,15 +359,15 @@ def solve_distribution(
         f1, f2 = fp + fa, 0.0
     else:
         f1, f2 = (float(v) for v in nut_forces(fp, fa))
-    d1, d2 = (f1 / f_ref) ** (2.0 / 3.0), (f2 / f_ref) ** (2.0 / 3.0)
-    q0 = np.where(sigma > 0, f1, f2) / f_ref
-    if layout.nuts == 2 and interference is None:
-        pre = _preload_interference(a, sigma, c, force_row, fp / f_ref, q0_pre=fp / f_ref)
-        g_hat = pre
+    q0 = np.where(sigma > 0, f1, f2) / f_ref  # rigid bodies, no errors
+    if layout.nuts == 1:
+        g_hat = 0.0
+    elif interference is None:
+        g_hat = _preload_interference(a, sigma, c, force_row, fp / f_ref)
     else:
-        g_hat = 0.0 if layout.nuts == 1 else interference * s / d_ref
+        g_hat = interference * s / d_ref
     c_load = c + g_hat
-    x0 = d1 - g_hat
+    x0 = (f1 / f_ref) ** (2.0 / 3.0) - g_hat
     y, jac, its = _newton(
         a, sigma[:, None], c_load, force_row[None, :], np.array([fa / f_ref]), np.append(q0, x0)
     )
@@ -397,16 +399,13 @@ def _preload_interference(
     c: NDArray[np.float64],
     force_row: NDArray[np.float64],
     preload_hat: float,
-    q0_pre: float,
 ) -> float:
     """ĝ at which nut 1 carries the preload with no external load (scaled units)."""
     n = sigma.size
     g = np.stack([force_row, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
     b = np.stack([sigma, np.ones(n)], axis=1)
-    d0 = q0_pre ** (2.0 / 3.0)
-    y, _, _ = _newton(
-        a, b, c, g, np.array([0.0, preload_hat]), np.concatenate([np.full(n, q0_pre), [0.0, d0]])
-    )
+    start = np.concatenate([np.full(n, preload_hat), [0.0, preload_hat ** (2.0 / 3.0)]])
+    y, _, _ = _newton(a, b, c, g, np.array([0.0, preload_hat]), start)
     return float(y[-1])
 
 
@@ -441,7 +440,7 @@ def lift_off_load(
         dist = solve_distribution(layout, *args, fa, preload, bodies, interference=g)
         return bool(dist.nut_forces[1] <= 0.0)
 
-    lo, hi = 0.0, 2.0 ** 1.5 * preload
+    lo, hi = 0.0, 2.0**1.5 * preload
     while not unloaded(hi):
         lo, hi = hi, 2.0 * hi
     while hi - lo > rtol * hi:
