@@ -17,9 +17,10 @@ so with c = 1/(EA) the flexibility is
 (the screw carries the load out at the loaded end z → +∞). e_j is the lead error (axial, screw
 relative to nut), Δd_j the ball-diameter excess, g the interference the spacer of a double nut
 builds in (found from the preload), K = K_A + K_B the Hertz constants of a ball's two contacts.
-The nut ring widens and the shaft shrinks under the radial line load f_j = cosβ n_t ⟨Q⟩_j / L of
-the turn around ball j (n_t balls per turn, ⟨Q⟩_j their mean load) (Lamé thick ring; solid shaft), c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n)
-+ (1 − ν_s)/(2π E_s) (the expansion of the MESYS manual's thick-ring option).
+The nut ring widens and the shaft shrinks under the radial line load f_j = cosβ n_t ⟨Q⟩_j / L
+of the turn around ball j (n_t balls per turn, ⟨Q⟩_j their mean load); Lamé thick ring and
+solid shaft give c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n) + (1 − ν_s)/(2π E_s) of radial
+approach per line load (the thick-ring expansion of the MESYS ball-screw manual).
 
 One Newton solve on (Q, x[, g]) with a dense Jacobian (no loop over balls) and a backtracking
 line search; the force balance Σ σ_j s Q_j = F_a is a linear row of the system, so it holds to
