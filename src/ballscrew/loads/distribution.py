@@ -275,7 +275,7 @@ def _newton_loop(
     y: NDArray[np.float64],
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
     n, m = a.shape[0], b.shape[1]
-    eye = np.eye(n)
+    diagonal = np.arange(n)
 
     def residual(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         d = a @ y[:n] + b @ y[n:] + c
@@ -287,7 +287,8 @@ def _newton_loop(
     jac = np.zeros((n + m, n + m))
     for it in range(1, _MAX_ITERATIONS + 1):
         slope = 1.5 * np.sqrt(dp)
-        jac[:n, :n] = eye - slope[:, None] * a
+        np.multiply(-slope[:, None], a, out=jac[:n, :n])
+        jac[diagonal, diagonal] += 1.0
         jac[:n, n:] = -slope[:, None] * b
         jac[n:, :n] = g
         if norm < _TOLERANCE:
