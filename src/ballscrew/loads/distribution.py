@@ -8,7 +8,7 @@ nut the external load presses on). Its normal contact approach is
     Q_j = (max(δ_j, 0) / K)^(3/2)                               (Hertz, no tension),
 
 with v the axial displacement of the screw relative to the nut at z_j: a rigid part x plus the
-strain of the screw shaft and the nut body between the balls. Both are bars (Mei et al. 2009;
+strain of the screw shaft and the nut body between the balls. Both are bars (Mei et al. 2003;
 Zhen & An 2018): the force each ball hands from the screw to the nut accumulates along the nut,
 so with c = 1/(EA) the flexibility is
 
@@ -25,7 +25,7 @@ approach per line load (the thick-ring expansion of the MESYS ball-screw manual)
 One Newton solve on (Q, x[, g]) with a dense Jacobian (no loop over balls) and a backtracking
 line search; the force balance Σ σ_j s Q_j = F_a is a linear row of the system, so it holds to
 rounding. The contact angle under load follows the distance of the groove curvature centres
-A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007, §1.7); the
+A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007); the
 axial share s keeps β₀ (the change is of order δ/A, 1–2 %). Theory manual, *Loads*.
 """
 
