@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -64,3 +65,14 @@ def test_a_nut_thinner_than_its_groove_is_refused_by_its_case_field(gao_case_pat
     case = ballscrew.load_case(gao_case_path, ELASTIC | {"loads.nut_outer_diameter": "44 mm"})
     with pytest.raises(InputError, match=r"loads\.nut_outer_diameter"):
         ballscrew.ball_loads(case)
+
+
+def test_the_wear_preload_update_puts_the_bodies_in_series():
+    from ballscrew.analyses.wear import wear_setup
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "wear_step_stress.toml"
+    uniform = wear_setup(ballscrew.load_case(path))
+    elastic = wear_setup(ballscrew.load_case(path, {"loads.distribution": "elastic"}))
+    assert uniform.body_compliance == 0.0 and elastic.body_compliance > 0.0
+    assert uniform.preload(1e-6) == pytest.approx(899.7, rel=1e-4)  # (E1.13), unchanged
+    assert elastic.preload(1e-6) > uniform.preload(1e-6)

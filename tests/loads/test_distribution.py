@@ -143,3 +143,17 @@ def test_bad_inputs_are_named() -> None:
         body_properties(D_M, BALL, BETA, 0.0335, 0.045, STEEL, STEEL)
     with pytest.raises(InputError, match="preload"):
         solve(100.0, fp=0.0)
+
+
+def test_preload_after_wear_with_bodies_in_series() -> None:
+    from ballscrew.loads import preload_after_wear
+
+    c_a, c_b = 3.749e-8, 2e-10
+    depths = np.array([0.0, 1e-6, 2.43e-6, 1e-4])
+    rigid = preload_after_wear(1500.0, c_a, depths, BETA, ALPHA)
+    bodies = preload_after_wear(1500.0, c_a, depths, BETA, ALPHA, c_b)
+    left = c_a * bodies ** (2 / 3) + c_b * bodies  # the interference each preload needs
+    lost = c_a * 1500.0 ** (2 / 3) + c_b * 1500.0 - depths / S
+    assert left[:3] == pytest.approx(lost[:3], rel=1e-12) and bodies[3] == rigid[3] == 0.0
+    assert np.all(bodies[1:3] > rigid[1:3])  # a softer loop loses its preload more slowly
+    assert preload_after_wear(1500.0, c_a, depths, BETA, ALPHA, 0.0) == pytest.approx(rigid)
