@@ -262,18 +262,6 @@ def _newton(
     Returns the solution, the Jacobian at it and the iteration count. Small dense systems:
     BLAS runs on one thread (threaded BLAS on busy cores is many times slower here).
     """
-    with blas_single_thread():
-        return _newton_loop(a, b, c, g, f, y)
-
-
-def _newton_loop(
-    a: NDArray[np.float64],
-    b: NDArray[np.float64],
-    c: NDArray[np.float64],
-    g: NDArray[np.float64],
-    f: NDArray[np.float64],
-    y: NDArray[np.float64],
-) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
     n, m = a.shape[0], b.shape[1]
     diagonal = np.arange(n)
 
@@ -285,24 +273,25 @@ def _newton_loop(
     r, dp = residual(y)
     norm = float(np.max(np.abs(r)))
     jac = np.zeros((n + m, n + m))
-    for it in range(1, _MAX_ITERATIONS + 1):
-        slope = 1.5 * np.sqrt(dp)
-        np.multiply(-slope[:, None], a, out=jac[:n, :n])
-        jac[diagonal, diagonal] += 1.0
-        jac[:n, n:] = -slope[:, None] * b
-        jac[n:, :n] = g
-        if norm < _TOLERANCE:
-            return y, jac, it - 1
-        step = np.linalg.solve(jac, -r)
-        t, phi = 1.0, norm
-        while True:
-            trial = y + t * step
-            r_t, dp_t = residual(trial)
-            norm_t = float(np.max(np.abs(r_t)))
-            if norm_t < (1.0 - 1e-4 * t) * phi or t < 1e-6:
-                break
-            t *= 0.5
-        y, r, dp, norm = trial, r_t, dp_t, norm_t
+    with blas_single_thread():
+        for it in range(1, _MAX_ITERATIONS + 1):
+            slope = 1.5 * np.sqrt(dp)
+            np.multiply(-slope[:, None], a, out=jac[:n, :n])
+            jac[diagonal, diagonal] += 1.0
+            jac[:n, n:] = -slope[:, None] * b
+            jac[n:, :n] = g
+            if norm < _TOLERANCE:
+                return y, jac, it - 1
+            step = np.linalg.solve(jac, -r)
+            t, phi = 1.0, norm
+            while True:
+                trial = y + t * step
+                r_t, dp_t = residual(trial)
+                norm_t = float(np.max(np.abs(r_t)))
+                if norm_t < (1.0 - 1e-4 * t) * phi or t < 1e-6:
+                    break
+                t *= 0.5
+            y, r, dp, norm = trial, r_t, dp_t, norm_t
     raise ConvergenceError("ball load distribution (Newton)", _MAX_ITERATIONS, norm, _TOLERANCE)
 
 
