@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import ballscrew
+from ballscrew.errors import InputError
 
 
 def test_every_ball_of_a_nut_carries_its_share(gao_case_path):
@@ -27,3 +29,50 @@ def test_a_lifted_off_nut_carries_nothing(gao_case_path):
     balls = ballscrew.ball_loads(case)
     assert np.all(balls.loads[1] == 0.0)
     assert balls.axial_forces[0] == pytest.approx(6000.0, rel=1e-12)
+
+
+ELASTIC = {"loads.distribution": "elastic", "operating.axial_load": 2000.0}
+
+
+def test_the_elastic_distribution_balances_the_load_and_spreads_it(gao_case_path):
+    case = ballscrew.load_case(gao_case_path, ELASTIC)
+    balls = ballscrew.ball_loads(case)
+    assert balls.distribution == "elastic" and balls.loads.shape == (2, 54)
+    assert balls.axial_forces[0] - balls.axial_forces[1] == pytest.approx(2000.0, rel=1e-10)
+    assert balls.spread > 1.01 and np.all(balls.loads > 0)
+    assert np.all(balls.angles > math.radians(45.0))  # the loaded balls ride up the groove
+    assert balls.positions.shape == balls.loads.shape
+
+
+def test_the_contact_chain_takes_the_most_loaded_ball(gao_case_path):
+    from ballscrew.analyses.ball_contact import solve_ball_contacts
+
+    overrides = ELASTIC | {"numerics.cells_across": 16}
+    case = ballscrew.load_case(gao_case_path, overrides)
+    result = solve_ball_contacts(case)
+    balls = ballscrew.ball_loads(case)
+    assert result.ball_load == pytest.approx(balls.max_load, rel=1e-12)
+    assert result.load_spread == pytest.approx(balls.spread, rel=1e-12)
+    assert result.nut_force == pytest.approx(balls.axial_forces[0], rel=1e-12)
+    uniform = solve_ball_contacts(
+        ballscrew.load_case(gao_case_path, overrides | {"loads.distribution": "uniform"})
+    )
+    f1 = ballscrew.nut_forces(1500.0, 2000.0)[0]
+    assert uniform.nut_force == f1 and uniform.load_spread == 1.0
+
+
+def test_a_nut_thinner_than_its_groove_is_refused_by_its_case_field(gao_case_path):
+    case = ballscrew.load_case(gao_case_path, ELASTIC | {"loads.nut_outer_diameter": "44 mm"})
+    with pytest.raises(InputError, match=r"loads\.nut_outer_diameter"):
+        ballscrew.ball_loads(case)
+
+
+def test_the_wear_preload_update_puts_the_bodies_in_series():
+    from ballscrew.analyses.wear import wear_setup
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "wear_step_stress.toml"
+    uniform = wear_setup(ballscrew.load_case(path))
+    elastic = wear_setup(ballscrew.load_case(path, {"loads.distribution": "elastic"}))
+    assert uniform.body_compliance == 0.0 and elastic.body_compliance > 0.0
+    assert uniform.preload(1e-6) == pytest.approx(899.7, rel=1e-4)  # (E1.13), unchanged
+    assert elastic.preload(1e-6) > uniform.preload(1e-6)

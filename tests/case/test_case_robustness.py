@@ -138,6 +138,8 @@ def _numeric_locations(model: type = Case, prefix: tuple = ()) -> list[tuple]:
             found += [(*loc, "constrained-float"), (*loc, "tuple[...]", 1)]
         elif get_origin(members[0]) is tuple:
             found += [(*loc, 0), (*loc, 1)]
+        elif get_origin(members[0]) is list:  # a list of numbers: its items
+            found.append((*loc, 0))
         else:
             found.append(loc)
     return found

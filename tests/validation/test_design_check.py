@@ -10,6 +10,7 @@ from typing import Any
 import pytest
 
 from ballscrew import design
+from ballscrew.analyses.ball_loads import elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import case_from_dict
 from ballscrew.kinematics.limits import critical_speed
@@ -30,7 +31,10 @@ RIGIDITY_ASSUMPTIONS = (
     "circuit floor(π d_m/(D_w cos λ)) − 1 (ASSUMED: one ball space for the crossover)",
     f"conformity {CONFORMITY} on screw and nut, contact angle 45°, steel E = 206 GPa, ν = 0.3 "
     "(ASSUMED: typical Gothic-arch values; 0.52 → +16 %, 0.55 → −10 % on the prediction)",
-    "contacts only: nut body, shaft under the nut and load distribution not modelled",
+    "every ball a Hertz contact; shaft under the nut (root diameter of the table) and nut body "
+    "as bars, nut ring expansion (theory manual, Loads); nut outer diameter d_m + 5 D_b (GUESS: "
+    "the table's nut diameter is not legible in the text copy), the halves one lead apart, "
+    "flange at the loaded end, steel E = 206 GPa, ν = 0.3 for shaft and nut",
 )
 
 RIGIDITY_TOLERANCE = (
@@ -49,7 +53,8 @@ def _catalogue_row(dataset, key: str, model: str) -> tuple[dict[str, Any], dict[
 
 
 def _nut_rigidity(base_raw: dict[str, Any], row: dict[str, Any]) -> float:
-    """Hertz stiffness of the double nut at preload 0.1 C_a, through the case chain, N/m."""
+    """Stiffness of the double nut at preload 0.1 C_a, contacts and bodies, through the case
+    chain, N/m."""
     d_m, ball, lead = row["d0_mm"] * MM, row["ball_mm"] * MM, row["lead_mm"] * MM
     lead_angle = math.atan(lead / (math.pi * d_m))
     per_circuit = math.floor(math.pi * d_m / (ball * math.cos(lead_angle))) - 1
@@ -65,8 +70,9 @@ def _nut_rigidity(base_raw: dict[str, Any], row: dict[str, Any]) -> float:
     )
     preload = 0.1 * row["Ca_N"]
     base_raw["operating"].update(preload=preload, axial_load=0.0)
-    params = ScrewParameters.from_case(case_from_dict(base_raw))
-    return design.nut_stiffness(0.0, preload, params.nut_compliance, nuts=2)
+    case = case_from_dict(base_raw)
+    params = ScrewParameters.from_case(case)
+    return elastic_distribution(params, case.loads, row["root_mm"] * MM).stiffness
 
 
 HIWIN_MODELS = [
@@ -85,13 +91,24 @@ HIWIN_MODELS = [
 ]
 
 
+RIGIDITY_MISSES = {
+    # predicted with contacts and bodies (contacts only: +56..+95 % on every row)
+    "R20-05K4-FDC": "+26.1 %",
+    "R32-05K4-FDC": "+39.9 %",
+    "R40-05K5-FDC": "+29.9 %",
+    "R80-10K5-FDC": "+28.8 %",
+}
+"""Rows still outside ±25 %: the small-ball, 5 mm-lead nuts and the largest shaft."""
+
+
 @pytest.mark.parametrize("model", HIWIN_MODELS)
 def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
     row, reference = _catalogue_row(dataset, "hiwin_fdc_rigidity", model)
     validation.check(
         "hiwin_fdc_rigidity_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
         kind="comparison with a maker's calculation",
-        model="Hertz nut stiffness (nut_stiffness, 2 halves at 0.1 C_a preload)",
+        model="nut stiffness, Hertz contacts of every ball with elastic shaft and nut body "
+        "(elastic distribution, 2 halves at 0.1 C_a preload)",
         source=HIWIN_SOURCE,
         reference=reference,
         quantity=f"axial rigidity of the double nut {model}",
@@ -102,7 +119,7 @@ def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
         relative=True,
         tolerance_basis=RIGIDITY_TOLERANCE,
         assumptions=RIGIDITY_ASSUMPTIONS,
-        known_miss=True,
+        known_miss=model in RIGIDITY_MISSES,
     )
 
 

@@ -14,6 +14,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ballscrew.analyses import contact_report
+from ballscrew.analyses.ball_loads import chain_ball_loads
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case, NumericsSpec
@@ -74,6 +75,9 @@ class BallContacts(Presented):
     nut: RacewayContact
     warnings: tuple[str, ...] = ()
     """Warnings raised while solving (one line each)."""
+    load_spread: float = 1.0
+    """Largest over mean ball load of the nut (``loads.distribution = "elastic"``: the ball
+    solved is the most loaded one) [-]."""
 
     analysis: ClassVar[str] = "contact"
     presentation: ClassVar[ModuleType] = contact_report
@@ -142,7 +146,7 @@ def solve_raceway_contact(
 def solve_ball_contacts(case: Case) -> BallContacts:
     """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads."""
     params = ScrewParameters.from_case(case)
-    nut = params.loaded_nut
+    nut = chain_ball_loads(case, params)[0]
     with recorded_warnings() as messages:
         contacts = {
             side: solve_raceway_contact(
@@ -158,6 +162,7 @@ def solve_ball_contacts(case: Case) -> BallContacts:
         contacts["screw"],
         contacts["nut"],
         tuple(messages),
+        nut.spread,
     )
 
 
@@ -168,6 +173,8 @@ def contact_scalars(case: Case) -> dict[str, tuple[float, str]]:
         "nut_force": (result.nut_force, "N"),
         "ball_load": (result.ball_load, "N"),
     }
+    if case.loads.distribution == "elastic":
+        scalars["ball_load_spread"] = (result.load_spread, "")
     for side in SIDES:
         c = result.contact(side)
         scalars[f"{side}_peak_pressure"] = (c.solution.peak_pressure, "Pa")

@@ -1,9 +1,10 @@
 """Normal load and contact angle of every ball of every nut: ``ballscrew.ball_loads(case)``.
 
-The distribution is uniform: every loaded ball of a nut carries Q = F/(Z sinβ cosα) at the
-nominal contact angle β (rigid screw and nut bodies, no lead error; theory manual, *Loads*).
-The elastic distribution along the nut (body compliance, lead error, ball-diameter variation,
-the change of the contact angle under load) is not built yet; uniform is its rigid limit.
+``loads.distribution = "uniform"`` (default): every loaded ball of a nut carries
+Q = F/(Z sinβ cosα) at the nominal contact angle β (rigid bodies, no lead error).
+``"elastic"``: Hertz contacts with the elastic screw shaft and nut body, the nut ring's
+expansion, lead error and ball-diameter variation, contact angle under load
+(:mod:`ballscrew.loads.distribution`; theory manual, *Loads*). Uniform is its rigid limit.
 """
 
 from __future__ import annotations
@@ -15,27 +16,168 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
+from ballscrew.case.loads_spec import LoadsSpec
+from ballscrew.kinematics.limits import groove_root_diameter
+from ballscrew.loads.distribution import (
+    BallLayout,
+    Distribution,
+    NutBodies,
+    ball_layout,
+    body_properties,
+    loaded_contact_angle,
+    solve_distribution,
+)
+from ballscrew.validation import as_case_fields
 
-__all__ = ["BallLoads", "ball_loads"]
+__all__ = [
+    "NUT_DIAMETER_BALLS",
+    "BallLoads",
+    "NutBallLoad",
+    "ball_loads",
+    "chain_ball_loads",
+    "elastic_distribution",
+    "nut_model",
+]
+
+NUT_DIAMETER_BALLS = 5.0
+"""GUESS: nut outer diameter d_m + 5 D_b when the case gives none (close to DIN 69051 flanged
+nuts of 6.35 mm balls on 32–63 mm screws)."""
+
+_FIELDS = {
+    "nut_outer_diameter": "loads.nut_outer_diameter",
+    "lead_error": "loads.lead_error",
+    "ball_excess": "loads.ball_diameter_error",
+    "root_diameter": "design.root_diameter",
+}
 
 
 @dataclass(frozen=True)
 class BallLoads:
-    """Per-ball loads and angles, one row per nut (nut 1 first), one column per ball (SI)."""
+    """Per-ball loads and angles, one row per nut (nut 1 first), one column per ball (SI).
+
+    Columns run from each nut's end nearest the loaded end of the shaft.
+    """
 
     loads: NDArray[np.float64]
-    """Normal ball load Q [N], shape (nuts, balls per nut); 0 for a lifted-off nut."""
+    """Normal ball load Q [N], shape (nuts, balls per nut); 0 for a lifted-off ball."""
     angles: NDArray[np.float64]
     """Contact angle β [rad], same shape."""
     axial_forces: NDArray[np.float64]
-    """Axial force of each nut's balls, Σ Q sinβ cosα [N] (equals the nut force)."""
+    """Axial force of each nut's balls, Σ Q sinβ₀ cosα [N] (equals the nut force)."""
     distribution: str = "uniform"
+    positions: NDArray[np.float64] | None = None
+    """Axial position of each ball [m] (elastic only), same shape as ``loads``."""
+
+    @property
+    def max_load(self) -> float:
+        """The most loaded ball's normal load [N]."""
+        return float(self.loads.max())
+
+    @property
+    def spread(self) -> float:
+        """Largest over mean load of the balls of nut 1 [-] (1 for uniform)."""
+        return float(self.loads[0].max() / self.loads[0].mean())
+
+
+def nut_model(
+    params: ScrewParameters, spec: LoadsSpec, root_diameter: float | None = None
+) -> tuple[BallLayout, NutBodies]:
+    """Ball positions and elastic bodies of the case's nut(s)."""
+    g = params.geometry
+    root = groove_root_diameter(g) if root_diameter is None else root_diameter
+    outer = spec.nut_outer_diameter or g.pitch_diameter + NUT_DIAMETER_BALLS * g.ball_diameter
+    layout = ball_layout(
+        params.balls_per_nut,
+        params.nut_count,
+        g.lead,
+        g.pitch_diameter,
+        g.ball_diameter,
+        g.lead_angle,
+        spec.spacer or g.lead,
+    )
+    with as_case_fields(_FIELDS):
+        bodies = body_properties(
+            g.pitch_diameter,
+            g.ball_diameter,
+            g.contact_angle,
+            root,
+            outer,
+            (params.screw.youngs_modulus, params.screw.poissons_ratio),
+            (params.nut.youngs_modulus, params.nut.poissons_ratio),
+            spec.flange == "loaded_end",
+        )
+    return layout, bodies
+
+
+def elastic_distribution(
+    params: ScrewParameters,
+    spec: LoadsSpec,
+    root_diameter: float | None = None,
+    axial_load: float | None = None,
+    interference: float | None = None,
+    errors: bool = True,
+) -> Distribution:
+    """The elastic distribution of the case's screw at ``axial_load`` (None: the case's)."""
+    layout, bodies = nut_model(params, spec, root_diameter)
+    g = params.geometry
+    with as_case_fields(_FIELDS):
+        return solve_distribution(
+            layout,
+            sum(params.hertz_constants),
+            g.contact_angle,
+            g.lead_angle,
+            params.axial_load if axial_load is None else axial_load,
+            params.preload,
+            bodies,
+            lead_error=spec.lead_error or None if errors else None,
+            ball_excess=spec.ball_diameter_error or None if errors else None,
+            interference=interference,
+        )
+
+
+def _root(case: Case) -> float | None:
+    return None if case.design is None else case.design.root_diameter
 
 
 def ball_loads(case: Case) -> BallLoads:
-    """Normal load and contact angle of every ball of every nut of ``case`` (uniform)."""
+    """Normal load and contact angle of every ball of every nut of ``case``."""
     params = ScrewParameters.from_case(case)
-    z = params.balls_per_nut
-    loads = np.array([np.full(z, nut.ball_load) for nut in params.nuts])
-    angles = np.full_like(loads, params.geometry.contact_angle)
-    return BallLoads(loads, angles, loads.sum(axis=1) * params.axial_projection)
+    g = params.geometry
+    if case.loads.distribution == "uniform":
+        z = params.balls_per_nut
+        loads = np.array([np.full(z, nut.ball_load) for nut in params.nuts])
+        angles = np.full_like(loads, g.contact_angle)
+        return BallLoads(loads, angles, loads.sum(axis=1) * params.axial_projection)
+    dist = elastic_distribution(params, case.loads, _root(case))
+    gap = (g.screw_conformity + g.nut_conformity - 1.0) * g.ball_diameter
+    angles = loaded_contact_angle(dist.approach, g.contact_angle, gap)
+    return BallLoads(
+        dist.per_nut(dist.loads),
+        dist.per_nut(angles),
+        dist.nut_forces,
+        "elastic",
+        dist.per_nut(dist.layout.z),
+    )
+
+
+@dataclass(frozen=True)
+class NutBallLoad:
+    """What the contact and TCR chains take of one nut's distribution."""
+
+    force: float
+    """Axial force of the nut [N]."""
+    ball_load: float
+    """Uniform: every ball's load; elastic: the most loaded ball's [N]."""
+    spread: float
+    """Largest over mean ball load of the nut [-] (1 uniform or lifted off)."""
+
+
+def chain_ball_loads(case: Case, params: ScrewParameters) -> tuple[NutBallLoad, ...]:
+    """Per nut (nut 1 first) the force and ball load the contact and TCR chains use."""
+    if case.loads.distribution == "uniform":
+        return tuple(NutBallLoad(n.force, n.ball_load, 1.0) for n in params.nuts)
+    result = ball_loads(case)
+    return tuple(
+        NutBallLoad(float(force), float(q.max()), float(q.max() / q.mean()) if q.max() > 0 else 1.0)
+        for force, q in zip(result.axial_forces, result.loads, strict=True)
+    )

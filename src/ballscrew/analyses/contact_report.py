@@ -131,7 +131,14 @@ def summary(result: BallContacts) -> dict[str, Any]:
         "nut_force": value(result.nut_force, "N"),
         "ball_load": value(result.ball_load, "N"),
         "contacts": {side: contact_summary(result.contact(side)) for side in SIDES},
-    }
+    } | _spread(result)
+
+
+def _spread(result: BallContacts) -> dict[str, Any]:
+    """The elastic distribution's spread (the ball solved is the most loaded one)."""
+    if result.case.loads.distribution == "uniform":
+        return {}
+    return {"ball_load_distribution": "elastic", "ball_load_spread": result.load_spread}
 
 
 def figures(result: BallContacts) -> list[Figure]:
@@ -185,6 +192,11 @@ def sections(result: BallContacts) -> list[Section]:
                         ("axial load [N]", case.operating.axial_load),
                         ("force on the loaded nut [N]", result.nut_force),
                         ("ball load Q [N]", result.ball_load),
+                        *(
+                            (("largest / mean ball load (elastic)", result.load_spread),)
+                            if result.case.loads.distribution == "elastic"
+                            else ()
+                        ),
                         ("lead angle [deg]", float(np.degrees(result.geometry.lead_angle))),
                         ("contact angle [deg]", float(np.degrees(result.geometry.contact_angle))),
                         ("gap model", case.numerics.gap_model),

@@ -2,7 +2,8 @@
 
 case → :class:`ScrewParameters` and ``[design]`` → the load spectrum (the ``[[duty]]`` segments,
 weighted by their revolutions, else the ``[operating]`` point) → the makers' formulas of
-:mod:`ballscrew.design` and the Hertz model of the preloaded nut → values with margins.
+:mod:`ballscrew.design` and the preloaded nut with Hertz contacts and elastic bodies
+(:mod:`ballscrew.loads.distribution`) → values with margins.
 
 The load ratings C_a and C_0a are catalogue inputs: computing them from the geometry needs
 ISO 3408-5, which is not implemented.
@@ -20,6 +21,7 @@ import numpy as np
 
 from ballscrew import design
 from ballscrew.analyses import design_check_report
+from ballscrew.analyses.ball_loads import elastic_distribution
 from ballscrew.analyses.duty import moving_fraction
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
@@ -129,8 +131,11 @@ class DesignCheck(Presented):
     """d·n at the highest speed [mm·rpm]."""
     compliance: float
     """Hertz nut compliance C, δ = C F^(2/3) per nut half [m N^(-2/3)]."""
+    contact_stiffness: float
+    """Hertz contacts only (rigid bodies) of the preloaded nut at the case's loads [N/m]."""
     nut_stiffness: float
-    """Hertz contacts of the preloaded nut at the case's preload and axial load [N/m]."""
+    """Preloaded nut at the case's preload and axial load: Hertz contacts of every ball with
+    the elastic shaft under the nut and nut body (``[loads]``) [N/m]."""
     catalogue_nut_stiffness: float | None
     """0.8 K (F_p/0.1 C_a)^(1/3) from the catalogue rigidity [N/m]; None without it."""
     shaft_stiffness: float
@@ -303,7 +308,8 @@ def design_check(case: Case) -> DesignCheck:
     life = _life(spec, equivalent)
     running = life is not None and math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
-    nut_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
+    contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
+    nut_k = elastic_distribution(params, case.loads, root).stiffness
     shaft_k = design.shaft_axial_stiffness(
         root, spec.nut_distance or length, screw.youngs_modulus, spec.mounting
     )
@@ -333,6 +339,7 @@ def design_check(case: Case) -> DesignCheck:
         "permissible_tension": design.permissible_tension(root),
         "dn": dn_value(geometry.pitch_diameter, spectrum.max_speed),
         "compliance": compliance,
+        "contact_stiffness": contact_k,
         "nut_stiffness": nut_k,
         "catalogue_nut_stiffness": catalogue_k,
         "shaft_stiffness": shaft_k,
@@ -365,6 +372,7 @@ def design_scalars(case: Case) -> dict[str, tuple[float, str]]:
         "buckling_load": "N",
         "axial_stiffness": "N/m",
         "nut_stiffness": "N/m",
+        "contact_stiffness": "N/m",
         "preload_drag_torque": "N*m",
     }
     return {

@@ -15,14 +15,18 @@ import numpy as np
 import xarray as xr
 
 from ballscrew import design
+from ballscrew.analyses.ball_loads import elastic_distribution, nut_model
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
+from ballscrew.loads.distribution import Distribution, lift_off_load
 
 if TYPE_CHECKING:
     from ballscrew.analyses.design_check import DesignCheck
 
-__all__ = ["fields", "figures", "sections", "stiffness_curve", "summary"]
+__all__ = ["ball_distribution", "fields", "figures", "sections", "stiffness_curve", "summary"]
 
 _CURVE_POINTS = 121
+_BODY_POINTS = 41
 
 # name → (unit, label, display scale, display unit)
 _VALUES: dict[str, tuple[str, str, float, str]] = {
@@ -36,7 +40,8 @@ _VALUES: dict[str, tuple[str, str, float, str]] = {
     "buckling_load": ("N", "buckling load (Euler)", 1e-3, "kN"),
     "permissible_tension": ("N", "permissible tension/compression", 1e-3, "kN"),
     "dn": ("", "d·n at the highest speed", 1.0, "mm rpm"),
-    "nut_stiffness": ("N/m", "nut stiffness, Hertz contacts", 1e-6, "N/µm"),
+    "contact_stiffness": ("N/m", "nut stiffness, Hertz contacts only", 1e-6, "N/µm"),
+    "nut_stiffness": ("N/m", "nut stiffness, contacts and bodies", 1e-6, "N/µm"),
     "catalogue_nut_stiffness": ("N/m", "nut stiffness, catalogue 0.8 K", 1e-6, "N/µm"),
     "shaft_stiffness": ("N/m", "shaft stiffness", 1e-6, "N/µm"),
     "axial_stiffness": ("N/m", "axial stiffness, nut and shaft", 1e-6, "N/µm"),
@@ -82,21 +87,73 @@ def summary(result: DesignCheck) -> dict[str, Any]:
     }
 
 
+def _params(result: DesignCheck) -> ScrewParameters:
+    return ScrewParameters.from_case(result.case)
+
+
+def ball_distribution(result: DesignCheck) -> Distribution:
+    """Elastic load of every ball (contacts and bodies) at the case's preload and axial load."""
+    return elastic_distribution(_params(result), result.case.loads, result.root_diameter)
+
+
+def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
+    """Axial loads, displacement and stiffness with the bodies, and the lift-off load."""
+    params, spec = _params(result), result.case.loads
+    fp = params.preload
+    loads = np.linspace(0.0 if fp > 0 else top / _BODY_POINTS, top, _BODY_POINTS)
+    first = elastic_distribution(params, spec, result.root_diameter, axial_load=0.0)
+    runs = [
+        elastic_distribution(
+            params, spec, result.root_diameter, axial_load=f, interference=first.interference
+        )
+        for f in loads
+    ]
+    x = np.array([r.displacement for r in runs])
+    lift = 0.0
+    if params.nut_count == 2:
+        layout, bodies = nut_model(params, spec, result.root_diameter)
+        g = params.geometry
+        lift = lift_off_load(
+            layout, sum(params.hertz_constants), g.contact_angle, g.lead_angle, fp, bodies, 1e-4
+        )
+    return loads, x - x[0], np.array([r.stiffness for r in runs]), np.array(lift)
+
+
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
-    """Nut displacement and stiffness (Hertz contacts) against the axial load, with units."""
+    """Nut displacement and stiffness against the axial load: Hertz contacts only, and the
+    contacts with the elastic bodies, with units."""
     fp, nuts = result.case.operating.preload, result.case.screw.nuts
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
     top = max(1.5 * lift_off, 1.2 * max(result.spectrum.loads), 3.0 * fp, 1.0)
     loads = np.linspace(0.0, top, _CURVE_POINTS)
     x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
     k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
+    body_loads, body_x, body_k, body_lift = _body_curve(result, top)
     return xr.Dataset(
         {
             "deflection": ("axial_load", x, {"units": "m", "long_name": "nut displacement"}),
             "stiffness": ("axial_load", k, {"units": "N/m", "long_name": "tangent stiffness"}),
+            "deflection_bodies": (
+                "body_load",
+                body_x,
+                {"units": "m", "long_name": "nut displacement, contacts and bodies"},
+            ),
+            "stiffness_bodies": (
+                "body_load",
+                body_k,
+                {"units": "N/m", "long_name": "tangent stiffness, contacts and bodies"},
+            ),
         },
-        coords={"axial_load": ("axial_load", loads, {"units": "N"})},
-        attrs={"lift_off_load_N": lift_off, "preload_N": fp, "nuts": nuts},
+        coords={
+            "axial_load": ("axial_load", loads, {"units": "N"}),
+            "body_load": ("body_load", body_loads, {"units": "N"}),
+        },
+        attrs={
+            "lift_off_load_N": lift_off,
+            "lift_off_load_bodies_N": float(body_lift),
+            "preload_N": fp,
+            "nuts": nuts,
+        },
     )
 
 
@@ -108,24 +165,43 @@ def fields(result: DesignCheck) -> xr.Dataset:
 def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
     curve = stiffness_curve(result)
     loads = curve["axial_load"].values * 1e-3
+    body = curve["body_load"].values * 1e-3
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
-    axes[0].plot(loads, curve["deflection"].values * 1e6)
+    axes[0].plot(loads, curve["deflection"].values * 1e6, label="contacts only")
+    axes[0].plot(body, curve["deflection_bodies"].values * 1e6, label="contacts and bodies")
     axes[0].set_ylabel("nut displacement [µm]")
     axes[1].plot(loads, curve["stiffness"].values * 1e-6)
+    axes[1].plot(body, curve["stiffness_bodies"].values * 1e-6)
     axes[1].set_ylabel("stiffness [N/µm]")
     for ax in axes:
-        if curve.attrs["lift_off_load_N"] > 0:
-            ax.axvline(
-                curve.attrs["lift_off_load_N"] * 1e-3,
-                ls="--",
-                c="k",
-                lw=0.8,
-                label="lift-off 2^1.5 F_p",
-            )
+        for key, color, text in (
+            ("lift_off_load_N", "C0", "lift-off 2^1.5 F_p, contacts"),
+            ("lift_off_load_bodies_N", "C1", "lift-off with bodies"),
+        ):
+            if curve.attrs[key] > 0:
+                ax.axvline(curve.attrs[key] * 1e-3, ls="--", c=color, lw=0.8, label=text)
         ax.axvline(result.case.operating.axial_load * 1e-3, ls=":", c="C3", label="case")
         ax.set_xlabel("axial load [kN]")
         ax.set_ylim(bottom=0)
     axes[0].legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _ball_figure(result: DesignCheck, path: Path) -> Path:
+    dist = ball_distribution(result)
+    q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
+    fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
+    for k in range(dist.layout.nuts):
+        ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"nut {k + 1}")
+        lifted = q[k] <= 0.0
+        if lifted.any():
+            ax.plot(z[k][lifted] * 1e3, q[k][lifted], "x", c="k", label="lifted off")
+    ax.set_xlabel("axial position of the ball [mm] (loaded end right)")
+    ax.set_ylabel("normal ball load [N]")
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=8)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -163,9 +239,16 @@ def figures(result: DesignCheck) -> list[Figure]:
     out = [
         Figure(
             "stiffness_curve",
-            "Nut displacement and stiffness (Hertz contacts) vs axial load; dashed: lift-off.",
+            "Nut displacement and stiffness vs axial load, Hertz contacts only and with the "
+            "elastic shaft and nut body; dashed: lift-off of the second nut.",
             partial(_stiffness_figure, result),
-        )
+        ),
+        Figure(
+            "ball_loads",
+            "Normal load of every ball at the case's preload and axial load (contacts and "
+            "bodies); x: lifted-off balls.",
+            partial(_ball_figure, result),
+        ),
     ]
     if result.dynamic_load_rating is not None:
         out.append(
@@ -210,10 +293,11 @@ def sections(result: DesignCheck) -> list[Section]:
             paragraphs=(
                 "Load ratings are the catalogue's; life, static safety, speed and buckling by "
                 "the makers' formulas (THK General Catalog, HIWIN Ballscrews & Accessories); "
-                "nut stiffness from the Hertz contacts of the preloaded nut.",
+                "nut stiffness from the Hertz contacts of every ball with the elastic shaft "
+                "under the nut and the nut body (theory manual, Loads).",
             ),
             tables=(Table(("quantity", "value"), _value_rows(result)),),
-            figures=("stiffness_curve",),
+            figures=("stiffness_curve", "ball_loads"),
         ),
         Section(
             "Life against the load spectrum",

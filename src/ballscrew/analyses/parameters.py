@@ -282,16 +282,24 @@ class ScrewParameters:
         return min(self.ball.hardness, self.material(side).hardness)
 
     @property
-    def nut_compliance(self) -> float:
-        """C_a of one nut, δ_a = C_a F^(2/3): the Hertz constants of both contacts of a ball
-        (Hertz point contacts, rigid bodies; theory manual, *Loads*) [m N^(−2/3)]."""
+    def hertz_constants(self) -> tuple[float, float]:
+        """(K_A, K_B): Hertz constants δ = K Q^(2/3) of the ball–screw and ball–nut contacts
+        [m N^(−2/3)]."""
         g = self.geometry
         k = [
             hertz(c.rx, c.ry, self.contact_modulus(side), 1.0).approach
             for side, c in ((s, raceway_curvature(g, s)) for s in SIDES)
         ]
+        return k[0], k[1]
+
+    @property
+    def nut_compliance(self) -> float:
+        """C_a of one nut, δ_a = C_a F^(2/3): the Hertz constants of both contacts of a ball
+        (Hertz point contacts, rigid bodies; theory manual, *Loads*) [m N^(−2/3)]."""
+        g = self.geometry
+        k_a, k_b = self.hertz_constants
         return float(
-            nut_axial_compliance(k[0], k[1], self.balls_per_nut, g.contact_angle, g.lead_angle)
+            nut_axial_compliance(k_a, k_b, self.balls_per_nut, g.contact_angle, g.lead_angle)
         )
 
     @property

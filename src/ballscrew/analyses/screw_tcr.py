@@ -18,6 +18,7 @@ from typing import ClassVar
 
 from ballscrew.analyses import tcr_report
 from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
+from ballscrew.analyses.ball_loads import chain_ball_loads
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.tcr_models import ModelSpread, ModelTCR, compare_models
@@ -58,6 +59,9 @@ class NutTCR:
     nut: RacewayTCR
     axial_deflection: float
     """δ_a = (δ_A + δ_B)/(sinβ cosα) from the solved approaches (E1.7) [m]."""
+    load_spread: float = 1.0
+    """Largest over mean ball load (elastic distribution: every ball is taken at the most
+    loaded ball's load, a conservative bound) [-]."""
 
     @property
     def ball_resistance(self) -> float:
@@ -201,22 +205,24 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         return solved[side, load]
 
     nuts = []
+    chain = chain_ball_loads(case, params)
     with recorded_warnings() as messages:
-        for nut in params.nuts:
-            if not nut.loaded:
+        for nut, used in zip(params.nuts, chain, strict=True):
+            if not used.force > 0.0:
                 continue  # a lifted-off nut carries nothing
-            screw_side = raceway("screw", nut.ball_load, nut.flank)
-            nut_side = raceway("nut", nut.ball_load, nut.flank)
+            screw_side = raceway("screw", used.ball_load, nut.flank)
+            nut_side = raceway("nut", used.ball_load, nut.flank)
             approach = screw_side.contact.solution.approach + nut_side.contact.solution.approach
             nuts.append(
                 NutTCR(
                     index=nut.index,
-                    force=nut.force,
-                    ball_load=nut.ball_load,
+                    force=used.force,
+                    ball_load=used.ball_load,
                     balls=params.balls_per_nut,
                     screw=screw_side,
                     nut=nut_side,
                     axial_deflection=approach / params.axial_projection,
+                    load_spread=used.spread,
                 )
             )
         area = sum(n.apparent_area for n in nuts)
@@ -225,7 +231,7 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         case_name=case.name,
         variant=models["screw"].variant,
         cell_size=case.tcr.cell_size if case.tcr.rebin else None,
-        nut_forces=params.nut_forces,
+        nut_forces=(chain[0].force, chain[1].force if len(chain) > 1 else 0.0),
         nuts=tuple(nuts),
         case=case,
         warnings=tuple(messages),
@@ -247,4 +253,6 @@ def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
     for nut in result.nuts:
         scalars[f"nut{nut.index}_resistance"] = (nut.resistance, "K/W")
         scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")
+        if case.loads.distribution == "elastic":
+            scalars[f"nut{nut.index}_ball_load_spread"] = (nut.load_spread, "")
     return scalars

@@ -54,7 +54,7 @@ def _nut_summary(nut: NutTCR) -> dict[str, Any]:
         "axial_deflection": value(nut.axial_deflection, "m"),
         "axial_stiffness": value(nut.axial_stiffness, "N/m"),
         "contacts": {side: _contact_summary(getattr(nut, side)) for side in SIDES},
-    }
+    } | ({} if nut.load_spread == 1.0 else {"ball_load_spread": nut.load_spread})
 
 
 def _spread_summary(result: ScrewTCR) -> dict[str, Any] | None:
@@ -226,6 +226,16 @@ def sections(result: ScrewTCR) -> list[Section]:
                 "contact, screw and nut contact in series per ball, all loaded balls of "
                 "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "
                 "cell size Δ_f; compare results only at equal Δ_f.",
+                *(
+                    (
+                        "Elastic ball-load distribution: every ball of a nut is taken at the most "
+                        "loaded ball's load (largest / mean: "
+                        + ", ".join(f"nut {n.index} {n.load_spread:.3f}" for n in result.nuts)
+                        + "), a bound on the resistance from below.",
+                    )
+                    if case.loads.distribution == "elastic"
+                    else ()
+                ),
             ),
             tables=(
                 Table(

@@ -17,6 +17,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ballscrew.analyses import wear_report
+from ballscrew.analyses.ball_loads import elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.budget import check_memory, contact_grid_bytes
@@ -163,7 +164,18 @@ def wear_setup(case: Case) -> WearSetup:
         torque_factor=factor,
         tolerance=case.numerics.tolerance,
         max_iterations=case.numerics.max_iterations,
+        body_compliance=_preload_loop_compliance(case, params),
     )
+
+
+def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
+    """c_b per nut: the spacer interference of the elastic distribution at the preload beyond
+    the contacts' C_a F_p^(2/3), over F_p [m/N]; 0 for ``loads.distribution = "uniform"``."""
+    if case.loads.distribution == "uniform":
+        return 0.0
+    fp = params.preload
+    g = elastic_distribution(params.with_loads(axial_load=0.0), case.loads, errors=False)
+    return max(g.interference - params.nut_compliance * fp ** (2.0 / 3.0), 0.0) / fp
 
 
 def fingerprint(case: Case, setup: WearSetup) -> str:
@@ -179,6 +191,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         "hardness": setup.hardness,
         "e_star": setup.e_star,
     }
+    if setup.body_compliance:
+        data["body_compliance"] = setup.body_compliance
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 

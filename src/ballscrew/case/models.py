@@ -19,6 +19,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment
 from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
+from ballscrew.case.loads_spec import LoadsSpec
 from ballscrew.case.lubrication_spec import LubricationSpec, check_oil_viscosities
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
@@ -266,6 +267,7 @@ class Case(Model):
     kinematics: KinematicsSpec = KinematicsSpec()
     friction: FrictionSpec = FrictionSpec()
     lubrication: LubricationSpec = LubricationSpec()
+    loads: LoadsSpec = LoadsSpec()
     wear: WearSpec | None = Field(None, description="wear model and load programme; for `wear`")
     design: DesignSpec | None = None
     duty: list[DutySegment] = Field(

@@ -33,6 +33,9 @@ __all__ = [
 
 _U_XTOL = 1.0e-15
 _U_RTOL = 1.0e-15
+_WEAR_NEWTON_STEPS = 40
+"""Newton steps on F^(1/3) for the preload after wear with bodies (quadratic convergence from
+above; 40 reach rounding from any start the closed form gives)."""
 
 
 class NutForces(NamedTuple):
@@ -179,6 +182,7 @@ def preload_after_wear(
     max_wear_depth: ArrayLike,
     contact_angle: float,
     lead_angle: float,
+    body_compliance: float = 0.0,
 ) -> NDArray[np.float64]:
     """Preload left after screw-raceway wear, equation (E1.13) [reconstructed].
 
@@ -186,7 +190,10 @@ def preload_after_wear(
         F_p' = (δ_a'/C_a)^(3/2)   (F_p' = 0 if δ_a' <= 0)
 
     The wear depth h_max (along the contact normal, equal on both flanks under symmetric
-    reciprocation) lowers each nut's axial interference by h_max/(sinβ cosα).
+    reciprocation) lowers each nut's axial interference by h_max/(sinβ cosα). With the elastic
+    bodies of the preload loop in series (``body_compliance`` c_b per nut, m/N) the interference
+    is C_a F^(2/3) + c_b F, and F_p' solves C_a F'^(2/3) + c_b F' = C_a F_p0^(2/3) + c_b F_p0 −
+    h_max/(sinβ cosα) (Newton on F^(1/3) from above, where the cubic is convex).
 
     Args:
         initial_preload: initial preload F_p0 (> 0), N.
@@ -195,6 +202,7 @@ def preload_after_wear(
         max_wear_depth: largest wear depth h_max (>= 0), m; any shape.
         contact_angle: contact angle β, rad.
         lead_angle: lead angle α (λ), rad.
+        body_compliance: c_b (>= 0) of shaft and nut body in the preload loop, per nut, m/N.
 
     Returns:
         F_p' in N, same shape as ``max_wear_depth``; e.g. F_p0 = 1500 N, C_a = 3.749e-8,
@@ -204,5 +212,15 @@ def preload_after_wear(
     c_a = positive("compliance_constant", compliance_constant, "m N^-2/3")
     beta, alpha = validate_angles(contact_angle, lead_angle)
     h = nonnegative_array("max_wear_depth", max_wear_depth, "m")
-    delta = c_a * f_p0 ** (2.0 / 3.0) - h / (math.sin(beta) * math.cos(alpha))
-    return np.maximum(delta, 0.0) ** 1.5 / c_a**1.5
+    c_b = float(body_compliance)
+    if not (math.isfinite(c_b) and c_b >= 0.0):
+        raise InputError("body_compliance", body_compliance, "a finite number >= 0 m/N")
+    delta = c_a * f_p0 ** (2.0 / 3.0) + c_b * f_p0 - h / (math.sin(beta) * math.cos(alpha))
+    rhs = np.maximum(delta, 0.0)
+    if c_b == 0.0:
+        return rhs**1.5 / c_a**1.5
+    u = np.sqrt(rhs / c_a)  # F^(1/3) without the bodies: above the root
+    for _ in range(_WEAR_NEWTON_STEPS):
+        slope = np.maximum(2.0 * c_a * u + 3.0 * c_b * u**2, np.finfo(float).tiny)
+        u = u - (c_a * u**2 + c_b * u**3 - rhs) / slope
+    return u**3

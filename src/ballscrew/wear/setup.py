@@ -50,6 +50,8 @@ class WearSetup:
     max_iterations: int
     film_model: str = "hamrock_dowson"
     """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
+    body_compliance: float = 0.0
+    """c_b of shaft and nut body in the preload loop, per nut [m/N] (0: rigid bodies)."""
 
     @property
     def cell_area(self) -> float:
@@ -60,11 +62,16 @@ class WearSetup:
         return self.viscosity is not None and self.pressure_viscosity is not None
 
     def preload(self, max_depth: float) -> float:
-        """F_p after wear h_max (E1.13) [N]."""
+        """F_p after wear h_max (E1.13), contacts and bodies in series [N]."""
         g = self.geometry
         return float(
             preload_after_wear(
-                self.initial_preload, self.compliance, max_depth, g.contact_angle, g.lead_angle
+                self.initial_preload,
+                self.compliance,
+                max_depth,
+                g.contact_angle,
+                g.lead_angle,
+                self.body_compliance,
             )
         )
 

@@ -1,0 +1,77 @@
+"""Benchmark of the design check and the elastic ball-load distribution.
+
+The 40 × 10 example screw (examples/gao2019_tcr.toml) with a 2 × 5-turn double nut (90 balls per
+nut, 180 balls): one elastic distribution (Hertz contacts, shaft and nut bars, ring expansion;
+preload solve plus load solve) at F_a = 2 kN, and ``ballscrew.design_check`` (which solves it).
+Prints a table of median wall times after a warm-up run. Targets: distribution ≤ 20 ms,
+design check ≤ 50 ms.
+
+Usage: python benchmarks/bench_design.py [--repeats N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import ballscrew
+from ballscrew.analyses.ball_loads import elastic_distribution
+from ballscrew.analyses.parameters import ScrewParameters
+
+CASE = Path(__file__).resolve().parents[1] / "examples" / "gao2019_tcr.toml"
+OVERRIDES = {
+    "screw.balls_per_nut": 90,
+    "operating.axial_load": 2000.0,
+    "loads.distribution": "elastic",
+    "design.unsupported_length": 1.3,
+    "design.dynamic_load_rating": 52_700.0,
+    "design.static_load_rating": 141_100.0,
+}
+
+
+def _median(work: Callable[[], object], repeats: int) -> tuple[float, float]:
+    work()  # warm-up
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        work()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), min(times)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=20)
+    args = parser.parse_args()
+    case = ballscrew.load_case(CASE, OVERRIDES)
+    params = ScrewParameters.from_case(case)
+    dist = elastic_distribution(params, case.loads)
+    rows = [
+        (
+            f"elastic distribution, 2 × {dist.layout.turns} turns, {dist.loads.size} balls",
+            _median(lambda: elastic_distribution(params, case.loads), args.repeats),
+            "≤ 20 ms",
+        ),
+        (
+            "ballscrew.design_check (includes the distribution)",
+            _median(lambda: ballscrew.design_check(case), args.repeats),
+            "≤ 50 ms",
+        ),
+    ]
+    print("| Work | Median | Best | Target |")
+    print("|---|---|---|---|")
+    for label, (median, best), target in rows:
+        print(f"| {label} | {1e3 * median:.1f} ms | {1e3 * best:.1f} ms | {target} |")
+    first = dist.per_nut(dist.loads)[0]
+    print(
+        f"\nnut forces {dist.nut_forces[0]:.1f} / {dist.nut_forces[1]:.1f} N, largest / mean "
+        f"ball load of nut 1 {first.max() / first.mean():.3f}, stiffness "
+        f"{dist.stiffness * 1e-6:.0f} N/µm, Newton iterations {dist.iterations}"
+    )
+
+
+if __name__ == "__main__":
+    main()

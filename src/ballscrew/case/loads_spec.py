@@ -1,0 +1,62 @@
+"""Case section ``[loads]``: how the load spreads over the balls, and the nut's elastic bodies.
+
+Example (the elastic distribution of a double nut with a 1 µm lead error in its first turn)::
+
+    [loads]
+    distribution = "elastic"        # "uniform" (default, rigid bodies) or "elastic"
+    nut_outer_diameter = "70 mm"    # nut body; default d_m + 5 D_b (GUESS)
+    spacer = "10 mm"                # axial gap between the halves' nearest balls; default L
+    flange = "loaded_end"           # or "free_end"
+    lead_error = [1e-6, 0, 0, 0, 0, 0, 0, 0, 0, 0]   # m, per turn (or per ball), nut 1 first
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import Field
+
+from ballscrew.case.base import Model, quantity
+
+__all__ = ["LoadsSpec"]
+
+Deviation = Annotated[float, Field(ge=-1e-3, le=1e-3)]
+
+
+class LoadsSpec(Model):
+    """Load distribution over the balls and the elastic screw shaft and nut body (SI)."""
+
+    distribution: Literal["uniform", "elastic"] = Field(
+        "uniform",
+        description="uniform: every ball of a nut carries F/(Z sinβ cosα); elastic: Hertz "
+        "contacts with elastic shaft and nut, lead error and ball-size variation",
+    )
+    nut_outer_diameter: (
+        quantity("length", "outer diameter of the nut body; None = d_m + 5 D_b", gt=0, le=10.0)
+        | None
+    ) = None
+    spacer: (
+        quantity(
+            "length",
+            "axial gap between the nearest balls of the two nuts; None = the lead",
+            gt=0,
+            le=10.0,
+        )
+        | None
+    ) = None
+    flange: Literal["loaded_end", "free_end"] = Field(
+        "loaded_end",
+        description="nut flange at the end where the shaft carries the load out, or the other",
+    )
+    lead_error: list[Deviation] = Field(
+        default_factory=list,
+        max_length=100_000,
+        description="axial lead error of the screw relative to the nut [m], per ball or per "
+        "turn, nut 1 first, each nut from its loaded end; empty = none",
+    )
+    ball_diameter_error: list[Deviation] = Field(
+        default_factory=list,
+        max_length=100_000,
+        description="ball diameter minus nominal [m], per ball or per turn, nut 1 first; "
+        "empty = none",
+    )

@@ -1,0 +1,440 @@
+"""Elastic load distribution over every ball of a nut: Hertz contacts and elastic bodies.
+
+Every ball j of every loaded turn sits at an axial position z_j on a flank σ_j = ±1 (+1: the
+nut the external load presses on). Its normal contact approach is
+
+    δ_j = s [σ_j (v_j + e_j) + g] + Δd_j − c_r cosβ f_j,     s = sinβ cosα,
+    v_j = x + Σ_i C_ji σ_i s Q_i,
+    Q_j = (max(δ_j, 0) / K)^(3/2)                               (Hertz, no tension),
+
+with v the axial displacement of the screw relative to the nut at z_j: a rigid part x plus the
+strain of the screw shaft and the nut body between the balls. Both are bars (Mei et al. 2003;
+Zhen & An 2018): the force each ball hands from the screw to the nut accumulates along the nut,
+so with c = 1/(EA) the flexibility is
+
+    C_ji = (c_s + c_n [flange at the loaded end]) z_j − (c_s + c_n) min(z_i, z_j)
+
+(the screw carries the load out at the loaded end z → +∞). e_j is the lead error (axial, screw
+relative to nut), Δd_j the ball-diameter excess, g the interference the spacer of a double nut
+builds in (found from the preload), K = K_A + K_B the Hertz constants of a ball's two contacts.
+The nut ring widens and the shaft shrinks under the radial line load f_j = cosβ n_t ⟨Q⟩_j / L
+of the turn around ball j (n_t balls per turn, ⟨Q⟩_j their mean load); Lamé thick ring and
+solid shaft give c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n) + (1 − ν_s)/(2π E_s) of radial
+approach per line load (the thick-ring expansion of the MESYS ball-screw manual).
+
+One Newton solve on (Q, x[, g]) with a dense Jacobian (no loop over balls) and a backtracking
+line search; the force balance Σ σ_j s Q_j = F_a is a linear row of the system, so it holds to
+rounding. The contact angle under load follows the distance of the groove curvature centres
+A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007); the
+axial share s keeps β₀ (the change is of order δ/A, 1–2 %). Theory manual, *Loads*.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ballscrew.backend import blas_single_thread
+from ballscrew.errors import ConvergenceError, InputError
+from ballscrew.loads.ball_load import validate_angles, validate_balls
+from ballscrew.loads.double_nut import nut_forces
+from ballscrew.validation import positive
+
+__all__ = [
+    "BallLayout",
+    "Distribution",
+    "NutBodies",
+    "ball_layout",
+    "body_properties",
+    "expand_errors",
+    "lift_off_load",
+    "loaded_contact_angle",
+    "solve_distribution",
+]
+
+_TOLERANCE = 1e-13
+_MAX_ITERATIONS = 60
+
+
+@dataclass(frozen=True)
+class BallLayout:
+    """Where the balls are: one entry per ball, nut 1 first (SI)."""
+
+    z: NDArray[np.float64]
+    """Axial position along the nut [m], growing towards the loaded end."""
+    flank: NDArray[np.float64]
+    """σ = +1 for nut 1 (the loaded nut), −1 for nut 2."""
+    nut: NDArray[np.int64]
+    """0 for nut 1, 1 for nut 2."""
+    turn: NDArray[np.int64]
+    """Turn of the ball within its nut, 0 = the turn nearest the loaded end."""
+    lead: float
+    """Lead L [m]."""
+    nuts: int
+
+    @property
+    def balls(self) -> int:
+        """Balls per nut."""
+        return self.z.size // self.nuts
+
+    @property
+    def turns(self) -> int:
+        """Started turns per nut."""
+        return int(self.turn.max()) + 1
+
+
+def ball_layout(
+    balls_per_nut: int,
+    nuts: int,
+    lead: float,
+    pitch_diameter: float,
+    ball_diameter: float,
+    lead_angle: float,
+    spacer: float,
+) -> BallLayout:
+    """Axial positions of touching balls on the helix; nut 1 at the loaded end.
+
+    Balls touch along the helix of length π d_m / cos α per turn, so consecutive balls are
+    Δz = L D_b cos α / (π d_m) apart axially. Nut 2 lies beyond nut 1 away from the loaded end,
+    its nearest ball ``spacer`` [m] from nut 1's.
+    """
+    z_count = validate_balls(balls_per_nut)
+    if nuts not in (1, 2):
+        raise InputError("nuts", nuts, "1 or 2")
+    lead = positive("lead", lead, "m")
+    step = lead * ball_diameter * math.cos(lead_angle) / (math.pi * pitch_diameter)
+    own = np.arange(z_count) * step  # distance from the nut's end nearest the loaded end
+    top = own[-1] if nuts == 1 else 2.0 * own[-1] + positive("spacer", spacer, "m")
+    starts = [top, top - own[-1] - spacer][:nuts]
+    turn = np.floor(own / lead + 1e-12).astype(np.int64)
+    return BallLayout(
+        z=np.concatenate([start - own for start in starts]),
+        flank=np.repeat([1.0, -1.0][:nuts], z_count),
+        nut=np.repeat(np.arange(nuts), z_count),
+        turn=np.tile(turn, nuts),
+        lead=lead,
+        nuts=nuts,
+    )
+
+
+@dataclass(frozen=True)
+class NutBodies:
+    """Elastic screw shaft and nut body under the balls (defaults: rigid bodies)."""
+
+    screw_rigidity: float = math.inf
+    """E_s A_s of the shaft under the nut [N]."""
+    nut_rigidity: float = math.inf
+    """E_n A_n of the nut body [N]."""
+    ring_compliance: float = 0.0
+    """c_r: radial widening of nut ring plus shrinking of the shaft per radial line load
+    [m²/N]."""
+    flange_at_loaded_end: bool = True
+    """True: the nut flange is at the end where the shaft carries the load out (shaft and nut
+    body strained in opposite senses, the less even case); False: at the other end."""
+
+
+def body_properties(
+    pitch_diameter: float,
+    ball_diameter: float,
+    contact_angle: float,
+    root_diameter: float,
+    nut_outer_diameter: float,
+    screw_elastic: tuple[float, float],
+    nut_elastic: tuple[float, float],
+    flange_at_loaded_end: bool = True,
+) -> NutBodies:
+    """Bar rigidities and ring compliance of shaft and nut from their diameters.
+
+    Shaft: A_s = π d_r²/4. Nut body: A_n = π (D_o² − (d_m + D_b)²)/4 outside the groove
+    bottom. Ring (Lamé thick cylinder under internal pressure at the contact radius
+    r = (d_m + D_b cosβ)/2, solid shaft under external pressure, plane stress; Timoshenko &
+    Goodier 1970, §33): c_r = [(D_o² + 4r²)/(D_o² − 4r²) + ν_n]/(2π E_n) + (1 − ν_s)/(2π E_s).
+    ``screw_elastic`` and ``nut_elastic`` are (E [Pa], ν).
+    """
+    e_s, nu_s = screw_elastic
+    e_n, nu_n = nut_elastic
+    d_r = positive("root_diameter", root_diameter, "m")
+    d_o = positive("nut_outer_diameter", nut_outer_diameter, "m")
+    bore = pitch_diameter + ball_diameter
+    if not d_o > bore:
+        raise InputError(
+            "nut_outer_diameter", d_o, f"> the nut groove bottom d_m + D_b = {bore:.6g} m"
+        )
+    r2 = (0.5 * (pitch_diameter + ball_diameter * math.cos(contact_angle))) ** 2
+    ro2 = 0.25 * d_o**2
+    ring = ((ro2 + r2) / (ro2 - r2) + nu_n) / (2.0 * math.pi * e_n)
+    return NutBodies(
+        screw_rigidity=e_s * 0.25 * math.pi * d_r**2,
+        nut_rigidity=e_n * 0.25 * math.pi * (d_o**2 - bore**2),
+        ring_compliance=ring + (1.0 - nu_s) / (2.0 * math.pi * e_s),
+        flange_at_loaded_end=flange_at_loaded_end,
+    )
+
+
+def expand_errors(name: str, values: ArrayLike | None, layout: BallLayout) -> NDArray[np.float64]:
+    """Per-ball values from ``values`` given per ball (nuts × balls) or per turn (nuts × turns),
+    nut 1 first, each nut from its end nearest the loaded end; None → zeros."""
+    if values is None:
+        return np.zeros(layout.z.size)
+    v = np.asarray(values, dtype=float).ravel()
+    if not np.all(np.isfinite(v)):
+        raise InputError(name, values, "finite numbers")
+    if v.size == layout.z.size:
+        return v
+    if v.size == layout.nuts * layout.turns:
+        return v.reshape(layout.nuts, layout.turns)[layout.nut, layout.turn]
+    raise InputError(
+        name,
+        f"{v.size} values",
+        f"{layout.z.size} (one per ball) or {layout.nuts * layout.turns} (one per turn), "
+        "nut 1 first",
+    )
+
+
+@dataclass(frozen=True)
+class Distribution:
+    """Normal load of every ball, nut 1 first (SI)."""
+
+    layout: BallLayout
+    loads: NDArray[np.float64]
+    """Normal ball load Q_j [N] (0: lifted off)."""
+    approach: NDArray[np.float64]
+    """Normal approach δ_j of the ball's two contacts [m] (≤ 0: lifted off)."""
+    axial_share: float
+    """s = sinβ cosα."""
+    axial_load: float
+    """External load F_a [N] (on nut 1)."""
+    interference: float
+    """Interference g of the spacer (axial, per nut) [m]; 0 for a single nut."""
+    displacement: float
+    """Axial displacement of the shaft at the loaded end relative to the nut flange [m]."""
+    compliance: float
+    """Tangent dD/dF_a [m/N]."""
+    iterations: int
+
+    @property
+    def stiffness(self) -> float:
+        """Tangent axial stiffness dF_a/dD of the nut assembly [N/m]."""
+        return 1.0 / self.compliance
+
+    @property
+    def nut_forces(self) -> NDArray[np.float64]:
+        """Axial force Σ s Q of each nut [N], nut 1 first."""
+        return self.axial_share * self.loads.reshape(self.layout.nuts, -1).sum(axis=1)
+
+    def per_nut(self, values: NDArray[np.float64]) -> NDArray[np.float64]:
+        """``values`` reshaped (nuts, balls)."""
+        return values.reshape(self.layout.nuts, -1)
+
+
+def _flexibility(layout: BallLayout, bodies: NutBodies) -> tuple[NDArray[np.float64], float]:
+    """C (m/N) for the signed axial ball forces, and the coefficient of the displacement."""
+    c_s, c_n = 1.0 / bodies.screw_rigidity, 1.0 / bodies.nut_rigidity
+    lead_coef = c_s + (c_n if bodies.flange_at_loaded_end else 0.0)
+    z = layout.z
+    flex = lead_coef * z[:, None] - (c_s + c_n) * np.minimum(z[:, None], z[None, :])
+    return flex, lead_coef
+
+
+def _window(layout: BallLayout) -> NDArray[np.float64]:
+    """Averaging over the balls of the same nut within half a lead: f_j = cosβ n_t ⟨Q⟩_j / L
+    with n_t balls per turn, so a nut's end turns see the local mean load, not half of it."""
+    same = layout.nut[:, None] == layout.nut[None, :]
+    near = np.abs(layout.z[:, None] - layout.z[None, :]) <= 0.5 * layout.lead * (1 + 1e-12)
+    w = (same & near).astype(float)
+    per_turn = layout.lead / float(np.abs(layout.z[1] - layout.z[0])) if layout.balls > 1 else 1.0
+    return w * (per_turn / w.sum(axis=1, keepdims=True))
+
+
+def _newton(
+    a: NDArray[np.float64],
+    b: NDArray[np.float64],
+    c: NDArray[np.float64],
+    g: NDArray[np.float64],
+    f: NDArray[np.float64],
+    y: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
+    """Solve q = max(A q + B ξ + c, 0)^(3/2), G q = f for y = (q, ξ) (scaled units).
+
+    Returns the solution, the Jacobian at it and the iteration count. Small dense systems:
+    BLAS runs on one thread (threaded BLAS on busy cores is many times slower here).
+    """
+    n, m = a.shape[0], b.shape[1]
+    diagonal = np.arange(n)
+
+    def residual(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        d = a @ y[:n] + b @ y[n:] + c
+        dp = np.maximum(d, 0.0)
+        return np.concatenate([y[:n] - dp**1.5, g @ y[:n] - f]), dp
+
+    r, dp = residual(y)
+    norm = float(np.max(np.abs(r)))
+    jac = np.zeros((n + m, n + m))
+    with blas_single_thread():
+        for it in range(1, _MAX_ITERATIONS + 1):
+            slope = 1.5 * np.sqrt(dp)
+            np.multiply(-slope[:, None], a, out=jac[:n, :n])
+            jac[diagonal, diagonal] += 1.0
+            jac[:n, n:] = -slope[:, None] * b
+            jac[n:, :n] = g
+            if norm < _TOLERANCE:
+                return y, jac, it - 1
+            step = np.linalg.solve(jac, -r)
+            t, phi = 1.0, norm
+            while True:
+                trial = y + t * step
+                r_t, dp_t = residual(trial)
+                norm_t = float(np.max(np.abs(r_t)))
+                if norm_t < (1.0 - 1e-4 * t) * phi or t < 1e-6:
+                    break
+                t *= 0.5
+            y, r, dp, norm = trial, r_t, dp_t, norm_t
+    raise ConvergenceError("ball load distribution (Newton)", _MAX_ITERATIONS, norm, _TOLERANCE)
+
+
+def solve_distribution(
+    layout: BallLayout,
+    hertz_constant: float,
+    contact_angle: float,
+    lead_angle: float,
+    axial_load: float,
+    preload: float,
+    bodies: NutBodies | None = None,
+    lead_error: ArrayLike | None = None,
+    ball_excess: ArrayLike | None = None,
+    interference: float | None = None,
+) -> Distribution:
+    """Normal load of every ball under the axial load F_a on nut 1, equations above.
+
+    A double nut's spacer interference g is found from its preload (F_a = 0: nut 1 carries F_p)
+    unless ``interference`` is given; a single nut carries F_p + F_a.
+
+    Args:
+        layout: where the balls are (:func:`ball_layout`).
+        hertz_constant: K = K_A + K_B, δ = K Q^(2/3) of a ball's two contacts [m N^(-2/3)].
+        contact_angle, lead_angle: β₀ and α [rad].
+        axial_load: F_a ≥ 0 [N].
+        preload: F_p [N] (> 0 for a double nut).
+        bodies: elastic bodies; None = rigid.
+        lead_error: axial lead error e of the screw relative to the nut [m], per ball or turn.
+        ball_excess: ball-diameter excess Δd [m], per ball or per turn.
+        interference: the spacer interference g [m] of a double nut, if known.
+    """
+    beta, alpha = validate_angles(contact_angle, lead_angle)
+    k = positive("hertz_constant", hertz_constant, "m N^-2/3")
+    fa = float(axial_load)
+    fp = float(preload)
+    if not (math.isfinite(fa) and fa >= 0.0):
+        raise InputError("axial_load", axial_load, "a finite number >= 0 N")
+    if not (math.isfinite(fp) and fp >= 0.0) or (layout.nuts == 2 and fp == 0.0):
+        raise InputError("preload", preload, "> 0 N for a double nut, >= 0 N for one nut")
+    if layout.nuts == 1 and fa + fp == 0.0:
+        raise InputError("axial_load", axial_load, "> 0 N where the preload is 0 N")
+    bodies = bodies or NutBodies()
+    s = math.sin(beta) * math.cos(alpha)
+    z_count = layout.balls
+    sigma = layout.flank
+    f_ref = max(fp, fa) if layout.nuts == 2 else fp + fa
+    q_ref = f_ref / (z_count * s)
+    d_ref = k * q_ref ** (2.0 / 3.0)
+    flex, lead_coef = _flexibility(layout, bodies)
+    ring = math.cos(beta) ** 2 * bodies.ring_compliance / layout.lead * _window(layout)
+    a = (s * s * sigma[:, None] * flex * sigma[None, :] - ring) * q_ref / d_ref
+    c = (s * sigma * expand_errors("lead_error", lead_error, layout)) / d_ref
+    c = c + expand_errors("ball_excess", ball_excess, layout) / d_ref
+    force_row = sigma / z_count
+    if layout.nuts == 1:
+        f1, f2 = fp + fa, 0.0
+    else:
+        f1, f2 = (float(v) for v in nut_forces(fp, fa))
+    q0 = np.where(sigma > 0, f1, f2) / f_ref  # rigid bodies, no errors
+    if layout.nuts == 1:
+        g_hat = 0.0
+    elif interference is None:
+        g_hat = _preload_interference(a, sigma, c, force_row, fp / f_ref)
+    else:
+        g_hat = interference * s / d_ref
+    c_load = c + g_hat
+    x0 = (f1 / f_ref) ** (2.0 / 3.0) - g_hat
+    y, jac, its = _newton(
+        a, sigma[:, None], c_load, force_row[None, :], np.array([fa / f_ref]), np.append(q0, x0)
+    )
+    n = sigma.size
+    rhs = np.zeros(n + 1)
+    rhs[n] = 1.0 / f_ref
+    with blas_single_thread():
+        dy = np.linalg.solve(jac, rhs)
+    arm = lead_coef * s * q_ref * sigma * (layout.z.max() - layout.z)
+    x_scale = d_ref / s
+    q = y[:n] * q_ref
+    approach = (a @ y[:n] + sigma * y[n] + c_load) * d_ref
+    return Distribution(
+        layout=layout,
+        loads=q,
+        approach=approach,
+        axial_share=s,
+        axial_load=fa,
+        interference=g_hat * d_ref / s,
+        displacement=x_scale * y[n] + float(arm @ y[:n]),
+        compliance=x_scale * dy[n] + float(arm @ dy[:n]),
+        iterations=its,
+    )
+
+
+def _preload_interference(
+    a: NDArray[np.float64],
+    sigma: NDArray[np.float64],
+    c: NDArray[np.float64],
+    force_row: NDArray[np.float64],
+    preload_hat: float,
+) -> float:
+    """ĝ at which nut 1 carries the preload with no external load (scaled units)."""
+    n = sigma.size
+    g = np.stack([force_row, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
+    b = np.stack([sigma, np.ones(n)], axis=1)
+    start = np.concatenate([np.full(n, preload_hat), [0.0, preload_hat ** (2.0 / 3.0)]])
+    y, _, _ = _newton(a, b, c, g, np.array([0.0, preload_hat]), start)
+    return float(y[-1])
+
+
+def loaded_contact_angle(
+    approach: ArrayLike, contact_angle: float, curvature_distance: float
+) -> NDArray[np.float64]:
+    """Contact angle under load, cos β = A cos β₀ / (A + max(δ, 0)) (Harris & Kotzalas 2007).
+
+    A = (f_s + f_N − 1) D_b is the distance of the two groove curvature centres.
+    """
+    a = positive("curvature_distance", curvature_distance, "m")
+    d = np.maximum(np.asarray(approach, dtype=float), 0.0)
+    return np.arccos(a * math.cos(contact_angle) / (a + d))
+
+
+def lift_off_load(
+    layout: BallLayout,
+    hertz_constant: float,
+    contact_angle: float,
+    lead_angle: float,
+    preload: float,
+    bodies: NutBodies | None = None,
+    rtol: float = 1e-6,
+) -> float:
+    """Axial load at which the last ball of nut 2 lifts off (bisection on F_2(F_a) = 0) [N]."""
+    if layout.nuts != 2:
+        raise InputError("nuts", layout.nuts, "2 (lift-off of the second nut)")
+    args = (hertz_constant, contact_angle, lead_angle)
+    g = solve_distribution(layout, *args, 0.0, preload, bodies).interference
+
+    def unloaded(fa: float) -> bool:
+        dist = solve_distribution(layout, *args, fa, preload, bodies, interference=g)
+        return bool(dist.nut_forces[1] <= 0.0)
+
+    lo, hi = 0.0, 2.0**1.5 * preload
+    while not unloaded(hi):
+        lo, hi = hi, 2.0 * hi
+    while hi - lo > rtol * hi:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if unloaded(mid) else (mid, hi)
+    return hi
