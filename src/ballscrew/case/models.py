@@ -9,7 +9,7 @@ parameter is never silently ignored.
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
@@ -29,6 +29,7 @@ from ballscrew.contact import (
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
 from ballscrew.lubrication.film import FILM_MODELS
+from ballscrew.materials import MATERIALS, material_properties
 
 
 class ScrewSpec(Model):
@@ -63,8 +64,15 @@ class ScrewSpec(Model):
 
 
 class MaterialSpec(Model):
-    """Mechanical and thermal properties of one part (ball, screw or nut)."""
+    """Mechanical and thermal properties of one part (ball, screw or nut).
 
+    ``material = "100Cr6"`` fills every property from :data:`ballscrew.materials.MATERIALS`;
+    a property given as well overrides the library's value.
+    """
+
+    material: str | None = Field(
+        None, description="named material (ballscrew.materials); given properties override it"
+    )
     youngs_modulus: quantity("pressure", "Young's modulus E", gt=0, le=1e13)
     poissons_ratio: Annotated[float, Field(gt=0.0, lt=0.5, description="Poisson's ratio ν")]
     hardness: quantity("pressure", "indentation hardness H of the surface", gt=0, le=1e12)
@@ -75,6 +83,23 @@ class MaterialSpec(Model):
     thermal_expansion: quantity(
         "expansion", "linear thermal expansion coefficient α_T", ge=0, le=1e-2
     )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _fill_from_library(cls, data: Any) -> Any:
+        if not isinstance(data, dict) or data.get("material") is None:
+            return data
+        name = data["material"]
+        if not isinstance(name, str) or name not in MATERIALS:
+            raise ValueError(
+                f"material = {name!r} is not allowed: it must be one of {', '.join(MATERIALS)}"
+            )
+        return {**material_properties(name), **data}
+
+    @property
+    def properties(self) -> dict[str, float]:
+        """The eight property values (SI), without the material's name."""
+        return self.model_dump(exclude={"material"})
 
 
 class Materials(Model):
