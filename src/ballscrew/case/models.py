@@ -15,7 +15,7 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.design_spec import DesignSpec
-from ballscrew.case.duty_spec import DutyRepeat, DutySegment
+from ballscrew.case.duty_spec import DutyRepeat, DutySegment, require_time_shares
 from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec
 from ballscrew.case.thermal_spec import ThermalSpec
@@ -236,6 +236,13 @@ class Case(Model):
         description="duty cycle: [[duty]] segments of speed, load, stroke, dwell and duration",
     )
     duty_repeat: DutyRepeat = 1
+
+    @model_validator(mode="before")
+    @classmethod
+    def _duty_has_time_shares(cls, data: Any) -> Any:
+        if isinstance(data, dict):
+            require_time_shares(data.get("duty"))
+        return data
 
     @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:
