@@ -16,11 +16,18 @@ Conventions shared by the entries:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 from ballscrew.errors import InputError
 
-__all__ = ["MATERIALS", "PROPERTY_NAMES", "MaterialData", "material", "material_properties"]
+__all__ = [
+    "MATERIALS",
+    "PROPERTY_NAMES",
+    "Material",
+    "MaterialData",
+    "material",
+    "material_properties",
+]
 
 _G = 9.80665  # m/s², kgf → N
 _TABOR = 2.8
@@ -32,16 +39,15 @@ def _vickers(hv: float) -> float:
 
 
 @dataclass(frozen=True)
-class MaterialData:
-    """Mechanical and thermal properties of one named material (SI) and their source."""
+class Material:
+    """Mechanical and thermal properties of one part (SI)."""
 
-    name: str
     youngs_modulus: float
     """E [Pa]."""
     poissons_ratio: float
     """ν [-]."""
     hardness: float
-    """Surface indentation (Vickers) hardness H [Pa]."""
+    """Indentation hardness H [Pa]."""
     yield_strength: float
     """σ_y [Pa]."""
     thermal_conductivity: float
@@ -52,131 +58,94 @@ class MaterialData:
     """c_p [J/(kg K)]."""
     thermal_expansion: float
     """α_T [1/K]."""
-    source: str
+
+
+@dataclass(frozen=True)
+class MaterialData(Material):
+    """A named material of the library: its properties, name and source."""
+
+    name: str = ""
+    source: str = ""
     """Where the numbers come from."""
 
 
-PROPERTY_NAMES: tuple[str, ...] = tuple(
-    f.name for f in fields(MaterialData) if f.name not in ("name", "source")
-)
+PROPERTY_NAMES: tuple[str, ...] = tuple(f.name for f in fields(Material))
 """The eight property fields, as the case's ``[materials.*]`` tables name them."""
 
 
 def _entry(name: str, e: float, nu: float, hv: float, lam: float, rho: float, cp: float,
            alpha: float, source: str) -> MaterialData:  # fmt: skip
     h = _vickers(hv)
-    return MaterialData(name, e, nu, h, h / _TABOR, lam, rho, cp, alpha, source)
+    return MaterialData(e, nu, h, h / _TABOR, lam, rho, cp, alpha, name=name, source=source)
 
 
+def _alias(name: str, of: MaterialData, label: str) -> MaterialData:
+    return replace(of, name=name, source=f"alias of {of.name} (same steel, {label} name)")
+
+
+_100CR6 = _entry(
+    "100Cr6",
+    203e9,
+    0.3,
+    697.0,
+    46.6,
+    7833.0,
+    475.0,
+    11.9e-6,
+    "through-hardened bearing steel 100Cr6 = AISI 52100 = SUJ2 (ASTM A295): E = 29.5e6 psi and "
+    "ρ = 0.283 lb/in³ (52100 ball maker's data sheet, 'AISI 52100 Chrome Steel'); λ = 46.6 "
+    "W/(m K), c_p = 475 J/(kg K), α_T = 11.9e-6 1/K (handbook values quoted by the reference "
+    "example); ν = 0.3 [ASSUMED typical steel]; HRC 60, the makers' lower raceway hardness "
+    "(HRC 58–62, NBS ball-screw catalogue §2.5.2)",
+)
+_42CRMO4 = _entry(
+    "42CrMo4",
+    210e9,
+    0.3,
+    653.0,
+    42.6,
+    7850.0,
+    473.0,
+    11.1e-6,
+    "quenched-and-tempered 42CrMo4 = 1.7225 = SCM440 = AISI 4140, raceways induction or case "
+    "hardened to HRC 58 (nut and shaft steel of rolled screws) [ASSUMED typical handbook values "
+    "for 4140: E = 210 GPa, ρ = 7850 kg/m³, λ = 42.6 W/(m K), c_p = 473 J/(kg K), α_T = 11.1e-6 "
+    "1/K]",
+)
 MATERIALS: dict[str, MaterialData] = {
     m.name: m
     for m in (
+        _100CR6,
+        _alias("52100", _100CR6, "AISI"),
         _entry(
-            "100Cr6",
-            203e9,
-            0.3,
-            697.0,
-            46.6,
-            7833.0,
-            475.0,
-            11.9e-6,
-            "through-hardened bearing steel 100Cr6 = AISI 52100 = SUJ2 (ASTM A295): E = 29.5e6 "
-            "psi and ρ = 0.283 lb/in³ (52100 ball maker's data sheet, 'AISI 52100 Chrome Steel'); "
-            "λ = 46.6 W/(m K), c_p = 475 J/(kg K), α_T = 11.9e-6 1/K (handbook values quoted by "
-            "the reference example); ν = 0.3 [ASSUMED typical steel]; HRC 60, the makers' lower "
-            "raceway hardness (HRC 58–62, NBS ball-screw catalogue §2.5.2)",
-        ),
-        _entry(
-            "52100",
-            203e9,
-            0.3,
-            697.0,
-            46.6,
-            7833.0,
-            475.0,
-            11.9e-6,
-            "alias of 100Cr6 (same steel, AISI name)",
-        ),
-        _entry(
-            "440C",
-            200e9,
-            0.28,
-            697.0,
-            24.2,
-            7650.0,
-            460.0,
-            10.1e-6,
+            "440C", 200e9, 0.28, 697.0, 24.2, 7650.0, 460.0, 10.1e-6,
             "martensitic stainless steel X105CrMo17 = 1.4125 = AISI 440C (EN 10088/ASTM A276), "
             "hardened: E = 200 GPa, ρ = 7650 kg/m³, α_T = 10.1e-6 1/K (0–100 °C), λ = 24.2 "
             "W/(m K), c_p = 460 J/(kg K) (Qinghe Steels 440C data sheet); ν = 0.28 (MakeItFrom, "
             "440C); HRC 60 after a 150–200 °C temper (Rolled Alloys 440C data sheet)",
         ),
         _entry(
-            "M50",
-            214e9,
-            0.3,
-            746.0,
-            25.0,
-            7870.0,
-            460.0,
-            11.21e-6,
+            "M50", 214e9, 0.3, 746.0, 25.0, 7870.0, 460.0, 11.21e-6,
             "AISI M50 (80MoCrV42-16) VIM-VAR bearing steel: ρ = 7.87 g/cm³, α_T = 11.21e-6 1/K "
             "(21–93 °C), E = 214 GPa, HRC 62–64 (BTI Metals M50 data sheet); λ = 25 W/(m K), "
             "c_p = 460 J/(kg K) and ν = 0.3 [ASSUMED: typical high-alloy tool steel]",
         ),
+        _42CRMO4,
+        _alias("SCM440", _42CRMO4, "JIS"),
         _entry(
-            "42CrMo4",
-            210e9,
-            0.3,
-            653.0,
-            42.6,
-            7850.0,
-            473.0,
-            11.1e-6,
-            "quenched-and-tempered 42CrMo4 = 1.7225 = SCM440 = AISI 4140, raceways induction or "
-            "case hardened to HRC 58 (nut and shaft steel of rolled screws) [ASSUMED typical "
-            "handbook values for 4140: E = 210 GPa, ρ = 7850 kg/m³, λ = 42.6 W/(m K), c_p = 473 "
-            "J/(kg K), α_T = 11.1e-6 1/K]",
-        ),
-        _entry(
-            "SCM440",
-            210e9,
-            0.3,
-            653.0,
-            42.6,
-            7850.0,
-            473.0,
-            11.1e-6,
-            "alias of 42CrMo4 (same steel, JIS name)",
-        ),
-        _entry(
-            "Si3N4",
-            310e9,
-            0.27,
-            1580.0,
-            30.0,
-            3290.0,
-            680.0,
-            3.3e-6,
+            "Si3N4", 310e9, 0.27, 1580.0, 30.0, 3290.0, 680.0, 3.3e-6,
             "hot-pressed silicon nitride (HP-Si3N4) bearing balls: E = 310 GPa, ν = 0.27, "
             "ρ = 3.29 g/cm³, HV 1580, λ = 30 W/(m K), α_T = 3.3e-6 1/K (Lily Bearing, 'Ceramic "
             "materials and their properties' table); c_p = 680 J/(kg K) [ASSUMED typical]",
         ),
         _entry(
-            "ZrO2",
-            200e9,
-            0.3,
-            1300.0,
-            2.0,
-            6040.0,
-            460.0,
-            10.3e-6,
+            "ZrO2", 200e9, 0.3, 1300.0, 2.0, 6040.0, 460.0, 10.3e-6,
             "yttria-stabilised zirconia (ZrO2-Y2O3) balls: E = 200 GPa, ρ = 6.04 g/cm³, HV "
             "1300, λ = 2 W/(m K), α_T = 10.3e-6 1/K (Lily Bearing, 'Ceramic materials and their "
             "properties' table); ν = 0.3 and c_p = 460 J/(kg K) [ASSUMED typical]",
         ),
     )
-}
+}  # fmt: skip
 """Named materials by name (``material = "100Cr6"``)."""
 
 

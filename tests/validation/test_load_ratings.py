@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import math
 import re
+import tomllib
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -76,35 +78,14 @@ MAKERS = {
     "hiwin": ("design_check", "hiwin_fdc_rigidity", HIWIN_SOURCE, "circuits_per_nut"),
     "nbs": ("load_ratings", "nbs_vfi", NBS_SOURCE, "circuits"),
 }
-HIWIN_MODELS = [
-    "R20-05K4-FDC",
-    "R25-10K4-FDC",
-    "R32-05K4-FDC",
-    "R32-10K5-FDC",
-    "R32-10K5-FDC (Dw 4.763)",
-    "R40-05K5-FDC",
-    "R40-10K5-FDC",
-    "R40-20K4-FDC",
-    "R50-10K5-FDC",
-    "R50-20K4-FDC (Dw 9.525)",
-    "R63-10K5-FDC",
-    "R80-10K5-FDC",
-]
-NBS_MODELS = [
-    "VFI 1605",
-    "VFI 1610",
-    "VFI 2005",
-    "VFI 205T",
-    "VFI 2505",
-    "VFI 3205",
-    "VFI 3210",
-    "VFI 4005",
-    "VFI 4010",
-    "VFI 5010",
-    "VFI 6310",
-    "VFI 8010",
-]
-CASES = [("hiwin", m) for m in HIWIN_MODELS] + [("nbs", m) for m in NBS_MODELS]
+
+
+def _models(file: str, key: str) -> list[str]:
+    with (Path(__file__).parent / "data" / f"{file}.toml").open("rb") as fh:
+        return [row[0] for row in tomllib.load(fh)[key]["rows"]]
+
+
+CASES = [(maker, model) for maker, (f, k, *_) in MAKERS.items() for model in _models(f, k)]
 
 
 @pytest.mark.parametrize("rating", ["Ca", "C0a"])

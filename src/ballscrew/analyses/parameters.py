@@ -26,30 +26,9 @@ from ballscrew.geometry import ScrewGeometry, raceway_curvature
 from ballscrew.geometry.screw import SIDES, Side
 from ballscrew.loads import ball_load, nut_axial_compliance, nut_forces
 from ballscrew.lubrication import lubricant
+from ballscrew.materials import Material
 
 __all__ = ["SIDES", "Lubrication", "Material", "NutLoad", "ScrewParameters", "Side"]
-
-
-@dataclass(frozen=True)
-class Material:
-    """Mechanical and thermal properties of one part (SI)."""
-
-    youngs_modulus: float
-    """E [Pa]."""
-    poissons_ratio: float
-    """ν [-]."""
-    hardness: float
-    """Indentation hardness H [Pa]."""
-    yield_strength: float
-    """σ_y [Pa]."""
-    thermal_conductivity: float
-    """λ [W/(m K)]."""
-    density: float
-    """ρ [kg/m³]."""
-    specific_heat: float
-    """c_p [J/(kg K)]."""
-    thermal_expansion: float
-    """α_T [1/K]."""
 
 
 @dataclass(frozen=True)
