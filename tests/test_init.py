@@ -57,6 +57,7 @@ def test_every_value_not_on_the_sheet_is_labelled(generated) -> None:
         ("thermal", []),
         ("operating-point", []),
         ("check", []),
+        ("duty", ["--model", "network"]),
         ("kinematics", ["--speed", "1000 rpm"]),
     ],
 )

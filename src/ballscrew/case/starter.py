@@ -136,6 +136,8 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
             f"{PRELOAD_SHARE[sheet.nuts]:.0%} of the computed C_a [GUESS]"
         ),
         length=_mm(sheet.length),
+        duty_load=f"\"{round(0.08 * ca, -1):.6g} N\"",
+        stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
         unsupported=_mm(0.9 * sheet.length),
         nut_length=_mm(nut_length),
         nut_od=_mm(1.75 * d0),
@@ -212,4 +214,17 @@ time_step = "60 s"
 mounting = "fixed-supported"
 unsupported_length = {unsupported}   # 90 % of the shaft between the bearings [ASSUMED]
 required_life = "20000 h"
+
+# A working cycle for `ballscrew duty` and the life of `ballscrew check` [ASSUMED, illustrative:
+# write your machine's]: strokes at 1000 rpm under 8 % of the computed C_a, then rest.
+[[duty]]
+speed = "1000 rpm"
+axial_load = {duty_load}
+stroke = {stroke}
+dwell = "1 s"
+duration = "40 min"
+
+[[duty]]
+speed = 0
+duration = "20 min"
 """
