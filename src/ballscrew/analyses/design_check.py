@@ -44,7 +44,7 @@ __all__ = [
 AMBER_BAND = 0.25
 """A margin is amber when the capacity exceeds the demand by less than this share."""
 
-PRELOAD_SHARE = {1: 0.05, 2: 0.10}
+PRELOAD_SHARE = design.MAX_PRELOAD_SHARE
 """Largest preload / C_a by nut count (HIWIN §3.6.2; THK A-687: 0.1 C_a)."""
 
 DRAG_TORQUE_BAND = 0.30

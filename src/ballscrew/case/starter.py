@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ballscrew.design import circuit_ball_count, dynamic_load_rating
+from ballscrew.design import MAX_PRELOAD_SHARE, circuit_ball_count, dynamic_load_rating
 from ballscrew.errors import InputError
 from ballscrew.geometry import ScrewGeometry
 
@@ -25,7 +25,7 @@ __all__ = ["CatalogueSheet", "parse_turns", "starter_case"]
 CONFORMITY = 0.53
 """Groove radius / ball diameter of screw and nut [-] (makers' Gothic arch: 0.52–0.53)."""
 
-PRELOAD_SHARE = {1: 0.02, 2: 0.05}
+DEFAULT_PRELOAD_SHARE = {1: 0.02, 2: 0.05}
 """Default preload / C_a: 5 % for a double nut (the makers' 'medium' preload, at most 10 %),
 2 % for a single nut preloaded by oversized balls [GUESS: a typical value, not a maker's rule]."""
 
@@ -49,7 +49,7 @@ class CatalogueSheet:
     """Circuits per nut."""
     nuts: int = 2
     preload: float | None = None
-    """F_p [N]; None = :data:`PRELOAD_SHARE` × the computed C_a."""
+    """F_p [N]; None = :data:`DEFAULT_PRELOAD_SHARE` × the computed C_a."""
     length: float = 1.0
     """Screw shaft length [m]."""
     nut_length: float | None = None
@@ -116,7 +116,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     ca = dynamic_load_rating(geometry, balls)
     preload = sheet.preload
     if preload is None:
-        preload = round(PRELOAD_SHARE[sheet.nuts] * ca, -1)
+        preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     return _TEMPLATE.format(
         name=name,
         d0=_mm(d0),
@@ -133,8 +133,9 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         preload=f'"{preload:.6g} N"',
         ca_kn=f"{ca * 1e-3:.3g}",
         preload_note="given" if sheet.preload is not None else (
-            f"{PRELOAD_SHARE[sheet.nuts]:.0%} of the computed C_a [GUESS]"
+            f"{DEFAULT_PRELOAD_SHARE[sheet.nuts]:.0%} of the computed C_a [GUESS]"
         ),
+        max_share=f"{MAX_PRELOAD_SHARE[sheet.nuts]:.0%} of C_a",
         length=_mm(sheet.length),
         duty_load=f"\"{round(0.08 * ca, -1):.6g} N\"",
         stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
@@ -186,7 +187,7 @@ thermal_conductivity = 0.14      # W/(m K) [TYPICAL mineral oil or grease 0.13-0
 lubricant = "iso_vg_68"
 
 [operating]
-preload = {preload}            # {preload_note}; the makers allow at most 10 % of C_a
+preload = {preload}            # {preload_note}; the makers allow at most {max_share}
 axial_load = "0 N"
 speed = "1000 rpm"
 

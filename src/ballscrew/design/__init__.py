@@ -18,6 +18,7 @@ from ballscrew.design.life import (
     static_safety_factor,
 )
 from ballscrew.design.ratings import (
+    MAX_PRELOAD_SHARE,
     STATIC_CONTACT_PRESSURE,
     balls_per_turn,
     circuit_ball_count,
@@ -49,6 +50,7 @@ __all__ = [
     "BUCKLING_SAFETY",
     "CATALOGUE_RIGIDITY_SHARE",
     "LIFT_OFF_FACTOR",
+    "MAX_PRELOAD_SHARE",
     "MOUNTINGS",
     "PERMISSIBLE_STRESS",
     "RELIABILITY_FACTORS",

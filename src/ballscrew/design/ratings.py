@@ -36,6 +36,7 @@ from ballscrew.validation import positive
 
 __all__ = [
     "LUNDBERG_PALMGREN_CONSTANT",
+    "MAX_PRELOAD_SHARE",
     "STATIC_CONTACT_PRESSURE",
     "TURN_EXPONENT",
     "balls_per_turn",
@@ -49,6 +50,9 @@ LUNDBERG_PALMGREN_CONSTANT = 98.1
 
 STATIC_CONTACT_PRESSURE = 4.2e9
 """Peak Hertz pressure of the static rating of ball contacts [Pa] (ISO 76)."""
+
+MAX_PRELOAD_SHARE: dict[int, float] = {1: 0.05, 2: 0.10}
+"""Largest preload / C_a by nut count (HIWIN §3.6.2; THK A-687: 0.1 C_a)."""
 
 TURN_EXPONENT = 0.7
 """C_a ∝ i^0.7 over i equal loaded turns (ISO 281, thrust ball bearings of several rows)."""
