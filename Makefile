@@ -43,6 +43,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_wear.py
 	$(PY) benchmarks/bench_operating_point.py
 	$(PY) benchmarks/bench_design.py
+	$(PY) benchmarks/bench_design_check.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

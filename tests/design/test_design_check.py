@@ -89,13 +89,27 @@ def test_red_margins_warn(overrides, operating, warning) -> None:
     assert any(m.status == "red" for m in result.margins)
 
 
-def test_missing_ratings_are_said_not_guessed() -> None:
+def test_missing_ratings_are_computed_and_said_so() -> None:
+    """Without catalogue ratings the check computes them from the geometry and says so (the
+    check used to leave life and static safety out)."""
     raw = raw_case()
     del raw["design"]["dynamic_load_rating"], raw["design"]["static_load_rating"]
-    with pytest.warns(UserWarning, match="ISO 3408-5"):
+    with pytest.warns(UserWarning, match="computed from the geometry"):
         result = design_check(case_from_dict(raw))
-    assert result.rating_life is None and result.static_safety_factor is None
-    assert "rating_life" not in result.summary()
+    assert result.computed_ratings == ("dynamic_load_rating", "static_load_rating")
+    # 54 balls of 6.35 mm at f = 0.52: of the order of the catalogue's 40 x 10 nuts (45-65 kN)
+    assert 40e3 < result.dynamic_load_rating < 70e3
+    assert result.static_safety_factor == pytest.approx(result.static_load_rating / 2000.0)
+    summary = result.summary()
+    assert summary["load_ratings_computed"] == ["dynamic_load_rating", "static_load_rating"]
+    assert summary["rating_life"]["value"] > 0
+    rows = dict(result.report()[1].tables[0].rows)
+    assert any("computed from the geometry" in label for label in rows)
+
+
+def test_given_ratings_are_not_marked_computed() -> None:
+    result = design_check(case_from_dict(raw_case()))
+    assert result.computed_ratings == () and result.summary()["load_ratings_computed"] == []
 
 
 def test_no_design_section_is_a_one_line_error() -> None:

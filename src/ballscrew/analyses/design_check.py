@@ -5,8 +5,9 @@ weighted by their revolutions, else the ``[operating]`` point) → the makers' f
 :mod:`ballscrew.design` and the preloaded nut with Hertz contacts and elastic bodies
 (:mod:`ballscrew.loads.distribution`) → values with margins.
 
-The load ratings C_a and C_0a are catalogue inputs: computing them from the geometry needs
-ISO 3408-5, which is not implemented.
+The load ratings C_a and C_0a are the catalogue's when ``[design]`` gives them; otherwise they
+are computed from the geometry (:mod:`ballscrew.design.ratings`) and the check says so in a
+warning and in the report.
 """
 
 from __future__ import annotations
@@ -45,7 +46,7 @@ __all__ = [
 AMBER_BAND = 0.25
 """A margin is amber when the capacity exceeds the demand by less than this share."""
 
-PRELOAD_SHARE = {1: 0.05, 2: 0.10}
+PRELOAD_SHARE = design.MAX_PRELOAD_SHARE
 """Largest preload / C_a by nut count (HIWIN §3.6.2; THK A-687: 0.1 C_a)."""
 
 DRAG_TORQUE_BAND = 0.30
@@ -106,9 +107,9 @@ class DesignCheck(Presented):
     case: Case
     spectrum: LoadSpectrum
     dynamic_load_rating: float | None
-    """C_a [N] (catalogue; None = not given)."""
+    """C_a [N] (catalogue, else computed from the geometry)."""
     static_load_rating: float | None
-    """C_0a [N] (catalogue; None = not given)."""
+    """C_0a [N] (catalogue, else computed from the geometry)."""
     equivalent_loads: tuple[float, float]
     """Cube-mean equivalent loads F_bm of nut half 1 and 2 [N] (half 2 = 0 for a single nut)."""
     rating_life: float | None
@@ -152,6 +153,8 @@ class DesignCheck(Presented):
     """Pretension E A α ΔT that takes it up [N]."""
     margins: tuple[Margin, ...]
     warnings: tuple[str, ...] = ()
+    computed_ratings: tuple[str, ...] = ()
+    """Names of the load ratings computed from the geometry (not given in ``[design]``)."""
 
     analysis: ClassVar[str] = "check"
     presentation: ClassVar[ModuleType] = design_check_report
@@ -204,11 +207,22 @@ def _equivalent_loads(spectrum: LoadSpectrum, preload: float, nuts: int) -> tupl
     return tuple(design.cube_mean_loads(h, spectrum.shares)[0] for h in halves)  # type: ignore[return-value]
 
 
-def _life(spec: DesignSpec, equivalent: tuple[float, float]) -> float | None:
-    if spec.dynamic_load_rating is None:
-        return None
+def load_ratings(case: Case, params: ScrewParameters) -> tuple[float, float, tuple[str, ...]]:
+    """(C_a, C_0a, names of those computed): ``[design]``'s values, else from the geometry."""
+    spec = case.design
+    given = (spec.dynamic_load_rating, spec.static_load_rating) if spec else (None, None)
+    balls = params.balls_per_nut
+    ca = given[0] or design.dynamic_load_rating(params.geometry, balls)
+    c0a = given[1] or design.static_load_rating(
+        params.geometry, balls, (params.contact_modulus("screw"), params.contact_modulus("nut"))
+    )
+    names = ("dynamic_load_rating", "static_load_rating")
+    return ca, c0a, tuple(n for n, g in zip(names, given, strict=True) if g is None)
+
+
+def _life(ca: float, spec: DesignSpec, equivalent: tuple[float, float]) -> float:
     lives = [
-        float(design.rating_life(spec.dynamic_load_rating, f, spec.load_factor, spec.reliability))
+        float(design.rating_life(ca, f, spec.load_factor, spec.reliability))
         for f in equivalent
         if f > 0.0
     ]
@@ -252,14 +266,14 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
                 "",
             )
         )
-    if spec.dynamic_load_rating is not None:
+    if check["dynamic_load_rating"] is not None:
         share = spec.max_preload_share or PRELOAD_SHARE[case.screw.nuts]
         out.append(
             Margin(
                 "preload",
-                "preload vs its largest share of C_a",
+                f"preload vs its largest share of C_a ({share:.0%})",
                 case.operating.preload,
-                share * spec.dynamic_load_rating,
+                share * check["dynamic_load_rating"],
                 "N",
             )
         )
@@ -276,11 +290,11 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     return tuple(out)
 
 
-def _warn(margins: tuple[Margin, ...], spec: DesignSpec) -> None:
-    if spec.dynamic_load_rating is None or spec.static_load_rating is None:
+def _warn(margins: tuple[Margin, ...], values: dict, computed: tuple[str, ...]) -> None:
+    for name in computed:
         warnings.warn(
-            "design.dynamic_load_rating / static_load_rating not given: no rating life or static "
-            "safety (computing them from the geometry needs ISO 3408-5, not implemented)",
+            f"design.{name} not given: {values[name] * 1e-3:.4g} kN computed from the geometry "
+            "(Lundberg-Palmgren / ISO 76 pressure limit); give the maker's value when known",
             DesignWarning,
             stacklevel=3,
         )
@@ -305,8 +319,9 @@ def design_check(case: Case) -> DesignCheck:
     root = spec.root_diameter or groove_root_diameter(geometry)
     length = spec.unsupported_length
     equivalent = _equivalent_loads(spectrum, preload, nuts)
-    life = _life(spec, equivalent)
-    running = life is not None and math.isfinite(life) and spectrum.mean_speed > 0.0
+    ca, c0a, computed = load_ratings(case, params)
+    life = _life(ca, spec, equivalent)
+    running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
     nut_k = elastic_distribution(params, case.loads, root).stiffness
@@ -315,22 +330,18 @@ def design_check(case: Case) -> DesignCheck:
     )
     axial_k = design.series_stiffness(nut_k, shaft_k)
     catalogue_k = None
-    if spec.catalogue_rigidity is not None and spec.dynamic_load_rating is not None and preload:
-        catalogue_k = design.catalogue_nut_rigidity(
-            spec.catalogue_rigidity, preload, 0.1 * spec.dynamic_load_rating
-        )
+    if spec.catalogue_rigidity is not None and preload:
+        catalogue_k = design.catalogue_nut_rigidity(spec.catalogue_rigidity, preload, 0.1 * ca)
     rise = spec.temperature_rise
     values = {
         "spectrum": spectrum,
-        "dynamic_load_rating": spec.dynamic_load_rating,
-        "static_load_rating": spec.static_load_rating,
+        "dynamic_load_rating": ca,
+        "static_load_rating": c0a,
         "equivalent_loads": equivalent,
         "rating_life": life,
         "life_hours": design.life_hours(life, spectrum.mean_speed) if running else None,
-        "life_travel": design.life_travel(life, geometry.lead) if life is not None else None,
-        "static_safety_factor": None
-        if spec.static_load_rating is None
-        else design.static_safety_factor(spec.static_load_rating, max(spectrum.loads)),
+        "life_travel": design.life_travel(life, geometry.lead),
+        "static_safety_factor": design.static_safety_factor(c0a, max(spectrum.loads)),
         "root_diameter": root,
         "critical_speed": critical_speed(
             root, length, screw.youngs_modulus, screw.density, spec.mounting
@@ -357,8 +368,14 @@ def design_check(case: Case) -> DesignCheck:
     }
     margins = _margins(values, spec, case)
     with recorded_warnings() as messages:
-        _warn(margins, spec)
-    return DesignCheck(case=case, margins=margins, warnings=tuple(messages), **values)
+        _warn(margins, values, computed)
+    return DesignCheck(
+        case=case,
+        margins=margins,
+        warnings=tuple(messages),
+        computed_ratings=computed,
+        **values,
+    )
 
 
 def design_scalars(case: Case) -> dict[str, tuple[float, str]]:

@@ -67,6 +67,7 @@ def summary(result: DesignCheck) -> dict[str, Any]:
     return {
         "case": result.case.name,
         **{k: v for k, v in values.items() if v is not None},
+        "load_ratings_computed": list(result.computed_ratings),
         "equivalent_loads": [_quantity(f, "N") for f in result.equivalent_loads],
         "load_spectrum": {
             "source": s.source,
@@ -211,7 +212,7 @@ def _life_figure(result: DesignCheck, path: Path) -> Path:
     spec, s = result.spec, result.spectrum
     top = max(max(result.equivalent_loads), max(s.loads), 1.0) * 2.0
     loads = np.linspace(top / 100.0, top, 100)
-    life = design.rating_life(spec.dynamic_load_rating, loads, spec.load_factor, spec.reliability)
+    life = design.rating_life(result.dynamic_load_rating, loads, spec.load_factor, spec.reliability)
     fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
     ax.loglog(loads, life, label="L(F) at constant load")
     ax.scatter(
@@ -266,8 +267,21 @@ def _value_rows(result: DesignCheck) -> tuple[tuple[object, ...], ...]:
     for name, (_, label, scale, unit) in _VALUES.items():
         number = getattr(result, name)
         if number is not None:
-            rows.append((f"{label} [{unit}]", number * scale))
+            note = " (computed from the geometry)" if name in result.computed_ratings else ""
+            rows.append((f"{label}{note} [{unit}]", number * scale))
     return tuple(rows)
+
+
+def _ratings_note(result: DesignCheck) -> str:
+    if not result.computed_ratings:
+        return "Load ratings C_a and C_0a are the catalogue's."
+    return (
+        "Load ratings not given in [design] ("
+        + ", ".join(result.computed_ratings)
+        + ") are COMPUTED from the geometry: C_a by Lundberg-Palmgren (Harris & Kotzalas 2006) "
+        "with C_a ∝ i^0.7 over the turns (ISO 281), C_0a at 4200 MPa Hertz pressure (ISO 76); "
+        "the maker's values take precedence when known."
+    )
 
 
 def sections(result: DesignCheck) -> list[Section]:
@@ -291,7 +305,7 @@ def sections(result: DesignCheck) -> list[Section]:
         Section(
             "Design values",
             paragraphs=(
-                "Load ratings are the catalogue's; life, static safety, speed and buckling by "
+                _ratings_note(result) + " Life, static safety, speed and buckling by "
                 "the makers' formulas (THK General Catalog, HIWIN Ballscrews & Accessories); "
                 "nut stiffness from the Hertz contacts of every ball with the elastic shaft "
                 "under the nut and the nut body (theory manual, Loads).",

@@ -33,6 +33,7 @@ from ballscrew.lubrication.lubricant_library import (
     library_lubricant,
 )
 from ballscrew.lubrication.supply import supplied_film_model
+from ballscrew.materials import Material
 
 __all__ = [
     "SIDES",
@@ -45,28 +46,6 @@ __all__ = [
     "library_entry",
     "lubricant_state",
 ]
-
-
-@dataclass(frozen=True)
-class Material:
-    """Mechanical and thermal properties of one part (SI)."""
-
-    youngs_modulus: float
-    """E [Pa]."""
-    poissons_ratio: float
-    """ν [-]."""
-    hardness: float
-    """Indentation hardness H [Pa]."""
-    yield_strength: float
-    """σ_y [Pa]."""
-    thermal_conductivity: float
-    """λ [W/(m K)]."""
-    density: float
-    """ρ [kg/m³]."""
-    specific_heat: float
-    """c_p [J/(kg K)]."""
-    thermal_expansion: float
-    """α_T [1/K]."""
 
 
 @dataclass(frozen=True)
@@ -207,9 +186,9 @@ class ScrewParameters:
             preload=op.preload,
             axial_load=op.axial_load,
             speed=op.speed,
-            ball=Material(**case.materials.ball.model_dump()),
-            screw=Material(**case.materials.screw.model_dump()),
-            nut=Material(**case.materials.nut.model_dump()),
+            ball=Material(**case.materials.ball.properties),
+            screw=Material(**case.materials.screw.properties),
+            nut=Material(**case.materials.nut.properties),
             D=case.surface.D,
             G=case.surface.G,
             smooth_ball=case.surface.ball is None,

@@ -3,8 +3,8 @@
 Example (THK BNFN4010-5 on a 1.3 m shaft)::
 
     [design]
-    dynamic_load_rating = "52.7 kN"   # C_a from the maker's table
-    static_load_rating = "141.1 kN"   # C_0a from the maker's table
+    dynamic_load_rating = "52.7 kN"   # C_a from the maker's table (else from the geometry)
+    static_load_rating = "141.1 kN"   # C_0a from the maker's table (else from the geometry)
     mounting = "fixed-supported"
     unsupported_length = "1.3 m"      # between the bearings (buckling and whirling)
     nut_distance = "1.0 m"            # fixed bearing to nut (shaft stiffness); default the length
@@ -34,11 +34,21 @@ class DesignSpec(Model):
     """Catalogue ratings, shaft mounting and allowed limits of the design check (SI)."""
 
     dynamic_load_rating: (
-        quantity("force", "basic dynamic axial load rating C_a (maker's table)", gt=0, le=1e9)
+        quantity(
+            "force",
+            "dynamic axial load rating C_a (maker's); None = from the geometry",
+            gt=0,
+            le=1e9,
+        )
         | None
     ) = None
     static_load_rating: (
-        quantity("force", "basic static axial load rating C_0a (maker's table)", gt=0, le=1e9)
+        quantity(
+            "force",
+            "static axial load rating C_0a (maker's); None = from the geometry",
+            gt=0,
+            le=1e9,
+        )
         | None
     ) = None
     catalogue_rigidity: (

@@ -25,7 +25,7 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, quantity
 
-__all__ = ["MAX_DUTY_TIME", "DutySegment"]
+__all__ = ["MAX_DUTY_TIME", "DutySegment", "require_time_shares"]
 
 MAX_DUTY_TIME = 1.0e8
 """Longest segment or cycle a case accepts, s (about three years)."""
@@ -59,3 +59,21 @@ class DutySegment(Model):
 DutyRepeat = Annotated[
     int, Field(ge=1, le=100_000, description="how many times the [[duty]] list is run")
 ]
+
+
+def require_time_shares(duty: object) -> None:
+    """One error for a ``[[duty]]`` list whose segments lack their duration (time share).
+
+    Without durations the segments have no weights, so neither a cube-mean load nor a life
+    exists; the error names every such segment in one line.
+    """
+    if not isinstance(duty, list):
+        return
+    missing = [k for k, seg in enumerate(duty) if isinstance(seg, dict) and "duration" not in seg]
+    if missing:
+        where = ", ".join(f"duty.{k}" for k in missing)
+        raise ValueError(
+            f"duty = {len(missing)} segment(s) without a duration is not allowed: every [[duty]] "
+            f'segment needs its duration, its time share of the cycle (e.g. duration = "10 min"); '
+            f"missing in {where}"
+        )

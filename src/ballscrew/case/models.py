@@ -10,13 +10,13 @@ parameter is never silently ignored.
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.design_spec import DesignSpec
-from ballscrew.case.duty_spec import DutyRepeat, DutySegment
+from ballscrew.case.duty_spec import DutyRepeat, DutySegment, require_time_shares
 from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
 from ballscrew.case.loads_spec import LoadsSpec
@@ -33,6 +33,7 @@ from ballscrew.contact_resistance.correlations import CORRELATIONS
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
 from ballscrew.lubrication.film import FILM_MODELS
+from ballscrew.materials import MATERIALS, material_properties
 
 
 class ScrewSpec(Model):
@@ -67,8 +68,15 @@ class ScrewSpec(Model):
 
 
 class MaterialSpec(Model):
-    """Mechanical and thermal properties of one part (ball, screw or nut)."""
+    """Mechanical and thermal properties of one part (ball, screw or nut).
 
+    ``material = "100Cr6"`` fills every property from :data:`ballscrew.materials.MATERIALS`;
+    a property given as well overrides the library's value.
+    """
+
+    material: str | None = Field(
+        None, description="named material (ballscrew.materials); given properties override it"
+    )
     youngs_modulus: quantity("pressure", "Young's modulus E", gt=0, le=1e13)
     poissons_ratio: Annotated[float, Field(gt=0.0, lt=0.5, description="Poisson's ratio ν")]
     hardness: quantity("pressure", "indentation hardness H of the surface", gt=0, le=1e12)
@@ -79,6 +87,23 @@ class MaterialSpec(Model):
     thermal_expansion: quantity(
         "expansion", "linear thermal expansion coefficient α_T", ge=0, le=1e-2
     )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _fill_from_library(cls, data: Any) -> Any:
+        if not isinstance(data, dict) or data.get("material") is None:
+            return data
+        name = data["material"]
+        if not isinstance(name, str) or name not in MATERIALS:
+            raise ValueError(
+                f"material = {name!r} is not allowed: it must be one of {', '.join(MATERIALS)}"
+            )
+        return {**material_properties(name), **data}
+
+    @property
+    def properties(self) -> dict[str, float]:
+        """The eight property values (SI), without the material's name."""
+        return self.model_dump(exclude={"material"})
 
 
 class Materials(Model):
@@ -276,6 +301,13 @@ class Case(Model):
         description="duty cycle: [[duty]] segments of speed, load, stroke, dwell and duration",
     )
     duty_repeat: DutyRepeat = 1
+
+    @model_validator(mode="before")
+    @classmethod
+    def _duty_has_time_shares(cls, data: Any) -> Any:
+        if isinstance(data, dict):
+            require_time_shares(data.get("duty"))
+        return data
 
     @model_validator(mode="after")
     def _one_lubricant(self) -> Case:

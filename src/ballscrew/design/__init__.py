@@ -1,8 +1,8 @@
 """Design check of a ball screw by the makers' formulas: life, static safety, speed and
 buckling limits, stiffness of the nut, the shaft and the drive, thermal pretension.
 
-Plain functions of SI numbers; no case. The load ratings C_a and C_0a are inputs (catalogue
-values).
+Plain functions of SI numbers; no case. The load ratings C_a and C_0a are catalogue inputs, or
+computed from the geometry (:mod:`ballscrew.design.ratings`, Lundberg–Palmgren and ISO 76).
 """
 
 from ballscrew.design.life import (
@@ -16,6 +16,14 @@ from ballscrew.design.life import (
     rating_life,
     reliability_factor,
     static_safety_factor,
+)
+from ballscrew.design.ratings import (
+    MAX_PRELOAD_SHARE,
+    STATIC_CONTACT_PRESSURE,
+    balls_per_turn,
+    circuit_ball_count,
+    dynamic_load_rating,
+    static_load_rating,
 )
 from ballscrew.design.shaft import (
     BUCKLING_SAFETY,
@@ -42,14 +50,19 @@ __all__ = [
     "BUCKLING_SAFETY",
     "CATALOGUE_RIGIDITY_SHARE",
     "LIFT_OFF_FACTOR",
+    "MAX_PRELOAD_SHARE",
     "MOUNTINGS",
     "PERMISSIBLE_STRESS",
     "RELIABILITY_FACTORS",
     "SPEED_SAFETY",
+    "STATIC_CONTACT_PRESSURE",
+    "balls_per_turn",
     "buckling_load",
     "catalogue_nut_rigidity",
+    "circuit_ball_count",
     "combined_life",
     "cube_mean_loads",
+    "dynamic_load_rating",
     "life_hours",
     "life_travel",
     "maker_buckling_load",
@@ -62,6 +75,7 @@ __all__ = [
     "reliability_factor",
     "series_stiffness",
     "shaft_axial_stiffness",
+    "static_load_rating",
     "static_safety_factor",
     "thermal_elongation",
     "thermal_pretension",

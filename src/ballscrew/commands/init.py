@@ -1,0 +1,72 @@
+"""``ballscrew init``: a complete, commented case file from a catalogue sheet, on stdout."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from ballscrew.commands._common import user_errors_exit_2
+
+
+def _si(option: str, text: str, kind: str, bare_unit: str, scale: float) -> float:
+    """``text`` in SI: a bare number is in ``bare_unit`` (× ``scale``), else a unit string."""
+    from ballscrew.errors import InputError
+    from ballscrew.units import to_si
+
+    try:
+        value = float(text) * scale
+    except ValueError:
+        try:
+            value = to_si(text, kind)
+        except ValueError:
+            raise InputError(option, text, f"a number in {bare_unit} or e.g. '40 mm'") from None
+    if not value > 0.0 or value == float("inf"):
+        raise InputError(option, text, f"a finite value > 0 (a bare number is in {bare_unit})")
+    return value
+
+
+_MM = "mm (or a unit string)"
+
+
+@user_errors_exit_2
+def init(
+    d0: Annotated[str, typer.Option("--d0", help=f"nominal (pitch) diameter, {_MM}")],
+    lead: Annotated[str, typer.Option(help=f"lead, {_MM}")],
+    ball: Annotated[str, typer.Option(help=f"ball diameter, {_MM}")],
+    turns: Annotated[
+        str, typer.Option(help="turns per circuit x circuits per nut, e.g. 2.5x2 or 1x4")
+    ],
+    nuts: Annotated[int, typer.Option(help="1 (single nut) or 2 (preloaded double nut)")] = 2,
+    preload: Annotated[
+        str | None,
+        typer.Option(help="preload in N (or '2 kN'); default 5 % of the computed C_a"),
+    ] = None,
+    length: Annotated[str, typer.Option(help=f"screw shaft length, {_MM}")] = "1000",
+    nut_length: Annotated[
+        str | None,
+        typer.Option(help=f"length of each nut, {_MM}; default the loaded turns + 2 leads"),
+    ] = None,
+    name: Annotated[str, typer.Option(help="case name")] = "my_screw",
+) -> None:
+    """Print a complete case (TOML) for a screw from a maker's table; redirect it to a file."""
+    from ballscrew.case.starter import CatalogueSheet, parse_turns, starter_case
+    from ballscrew.errors import InputError
+
+    if nuts not in (1, 2):
+        raise InputError("--nuts", nuts, "1 or 2")
+    t, circuits = parse_turns(turns)
+    sheet = CatalogueSheet(
+        nominal_diameter=_si("--d0", d0, "length", _MM, 1e-3),
+        lead=_si("--lead", lead, "length", _MM, 1e-3),
+        ball_diameter=_si("--ball", ball, "length", _MM, 1e-3),
+        turns=t,
+        circuits=circuits,
+        nuts=nuts,
+        preload=None if preload is None else _si("--preload", preload, "force", "N", 1.0),
+        length=_si("--length", length, "length", _MM, 1e-3),
+        nut_length=None
+        if nut_length is None
+        else _si("--nut-length", nut_length, "length", _MM, 1e-3),
+    )
+    typer.echo(starter_case(sheet, name), nl=False)

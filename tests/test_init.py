@@ -1,0 +1,114 @@
+"""``ballscrew init``: the generated case is complete (every command runs it), its ball count
+follows the closed form, and a sheet that cannot be built is a one-line error, exit 2."""
+
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+
+import pytest
+from typer.testing import CliRunner
+
+from ballscrew.case import case_from_dict
+from ballscrew.case.starter import parse_turns
+from ballscrew.cli import app
+
+runner = CliRunner()
+SHEET = ["--d0", "40", "--lead", "10", "--ball", "6.35", "--turns", "2.5x2", "--nuts", "2"]
+
+
+def init(*args: str):
+    return runner.invoke(app, ["init", *args])
+
+
+@pytest.fixture(scope="module")
+def generated() -> str:
+    result = init(*SHEET)
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
+def test_ball_count_is_the_closed_form(generated) -> None:
+    """balls = circuits × (floor(turns π d_m/(D_w cos λ)) − 1): 2 × (floor(2.5 × 19.852) − 1)."""
+    lam = math.atan(10.0 / (math.pi * 40.0))
+    per_turn = math.pi * 40.0 / (6.35 * math.cos(lam))
+    assert per_turn == pytest.approx(19.852, abs=1e-3)
+    case = case_from_dict(tomllib.loads(generated))
+    assert case.screw.balls_per_nut == 2 * (math.floor(2.5 * per_turn) - 1) == 96
+    assert case.screw.pitch_diameter == pytest.approx(0.040)
+    assert case.materials.ball.material == "100Cr6" and case.kinematics.lubricant == "iso_vg_68"
+    assert case.design is not None and case.design.dynamic_load_rating is None
+
+
+def test_every_value_not_on_the_sheet_is_labelled(generated) -> None:
+    for line in ("screw_conformity", "contact_angle", "thermal_conductivity", "preload"):
+        text = next(t for t in generated.splitlines() if t.startswith(line))
+        assert "#" in text, text
+    assert "[TYPICAL" in generated and "[ASSUMED" in generated and "[GUESS]" in generated
+    assert '"40 mm"' in generated and '"6.35 mm"' in generated
+
+
+@pytest.mark.parametrize(
+    ("command", "options"),
+    [
+        ("contact", []),
+        ("tcr", []),
+        ("thermal", []),
+        ("operating-point", []),
+        ("check", []),
+        ("duty", ["--model", "network"]),
+        ("kinematics", ["--speed", "1000 rpm"]),
+    ],
+)
+def test_every_command_accepts_the_generated_case(tmp_path, generated, command, options) -> None:
+    case_file = tmp_path / "my.toml"
+    fast = generated.replace("cells_across = 32", "cells_across = 16")
+    fast = fast.replace('duration = "1 h"', 'duration = "10 min"') + '[tcr]\ncell_size = "20 um"\n'
+    case_file.write_text(fast)
+    out = tmp_path / command
+    result = runner.invoke(app, [command, str(case_file), "--out", str(out), *options])
+    assert result.exit_code == 0, result.output
+    assert (out / "summary.json").is_file()
+
+
+def test_a_preload_above_the_makers_share_warns_in_the_summary(tmp_path) -> None:
+    result = init(*SHEET, "--preload", "20 kN")
+    assert result.exit_code == 0, result.output
+    case_file = tmp_path / "heavy.toml"
+    case_file.write_text(result.stdout)
+    out = tmp_path / "check"
+    assert runner.invoke(app, ["check", str(case_file), "--out", str(out)]).exit_code == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert any("preload vs its largest share of C_a" in w for w in summary["warnings"])
+    assert summary["margins"]["preload"]["status"] == "red"
+    assert "preload vs its largest share" in (out / "report.html").read_text()
+
+
+@pytest.mark.parametrize(
+    ("args", "field"),
+    [
+        (["--ball", "12"], "--ball"),  # larger than the 10 mm lead allows
+        (["--ball", "25"], "--ball"),
+        (["--turns", "3.5x3", "--nut-length", "60"], "--turns"),  # 105 mm of turns, 60 mm nut
+        (["--turns", "2.5x0"], "--turns"),
+        (["--turns", "two"], "--turns"),
+        (["--length", "100", "--turns", "3.5x2"], "--length"),  # two 90 mm nuts on 100 mm
+        (["--nuts", "3"], "--nuts"),
+        (["--lead", "-5"], "--lead"),
+    ],
+)
+def test_a_sheet_that_cannot_be_built_is_one_line_exit_2(args, field) -> None:
+    sheet = dict(zip(SHEET[::2], SHEET[1::2], strict=True)) | dict(
+        zip(args[::2], args[1::2], strict=True)
+    )
+    result = init(*(item for pair in sheet.items() for item in pair))
+    assert result.exit_code == 2
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {field} = "), result.output
+
+
+def test_turns_notation() -> None:
+    assert parse_turns("2.5x2") == (2.5, 2)
+    assert parse_turns("1×4") == (1.0, 4)
+    assert parse_turns("3") == (3.0, 1)
