@@ -42,6 +42,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_thermal.py
 	$(PY) benchmarks/bench_wear.py
 	$(PY) benchmarks/bench_operating_point.py
+	$(PY) benchmarks/bench_duty.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

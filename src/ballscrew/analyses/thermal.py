@@ -237,11 +237,7 @@ def thermal_field(
     that of the coupled operating point, its fixed point solved on the network model and then
     on ``model`` (``coupling`` of the result); the transient runs from ambient at that heat.
     """
-    case_with(case, "screw", "operating", "materials", "thermal")
-    spec = thermal_spec(case)
-    model = THERMAL_MODELS.check(spec.model if model is None else model)
-    if transient:  # the step count before any work; the history's memory once the mesh is known
-        check_transient(None, spec.transient.duration, spec.transient.time_step)
+    spec, model = _checked(case, model, transient)
     if spec.drag_torque.source != "operating_point":
         return solve_field(case, model, tcr=tcr, transient=transient)
     # imported here: the operating point solves its fields with this module
@@ -260,6 +256,16 @@ def thermal_field(
     )
 
 
+def _checked(case: Case, model: str | None, transient: bool) -> tuple[ThermalSpec, str]:
+    """The case's ``[thermal]`` and the model name, checked before any work."""
+    case_with(case, "screw", "operating", "materials", "thermal")
+    spec = thermal_spec(case)
+    model = THERMAL_MODELS.check(spec.model if model is None else model)
+    if transient:  # the step count before any work; the history's memory once the mesh is known
+        check_transient(None, spec.transient.duration, spec.transient.time_step)
+    return spec, model
+
+
 def solve_field(
     case: Case,
     model: str | None = None,
@@ -270,11 +276,7 @@ def solve_field(
     """:func:`thermal_field` with the heat the case gives, its drag torque taken as it stands
     (a resolved ``operating_point`` torque is ``thermal.drag_torque.torque``)."""
     started = _time.perf_counter()
-    case_with(case, "screw", "operating", "materials", "thermal")
-    spec = thermal_spec(case)
-    model = THERMAL_MODELS.check(spec.model if model is None else model)
-    if transient:  # the step count before any work; the history's memory once the mesh is known
-        check_transient(None, spec.transient.duration, spec.transient.time_step)
+    spec, model = _checked(case, model, transient)
     with recorded_warnings() as messages:
         problem, sources, convection, interfaces, speed = build_problem(case, tcr)
         check_mesh(spec, problem, model)
