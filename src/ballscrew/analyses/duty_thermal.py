@@ -34,6 +34,7 @@ from ballscrew.analyses.operating_point import (
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import _mesh_options
 from ballscrew.analyses.thermal_setup import build_problem, check_mesh, thermal_spec
+from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
@@ -195,15 +196,19 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
             sensors[n] = first.sensors @ theta
             contact[n] = amb + 0.5 * (nut_rise(theta) + float(screw_row @ theta))
 
-        final, heat_in, lost = implicit_euler(
-            first.capacity,
-            dt,
-            steps,
-            system,
-            observe,
-            cache_size=len(segments) + 1,
-            direct_limit=first.direct_limit,
-        )
+        # per step only triangular solves and vector products: BLAS threads just contend for
+        # the cores (the 8-hour axisymmetric day: 46 s threaded, 12 s on one thread, 2 shared
+        # cores; measured)
+        with blas_single_thread():
+            final, heat_in, lost = implicit_euler(
+                first.capacity,
+                dt,
+                steps,
+                system,
+                observe,
+                cache_size=len(segments) + 1,
+                direct_limit=first.direct_limit,
+            )
     heat[0], viscosity[0] = heat[1], viscosity[1]
     stored = float(np.asarray(first.capacity.sum(axis=0)).ravel() @ final)
     return DutyThermal(

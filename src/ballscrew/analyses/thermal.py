@@ -34,6 +34,7 @@ from ballscrew.analyses.thermal_setup import (
     check_mesh,
     thermal_spec,
 )
+from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.thermal.elongation import thermoelastic_elongation
@@ -284,14 +285,15 @@ def solve_field(
         patches = ball_patches(case, problem, tcr) if helical else None
         disc = build_model(model, problem, _mesh_options(spec), patches)
         tr = spec.transient
-        solution = simulate(
-            disc,
-            tr.duration if transient else None,
-            tr.time_step,
-            tr.snapshots,
-            spec.stroke.mode,
-            speed,
-        )
+        with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
+            solution = simulate(
+                disc,
+                tr.duration if transient else None,
+                tr.time_step,
+                tr.snapshots,
+                spec.stroke.mode,
+                speed,
+            )
         thermoelastic = None
         if model == "axisymmetric" and spec.thermoelastic_check:
             screw = case.materials.screw
