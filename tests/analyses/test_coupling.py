@@ -18,6 +18,8 @@ from ballscrew.analyses.operating_point import (
 )
 from ballscrew.analyses.thermal import thermal_field
 from ballscrew.case import with_overrides
+from ballscrew.errors import InputError
+from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 
 RPM = 2 * math.pi / 60
@@ -169,3 +171,11 @@ def test_coupled_tcr_takes_the_medium_conductivity_at_the_operating_temperature(
 def test_without_the_option_the_case_stays_as_given(case):
     assert not case.operating.coupled
     assert at_operating_temperature(case) is case
+
+
+def test_the_operating_point_torque_is_solved_by_the_composer():
+    inputs = DragTorqueInputs(1500.0, 0.01, 0.0794)
+    with pytest.raises(InputError, match=r"thermal\.drag_torque\.source"):
+        DRAG_TORQUE_MODELS["operating_point"](inputs)
+    solved = DragTorqueInputs(1500.0, 0.01, 0.0794, given=0.25)
+    assert DRAG_TORQUE_MODELS["operating_point"](solved) == 0.25
