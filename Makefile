@@ -44,6 +44,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_operating_point.py
 	$(PY) benchmarks/bench_design.py
 	$(PY) benchmarks/bench_design_check.py
+	$(PY) benchmarks/bench_duty.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -136,6 +136,27 @@ THERMAL = gao(
     {"model": "network"},
 )
 
+#: The balls' heat from the coupled operating point with an oil whose viscosity follows the
+#: temperature and the ball-model friction (the thermal parity above runs the catalogue torque).
+COUPLED_OPTIONS = GAO_OPTIONS | {
+    "medium": {"name": "ISO VG 68", "thermal_conductivity": 0.14},  # viscosities: the library's
+    "kinematics.lubricant": "iso_vg_68",
+    "friction.model": "ball_model",
+    "thermal.drag_torque.source": "operating_point",
+}
+COUPLED_NUMBERS = THERMAL_NUMBERS | {
+    "operating_point.contact_temperature": lambda r: r.coupling.contact_temperature,
+    "operating_point.viscosity": lambda r: r.coupling.viscosity,
+    "operating_point.heat": lambda r: r.coupling.heat,
+}
+THERMAL_COUPLED = Parity(
+    GAO,
+    COUPLED_OPTIONS,
+    lambda case, out: ["thermal", case, "--out", out],
+    {on_case(thermal_field): COUPLED_NUMBERS, on_case(ballscrew.thermal_field): COUPLED_NUMBERS},
+    {"model": "network", "operating_point.friction_model": "ball_model"},
+)
+
 
 def _nut1(attr: str) -> Callable[[Any], float]:
     return lambda r: getattr(r.states[1], attr)
@@ -244,6 +265,7 @@ ANALYSES = {
     "contact": CONTACT,
     "tcr": TCR,
     "thermal": THERMAL,
+    "thermal_coupled": THERMAL_COUPLED,
     "kinematics": KINEMATICS,
     "wear": WEAR_RUN,
     "calibrate": CALIBRATE,

@@ -1,17 +1,19 @@
 """Temperatures and thermal elongation over a duty cycle (a working day of thermal error).
 
-Each ``[[duty]]`` segment runs at its steady coupled operating point
-(:func:`~ballscrew.analyses.operating_point.operating_point`: friction torque and heat with the
-lubricant at the segment's temperature), averaged over the segment's strokes and dwells
-(:mod:`~ballscrew.analyses.duty`): the heat is f·Q(ω) at the mean speed f·ω. The thermal model
-of the case is assembled once per segment (same mesh, the segment's heat and convection) and
-marched by implicit Euler through the schedule, the factorisation of each segment reused
-(theory manual, *Operating point*). The lubricant's viscosity of a segment is that of its steady
-operating point: it does not yet follow the temperature within the day.
+Each ``[[duty]]`` segment is averaged over its strokes and dwells (:mod:`~ballscrew.analyses.
+duty`): the heat is f·Q at the mean speed f·ω. The thermal model of the case is assembled once
+per segment (same mesh; the segment's convection, set at its steady coupled operating point,
+:func:`~ballscrew.analyses.operating_point.operating_point`) and marched by implicit Euler
+through the schedule, the factorisation of each segment reused. The friction heat follows the
+temperature in time: the heat of step n is Q(T_c(θₙ₋₁)) (:mod:`~ballscrew.analyses.duty_heat`,
+the lubricant's viscosity at the contact temperature of the step before), split between screw
+and nut as at the segment's steady point. A segment run long enough thus ends at its steady
+coupled operating point (theory manual, *Operating point*).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from types import ModuleType
@@ -22,13 +24,22 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses import duty_thermal_report
 from ballscrew.analyses.duty import DutyPhase, duty_schedule
-from ballscrew.analyses.operating_point import heat_overrides, operating_point
+from ballscrew.analyses.duty_heat import SegmentHeat
+from ballscrew.analyses.operating_point import (
+    contact_readout,
+    heat_overrides,
+    medium_law,
+    operating_point,
+)
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import _mesh_options
 from ballscrew.analyses.thermal_setup import build_problem, check_mesh, thermal_spec
+from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import InputError
+from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.models import THERMAL_MODELS, build_model
+from ballscrew.thermal.problem import ThermalProblem
 from ballscrew.thermal.simulate import check_transient
 from ballscrew.thermal.timestepping import StepSystem, implicit_euler
 
@@ -46,7 +57,8 @@ class DutyThermal(Presented):
     ambient_temperature: float
     phases: tuple[DutyPhase, ...]
     segment_heat: tuple[float, ...]
-    """Time-mean friction heat of each ``[[duty]]`` segment, f·Q(ω) [W]."""
+    """Time-mean friction heat of each ``[[duty]]`` segment at its steady operating point,
+    f·Q(ω) [W]."""
     time: FloatArray
     """Times of the record [s]."""
     max_temperature: FloatArray
@@ -56,6 +68,13 @@ class DutyThermal(Presented):
     sensors: FloatArray
     """Sensor temperatures [K], shape (time, sensor)."""
     sensor_names: tuple[str, ...]
+    friction_heat: FloatArray
+    """Time-mean friction heat of the balls in force over the step ending at each time [W]
+    (index 0: that of the first step)."""
+    contact_temperature: FloatArray
+    """Contact temperature T_c (mean of nut and screw at the nut) [K]."""
+    viscosity: FloatArray
+    """Lubricant viscosity at the T_c the step's heat was taken at [Pa s] (NaN: dry)."""
     heat_in: float
     """Heat that entered over the day [J]."""
     heat_balance_error: float
@@ -70,21 +89,62 @@ class DutyThermal(Presented):
         return f"Duty cycle: temperatures and thermal elongation of {self.case.name}"
 
 
-def _segment_case(case: Case, phase: DutyPhase) -> tuple[Case, float]:
-    """The case of one segment at its time-mean heat and speed, and that mean heat [W]."""
+@dataclass(frozen=True)
+class _Segment:
+    """One segment's step system: C/Δt + A and the load f_b + (Q/Q*)·f_balls (SI)."""
+
+    conductance: object
+    bearings: FloatArray
+    """Load of the support bearings [W]."""
+    balls: FloatArray
+    """Load of the balls at the steady heat Q* [W]."""
+    heat: SegmentHeat | None
+    """Q(T_c) of the segment (None: at rest)."""
+
+    def load(self, temperature: float) -> tuple[FloatArray, float]:
+        """(load vector, time-mean ball heat) at contact temperature ``temperature``."""
+        if self.heat is None or self.heat.steady_heat <= 0.0:
+            return self.bearings, 0.0
+        q = self.heat.heat(temperature)
+        return self.bearings + (q / self.heat.steady_heat) * self.balls, q
+
+
+def _without_ball_heat(problem: ThermalProblem) -> ThermalProblem:
+    parts = tuple(dataclasses.replace(p, screw_heat=0.0, nut_heat=0.0) for p in problem.parts)
+    return dataclasses.replace(problem, parts=parts)
+
+
+def _segment(case: Case, phase: DutyPhase, model: str) -> tuple[_Segment, Discretisation]:
+    """The step system of one segment, its heat at the steady operating point and its model."""
+    spec = thermal_spec(case)
     base = with_overrides(
-        case, {"operating.speed": phase.speed, "operating.axial_load": phase.axial_load}
+        case,
+        {
+            "operating.speed": phase.speed,
+            "operating.axial_load": phase.axial_load,
+            "operating.coupled": False,
+        },
     )
-    heat, to_screw = 0.0, 0.0
+    heat, to_screw, table = 0.0, 0.0, None
     if phase.mean_speed > 0.0:
         point = operating_point(base, model="network")
-        heat = phase.moving_fraction * point.heat
+        table = SegmentHeat(base, point, phase.moving_fraction, spec.ambient_temperature)
+        heat = table.steady_heat
         to_screw = phase.moving_fraction * point.heat_to_screw
     overrides = {
         "operating.speed": phase.mean_speed,
         **heat_overrides(heat, to_screw, phase.mean_speed),
     }
-    return with_overrides(base, overrides), heat
+    problem, *_ = build_problem(with_overrides(base, overrides))
+    check_mesh(spec, problem, model)
+    options = _mesh_options(spec)
+    disc = build_model(model, problem, options)
+    conductance, load = disc.assemble(disc.grid.weights)
+    bearings = load
+    if heat > 0.0:
+        cold = build_model(model, _without_ball_heat(problem), options)
+        bearings = cold.assemble(cold.grid.weights)[1]
+    return _Segment(conductance, bearings, load - bearings, table), disc
 
 
 def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
@@ -102,58 +162,69 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
     check_transient(None, total, spec.transient.time_step)
     steps = max(1, math.ceil(total / spec.transient.time_step))
     dt = total / steps
+    amb = spec.ambient_temperature
+    viscosity_at = medium_law(case)
     with recorded_warnings() as messages:
-        systems, heats = [], []
-        for k in range(len(case.duty)):
-            segment, heat = _segment_case(case, phases[k])
-            problem, *_ = build_problem(segment)
-            check_mesh(spec, problem, model)
-            disc = build_model(model, problem, _mesh_options(spec))
-            systems.append((disc, *disc.assemble(disc.grid.weights)))
-            heats.append(heat)
-        first = systems[0][0]
+        built = [_segment(case, phases[k], model) for k in range(len(case.duty))]
+        segments = [b[0] for b in built]
+        first = built[0][1]
         check_transient(first, total, dt)
         starts = np.array([p.start for p in phases])
         segment_of = [
             (int(np.searchsorted(starts, (n - 0.5) * dt, side="right")) - 1) % len(case.duty)
             for n in range(steps + 1)
         ]
+        screw_row, nut_rise = contact_readout(first)
         time = dt * np.arange(steps + 1)
         max_rise = np.zeros(steps + 1)
         elongation = np.zeros(steps + 1)
         sensors = np.zeros((steps + 1, first.sensors.shape[0]))
+        contact = np.full(steps + 1, amb)
+        heat = np.zeros(steps + 1)
+        viscosity = np.zeros(steps + 1)
 
         def system(n: int) -> StepSystem:
-            _, conductance, load = systems[segment_of[n]]
-            return StepSystem(segment_of[n], conductance, load)
+            k = segment_of[n]
+            load, heat[n] = segments[k].load(contact[n - 1])
+            eta = viscosity_at(contact[n - 1])[0]
+            viscosity[n] = math.nan if eta is None else eta
+            return StepSystem(k, segments[k].conductance, load)
 
         def observe(n: int, theta: FloatArray, loss: float) -> None:
             max_rise[n] = theta.max()
             elongation[n] = first.elongation @ theta
             sensors[n] = first.sensors @ theta
+            contact[n] = amb + 0.5 * (nut_rise(theta) + float(screw_row @ theta))
 
-        final, heat_in, lost = implicit_euler(
-            first.capacity,
-            dt,
-            steps,
-            system,
-            observe,
-            cache_size=len(systems) + 1,
-            direct_limit=first.direct_limit,
-        )
+        # per step only triangular solves and vector products: BLAS threads just contend for
+        # the cores (the 8-hour axisymmetric day: 46 s threaded, 12 s on one thread, 2 shared
+        # cores; measured)
+        with blas_single_thread():
+            final, heat_in, lost = implicit_euler(
+                first.capacity,
+                dt,
+                steps,
+                system,
+                observe,
+                cache_size=len(segments) + 1,
+                direct_limit=first.direct_limit,
+            )
+    heat[0], viscosity[0] = heat[1], viscosity[1]
     stored = float(np.asarray(first.capacity.sum(axis=0)).ravel() @ final)
-    amb = spec.ambient_temperature
     return DutyThermal(
         case=case,
         model=model,
         ambient_temperature=amb,
         phases=phases,
-        segment_heat=tuple(heats),
+        segment_heat=tuple(s.heat.steady_heat if s.heat else 0.0 for s in segments),
         time=time,
         max_temperature=amb + max_rise,
         elongation=elongation,
         sensors=amb + sensors,
         sensor_names=tuple(s.name for s in first.problem.sensors),
+        friction_heat=heat,
+        contact_temperature=contact,
+        viscosity=viscosity,
         heat_in=heat_in,
         heat_balance_error=abs(heat_in - stored - lost) / heat_in if heat_in > 0 else 0.0,
         warnings=tuple(messages),

@@ -33,6 +33,9 @@ def summary(result: DutyThermal) -> dict[str, Any]:
         "peak_temperature": quantity(float(result.max_temperature.max()), "K"),
         "final_temperature": quantity(float(result.max_temperature[-1]), "K"),
         "segment_heat": [quantity(q, "W") for q in result.segment_heat],
+        "peak_friction_heat": quantity(float(result.friction_heat.max()), "W"),
+        "final_contact_temperature": quantity(float(result.contact_temperature[-1]), "K"),
+        "final_viscosity": quantity(float(result.viscosity[-1]), "Pa*s"),
         "heat_in": quantity(result.heat_in, "J"),
         "heat_balance_error": quantity(result.heat_balance_error, ""),
     }
@@ -45,6 +48,9 @@ def fields(result: DutyThermal) -> xr.Dataset:
             "max_temperature": ("time", result.max_temperature, {"units": "K"}),
             "elongation": ("time", result.elongation, {"units": "m"}),
             "sensor_temperature": (("time", "sensor"), result.sensors, {"units": "K"}),
+            "friction_heat": ("time", result.friction_heat, {"units": "W"}),
+            "contact_temperature": ("time", result.contact_temperature, {"units": "K"}),
+            "viscosity": ("time", result.viscosity, {"units": "Pa*s"}),
         },
         coords={
             "time": ("time", result.time, {"units": "s"}),
@@ -105,14 +111,18 @@ def sections(result: DutyThermal) -> list[Section]:
         ("peak elongation [µm]", 1e6 * float(result.elongation.max())),
         ("final elongation [µm]", 1e6 * float(result.elongation[-1])),
         ("peak temperature [°C]", float(result.max_temperature.max()) - CELSIUS),
+        ("peak friction heat [W]", float(result.friction_heat.max())),
+        ("final contact temperature [°C]", float(result.contact_temperature[-1]) - CELSIUS),
         ("heat balance error [-]", result.heat_balance_error),
     )
     return [
         Section(
             "Duty cycle",
             paragraphs=(
-                f"{len(result.case.duty)} segments run {result.case.duty_repeat} times; each at "
-                "its steady coupled operating point, averaged over strokes and dwells.",
+                f"{len(result.case.duty)} segments run {result.case.duty_repeat} times, "
+                "averaged over strokes and dwells. The friction heat of each time step is taken "
+                "with the lubricant at the contact temperature of the step before; the table "
+                "gives each segment's heat at its steady coupled operating point.",
             ),
             tables=(
                 Table(
@@ -123,7 +133,7 @@ def sections(result: DutyThermal) -> list[Section]:
                         "stroke [mm]",
                         "dwell [s]",
                         "duration [min]",
-                        "mean friction heat [W]",
+                        "steady mean friction heat [W]",
                     ),
                     rows,
                 ),

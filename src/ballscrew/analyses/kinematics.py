@@ -83,6 +83,17 @@ def _speed(case: Case, speed: float | None) -> float:
     return omega
 
 
+def at_operating_temperature(case: Case, speed: float | None = None) -> Case:
+    """``case`` with ``[operating] coupled = true``: its lubricant at the temperature of the
+    coupled operating point at ``speed`` [rad/s]; any other case as it is."""
+    if not case.operating.coupled:
+        return case
+    # imported here: the operating point uses the ball model of this module
+    from ballscrew.analyses.operating_point import at_operating_point
+
+    return at_operating_point(case, speed)[0]
+
+
 def _level(case: Case, level: int | None) -> int:
     value = case.kinematics.level if level is None else level
     if isinstance(value, bool) or value not in LEVELS:
@@ -136,9 +147,11 @@ def ball_kinematics(
     case's ``[kinematics] level``. The result has ``ball_speed`` (m/s, ball centre relative to
     the nut), ``orbital_speed`` (rad/s), ``spin_screw`` / ``spin_nut`` (rad/s, relative spin
     about the contact normals Z_A, Z_B pointing into the ball), ``load_screw`` / ``load_nut`` (N)
-    and ``angle_screw`` / ``angle_nut`` (rad).
+    and ``angle_screw`` / ``angle_nut`` (rad). With ``[operating] coupled = true`` the
+    lubricant is that of the coupled operating point at ``speed``.
     """
     omega = _speed(case, speed)
+    case = at_operating_temperature(case, omega)
     model, lvl = prepare(case, omega, level)
     loads = {number: (force, flank) for number, force, flank in nut_loads(case)}
     if nut not in loads:
@@ -410,6 +423,7 @@ def run_kinematics(
 ) -> KinematicsRun:
     """Run the analysis (all checks first, see :func:`prepare`)."""
     omega = case.operating.speed if speed is None else float(speed)
+    case = at_operating_temperature(case, _speed(case, omega))
     speeds = curve_speeds(case)
     with recorded_warnings() as raised:
         model, lvl = prepare(case, np.append(speeds, omega), level)

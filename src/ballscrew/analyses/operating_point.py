@@ -7,9 +7,14 @@ point is the fixed point of
     T_c → η(T_c), α_p(T_c) → friction torque M(η) → heat M·ω − F_a·v → steady field → T_c,
 
 with T_c the mean of the nut and screw temperatures at the nut, solved by fixed-point
-iteration (damped whenever the residual does not shrink) to a residual of 0.01 K (theory manual,
-*Thermal* and *Lubrication*). A case without a named lubricant keeps its ``[medium]``
-viscosity at every temperature.
+iteration (damped whenever the residual does not shrink) to a residual of 0.01 K, or as soon as
+the heat at the new T_c equals the heat just solved (a friction model that does not see the
+viscosity) (theory manual, *Operating point*). A case without a named lubricant keeps its
+``[medium]`` viscosity at every temperature.
+
+:func:`coupled_heat` hands the operating point's heat to :func:`~ballscrew.analyses.thermal.
+thermal_field`; :func:`at_operating_point` gives the case with its lubricant at the operating
+temperature, for the TCR and kinematics analyses of a case with ``[operating] coupled = true``.
 """
 
 from __future__ import annotations
@@ -23,27 +28,35 @@ from types import ModuleType
 from typing import Any, ClassVar
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ballscrew.analyses import operating_point_report
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_model, speed_limit_messages
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
-from ballscrew.analyses.thermal import ThermalField, thermal_field
+from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
+from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.wear.step import entrainment_speed
 
 __all__ = [
     "OperatingPoint",
     "OperatingPointWarning",
+    "at_operating_point",
+    "contact_readout",
+    "coupled_heat",
     "heat_overrides",
+    "medium_law",
     "operating_point",
     "operating_point_scalars",
 ]
+
+FloatArray = NDArray[np.float64]
 
 TOLERANCE = 0.01
 """Change of the contact temperature [K] at which the fixed point is reached."""
@@ -99,20 +112,34 @@ class OperatingPoint(Presented):
         return f"Operating point: {self.case.name}"
 
 
-def _viscosity_law(case: Case) -> Callable[[float], tuple[float | None, float | None]]:
-    """T → (η, α_p) of the case's lubricant: the library's laws, or its constant values."""
-    params = ScrewParameters.from_case(case)
+def _library_lubricant(case: Case) -> Any:
+    """The library entry of the case's named lubricant whose laws apply (None: constants)."""
     name = case.kinematics.lubricant
     if name is not None and name in LUBRICANT_LIBRARY and case.medium.viscosity is None:
-        entry = LUBRICANT_LIBRARY[name]
+        return LUBRICANT_LIBRARY[name]
+    return None
 
-        def law(temperature: float) -> tuple[float | None, float | None]:
+
+def medium_law(case: Case) -> Callable[[float], tuple[float | None, float | None, float]]:
+    """T → (η, α_p, λ_f) of the case's lubricant: the library's laws of a named lubricant when
+    ``[medium] viscosity`` is not given, else the constant ``[medium]`` values."""
+    entry = _library_lubricant(case)
+    if entry is not None:
+
+        def law(temperature: float) -> tuple[float | None, float | None, float]:
             state = entry.at(temperature)
-            return state.viscosity, state.pressure_viscosity
+            return state.viscosity, state.pressure_viscosity, state.conductivity
 
         return law
-    constant = (params.lubrication.viscosity, params.lubrication.pressure_viscosity)
+    lub = ScrewParameters.from_case(case).lubrication
+    constant = (lub.viscosity, lub.pressure_viscosity, lub.thermal_conductivity)
     return lambda _: constant
+
+
+def _viscosity_law(case: Case) -> Callable[[float], tuple[float | None, float | None]]:
+    """T → (η, α_p) of the case's lubricant (:func:`medium_law`)."""
+    law = medium_law(case)
+    return lambda temperature: law(temperature)[:2]
 
 
 def _warnings(case: Case, omega: float, nut: float, friction: FrictionTorque) -> list[str]:
@@ -147,25 +174,36 @@ def heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]
     """Case overrides that feed ``heat`` [W] (``to_screw`` of it into the screw) at ``omega``
     [rad/s] to the thermal model: a given torque heat/ω and the screw share."""
     return {
-        "thermal.drag_torque.source": "given",
+        "thermal.drag_torque.source": "operating_point",
         "thermal.drag_torque.torque": heat / omega if omega > 0.0 else 0.0,
         "thermal.screw_heat_fraction": to_screw / heat if heat > 0.0 else 0.5,
     }
 
 
+def contact_readout(disc: Discretisation) -> tuple[FloatArray, Callable[[FloatArray], float]]:
+    """(row r, nut) with the screw's mean rise under the nut = r·θ and the nut's rise nut(θ).
+
+    The nut's is the mean over the nut assembly (network model) or, for the FE models, the
+    largest rise of the field (at the balls); the screw's the cross-section mean of the shaft
+    averaged over the nut's length.
+    """
+    problem = disc.problem
+    distance = np.abs(disc.axis_z - problem.ring_centre)
+    under = np.nonzero(distance <= 0.5 * problem.ring_length)[0]
+    rows = under if under.size else np.array([int(np.argmin(distance))])
+    screw = np.asarray(disc.axis[rows].mean(axis=0)).ravel()
+    ring = disc.extra.get("ring_mean")
+    if ring is None:
+        return screw, lambda theta: float(theta.max())
+    return screw, lambda theta: float(theta[ring].mean())
+
+
 def _nut_and_screw(field: ThermalField) -> tuple[float, float]:
     """Steady mean temperatures of the nut assembly and of the shaft under it [K]."""
-    disc = field.solution.discretisation
+    screw, nut = contact_readout(field.solution.discretisation)
     steady = field.solution.steady
     amb = field.ambient_temperature
-    problem = disc.problem
-    half = 0.5 * problem.ring_length
-    axis = disc.axis @ steady
-    under = np.abs(disc.axis_z - problem.ring_centre) <= half
-    screw = float(axis[under].mean()) if under.any() else float(axis.max())
-    ring = disc.extra.get("ring_mean")
-    nut = float(steady[ring].mean()) if ring is not None else field.max_temperature_rise
-    return amb + nut, amb + screw
+    return amb + nut(steady), amb + float(screw @ steady)
 
 
 def operating_point(
@@ -186,20 +224,26 @@ def operating_point(
     op = case.operating
     omega = op.speed if speed is None else float(speed)
     load = op.axial_load if axial_load is None else float(axial_load)
-    base = with_overrides(case, {"operating.speed": omega, "operating.axial_load": load})
+    base = with_overrides(
+        case,
+        {"operating.speed": omega, "operating.axial_load": load, "operating.coupled": False},
+    )
     law = _viscosity_law(base)
     ambient = base.thermal.ambient_temperature if base.thermal is not None else 293.15
     contact = ambient if start_temperature is None else float(start_temperature)
     relaxation, residual, iterations = 1.0, math.inf, 0
+
+    def friction_at(temperature: float) -> FrictionTorque:
+        return friction_torque(base, viscosity=law(temperature)[0])
+
+    friction = friction_at(contact)
     with recorded_warnings() as messages:
         while True:
             if iterations == MAX_ITERATIONS:
                 raise ConvergenceError("coupled operating point", iterations, residual, TOLERANCE)
             iterations += 1
-            eta, _ = law(contact)
-            friction = friction_torque(base, viscosity=eta)
             overrides = heat_overrides(friction.heat, friction.heat_to_screw, omega)
-            field = thermal_field(with_overrides(base, overrides), model, transient=False)
+            field = solve_field(with_overrides(base, overrides), model, transient=False)
             nut, screw = _nut_and_screw(field)
             new = 0.5 * (nut + screw) - contact  # the fixed point's residual T(T_c) − T_c
             if abs(new) <= TOLERANCE:
@@ -207,7 +251,12 @@ def operating_point(
             if abs(new) >= residual:  # not contracting: damp the update
                 relaxation *= 0.5
             residual = abs(new)
+            trial = friction_at(contact + relaxation * new)
+            if relaxation == 1.0 and _same_heat(trial, friction):  # T(T_c) is the fixed point
+                contact += new
+                break
             contact += relaxation * new
+            friction = trial
         for text in _warnings(base, omega, nut, friction):
             warnings.warn(text, OperatingPointWarning, stacklevel=2)
     eta, alpha = law(contact)
@@ -232,6 +281,57 @@ def operating_point(
         field=field,
         warnings=tuple(messages),
     )
+
+
+def _same_heat(a: FrictionTorque, b: FrictionTorque) -> bool:
+    """Equal heat and screw share (to rounding): the field just solved is the fixed point."""
+    return math.isclose(a.heat, b.heat, rel_tol=1e-12, abs_tol=1e-12) and math.isclose(
+        a.heat_to_screw, b.heat_to_screw, rel_tol=1e-12, abs_tol=1e-12
+    )
+
+
+def coupled_heat(case: Case, model: str) -> tuple[Case, HeatCoupling, ThermalField]:
+    """The case with the balls' heat of its coupled operating point, that point and its steady
+    field on ``model``.
+
+    The fixed point is solved on the network model (milliseconds) and, for the FE models,
+    continued on ``model`` from the network's contact temperature (one FE solve when the heat
+    does not depend on the viscosity, a few otherwise).
+    """
+    point = operating_point(case, model="network")
+    if model != "network":
+        point = operating_point(case, model=model, start_temperature=point.contact_temperature)
+    overrides = heat_overrides(point.heat, point.heat_to_screw, point.speed)
+    resolved = with_overrides(case, {**overrides, "operating.coupled": False})
+    coupling = HeatCoupling(
+        friction_model=case.friction.model,
+        friction_torque=point.friction_torque,
+        heat=point.heat,
+        heat_to_screw=point.heat_to_screw,
+        contact_temperature=point.contact_temperature,
+        viscosity=point.viscosity,
+        iterations=point.iterations,
+    )
+    return resolved, coupling, point.field
+
+
+def at_operating_point(case: Case, speed: float | None = None) -> tuple[Case, OperatingPoint]:
+    """``case`` with its lubricant at the contact temperature T_c of its coupled operating point
+    at ``speed`` [rad/s] (None: the case's), and that point (network model).
+
+    A named library lubricant gets η(T_c), α_p(T_c) and λ_f(T_c) into ``[medium]``; constant
+    ``[medium]`` values stay as they are.
+    """
+    point = operating_point(case, speed)
+    overrides: dict[str, Any] = {"operating.coupled": False}
+    if _library_lubricant(case) is not None:
+        _, alpha, conductivity = medium_law(case)(point.contact_temperature)
+        overrides |= {
+            "medium.viscosity": point.viscosity,
+            "medium.pressure_viscosity": alpha,
+            "medium.thermal_conductivity": conductivity,
+        }
+    return with_overrides(case, overrides), point
 
 
 def operating_point_scalars(case: Case) -> dict[str, tuple[float, str]]:

@@ -176,10 +176,17 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     """Thermal contact resistance of the ball screw of ``case``.
 
     ``variant`` picks the element model (V2, MT or V1); ``None`` (default) takes the case's
-    ``[tcr] variant``. Contacts of equal side and ball load are solved once (both nuts share
+    ``[tcr] variant``. With ``[operating] coupled = true`` the medium between the asperities is
+    the named lubricant at the contact temperature of the coupled operating point.
+    Contacts of equal side and ball load are solved once (both nuts share
     them at zero axial load).
     """
     case_with(case, "screw", "operating", "surface", "materials", "medium", "numerics", "tcr")
+    if case.operating.coupled:  # the medium's conductivity at the operating temperature
+        # imported here: the operating point's thermal model uses this analysis
+        from ballscrew.analyses.operating_point import at_operating_point
+
+        case = at_operating_point(case)[0]
     params = ScrewParameters.from_case(case)
     geometry = params.geometry
     models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}

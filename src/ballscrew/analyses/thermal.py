@@ -7,10 +7,16 @@ elongation ΔL = α∫ΔT dz (theory manual: *Thermal*).
 
 Models: ``"axisymmetric"`` (default; 2-D scikit-fem), ``"network"`` (1-D axial, milliseconds)
 and ``"3d"`` (hexahedra, helical contact patches; :mod:`~ballscrew.thermal.threed`).
+
+The friction heat of the balls is by default that of the coupled operating point
+(:mod:`~ballscrew.analyses.operating_point`): the friction torque with the lubricant's viscosity
+at the temperature the model computes; a case that names another
+``[thermal.drag_torque] source`` (catalogue, given, kinematics) gets that fixed heat.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import time as _time
 from dataclasses import dataclass
 from types import ModuleType
@@ -28,6 +34,7 @@ from ballscrew.analyses.thermal_setup import (
     check_mesh,
     thermal_spec,
 )
+from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.thermal.elongation import thermoelastic_elongation
@@ -38,6 +45,7 @@ from ballscrew.validation import case_with
 
 __all__ = [
     "ConvectionCoefficient",
+    "HeatCoupling",
     "HeatSource",
     "NutInterface",
     "SensorReading",
@@ -45,6 +53,7 @@ __all__ = [
     "ball_patches",
     "build_problem",
     "field_dataset",
+    "solve_field",
     "thermal_fe_scalars",
     "thermal_field",
     "thermal_network_scalars",
@@ -68,6 +77,25 @@ class SensorReading:
     """Temperature at the end of the transient [K] (NaN without transient)."""
     time_to_95: float
     """Time to 95 % of the steady rise [s] (NaN if not reached)."""
+
+
+@dataclass(frozen=True)
+class HeatCoupling:
+    """The coupled operating point that gave the friction heat of the balls (SI)."""
+
+    friction_model: str
+    friction_torque: float
+    """Friction torque of the nut(s) [N·m]."""
+    heat: float
+    """Friction heat of the nut(s) [W]."""
+    heat_to_screw: float
+    """Part of it entering the screw [W]."""
+    contact_temperature: float
+    """Mean of the nut and screw temperatures at the fixed point [K]."""
+    viscosity: float
+    """Lubricant viscosity at that temperature [Pa s] (NaN for a dry case)."""
+    iterations: int
+    """Fixed-point iterations of the model that was solved."""
 
 
 @dataclass(frozen=True)
@@ -96,6 +124,8 @@ class ThermalField(Presented):
     """The case that was solved."""
     warnings: tuple[str, ...] = ()
     """Warnings raised while solving (one line each)."""
+    coupling: HeatCoupling | None = None
+    """The operating point behind the balls' heat (None: a fixed heat of the case)."""
 
     analysis: ClassVar[str] = "thermal"
     presentation: ClassVar[ModuleType] = thermal_report
@@ -203,13 +233,51 @@ def thermal_field(
     helical contact patches, ``[thermal.mesh]`` ``*_3d`` keys); ``None`` takes the case's
     ``[thermal] model``. ``tcr``: a precomputed :func:`screw_tcr` of the same case (else
     computed, and cached per contact input). ``transient=False`` skips the transient.
+
+    With ``[thermal.drag_torque] source = "operating_point"`` (the default) the balls' heat is
+    that of the coupled operating point, its fixed point solved on the network model and then
+    on ``model`` (``coupling`` of the result); the transient runs from ambient at that heat.
     """
+    spec, model = _checked(case, model, transient)
+    if spec.drag_torque.source != "operating_point":
+        return solve_field(case, model, tcr=tcr, transient=transient)
+    # imported here: the operating point solves its fields with this module
+    from ballscrew.analyses.operating_point import coupled_heat
+
     started = _time.perf_counter()
+    with recorded_warnings() as messages:
+        resolved, coupling, steady = coupled_heat(case, model)
+    field = steady if not transient else solve_field(resolved, model, tcr=tcr)
+    return dataclasses.replace(
+        field,
+        case=case,
+        coupling=coupling,
+        seconds=_time.perf_counter() - started,
+        warnings=tuple(dict.fromkeys((*messages, *field.warnings))),
+    )
+
+
+def _checked(case: Case, model: str | None, transient: bool) -> tuple[ThermalSpec, str]:
+    """The case's ``[thermal]`` and the model name, checked before any work."""
     case_with(case, "screw", "operating", "materials", "thermal")
     spec = thermal_spec(case)
     model = THERMAL_MODELS.check(spec.model if model is None else model)
     if transient:  # the step count before any work; the history's memory once the mesh is known
         check_transient(None, spec.transient.duration, spec.transient.time_step)
+    return spec, model
+
+
+def solve_field(
+    case: Case,
+    model: str | None = None,
+    *,
+    tcr: ScrewTCR | None = None,
+    transient: bool = True,
+) -> ThermalField:
+    """:func:`thermal_field` with the heat the case gives, its drag torque taken as it stands
+    (a resolved ``operating_point`` torque is ``thermal.drag_torque.torque``)."""
+    started = _time.perf_counter()
+    spec, model = _checked(case, model, transient)
     with recorded_warnings() as messages:
         problem, sources, convection, interfaces, speed = build_problem(case, tcr)
         check_mesh(spec, problem, model)
@@ -217,14 +285,15 @@ def thermal_field(
         patches = ball_patches(case, problem, tcr) if helical else None
         disc = build_model(model, problem, _mesh_options(spec), patches)
         tr = spec.transient
-        solution = simulate(
-            disc,
-            tr.duration if transient else None,
-            tr.time_step,
-            tr.snapshots,
-            spec.stroke.mode,
-            speed,
-        )
+        with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
+            solution = simulate(
+                disc,
+                tr.duration if transient else None,
+                tr.time_step,
+                tr.snapshots,
+                spec.stroke.mode,
+                speed,
+            )
         thermoelastic = None
         if model == "axisymmetric" and spec.thermoelastic_check:
             screw = case.materials.screw

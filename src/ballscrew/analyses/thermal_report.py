@@ -121,6 +121,17 @@ def summary(result: ThermalField) -> dict[str, Any]:
         "timing": {k: value(v, "s") for k, v in sol.seconds.items()}
         | {"total": value(result.seconds, "s")},
     }
+    coupling = result.coupling
+    if coupling is not None:
+        summary["operating_point"] = {
+            "friction_model": coupling.friction_model,
+            "friction_torque": value(coupling.friction_torque, "N*m"),
+            "heat": value(coupling.heat, "W"),
+            "heat_to_screw": value(coupling.heat_to_screw, "W"),
+            "contact_temperature": value(coupling.contact_temperature, "K"),
+            "viscosity": value(coupling.viscosity, "Pa*s"),
+            "iterations": coupling.iterations,
+        }
     if t is not None:
         summary["transient"] = {
             "duration": value(t.time[-1], "s"),
@@ -492,6 +503,7 @@ def sections(result: ThermalField) -> list[Section]:
         ),
         Section(
             "Heat sources (Q2–Q4)",
+            paragraphs=_coupling_text(result),
             tables=(
                 _table(
                     (
@@ -544,6 +556,20 @@ def sections(result: ThermalField) -> list[Section]:
         ),
         Section("Heat balance", tables=(_table(("quantity", "value"), balance),)),
     ]
+
+
+def _coupling_text(result: ThermalField) -> tuple[str, ...]:
+    """How the balls' heat was found: the coupled operating point, or the case's fixed heat."""
+    c = result.coupling
+    if c is None:
+        return ("The balls' heat is the fixed torque of [thermal.drag_torque] (not coupled).",)
+    viscosity = "a dry contact" if math.isnan(c.viscosity) else f"η = {1e3 * c.viscosity:.4g} mPa s"
+    return (
+        f"The balls' heat is that of the coupled operating point ({c.friction_model} friction "
+        f"model): {c.friction_torque:.4g} N·m, {c.heat:.4g} W ({c.heat_to_screw:.4g} W into the "
+        f"screw) with the lubricant at the contact temperature {_c(c.contact_temperature):.4g} °C "
+        f"({viscosity}), {c.iterations} fixed-point iterations on the {result.model} model.",
+    )
 
 
 def _table(header: tuple[str, ...], rows: list[list[object]]) -> Table:

@@ -176,6 +176,11 @@ class OperatingSpec(Model):
     speed: quantity(
         "angular_velocity", 'screw speed ω (rad/s; "1000 rpm" also works)', ge=0, le=MAX_SPEED
     ) = 0.0
+    coupled: bool = Field(
+        False,
+        description="TCR and kinematics take the lubricant at the temperature of the coupled "
+        "operating point (needs [thermal]); false: the [medium] values as given",
+    )
 
 
 BoxFactor = Annotated[float, Field(ge=1.05, le=5.0)]

@@ -84,13 +84,18 @@ class BearingSpec(Model):
 
 
 class DragTorqueSpec(Model):
-    """Friction torque of the ball screw itself, heat Q_bs = M_bs·ω (Q4)."""
+    """Friction torque of the ball screw itself, heat Q_bs = M_bs·ω (Q4).
+
+    ``operating_point`` (default): the torque and its split between screw and nut come from
+    the coupled operating point (``[friction]`` model, lubricant viscosity at the computed
+    temperature); ``[thermal] screw_heat_fraction`` splits the heat of the other sources.
+    """
 
     source: model_choice(
         DRAG_TORQUE_MODELS,
-        "catalogue preload torque K·F_p·L/(2π), a given torque, or the drag torque computed by "
-        "the ball kinematics model",
-    ) = "catalogue"
+        "friction torque of the coupled operating point (default), catalogue preload torque "
+        "K·F_p·L/(2π), a given torque, or the drag torque computed by the ball kinematics model",
+    ) = "operating_point"
     torque: quantity("torque", "drag torque M_bs for source = 'given'", ge=0, le=1e5) | None = None
 
     @model_validator(mode="after")

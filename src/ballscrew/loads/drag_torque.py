@@ -74,3 +74,18 @@ def ball_model_drag_torque(inputs: DragTorqueInputs) -> float:
     if inputs.ball_model is None:
         raise InputError("thermal.drag_torque.source", "kinematics", "a case with a ball model")
     return float(inputs.ball_model())
+
+
+@DRAG_TORQUE_MODELS.register(
+    "operating_point",
+    "coupled operating point: friction torque at the lubricant's viscosity at the computed "
+    "temperature",
+)
+def operating_point_drag_torque(inputs: DragTorqueInputs) -> float:
+    """The torque of the coupled operating point (the composer solves it and passes it as
+    ``given``)."""
+    if inputs.given is None:
+        raise InputError(
+            "thermal.drag_torque.source", "operating_point", "a torque solved by the composer"
+        )
+    return float(inputs.given)
