@@ -33,14 +33,14 @@ from numpy.typing import NDArray
 from ballscrew.analyses import operating_point_report
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_model, speed_limit_messages
-from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.parameters import ScrewParameters, library_entry
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.loads import preload_drag_torque
-from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
+from ballscrew.lubrication.lubricant_library import LibraryLubricant
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.wear.step import entrainment_speed
 
@@ -112,12 +112,10 @@ class OperatingPoint(Presented):
         return f"Operating point: {self.case.name}"
 
 
-def _library_lubricant(case: Case) -> Any:
-    """The library entry of the case's named lubricant whose laws apply (None: constants)."""
-    name = case.kinematics.lubricant
-    if name is not None and name in LUBRICANT_LIBRARY and case.medium.viscosity is None:
-        return LUBRICANT_LIBRARY[name]
-    return None
+def _library_lubricant(case: Case) -> LibraryLubricant | None:
+    """The case's lubricant whose laws against temperature apply (None: the constant
+    ``[medium]`` values, which a given ``[medium] viscosity`` selects)."""
+    return library_entry(case) if case.medium.viscosity is None else None
 
 
 def medium_law(case: Case) -> Callable[[float], tuple[float | None, float | None, float]]:
