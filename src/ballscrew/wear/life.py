@@ -34,6 +34,7 @@ import numpy as np
 
 from ballscrew.budget import check_count, check_memory, check_work
 from ballscrew.errors import InputError
+from ballscrew.progress import advance
 from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearOptions
@@ -328,8 +329,9 @@ def integrate_wear(
             nut_force_pair(setup.preload(float(state.depth.max())), level.axial_load),
             sampled,
         )
+        advance("wear", state.revolutions, ends[-1])
         if sampled or state.revolutions >= end * (1.0 - 1e-12):
-            log.info(
+            log.debug(
                 "wear: level %d/%d N = %.4g rev  h_max = %.4g µm  F_p = %.1f N  T = %.4f N m",
                 state.level + 1,
                 len(spec.programme),
