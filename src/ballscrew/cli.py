@@ -42,7 +42,9 @@ def main(
     verbose: Annotated[
         bool, typer.Option("--verbose", "-v", help="more output: every step of long work")
     ] = False,
-    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="only errors and the folder")] = False,
+    quiet: Annotated[
+        bool, typer.Option("--quiet", "-q", help="only errors and the folder")
+    ] = False,
     version: Annotated[
         bool, typer.Option("--version", callback=_version, is_eager=True, help="show version")
     ] = False,

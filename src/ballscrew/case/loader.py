@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import copy
-import math
 import difflib
+import math
 import os
 import stat
 import tomllib

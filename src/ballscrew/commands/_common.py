@@ -105,8 +105,12 @@ def command(function: Callable[..., Any]) -> Callable[..., Any]:
     """
     signature = inspect.signature(function, eval_str=True)
     extra = [
-        inspect.Parameter("verbose", inspect.Parameter.KEYWORD_ONLY, default=False, annotation=VerboseOpt),
-        inspect.Parameter("quiet", inspect.Parameter.KEYWORD_ONLY, default=False, annotation=QuietOpt),
+        inspect.Parameter(
+            "verbose", inspect.Parameter.KEYWORD_ONLY, default=False, annotation=VerboseOpt
+        ),
+        inspect.Parameter(
+            "quiet", inspect.Parameter.KEYWORD_ONLY, default=False, annotation=QuietOpt
+        ),
     ]
     parameters = [*signature.parameters.values(), *extra]
 
@@ -128,8 +132,14 @@ def progress_bar() -> Iterator[None]:
     """One rich progress bar with ETA on stderr for the :mod:`ballscrew.progress` reports of
     the block (only on a terminal, not with ``--quiet``)."""
     from rich.console import Console
-    from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn
-    from rich.progress import TimeElapsedColumn, TimeRemainingColumn
+    from rich.progress import (
+        BarColumn,
+        Progress,
+        TaskProgressColumn,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
 
     from ballscrew.progress import listening
 
@@ -159,7 +169,7 @@ def progress_bar() -> Iterator[None]:
 
 
 def parse_sets(texts: Sequence[str] | None) -> dict[str, Any]:
-    """The ``--set KEY=VALUE`` options as case overrides (see :func:`ballscrew.case.parse_assignments`)."""
+    """The ``--set KEY=VALUE`` options as case overrides (``ballscrew.case.parse_assignments``)."""
     from ballscrew.case import parse_assignments
 
     return parse_assignments(texts or (), "--set")

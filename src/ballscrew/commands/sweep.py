@@ -44,7 +44,9 @@ def sweep(
     out: OutOpt = Path("results/sweep"),
     scheduler: Annotated[
         str | None,
-        typer.Option(help="address of a running Dask scheduler (default: local)", metavar="ADDRESS"),
+        typer.Option(
+            help="address of a running Dask scheduler (default: local)", metavar="ADDRESS"
+        ),
     ] = None,
     workers: Annotated[int, typer.Option(min=1, help="local cluster workers", metavar="N")] = 2,
     retry_failed: Annotated[

@@ -32,6 +32,8 @@ def _kind(dotted: str, unit: str) -> str | None:
     name = dotted.rsplit(".", 1)[-1]
     if unit == "K" and "temperature" in name and "rise" not in name:
         return "temperature"
+    if not unit and ("revolutions" in name or name.endswith("_life")):  # counts of turns
+        return "revolutions"
     return KIND_OF_UNIT.get(unit)
 
 
