@@ -20,6 +20,7 @@ import json
 import shutil
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import xarray as xr
 
@@ -43,6 +44,16 @@ def result_warnings(result: AnalysisResult) -> list[str]:
     case = getattr(result, "case", None)
     implausible = implausible_values(case) if isinstance(case, Case) else []
     return list(dict.fromkeys([*implausible, *result.warnings]))
+
+
+def _headline_section(summary: dict[str, Any]) -> list[Section]:
+    """The report's table of headline numbers in engineering units (as on the console)."""
+    from ballscrew.results.headlines import headline_keys, headline_rows
+
+    rows = headline_rows(summary, headline_keys(str(summary["analysis"])))
+    if not rows:
+        return []
+    return [Section("Headline numbers", tables=[(["quantity", "value"], [list(r) for r in rows])])]
 
 
 def write_results(
@@ -74,7 +85,7 @@ def write_results(
         for stem, dataset in _datasets(result).items():
             write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
-        sections = inputs_warnings_sections(result.inputs, warnings)
+        sections = inputs_warnings_sections(result.inputs, warnings) + _headline_section(summary)
         for s in result.report():
             sections.append(
                 Section(
