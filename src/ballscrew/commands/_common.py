@@ -187,6 +187,41 @@ def export_formats(text: str | None) -> tuple[str, ...]:
     return formats
 
 
+def analyse(
+    name: str,
+    case_file: Path,
+    out: Path,
+    options: tuple[bool, list[str] | None, str | None],
+    run: Callable[[Any], Any],
+) -> None:
+    """The flow of a command on one case: read it with the ``--set`` values, ``run(case)``,
+    write the results folder of the result, export it and print its headlines.
+
+    ``options``: the command's ``(--force, --set, --export)``.
+    """
+    from ballscrew.case import load_case
+    from ballscrew.results import claim_output, write_results
+
+    force, sets, export = options
+    formats = export_formats(export)
+    case = load_case(case_file, parse_sets(sets))
+    with claim_output(out, command=name, force=force, inputs=[case_file]):
+        folder = write_results(run(case), out, case_file)
+        finish(folder, formats)
+
+
+def quantity_option(option: str, text: str | None, kind: str) -> float | None:
+    """The SI value of an option given with or without a unit (``--speed "1500 rpm"``)."""
+    from ballscrew.units import to_si
+
+    if text is None:
+        return None
+    try:
+        return to_si(text, kind)
+    except ValueError as exc:
+        raise InputError(option, text, str(exc)) from None
+
+
 def finish(folder: Path, formats: Sequence[str] = ()) -> None:
     """After a results folder is written: the exports, the headline numbers and the folder.
 

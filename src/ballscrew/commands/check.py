@@ -10,10 +10,8 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
-    parse_sets,
 )
 
 
@@ -27,12 +25,5 @@ def check(
 ) -> None:
     """Every design value of the screw with its margin (needs a [design] section)."""
     from ballscrew.analyses.design_check import design_check
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    with claim_output(out, command="check", force=force, inputs=[case_file]):
-        result = design_check(case)
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+    analyse("check", case_file, out, (force, set_, export), design_check)

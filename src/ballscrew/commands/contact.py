@@ -10,10 +10,8 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
-    parse_sets,
 )
 
 
@@ -27,12 +25,5 @@ def contact(
 ) -> None:
     """Solve the screw-side and nut-side contact of one ball of the loaded nut."""
     from ballscrew.analyses.ball_contact import solve_ball_contacts
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    with claim_output(out, command="contact", force=force, inputs=[case_file]):
-        result = solve_ball_contacts(case)
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+    analyse("contact", case_file, out, (force, set_, export), solve_ball_contacts)

@@ -13,10 +13,8 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
-    parse_sets,
 )
 
 
@@ -36,12 +34,5 @@ def duty(
 ) -> None:
     """A working day of thermal error: elongation and temperatures over the [[duty]] cycle."""
     from ballscrew.analyses.duty_thermal import thermal_duty
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    with claim_output(out, command="duty", force=force, inputs=[case_file]):
-        result = thermal_duty(case, model)
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+    analyse("duty", case_file, out, (force, set_, export), lambda case: thermal_duty(case, model))

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -13,11 +13,10 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
     log,
-    parse_sets,
+    quantity_option,
 )
 
 
@@ -44,26 +43,17 @@ def kinematics(
     import warnings
 
     from ballscrew.analyses.kinematics import run_kinematics
-    from ballscrew.case import load_case
-    from ballscrew.errors import InputError
     from ballscrew.kinematics.limits import SpeedLimitWarning
-    from ballscrew.results import claim_output, write_results
-    from ballscrew.units import to_si
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    omega = None
-    if speed is not None:
-        try:
-            omega = to_si(speed, "angular_velocity")
-        except ValueError as exc:
-            raise InputError("--speed", speed, str(exc)) from None
-    with claim_output(out, command="kinematics", force=force, inputs=[case_file]):
+    omega = quantity_option("--speed", speed, "angular_velocity")
+
+    def run(case: Any) -> Any:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", SpeedLimitWarning)
             result = run_kinematics(case, level=level, speed=omega)
         for item in caught:
             if issubclass(item.category, SpeedLimitWarning):
                 log.warning("warning: %s", item.message)
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+        return result
+
+    analyse("kinematics", case_file, out, (force, set_, export), run)

@@ -13,10 +13,9 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
-    parse_sets,
+    quantity_option,
 )
 
 
@@ -43,24 +42,9 @@ def operating_point(
 ) -> None:
     """The coupled steady state: friction torque, heat, efficiency, temperatures and film."""
     from ballscrew.analyses.operating_point import operating_point as solve
-    from ballscrew.case import load_case
-    from ballscrew.errors import InputError
-    from ballscrew.results import claim_output, write_results
-    from ballscrew.units import to_si
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    values = {}
-    for option, text, kind in (
-        ("--speed", speed, "angular_velocity"),
-        ("--axial-load", axial_load, "force"),
-    ):
-        if text is not None:
-            try:
-                values[option] = to_si(text, kind)
-            except ValueError as exc:
-                raise InputError(option, text, str(exc)) from None
-    with claim_output(out, command="operating-point", force=force, inputs=[case_file]):
-        result = solve(case, values.get("--speed"), values.get("--axial-load"))
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+    omega = quantity_option("--speed", speed, "angular_velocity")
+    load = quantity_option("--axial-load", axial_load, "force")
+    analyse(
+        "operating-point", case_file, out, (force, set_, export), lambda c: solve(c, omega, load)
+    )

@@ -13,10 +13,8 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
-    parse_sets,
 )
 
 
@@ -34,12 +32,5 @@ def tcr(
 ) -> None:
     """Thermal contact resistance of every contact, each nut and the whole screw."""
     from ballscrew.analyses.screw_tcr import screw_tcr
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    with claim_output(out, command="tcr", force=force, inputs=[case_file]):
-        result = screw_tcr(case, variant=variant)
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+    analyse("tcr", case_file, out, (force, set_, export), lambda c: screw_tcr(c, variant=variant))

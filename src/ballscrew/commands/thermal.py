@@ -13,10 +13,8 @@ from ballscrew.commands._common import (
     ForceOpt,
     OutOpt,
     SetOpt,
+    analyse,
     command,
-    export_formats,
-    finish,
-    parse_sets,
 )
 
 
@@ -36,12 +34,5 @@ def thermal(
 ) -> None:
     """Steady and transient temperatures, sensors and thermal elongation (needs [thermal])."""
     from ballscrew.analyses.thermal import thermal_field
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    with claim_output(out, command="thermal", force=force, inputs=[case_file]):
-        result = thermal_field(case, model=model)
-        folder = write_results(result, out, case_file)
-        finish(folder, formats)
+    analyse("thermal", case_file, out, (force, set_, export), lambda c: thermal_field(c, model))
