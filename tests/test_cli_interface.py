@@ -69,13 +69,22 @@ def test_the_known_bracketed_words_survive():
     assert "[design]" in flat(run("check", "--help").output)
 
 
-CASE_COMMANDS = [n for n in COMMANDS if n not in ("index", "surface")]
+#: Every command that reads a case file.
+CASE_COMMANDS = [
+    "calibrate", "check", "contact", "duty", "kinematics", "operating-point", "sweep", "tcr",
+    "thermal", "wear",
+]  # fmt: skip
 
 
 @pytest.mark.parametrize("name", CASE_COMMANDS)
 def test_every_case_command_takes_set_and_export(name):
     opts = {o for p in GROUP.commands[name].params for o in getattr(p, "opts", ())}
-    assert {"--set", "--export", "--quiet", "--verbose"} <= opts
+    assert {"--set", "--export", "--quiet", "--verbose", "-q", "-v"} <= opts
+
+
+def test_surface_takes_export_too():
+    opts = {o for p in GROUP.commands["surface"].params for o in getattr(p, "opts", ())}
+    assert {"--export", "--quiet"} <= opts
 
 
 @pytest.fixture

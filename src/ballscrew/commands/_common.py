@@ -165,7 +165,15 @@ def progress_bar() -> Iterator[None]:
         bar.update(task, completed=done, total=total)
 
     with bar, listening(listener):
-        yield
+        _BARS.append(bar)
+        try:
+            yield
+        finally:
+            _BARS.remove(bar)
+
+
+#: The progress bars shown now (finish() ends them before it prints).
+_BARS: list[Any] = []
 
 
 def parse_sets(texts: Sequence[str] | None) -> dict[str, Any]:
@@ -232,6 +240,8 @@ def finish(folder: Path, formats: Sequence[str] = ()) -> None:
         from ballscrew.results.export import export_results
 
         export_results(folder, formats)
+    for bar in _BARS:
+        bar.stop()  # the work is done: the bar leaves the terminal to the numbers
     if not quiet():
         for line in headline_lines(folder):
             typer.echo(line)
