@@ -20,6 +20,10 @@ __all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
 _GROUPS = {"steady", "numerical", "recommended", "heat_balance", "contacts", "nuts", "margins"}
 
 
+#: Lengths that are small displacements (shown in µm whatever their size).
+_DISPLACEMENTS = ("depth", "elongation", "displacement", "approach", "deflection")
+
+
 def label_of(dotted: str) -> str:
     """A readable label of a dotted summary key: ``nuts.nut1.orbital_speed`` → ``nut1 orbital
     speed``, ``contacts.screw.numerical.peak_pressure`` → ``screw peak pressure``."""
@@ -34,6 +38,8 @@ def _kind(dotted: str, unit: str) -> str | None:
         return "temperature"
     if not unit and ("revolutions" in name or name.endswith("_life")):  # counts of turns
         return "revolutions"
+    if unit == "m" and any(word in name for word in _DISPLACEMENTS):
+        return "displacement"  # always in µm, as a machine-tool engineer reads them
     return KIND_OF_UNIT.get(unit)
 
 
