@@ -77,7 +77,7 @@ def set_verbosity(verbose: bool, quiet: bool) -> None:
         logging.getLogger(noisy).setLevel(logging.DEBUG if verbose else logging.ERROR)
 
 
-def quiet() -> bool:
+def is_quiet() -> bool:
     """True when only errors and the results folder are to be printed."""
     return not log.isEnabledFor(logging.INFO)
 
@@ -153,7 +153,7 @@ def progress_bar() -> Iterator[None]:
         TimeRemainingColumn(),
         console=console,
         transient=True,
-        disable=quiet() or not console.is_terminal,
+        disable=is_quiet() or not console.is_terminal,
     )
     task = bar.add_task("", total=None, visible=False)
     state = {"task": "", "done": 0.0}
@@ -242,7 +242,7 @@ def finish(folder: Path, formats: Sequence[str] = ()) -> None:
         export_results(folder, formats)
     for bar in _BARS:
         bar.stop()  # the work is done: the bar leaves the terminal to the numbers
-    if not quiet():
+    if not is_quiet():
         for line in headline_lines(folder):
             typer.echo(line)
     typer.echo(f"results: {folder}")
