@@ -329,3 +329,24 @@ def test_sweep_points_equal_the_api_at_each_point(tmp_path):
                 ("F2", api.nut_forces[1]),
             ):
                 assert float(point[key]) == pytest.approx(value, rel=1e-12, abs=0), (load, key)
+
+
+def test_set_on_the_command_line_gives_the_numbers_of_python_overrides(tmp_path):
+    """``--set KEY=VALUE`` (units included) is ``load_case(path, {KEY: VALUE})`` in Python."""
+    from ballscrew.analyses.operating_point import operating_point
+
+    case = write_case(tmp_path, GAO, QUICK)
+    sets = {
+        "operating.speed": "1500 rpm",
+        "operating.axial_load": "2 kN",
+        "friction.model": "ball_model",
+    }
+    argv = [word for key, text in sets.items() for word in ("--set", f"{key}={text}")]
+    summary = run_cli("operating-point", case, *argv, "--out", tmp_path / "cli")
+    api = operating_point(ballscrew.load_case(case, sets))
+    # the case runs at 1000 rpm, 0 N and the catalogue friction model: --set changed all three
+    assert summary["speed"]["value"] == pytest.approx(1500 * np.pi / 30, rel=1e-12)
+    assert summary["axial_load"]["value"] == 2000.0
+    assert summary["inputs"]["friction"]["model"] == "ball_model"
+    for key in ("friction_torque", "heat", "nut_temperature", "screw_temperature", "axial_load"):
+        assert getattr(api, key) == pytest.approx(lookup(summary, key), rel=1e-12, abs=0), key

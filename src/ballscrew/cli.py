@@ -8,6 +8,7 @@ did not converge) are one line on stderr and exit status 2, never a traceback.
 
 from __future__ import annotations
 
+import inspect
 import logging
 import pkgutil
 import warnings
@@ -17,7 +18,7 @@ from typing import Annotated, TextIO
 import typer
 
 from ballscrew import __version__, commands
-from ballscrew.commands._common import log
+from ballscrew.commands._common import set_verbosity
 
 app = typer.Typer(
     name="ballscrew",
@@ -26,6 +27,7 @@ app = typer.Typer(
     no_args_is_help=True,
     pretty_exceptions_enable=False,
     add_completion=False,
+    rich_markup_mode=None,  # help texts as written: rich markup would eat "[thermal]"
 )
 
 
@@ -37,18 +39,19 @@ def _version(show: bool) -> None:
 
 @app.callback()
 def main(
-    verbose: Annotated[bool, typer.Option("--verbose", "-v", help="more log output")] = False,
-    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="errors only")] = False,
+    verbose: Annotated[
+        bool, typer.Option("--verbose", "-v", help="more output: every step of long work")
+    ] = False,
+    quiet: Annotated[
+        bool, typer.Option("--quiet", "-q", help="only errors and the folder")
+    ] = False,
     version: Annotated[
         bool, typer.Option("--version", callback=_version, is_eager=True, help="show version")
     ] = False,
 ) -> None:
     """Set up logging to stderr (data and reports go to files)."""
-    level = logging.DEBUG if verbose else logging.WARNING if quiet else logging.INFO
     logging.basicConfig(level=logging.WARNING, format="%(message)s", force=True)
-    log.setLevel(level)
-    for noisy in ("distributed", "dask"):
-        logging.getLogger(noisy).setLevel(logging.DEBUG if verbose else logging.ERROR)
+    set_verbosity(verbose, quiet)
     warnings.showwarning = _show_warning
 
 
@@ -64,11 +67,17 @@ def _show_warning(
     typer.echo(f"warning: {message}", err=True)
 
 
+def _short_help(function: object) -> str:
+    """The first line of a command's docstring, shown whole in the list of commands."""
+    return (inspect.getdoc(function) or "").split("\n", 1)[0]
+
+
 # Every module ballscrew.commands.<name> (not _private) is the subcommand <name>.
 for _module in pkgutil.iter_modules(commands.__path__):
     if not _module.name.startswith("_"):
         _name = _module.name
-        app.command()(getattr(import_module(f"ballscrew.commands.{_name}"), _name))
+        _function = getattr(import_module(f"ballscrew.commands.{_name}"), _name)
+        app.command(short_help=_short_help(_function))(_function)
 
 if __name__ == "__main__":  # pragma: no cover
     app()

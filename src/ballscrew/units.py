@@ -198,3 +198,152 @@ def to_si(value: object, kind: str) -> float:
     if not math.isfinite(result):
         raise ValueError(f"{_short(value)} cannot be expressed as a finite number of {unit_name}")
     return result
+
+
+# --- Display in engineering units ---------------------------------------------------------------
+
+
+#: Engineering display units of each kind: (symbol, SI value of one display unit) from the
+#: smallest to the largest; a value is shown in the largest unit it reaches (at least 1), so
+#: 9.633e8 Pa reads 963.3 MPa. One spelling each: µm, N·m, °C, rpm.
+DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
+    "length": (("nm", 1e-9), ("µm", 1e-6), ("mm", 1e-3), ("m", 1.0)),
+    "displacement": (("µm", 1e-6),),
+    "area": (("mm²", 1e-6), ("m²", 1.0)),
+    "angle": (("°", math.pi / 180.0),),
+    "force": (("N", 1.0), ("kN", 1e3), ("MN", 1e6)),
+    "pressure": (("Pa", 1.0), ("kPa", 1e3), ("MPa", 1e6), ("GPa", 1e9)),
+    "angular_velocity": (("rpm", math.pi / 30.0),),
+    "velocity": (("mm/s", 1e-3), ("m/s", 1.0)),
+    "temperature": (("°C", 1.0),),
+    "temperature_difference": (("K", 1.0),),
+    "time": (("s", 1.0), ("min", 60.0), ("h", 3600.0)),
+    "power": (("W", 1.0), ("kW", 1e3)),
+    "torque": (("N·m", 1.0),),
+    "stiffness": (("N/µm", 1e6),),
+    "viscosity": (("mPa·s", 1e-3), ("Pa·s", 1.0)),
+    "thermal_resistance": (("K/W", 1.0),),
+    "area_resistance": (("m²·K/W", 1.0),),
+    "heat_transfer_coefficient": (("W/(m²·K)", 1.0),),
+    "thermal_conductivity": (("W/(m·K)", 1.0),),
+    "energy": (("J", 1.0), ("kJ", 1e3), ("MJ", 1e6)),
+    "revolutions": (("rev", 1.0),),
+    "dimensionless": (("", 1.0),),
+}
+
+#: Largest magnitude (SI) of each kind that is solver noise, not data: far below any physical
+#: value of a ball screw (1e-9 rpm, 1e-15 m) and far above float round-off of typical values.
+NOISE_FLOOR: dict[str, float] = {
+    "length": 1e-15,
+    "displacement": 1e-15,
+    "angular_velocity": 1e-10,
+    "velocity": 1e-12,
+    "force": 1e-9,
+    "torque": 1e-12,
+    "power": 1e-9,
+    "angle": 1e-12,
+}
+
+#: Kind of a summary value from its SI unit (the unit spelling of ``summary.json``).
+KIND_OF_UNIT: dict[str, str] = {
+    "m": "length",
+    "m^2": "area",
+    "rad": "angle",
+    "N": "force",
+    "Pa": "pressure",
+    "rad/s": "angular_velocity",
+    "m/s": "velocity",
+    "K": "temperature_difference",
+    "s": "time",
+    "W": "power",
+    "J": "energy",
+    "N*m": "torque",
+    "N/m": "stiffness",
+    "Pa*s": "viscosity",
+    "K/W": "thermal_resistance",
+    "m^2*K/W": "area_resistance",
+    "W/(m^2*K)": "heat_transfer_coefficient",
+    "W/(m*K)": "thermal_conductivity",
+    "rev": "revolutions",
+    "": "dimensionless",
+}
+
+_CELSIUS = 273.15
+_EXPONENT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def format_number(value: float, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant figures, plainly written (``74.24``, ``12000``,
+    ``0.1198``); beyond 1e-3 … 1e6 as ``1.44×10⁶``. Trailing zeros are dropped."""
+    value = float(value)
+    if not math.isfinite(value):
+        return str(value)
+    if value == 0.0:
+        return "0"
+    exponent = math.floor(math.log10(abs(value)))
+    rounded = round(value, digits - 1 - exponent)
+    if rounded != 0.0:
+        exponent = math.floor(math.log10(abs(rounded)))  # 9.9996 → 10.00 moves up a decade
+    if -3 <= exponent < 6:
+        text = f"{rounded:.{max(0, digits - 1 - exponent)}f}"
+        return text.rstrip("0").rstrip(".") if "." in text else text
+    mantissa = f"{rounded / 10.0**exponent:.{digits - 1}f}".rstrip("0").rstrip(".")
+    return f"{mantissa}×10{str(exponent).translate(_EXPONENT)}"
+
+
+def display_unit(kind: str, magnitude: float = 1.0) -> tuple[str, float]:
+    """(symbol, SI value of one symbol) in which to show SI values of ``kind`` up to about
+    ``magnitude`` — for a table column or a plot axis, divide the values by the second item.
+
+    ``kind`` is a key of :data:`DISPLAY_UNITS` or an SI unit of :data:`KIND_OF_UNIT`. For
+    ``temperature`` the values must first be shifted by −273.15 (see :func:`to_display`).
+    """
+    units = DISPLAY_UNITS[KIND_OF_UNIT.get(kind, kind)]
+    size = abs(float(magnitude))
+    chosen = units[0]
+    for symbol, scale in units:
+        if size >= scale * (1.0 - 1e-12):
+            chosen = (symbol, scale)
+    return chosen
+
+
+def to_display(values: object, kind: str, magnitude: float | None = None) -> tuple[object, str]:
+    """(values in the display unit, its symbol): SI ``values`` (a number or a numpy array) of
+    ``kind`` for a plot axis or a table; ``magnitude`` picks the unit (default: the largest
+    value)."""
+    import numpy as np
+
+    array = np.asarray(values, dtype=float)
+    if kind == "temperature":
+        return array - _CELSIUS, "°C"
+    if magnitude is None:
+        finite = np.abs(array[np.isfinite(array)])
+        magnitude = float(finite.max()) if finite.size else 1.0
+    symbol, scale = display_unit(kind, magnitude)
+    return array / scale, symbol
+
+
+def format_quantity(
+    value: float, kind: str, digits: int = 4, zero_below: float | None = None
+) -> str:
+    """``value`` (SI) of ``kind`` in engineering units, e.g. ``format_quantity(9.633e8,
+    "pressure")`` → ``"963.3 MPa"``, ``format_quantity(74.24e-6, "displacement")`` →
+    ``"74.24 µm"``, ``format_quantity(293.15, "temperature")`` → ``"20 °C"``.
+
+    ``kind``: a key of :data:`DISPLAY_UNITS` or an SI unit of :data:`KIND_OF_UNIT`. A value
+    smaller in magnitude than ``zero_below`` (default: the kind's :data:`NOISE_FLOOR`) is
+    solver noise and shown as 0.
+    """
+    kind = KIND_OF_UNIT.get(kind, kind)
+    if kind not in DISPLAY_UNITS:
+        raise ValueError(f"unknown kind {kind!r}; one of {', '.join(DISPLAY_UNITS)}")
+    value = float(value)
+    floor = NOISE_FLOOR.get(kind, 0.0) if zero_below is None else zero_below
+    if kind == "temperature":
+        number, symbol = value - _CELSIUS, "°C"
+    elif abs(value) < floor:
+        number, symbol = 0.0, display_unit(kind)[0]
+    else:
+        symbol, scale = display_unit(kind, value)
+        number = value / scale
+    return f"{format_number(number, digits)} {symbol}".rstrip()

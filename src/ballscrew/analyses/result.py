@@ -79,7 +79,7 @@ class Figure:
 
 @dataclass(frozen=True)
 class Table:
-    """A report table: a header row and rows of cells (floats are printed to 6 digits)."""
+    """A report table: a header row and rows of cells (floats to four significant figures)."""
 
     header: tuple[str, ...]
     rows: tuple[tuple[object, ...], ...]

@@ -1,5 +1,6 @@
 """Case files: pydantic models of a ball-screw case and the TOML loader."""
 
+from ballscrew.case.assignments import parse_assignments
 from ballscrew.case.loader import CaseError, case_from_dict, load_case, with_overrides
 from ballscrew.case.models import (
     Case,
@@ -26,5 +27,6 @@ __all__ = [
     "TCRSpec",
     "case_from_dict",
     "load_case",
+    "parse_assignments",
     "with_overrides",
 ]

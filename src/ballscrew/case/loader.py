@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import copy
 import difflib
+import math
 import os
 import stat
 import tomllib
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -117,9 +119,14 @@ def case_from_dict(
         raise CaseError([f"expected tables of keys, not {type(raw).__name__}"], source)
     data = apply_overrides(raw, overrides or {}, source)
     try:
-        return Case.model_validate(data)
+        case = Case.model_validate(data)
     except ValidationError as exc:
         raise CaseError(describe_errors(exc), source) from None
+    from ballscrew.case.plausibility import ImplausibleValueWarning, implausible_values
+
+    for message in implausible_values(case):
+        warnings.warn(f"{source}: {message}", ImplausibleValueWarning, stacklevel=2)
+    return case
 
 
 def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:
@@ -332,6 +339,26 @@ def _range_text(loc: tuple[Any, ...], spec: FieldSpec) -> str:
     return f"allowed range is {_allowed_range(loc)}{unit_text}{meaning}"
 
 
+def _unit_hint(loc: tuple[Any, ...], spec: FieldSpec, given: Any) -> str:
+    """For a number given without a unit: the unit in which it would be in range, if any."""
+    from ballscrew.case.plausibility import unit_hint
+
+    if isinstance(given, bool) or not isinstance(given, int | float) or not spec.kind:
+        return ""
+    bounds = [_bound_attrs(c) for c in field_spec(loc).constraints]
+
+    def in_range(value: float) -> bool:
+        return all(
+            value > b.get("gt", -math.inf)
+            and value >= b.get("ge", -math.inf)
+            and value < b.get("lt", math.inf)
+            and value <= b.get("le", math.inf)
+            for b in bounds
+        )
+
+    return unit_hint(float(given), spec.kind, in_range)
+
+
 def _describe(err: dict[str, Any]) -> str:
     """One readable line for one pydantic error."""
     loc = tuple(k for k in err["loc"] if not isinstance(k, int) or k >= 0)
@@ -348,7 +375,8 @@ def _describe(err: dict[str, Any]) -> str:
         allowed = list(model.model_fields) if model else []
         return unknown_key_message(dotted, str(loc[-1]), allowed, parent.dotted or "the case")
     if kind in _BOUNDS:
-        return f"{dotted} = {err['input']!r} is not allowed: {_range_text(loc, spec)}"
+        hint = _unit_hint(loc, spec, err["input"])
+        return f"{dotted} = {err['input']!r} is not allowed: {_range_text(loc, spec)}{hint}"
     if kind == "literal_error":
         expected = err["ctx"]["expected"]
         return f"{dotted} = {err['input']!r} is not allowed: it must be one of {expected}"

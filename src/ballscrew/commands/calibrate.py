@@ -7,22 +7,34 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import (
+    CaseArg,
+    ExportOpt,
+    ForceOpt,
+    OutOpt,
+    SetOpt,
+    command,
+    export_formats,
+    finish,
+    log,
+    parse_sets,
+)
 
 MeasuredOpt = Annotated[
     Path,
     typer.Option(
         "--measured",
         "-m",
-        help="CSV with a header row: 'revolutions' and one of 'friction_torque' (N*m), "
-        "'preload' (N), 'wear_depth' (m); units in brackets are converted, e.g. 'wear_depth [um]'",
+        help="CSV with a header row: 'revolutions' and one of 'friction_torque' (N·m), "
+        "'preload' (N), 'wear_depth' (m); units in brackets are converted, e.g. 'wear_depth [µm]'",
         dir_okay=False,
+        metavar="CSV_FILE",
         show_default=False,
     ),
 ]
 
 
-@user_errors_exit_2
+@command
 def calibrate(
     case_file: CaseArg,
     measured: MeasuredOpt,
@@ -35,6 +47,8 @@ def calibrate(
         ),
     ] = False,
     force: ForceOpt = False,
+    set_: SetOpt = None,
+    export: ExportOpt = None,
 ) -> None:
     """Fit the wear coefficient (and the torque scale) to a measured history."""
     from dataclasses import replace
@@ -45,21 +59,13 @@ def calibrate(
     from ballscrew.case import load_case
     from ballscrew.results import claim_output, value, write_results
 
-    case = load_case(case_file)
+    formats = export_formats(export)
+    case = load_case(case_file, parse_sets(set_))
     data = read_measured(measured, min_points=3 if fit_torque_scale else 2)
     inputs = [case_file, measured]
     with claim_output(out, command="calibrate", force=force, inputs=inputs):
         log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
         result = fit(case, data, fit_torque_scale=fit_torque_scale)
-        log.info(
-            "K = %.4e ± %.2e, torque scale %.4g, RMS residual %.3g %s (%d model runs)",
-            result.wear_coefficient,
-            result.standard_error,
-            result.torque_scale,
-            result.rms_residual,
-            result.unit,
-            result.evaluations,
-        )
         options: dict[str, object] = {
             "case_file": str(case_file),
             "measured_file": str(measured),
@@ -72,4 +78,4 @@ def calibrate(
         result = replace(result, case=case, options=options)
         fit_csv = fit_table(result).encode("utf-8")  # the fit table for spreadsheets
         folder = write_results(result, out, case_file, {"fit.csv": fit_csv})
-        log.info("wrote %s", folder / "report.html")
+        finish(folder, formats)

@@ -4,18 +4,26 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import (
+    CaseArg,
+    ExportOpt,
+    ForceOpt,
+    OutOpt,
+    SetOpt,
+    analyse,
+    command,
+)
 
 
-@user_errors_exit_2
-def check(case_file: CaseArg, out: OutOpt = Path("results/check"), force: ForceOpt = False) -> None:
+@command
+def check(
+    case_file: CaseArg,
+    out: OutOpt = Path("results/check"),
+    force: ForceOpt = False,
+    set_: SetOpt = None,
+    export: ExportOpt = None,
+) -> None:
     """Every design value of the screw with its margin (needs a [design] section)."""
     from ballscrew.analyses.design_check import design_check
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
 
-    case = load_case(case_file)
-    with claim_output(out, command="check", force=force, inputs=[case_file]):
-        result = design_check(case)
-        folder = write_results(result, out, case_file)
-    log.info("wrote %s", folder / "report.html")
+    analyse("check", case_file, out, (force, set_, export), design_check)

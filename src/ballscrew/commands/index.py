@@ -8,13 +8,15 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import log, user_errors_exit_2
+from ballscrew.commands._common import command, log
 
 
-@user_errors_exit_2
+@command
 def index(
-    folder: Annotated[Path, typer.Argument(help="folder holding results folders")],
-    title: Annotated[str, typer.Option(help="page title")] = "ballscrew results",
+    folder: Annotated[
+        Path, typer.Argument(help="folder holding results folders", metavar="FOLDER")
+    ],
+    title: Annotated[str, typer.Option(help="page title", metavar="TEXT")] = "ballscrew results",
 ) -> None:
     """Write FOLDER/index.html: headline numbers, a figure and a link per results folder."""
     from ballscrew.errors import InputError

@@ -7,50 +7,44 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import (
+    CaseArg,
+    ExportOpt,
+    ForceOpt,
+    OutOpt,
+    SetOpt,
+    analyse,
+    command,
+    quantity_option,
+)
 
 
-@user_errors_exit_2
+@command
 def operating_point(
     case_file: CaseArg,
     out: OutOpt = Path("results/operating-point"),
     force: ForceOpt = False,
     speed: Annotated[
         str | None,
-        typer.Option(help='screw speed, e.g. "1500 rpm" or 157.1 (rad/s); default: the case\'s'),
+        typer.Option(
+            help='screw speed, e.g. "1500 rpm" or 157.1 (rad/s); default: the case\'s',
+            metavar="SPEED",
+        ),
     ] = None,
     axial_load: Annotated[
         str | None,
-        typer.Option("--axial-load", help='axial load, e.g. "2 kN"; default: the case\'s'),
+        typer.Option(
+            "--axial-load", help='axial load, e.g. "2 kN"; default: the case\'s', metavar="FORCE"
+        ),
     ] = None,
+    set_: SetOpt = None,
+    export: ExportOpt = None,
 ) -> None:
     """The coupled steady state: friction torque, heat, efficiency, temperatures and film."""
     from ballscrew.analyses.operating_point import operating_point as solve
-    from ballscrew.case import load_case
-    from ballscrew.errors import InputError
-    from ballscrew.results import claim_output, write_results
-    from ballscrew.units import to_si
 
-    case = load_case(case_file)
-    values = {}
-    for option, text, kind in (
-        ("--speed", speed, "angular_velocity"),
-        ("--axial-load", axial_load, "force"),
-    ):
-        if text is not None:
-            try:
-                values[option] = to_si(text, kind)
-            except ValueError as exc:
-                raise InputError(option, text, str(exc)) from None
-    with claim_output(out, command="operating-point", force=force, inputs=[case_file]):
-        result = solve(case, values.get("--speed"), values.get("--axial-load"))
-        log.info(
-            "M = %.4g N m, heat = %.4g W, efficiency %.3f, nut %.1f °C, screw %.1f °C",
-            result.friction_torque,
-            result.heat,
-            result.efficiency,
-            result.nut_temperature - 273.15,
-            result.screw_temperature - 273.15,
-        )
-        folder = write_results(result, out, case_file)
-    log.info("wrote %s", folder / "report.html")
+    omega = quantity_option("--speed", speed, "angular_velocity")
+    load = quantity_option("--axial-load", axial_load, "force")
+    analyse(
+        "operating-point", case_file, out, (force, set_, export), lambda c: solve(c, omega, load)
+    )

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import ForceOpt, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import ExportOpt, ForceOpt, OutOpt, command, export_formats, finish
 
 ProfileArg = Annotated[
     Path,
@@ -15,6 +15,7 @@ ProfileArg = Annotated[
         help="measured profile: CSV/text (x, z or z only) or ISO 25178-71/BCR SDF",
         dir_okay=False,
         show_default=False,
+        metavar="PROFILE_FILE",
     ),
 ]
 
@@ -28,28 +29,34 @@ def _length(text: str | None, option: str) -> float | None:
     try:
         return to_si(text, "length")
     except ValueError as exc:
-        raise InputError(option, text, f"a length such as '0.5 um' ({exc})") from None
+        raise InputError(option, text, f"a length such as '0.5 µm' ({exc})") from None
 
 
-@user_errors_exit_2
+@command
 def surface(
     profile_file: ProfileArg,
     out: OutOpt = Path("results/surface"),
     spacing: Annotated[
         str | None,
-        typer.Option(help="sampling interval of a one-column text file, e.g. '0.5 um'"),
+        typer.Option(
+            help="sampling interval of a one-column text file, e.g. '0.5 µm'", metavar="LENGTH"
+        ),
     ] = None,
     resolution: Annotated[
         str | None,
-        typer.Option(help="instrument lateral resolution if coarser than the spacing"),
+        typer.Option(
+            help="instrument lateral resolution if coarser than the spacing", metavar="LENGTH"
+        ),
     ] = None,
-    gamma: Annotated[float, typer.Option(help="W-M frequency ratio γ")] = 1.5,
+    gamma: Annotated[float, typer.Option(help="W-M frequency ratio γ", metavar="NUMBER")] = 1.5,
     force: ForceOpt = False,
+    export: ExportOpt = None,
 ) -> None:
     """Fractal dimension D and roughness G by power spectrum and structure function."""
     from ballscrew.analyses.surface import surface_characterisation
     from ballscrew.results import claim_output, write_results
 
+    formats = export_formats(export)
     with claim_output(out, command="surface", force=force, inputs=[profile_file]):
         result = surface_characterisation(
             profile_file,
@@ -57,8 +64,5 @@ def surface(
             resolution=_length(resolution, "--resolution"),
             gamma=gamma,
         )
-        for f in (result.fit.psd, result.fit.structure_function):
-            if f is not None:
-                log.info("%s: D = %.4f, G = %.4g m (R² = %.4f)", f.method, f.D, f.G, f.r_squared)
         folder = write_results(result, out)
-    log.info("wrote %s", folder / "report.html")
+        finish(folder, formats)

@@ -7,53 +7,80 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import ForceOpt, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import (
+    ExportOpt,
+    ForceOpt,
+    OutOpt,
+    SetOpt,
+    command,
+    export_formats,
+    finish,
+    parse_sets,
+)
 
 
-@user_errors_exit_2
+@command
 def sweep(
     case_file: Annotated[
-        Path, typer.Argument(help="case file, or sweep file with a [sweep] table", dir_okay=False)
+        Path,
+        typer.Argument(
+            help="case file, or sweep file with a [sweep] table",
+            dir_okay=False,
+            metavar="CASE_FILE",
+        ),
     ],
     vary: Annotated[
         list[str] | None,
-        typer.Option(help="KEY=START:STOP:NUM or KEY=V1,V2,... (repeat for a grid)"),
+        typer.Option(
+            help="KEY=START:STOP:NUM or KEY=V1,V2,... with or without units, e.g. "
+            "--vary 'operating.speed=500 rpm:3000 rpm:6' (repeat for a grid)",
+            metavar="KEY=RANGE",
+        ),
     ] = None,
     analysis: Annotated[
-        str | None, typer.Option(help="analysis run at each point (default: tcr)")
+        str | None,
+        typer.Option(help="analysis run at each point (default: tcr)", metavar="NAME"),
     ] = None,
     out: OutOpt = Path("results/sweep"),
     scheduler: Annotated[
-        str | None, typer.Option(help="address of a running Dask scheduler (default: local)")
+        str | None,
+        typer.Option(
+            help="address of a running Dask scheduler (default: local)", metavar="ADDRESS"
+        ),
     ] = None,
-    workers: Annotated[int, typer.Option(min=1, help="local cluster workers")] = 2,
+    workers: Annotated[int, typer.Option(min=1, help="local cluster workers", metavar="N")] = 2,
     retry_failed: Annotated[
         bool, typer.Option(help="recompute points that failed in an earlier run")
     ] = False,
     force: ForceOpt = False,
+    set_: SetOpt = None,
+    export: ExportOpt = None,
 ) -> None:
     """Run an analysis over a grid of case values on Dask; re-runs skip finished points."""
-    from ballscrew.case import CaseError, load_case
+    from ballscrew.case import CaseError, load_case, with_overrides
+    from ballscrew.progress import advance
     from ballscrew.results.folder import claim_output, prepare_sweep_folder
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
     from ballscrew.sweep.registry import get_analysis
     from ballscrew.sweep.spec import check_sweep_size, is_sweep_file, load_sweep, merge_axes
 
+    formats = export_formats(export)
+    overrides = parse_sets(set_)
     extra = [parse_axis(text) for text in vary or []]
     if is_sweep_file(case_file):
         spec = load_sweep(case_file)
-        case, axes = spec.case, merge_axes(spec.axes, extra)
+        case, axes = with_overrides(spec.case, overrides), merge_axes(spec.axes, extra)
         name = analysis or spec.analysis or "tcr"
     else:
-        case, axes, name = load_case(case_file), tuple(extra), analysis or "tcr"
+        case, axes, name = load_case(case_file, overrides), tuple(extra), analysis or "tcr"
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     check_sweep_size(axes)
     function = get_analysis(name)
 
     def progress(done: int, total: int) -> None:
-        log.info("sweep: %d/%d points done", done, total)
+        advance("sweep points", done, total)
 
     with claim_output(out, command="sweep", force=force, inputs=[case_file]) as folder:
         prepare_sweep_folder(folder)
@@ -61,4 +88,4 @@ def sweep(
             case, axes, function, name, folder, scheduler, workers, progress, retry_failed
         )
         write_sweep(dataset, folder, computed, case, axes)
-    log.info("wrote %s", folder / "report.html")
+        finish(folder, formats)

@@ -7,7 +7,18 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, ForceOpt, OutOpt, log, user_errors_exit_2
+from ballscrew.commands._common import (
+    CaseArg,
+    ExportOpt,
+    ForceOpt,
+    OutOpt,
+    SetOpt,
+    command,
+    export_formats,
+    finish,
+    log,
+    parse_sets,
+)
 
 
 def checkpoint_path(out: Path) -> Path:
@@ -16,7 +27,7 @@ def checkpoint_path(out: Path) -> Path:
     return out.parent / f".{out.name}.wear-state.npz"
 
 
-@user_errors_exit_2
+@command
 def wear(
     case_file: CaseArg,
     out: OutOpt = Path("results/wear"),
@@ -28,6 +39,8 @@ def wear(
         ),
     ] = True,
     force: ForceOpt = False,
+    set_: SetOpt = None,
+    export: ExportOpt = None,
 ) -> None:
     """Wear profile of the screw raceway, preload and drag torque versus revolutions."""
     from ballscrew.analyses.wear import wear_life
@@ -36,7 +49,8 @@ def wear(
     from ballscrew.results import claim_output, write_results
     from ballscrew.results.folder import writing
 
-    case = load_case(case_file)
+    formats = export_formats(export)
+    case = load_case(case_file, parse_sets(set_))
     with claim_output(out, command="wear", force=force, inputs=[case_file]) as path, writing(path):
         state = checkpoint_path(out)
         if not resume:
@@ -49,15 +63,8 @@ def wear(
             log.warning("the checkpoint %s is from another case; starting afresh", state)
             state.unlink(missing_ok=True)
             life = wear_life(case, checkpoint=state)
-        log.info(
-            "h_max = %.4g µm, F_p = %.1f N, T = %.4f N m after %.4g rev",
-            1e6 * life.max_wear_depth[-1],
-            life.preload[-1],
-            life.friction_torque[-1],
-            life.revolutions[-1],
-        )
         # the final state, for a later run to continue from
         extra = {"state.npz": state.read_bytes()} if state.is_file() else {}
         folder = write_results(life, out, case_file, extra)
         state.unlink(missing_ok=True)
-        log.info("wrote %s", folder / "report.html")
+        finish(folder, formats)

@@ -14,6 +14,7 @@ from ballscrew.analyses.result import Analysis
 from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
 from ballscrew.results.folder import SUMMARY_NAME
+from ballscrew.results.headlines import headline_rows
 from ballscrew.results.report import Section, write_report
 
 HEADLINES = 6
@@ -35,37 +36,17 @@ def _descriptor(kind: str) -> Analysis | None:
     return ANALYSES[kind] if kind in ANALYSES.names else None
 
 
-def _format(name: str, entry: Any) -> str | None:
-    if isinstance(entry, dict) and set(entry) == {"value", "unit"}:
-        entry, unit = entry["value"], entry["unit"]
-    else:
-        unit = ""
-    if isinstance(entry, int | float) and not isinstance(entry, bool):
-        try:
-            return f"{name} = {float(entry):.4g} {_text(unit)}".rstrip()
-        except OverflowError:  # an integer beyond float range
-            return None
-    return None
-
-
-def _lookup(summary: dict[str, Any], dotted: str) -> Any:
-    node: Any = summary
-    for key in dotted.split("."):
-        if not isinstance(node, dict) or key not in node:
-            return None
-        node = node[key]
-    return node
-
-
 def _headlines(summary: dict[str, Any], analysis: str) -> list[str]:
-    """'name = value unit' for the analysis' headlines (or its first top-level scalars)."""
+    """'label = value unit' for the analysis' headlines (or its first top-level numbers)."""
     descriptor = _descriptor(analysis)
-    if descriptor is not None and descriptor.headlines:
-        pairs = [(".".join(p.split(".")[-2:]), _lookup(summary, p)) for p in descriptor.headlines]
-    else:
-        pairs = list(summary.items())
-    lines = [line for name, entry in pairs if (line := _format(name, entry))]
-    return lines[:HEADLINES]
+    keys = descriptor.headlines if descriptor is not None else ()
+    rows = headline_rows(summary, keys, HEADLINES, label=_short_key)
+    return [f"{label} = {text}" for label, text in rows]
+
+
+def _short_key(dotted: str) -> str:
+    """The last two parts of a dotted summary key (the index names each number by its key)."""
+    return ".".join(dotted.split(".")[-2:])
 
 
 class SkippedFolderWarning(UserWarning):

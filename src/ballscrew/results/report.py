@@ -12,6 +12,7 @@ from typing import Any
 
 from ballscrew import __version__
 from ballscrew.case.inputs import input_rows
+from ballscrew.units import format_number
 
 _STYLE = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2rem auto;
@@ -39,7 +40,10 @@ class Section:
 
 def inputs_warnings_sections(inputs: Mapping[str, Any], warnings: Sequence[str]) -> list[Section]:
     """The first two sections of every report: the inputs as they ran, then the warnings."""
-    rows = [[key, value, unit] for key, value, unit in input_rows(dict(inputs))]
+    rows = [
+        [key, format_number(value, 6) if isinstance(value, float) else value, unit]
+        for key, value, unit in input_rows(dict(inputs))
+    ]
     return [
         Section(
             "Inputs",
@@ -52,7 +56,7 @@ def inputs_warnings_sections(inputs: Mapping[str, Any], warnings: Sequence[str])
 
 def _cell(item: object) -> str:
     if isinstance(item, float):
-        return f"{item:.6g}"
+        return format_number(item)  # four significant figures
     return html.escape(str(item))
 
 

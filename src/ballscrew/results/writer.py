@@ -20,20 +20,40 @@ import json
 import shutil
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import xarray as xr
 
 from ballscrew.analyses.result import AnalysisResult
+from ballscrew.case import Case
+from ballscrew.case.plausibility import implausible_values
 from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
 
-__all__ = ["write_results"]
+__all__ = ["result_warnings", "write_results"]
 
 
 def _datasets(result: AnalysisResult) -> Mapping[str, xr.Dataset]:
     data = result.to_xarray()
     return {"fields": data} if isinstance(data, xr.Dataset) else data
+
+
+def result_warnings(result: AnalysisResult) -> list[str]:
+    """The warnings of ``result``, after those about implausible values of its case."""
+    case = getattr(result, "case", None)
+    implausible = implausible_values(case) if isinstance(case, Case) else []
+    return list(dict.fromkeys([*implausible, *result.warnings]))
+
+
+def _headline_section(summary: dict[str, Any]) -> list[Section]:
+    """The report's table of headline numbers in engineering units (as on the console)."""
+    from ballscrew.results.headlines import headline_keys, headline_rows
+
+    rows = headline_rows(summary, headline_keys(str(summary["analysis"])))
+    if not rows:
+        return []
+    return [Section("Headline numbers", tables=[(["quantity", "value"], [list(r) for r in rows])])]
 
 
 def write_results(
@@ -48,11 +68,12 @@ def write_results(
     ``extra_files``: further files of the command (file name → content), written with the rest
     so that the folder still appears complete or not at all.
     """
+    warnings = result_warnings(result)
     with results_folder(out) as folder:
         summary = {
             "analysis": result.analysis,
             **result.summary(),
-            "warnings": list(result.warnings),
+            "warnings": warnings,
             "inputs": dict(result.inputs),
         }
         write_summary(folder / "summary.json", summary)
@@ -64,7 +85,7 @@ def write_results(
         for stem, dataset in _datasets(result).items():
             write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
-        sections = inputs_warnings_sections(result.inputs, result.warnings)
+        sections = inputs_warnings_sections(result.inputs, warnings) + _headline_section(summary)
         for s in result.report():
             sections.append(
                 Section(

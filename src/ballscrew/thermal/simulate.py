@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 
 from ballscrew.budget import check_count, check_memory
 from ballscrew.errors import InputError
+from ballscrew.progress import advance
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.problem import stroke_offset
 from ballscrew.thermal.timestepping import StepSystem, implicit_euler, solve_steady
@@ -130,6 +131,7 @@ def simulate(
     if stroke_mode not in ("averaged", "resolved"):
         raise InputError("stroke.mode", stroke_mode, "'averaged' or 'resolved'")
     seconds: dict[str, float] = {}
+    advance("thermal steady state", 0, 1)
     t0 = _time.perf_counter()
     grid = disc.grid
     averaged = disc.assemble(grid.weights)
@@ -139,6 +141,7 @@ def simulate(
     steady = solve_steady(a, f, disc.direct_limit)
     loss = float(np.asarray(a.sum(axis=0)).ravel() @ steady)
     seconds["steady"] = _time.perf_counter() - t0
+    advance("thermal steady state", 1, 1)
     transient = None
     if duration is not None:
         t0 = _time.perf_counter()
@@ -196,6 +199,7 @@ def _march(
     snaps = np.zeros((snap_steps.size, disc.unknowns))
 
     def observe(n: int, theta: NDArray[np.float64], loss: float) -> None:
+        advance("thermal transient", n, steps)
         max_rise[n] = theta.max()
         elongation[n] = disc.elongation @ theta
         sensors[n] = disc.sensors @ theta

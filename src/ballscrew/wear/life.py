@@ -34,6 +34,8 @@ import numpy as np
 
 from ballscrew.budget import check_count, check_memory, check_work
 from ballscrew.errors import InputError
+from ballscrew.progress import advance
+from ballscrew.units import format_quantity
 from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearOptions
@@ -328,15 +330,16 @@ def integrate_wear(
             nut_force_pair(setup.preload(float(state.depth.max())), level.axial_load),
             sampled,
         )
+        advance("wear", state.revolutions, ends[-1])
         if sampled or state.revolutions >= end * (1.0 - 1e-12):
-            log.info(
-                "wear: level %d/%d N = %.4g rev  h_max = %.4g µm  F_p = %.1f N  T = %.4f N m",
+            log.debug(
+                "wear: level %d/%d, N = %s, h_max = %s, F_p = %s, T = %s",
                 state.level + 1,
                 len(spec.programme),
-                state.revolutions,
-                1e6 * state.records["max_depth"][-1],
-                state.records["preload"][-1],
-                state.records["torque"][-1],
+                format_quantity(state.revolutions, "revolutions"),
+                format_quantity(state.records["max_depth"][-1], "displacement"),
+                format_quantity(state.records["preload"][-1], "force"),
+                format_quantity(state.records["torque"][-1], "torque"),
             )
         if path is not None and state.steps % spec.checkpoint_every == 0:
             _save(path, state, fingerprint)

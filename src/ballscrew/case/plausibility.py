@@ -1,0 +1,99 @@
+"""Physically implausible values of a valid case: warnings with the likely intended unit.
+
+A number without a unit is SI, so ``lead = 10`` is a 10 m lead. Such a value may still pass the
+field's range; these checks compare it with the rest of the screw and, where a smaller unit
+would make sense of it, name that unit: "did you mean '10 mm'?".
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+from ballscrew.case.models import Case
+from ballscrew.units import DISPLAY_UNITS, format_number, format_quantity
+
+__all__ = ["NUT_LENGTH_FACTOR", "ImplausibleValueWarning", "implausible_values", "unit_hint"]
+
+NUT_LENGTH_FACTOR = 4.0
+"""Longest usual nut as a multiple of the pitch diameter, when the case gives no nut length
+(GUESS: catalogue nuts of 2 to 4 circuits are about 1.5 to 3.5 d_m long)."""
+
+SOFTEST_SOLID = 1e9
+"""Smallest Young's modulus or hardness of a raceway, ball or nut material [Pa] (polymers
+are about 1 to 3 GPa; steels about 200 GPa)."""
+
+
+class ImplausibleValueWarning(UserWarning):
+    """A case value is valid but physically implausible (a unit is likely missing)."""
+
+
+def unit_hint(value: float, kind: str, plausible: Callable[[float], bool]) -> str:
+    """``"; did you mean '10 mm'?"``: the display unit of ``kind`` (largest first) in which the
+    number ``value``, given as SI, would be plausible; ``""`` when none is."""
+    for symbol, scale in reversed(DISPLAY_UNITS.get(kind, ())):
+        if scale != 1.0 and plausible(value * scale):
+            return f"; did you mean '{format_number(value)} {symbol}'?"
+    return ""
+
+
+def _too_soft(value: float) -> bool:
+    return value < SOFTEST_SOLID
+
+
+def implausible_values(case: Case) -> list[str]:
+    """One line per implausible value of ``case``: a lead longer than the pitch circle, balls
+    that do not fit the nut, a preload above the static load rating C_0a, a modulus or
+    hardness below any solid's."""
+    screw = case.screw
+    found: list[str] = []
+    circle = math.pi * screw.pitch_diameter
+    if screw.lead > circle:
+        found.append(
+            f"screw.lead = {format_number(screw.lead)} m is longer than the pitch "
+            f"circle (π·d_m = {format_quantity(circle, 'length')})"
+            + unit_hint(screw.lead, "length", lambda v: v <= circle)
+        )
+    elif screw.ball_diameter >= screw.lead:
+        found.append(
+            f"screw.ball_diameter = {format_quantity(screw.ball_diameter, 'length')} does not fit "
+            f"between the thread turns of screw.lead = {format_quantity(screw.lead, 'length')}"
+        )
+    else:
+        found += _balls_fit(case)
+    design = case.design
+    rating = None if design is None else design.static_load_rating
+    if rating is not None and case.operating.preload > rating:
+        found.append(
+            f"operating.preload = {format_quantity(case.operating.preload, 'force')} is above "
+            f"design.static_load_rating = {format_quantity(rating, 'force')} (C_0a)"
+        )
+    for part in ("ball", "screw", "nut"):
+        material = getattr(case.materials, part)
+        for name in ("youngs_modulus", "hardness"):
+            value = getattr(material, name)
+            if _too_soft(value):
+                found.append(
+                    f"materials.{part}.{name} = {format_number(value)} Pa is below "
+                    f"any solid's ({format_quantity(SOFTEST_SOLID, 'pressure')})"
+                    + unit_hint(value, "pressure", lambda v: not _too_soft(v))
+                )
+    return found
+
+
+def _balls_fit(case: Case) -> list[str]:
+    """The balls of a nut must fit along the ball track of its length: turns × helix length."""
+    screw = case.screw
+    given = case.thermal.nut_length if case.thermal is not None else None
+    length = given if given is not None else NUT_LENGTH_FACTOR * screw.pitch_diameter
+    track = length / screw.lead * math.hypot(math.pi * screw.pitch_diameter, screw.lead)
+    room = math.floor(track / screw.ball_diameter)
+    if screw.balls_per_nut <= room:
+        return []
+    source = "thermal.nut_length" if given is not None else f"{NUT_LENGTH_FACTOR:g} d_m"
+    return [
+        f"screw.balls_per_nut = {screw.balls_per_nut} balls of "
+        f"{format_quantity(screw.ball_diameter, 'length')} do not fit a nut "
+        f"{format_quantity(length, 'length')} long ({source}): its ball track of "
+        f"{format_quantity(track, 'length')} holds about {room}"
+    ]

@@ -1,0 +1,88 @@
+"""The headline numbers of a result, in engineering units: for the console, the report and the
+index page alike.
+
+The numbers are the ``summary.json`` entries an :class:`~ballscrew.analyses.result.Analysis`
+names as its ``headlines`` (SI, each with its unit); :func:`ballscrew.units.format_quantity`
+shows each in engineering units with four significant figures and solver noise as 0.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from ballscrew.analyses.catalog import ANALYSES
+from ballscrew.units import KIND_OF_UNIT, format_number, format_quantity
+
+__all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
+
+#: Summary keys that only group entries; a label leaves them out.
+_GROUPS = {"steady", "numerical", "recommended", "heat_balance", "contacts", "nuts", "margins"}
+
+
+#: Lengths that are small displacements (shown in µm whatever their size).
+_DISPLACEMENTS = ("depth", "elongation", "displacement", "approach", "deflection")
+
+
+def label_of(dotted: str) -> str:
+    """A readable label of a dotted summary key: ``nuts.nut1.orbital_speed`` → ``nut1 orbital
+    speed``, ``contacts.screw.numerical.peak_pressure`` → ``screw peak pressure``."""
+    parts = [p for p in dotted.split(".") if p not in _GROUPS] or dotted.split(".")[-1:]
+    return " ".join(parts[-2:]).replace("_", " ")
+
+
+def _kind(dotted: str, unit: str) -> str | None:
+    """The display kind of a summary value (an absolute temperature is in °C)."""
+    name = dotted.rsplit(".", 1)[-1]
+    if unit == "K" and "temperature" in name and "rise" not in name:
+        return "temperature"
+    if not unit and ("revolutions" in name or name.endswith("_life")):  # counts of turns
+        return "revolutions"
+    if unit == "m" and any(word in name for word in _DISPLACEMENTS):
+        return "displacement"  # always in µm, as a machine-tool engineer reads them
+    return KIND_OF_UNIT.get(unit)
+
+
+def format_entry(dotted: str, entry: Any) -> str | None:
+    """A summary entry (``{"value", "unit"}`` or a plain number) as text; None if no number."""
+    unit = ""
+    if isinstance(entry, dict) and set(entry) == {"value", "unit"}:
+        entry, unit = entry["value"], str(entry["unit"])
+    if isinstance(entry, bool) or not isinstance(entry, int | float):
+        return None
+    if isinstance(entry, int):
+        return str(entry)
+    kind = _kind(dotted, unit)
+    if kind is None:  # a unit without an engineering display
+        return f"{format_number(entry)} {unit}".rstrip()
+    return format_quantity(entry, kind)
+
+
+def _lookup(summary: dict[str, Any], dotted: str) -> Any:
+    node: Any = summary
+    for key in dotted.split("."):
+        if not isinstance(node, dict) or key not in node:
+            return None
+        node = node[key]
+    return node
+
+
+def headline_keys(analysis: str) -> tuple[str, ...]:
+    """The dotted summary keys ``analysis`` declares as its headlines (none if unknown)."""
+    return ANALYSES[analysis].headlines if analysis in ANALYSES.names else ()
+
+
+def headline_rows(
+    summary: dict[str, Any],
+    keys: Sequence[str] = (),
+    most: int = 8,
+    label: Callable[[str], str] = label_of,
+) -> list[tuple[str, str]]:
+    """(label, value with unit) of the entries ``keys`` of ``summary`` that are numbers; with
+    no keys, of its first top-level numbers. At most ``most`` rows."""
+    rows = []
+    for key in keys or list(summary):
+        text = format_entry(key, _lookup(summary, key))
+        if text is not None:
+            rows.append((label(key), text))
+    return rows[:most]

@@ -1,0 +1,60 @@
+"""Bare numbers are SI; a physically implausible magnitude is warned about with the likely unit."""
+
+from __future__ import annotations
+
+import pytest
+
+import ballscrew
+from ballscrew.case import CaseError
+from ballscrew.case.plausibility import ImplausibleValueWarning, implausible_values
+from quick_cases import write_case
+
+
+def warnings_of(tmp_path, overrides):
+    with pytest.warns(ImplausibleValueWarning) as caught:
+        case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", overrides))
+    assert [str(w.message).split(": ", 1)[1] for w in caught] == implausible_values(case)
+    return implausible_values(case)
+
+
+def test_a_lead_longer_than_the_pitch_circle_suggests_millimetres(tmp_path):
+    (message,) = warnings_of(tmp_path, {"screw.lead": 0.5})
+    assert message == (
+        "screw.lead = 0.5 m is longer than the pitch circle (π·d_m = 125.7 mm); "
+        "did you mean '0.5 mm'?"
+    )
+
+
+def test_a_lead_beyond_its_range_names_the_unit_in_the_error(tmp_path):
+    with pytest.raises(
+        CaseError, match=r"screw\.lead = 10 is not allowed: .*did you mean '10 mm'\?"
+    ):
+        ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", {"screw.lead": 10}))
+
+
+def test_balls_that_do_not_fit_the_nut(tmp_path):
+    (message,) = warnings_of(tmp_path, {"screw.balls_per_nut": 5000})
+    assert message.startswith("screw.balls_per_nut = 5000 balls of 6.35 mm do not fit a nut")
+    assert "holds about 119" in message  # 60 mm / 10 mm × 126.1 mm of helix / 6.35 mm
+
+
+def test_a_ball_larger_than_the_lead(tmp_path):
+    (message,) = warnings_of(tmp_path, {"screw.ball_diameter": "12 mm"})
+    assert "does not fit between the thread turns of screw.lead = 10 mm" in message
+
+
+def test_a_preload_above_the_static_load_rating(tmp_path):
+    (message,) = warnings_of(tmp_path, {"operating.preload": "200 kN"})
+    assert message.startswith("operating.preload = 200 kN is above design.static_load_rating")
+
+
+def test_a_bare_modulus_suggests_gigapascal(tmp_path):
+    (message,) = warnings_of(tmp_path, {"materials.nut.youngs_modulus": 206})
+    assert message.endswith("did you mean '206 GPa'?")
+
+
+def test_plausible_values_and_units_raise_nothing(tmp_path):
+    case = ballscrew.load_case(
+        write_case(tmp_path, "gao2019_tcr.toml", {"screw.lead": "20 mm", "operating.preload": 3e3})
+    )
+    assert implausible_values(case) == []
