@@ -8,6 +8,8 @@ A results folder holds
 * ``<figure>.png`` — its figures;
 * ``report.html`` — one self-contained page: the inputs, the warnings, then the result's own
   sections with their figures embedded;
+* ``summary.csv``, ``results.xlsx``, ``<stem>.mat`` … — the exports asked for
+  (:mod:`ballscrew.results.export`);
 * ``case.toml`` — the case file as the user gave it (when there is one) and ``inputs.json``,
   the case as resolved (every default filled in, SI values with units).
 
@@ -18,12 +20,13 @@ from __future__ import annotations
 
 import json
 import shutil
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 import xarray as xr
 
 from ballscrew.analyses.result import AnalysisResult
+from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
@@ -41,13 +44,17 @@ def write_results(
     out: str | Path,
     case_file: str | Path | None = None,
     extra_files: Mapping[str, bytes] | None = None,
+    export: Sequence[str] = (),
 ) -> Path:
     """Write the results folder of ``result`` at ``out`` and return its path.
 
     ``case_file``: the case file as given, copied into the folder as ``case.toml``.
     ``extra_files``: further files of the command (file name → content), written with the rest
     so that the folder still appears complete or not at all.
+    ``export``: formats of :func:`~ballscrew.results.export.export_results` (``csv``,
+    ``xlsx``, ``mat``) written into the folder before it appears.
     """
+    export = parse_formats(export)
     with results_folder(out) as folder:
         summary = {
             "analysis": result.analysis,
@@ -77,4 +84,6 @@ def write_results(
         write_report(folder / "report.html", result.title, f"ballscrew {result.analysis}", sections)
         for name, content in (extra_files or {}).items():
             (folder / name).write_bytes(content)
+        if export:
+            export_results(folder, export)
     return Path(out).resolve()
