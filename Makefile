@@ -7,6 +7,8 @@ DEMO   := results/demo
 
 .PHONY: demo test bench lint format clean
 
+CHROMIUM := /usr/bin/chromium
+
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
@@ -29,8 +31,14 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew index $(DEMO) --title "ballscrew demo: the reference screws"
 	@echo "report: $(DEMO)/index.html (links each analysis's own report.html)"
 
+# Debian's chromium for the browser test of the reports (tests/results/test_browser.py)
+$(CHROMIUM):
+	@if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+		apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium; \
+	else echo "chromium missing and not installable here: the browser test will be skipped"; fi
+
 ## test: create .venv, install, run the test suite
-test: $(STAMP)
+test: $(STAMP) $(CHROMIUM)
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(VENV)/bin/lint-imports
 	$(PY) -m pytest -q
