@@ -71,7 +71,7 @@ def write_results(
         for stem, dataset in _datasets(result).items():
             write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
-        sections = inputs_warnings_sections(result.inputs, result.warnings)
+        sections = inputs_warnings_sections(result.inputs, result.warnings, result.analysis)
         for s in result.report():
             sections.append(
                 Section(
