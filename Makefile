@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 DEMO   := results/demo
 
-.PHONY: demo test bench lint format clean
+.PHONY: demo test docs bench lint format clean
 
 CHROMIUM := /usr/bin/chromium
 
@@ -43,6 +43,17 @@ test: $(STAMP) $(CHROMIUM)
 	$(VENV)/bin/lint-imports
 	$(PY) -m pytest -q
 
+DOCS_STAMP := $(VENV)/.docs-installed
+
+$(DOCS_STAMP): $(STAMP)
+	$(PY) -m pip install --quiet -e ".[docs]"
+	touch $(DOCS_STAMP)
+
+## docs: build the documentation site into site/ (warnings are errors; runs the tutorials)
+docs: $(DOCS_STAMP)
+	$(VENV)/bin/mkdocs build --strict
+	@echo "site: site/index.html"
+
 ## bench: run the benchmarks (prints tables; not part of the tests)
 bench: $(STAMP)
 	$(PY) benchmarks/bench_contact.py
@@ -61,4 +72,4 @@ format: $(STAMP)
 	$(VENV)/bin/ruff check --fix src tests benchmarks
 
 clean:
-	rm -rf $(VENV) results .pytest_cache .ruff_cache
+	rm -rf $(VENV) results site .cache .pytest_cache .ruff_cache
