@@ -103,14 +103,18 @@ def engineering_array(values: np.ndarray, unit: str, key: str = "") -> tuple[np.
 
 
 def significant(value: float, digits: int = 4) -> str:
-    """``value`` to ``digits`` significant figures, without an exponent for 1e-3 ≤ |v| < 1e6."""
+    """``value`` to ``digits`` significant figures (trailing zeros dropped), without an exponent
+    for 1e-3 ≤ |v| < 1e6: ``0.0195``, ``1500``, ``2.43e-7``."""
     if value == 0 or not math.isfinite(value):
         return f"{value:g}"
     size = abs(value)
     if 1e-3 <= size < 1e6:
         decimals = max(0, digits - 1 - math.floor(math.log10(size)))
-        return f"{value:.{decimals}f}"
-    return f"{value:.{digits - 1}e}"
+        text = f"{value:.{decimals}f}"
+        return text.rstrip("0").rstrip(".") if "." in text else text
+    mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
+    mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+    return f"{mantissa}e{int(exponent)}"
 
 
 def format_quantity(value: float, unit: str, key: str = "", digits: int = 4) -> str:

@@ -13,6 +13,7 @@ from ballscrew.analyses.catalog import ANALYSES
 from ballscrew.analyses.result import Analysis
 from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
+from ballscrew.results.display import format_quantity, readable
 from ballscrew.results.folder import SUMMARY_NAME
 from ballscrew.results.report import Section, write_report
 
@@ -42,9 +43,10 @@ def _format(name: str, entry: Any) -> str | None:
         unit = ""
     if isinstance(entry, int | float) and not isinstance(entry, bool):
         try:
-            return f"{name} = {float(entry):.4g} {_text(unit)}".rstrip()
+            shown = format_quantity(float(entry), _text(unit), name)
         except OverflowError:  # an integer beyond float range
             return None
+        return f"{readable(name)} = {shown}"
     return None
 
 
