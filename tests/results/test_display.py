@@ -38,6 +38,19 @@ def test_engineering_units(value, unit, key, expected):
     assert shown == pytest.approx(expected[0], rel=1e-12)
 
 
+def test_one_spelling_per_unit():
+    from ballscrew.results.display import spelling
+
+    assert [spelling(u) for u in ("N m", "N*m", "kg/m^3", "J/(kg*K)", "um", "1")] == [
+        "N·m",
+        "N·m",
+        "kg/m³",
+        "J/(kg·K)",
+        "µm",
+        "",
+    ]
+
+
 def test_arrays_share_one_unit_and_headlines_keep_four_figures():
     values, unit = engineering_array(np.array([1e-7, 2.4e-6]), "m")
     assert unit == "µm" and values == pytest.approx([0.1, 2.4])

@@ -11,7 +11,14 @@ import re
 
 import numpy as np
 
-__all__ = ["engineering", "engineering_array", "format_quantity", "readable", "significant"]
+__all__ = [
+    "engineering",
+    "engineering_array",
+    "format_quantity",
+    "readable",
+    "significant",
+    "spelling",
+]
 
 _SPELLING = {
     "N*m": "N·m",
@@ -28,6 +35,13 @@ _SPELLING = {
     "1": "",
     "-": "",
 }
+
+
+def spelling(unit: str) -> str:
+    """The one spelling of ``unit``: ``N*m`` → ``N·m``, ``kg/m^3`` → ``kg/m³``, ``um`` → ``µm``."""
+    if unit in _SPELLING:
+        return _SPELLING[unit]
+    return unit.replace("^2", "²").replace("^3", "³").replace("*", "·").replace(" ", "·")
 
 
 def _length(value: float) -> tuple[float, str]:
@@ -48,7 +62,7 @@ def engineering(value: float, unit: str, key: str = "") -> tuple[float, str]:
     durations of an hour or more in h.
     Other units are returned with their one spelling.
     """
-    unit = _SPELLING.get(unit, unit)
+    unit = spelling(unit)
     if not isinstance(value, int | float) or isinstance(value, bool) or not math.isfinite(value):
         return value, unit
     name = key.lower()
