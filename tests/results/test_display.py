@@ -134,6 +134,33 @@ def test_a_2d_sweep_is_a_contour_map_with_readable_axes(tmp_path, monkeypatch):
     assert "axial load [N]" in labels and "resistance per area [mm²·K/W]" in labels
 
 
+def test_a_swept_spin_of_round_off_is_plotted_as_zero(tmp_path, monkeypatch):
+    import matplotlib.axes
+
+    plotted = []
+    original = matplotlib.axes.Axes.plot
+    monkeypatch.setattr(
+        matplotlib.axes.Axes,
+        "plot",
+        lambda self, x, y, *a, **kw: (
+            plotted.append(np.asarray(y)) or original(self, x, y, *a, **kw)
+        ),
+    )
+    speed = np.linspace(10.0, 200.0, 4)
+    ds = xr.Dataset(
+        {
+            "nuts.nut1.spin_nut": (
+                "operating.speed",
+                [1e-15, -2e-15, 3e-16, 0.0],
+                {"units": "rad/s"},
+            )
+        },
+        coords={"operating.speed": ("operating.speed", speed, {"units": "rad/s"})},
+    )
+    plot_variable(ds, "nuts.nut1.spin_nut", tmp_path / "spin.png")
+    assert plotted[0].tolist() == [0.0, 0.0, 0.0, 0.0]
+
+
 def test_the_nut_forces_mark_the_lift_off(tmp_path, monkeypatch):
     import matplotlib.axes
 

@@ -20,6 +20,7 @@ __all__ = [
     "spelling",
 ]
 
+
 _SPELLING = {
     "N*m": "N·m",
     "N m": "N·m",
@@ -35,6 +36,10 @@ _SPELLING = {
     "1": "",
     "-": "",
 }
+
+
+NOISE = {"rad/s": 1e-9, "m/s": 1e-12}
+"""Magnitudes below which a solver's speed is round-off (a spin of 1e-15 rad/s), shown as 0."""
 
 
 def spelling(unit: str) -> str:
@@ -146,7 +151,14 @@ def readable(name: str) -> str:
     """A field name as words: ``nut1.orbital_speed`` → ``nut 1: orbital speed``,
     ``operating.axial_load`` → ``axial load``, ``F1`` → ``F1``."""
     parts = [p for p in name.split(".") if p]
-    if len(parts) > 1 and parts[0] in ("operating", "numerics", "screw", "surface", "medium"):
+    if len(parts) > 1 and parts[0] in (
+        "operating",
+        "numerics",
+        "screw",
+        "surface",
+        "medium",
+        "nuts",
+    ):
         parts = parts[1:]
     words = [_NUT.sub(r"nut \1", p.replace("_", " ")) for p in parts]
     return ": ".join(words)

@@ -20,8 +20,8 @@ import xarray as xr
 
 from ballscrew.case import Case
 from ballscrew.case.inputs import resolved_inputs
-from ballscrew.plotting import legend_outside, line_styles
-from ballscrew.results.display import engineering_array, readable
+from ballscrew.plotting import legend_outside, line_styles, zero_noise
+from ballscrew.results.display import NOISE, engineering_array, readable
 from ballscrew.results.folder import (
     SUMMARY_NAME,
     SWEEP_PATTERNS,
@@ -36,8 +36,10 @@ from ballscrew.sweep.axes import SweepAxis
 
 
 def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
-    """Values of ``name`` in engineering units and its readable axis label."""
-    values, unit = engineering_array(ds[name].values, ds[name].attrs.get("units", ""), name)
+    """Values of ``name`` in engineering units (round-off speeds as 0) and its axis label."""
+    unit = ds[name].attrs.get("units", "")
+    values = zero_noise(ds[name].values, NOISE.get(unit, 0.0))
+    values, unit = engineering_array(values, unit, name)
     return values, f"{readable(name)} [{unit}]" if unit else readable(name)
 
 
