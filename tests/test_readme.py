@@ -149,8 +149,8 @@ def test_every_readme_command_line_parses(argv):
     assert "Usage:" in result.output
 
 
-#: A calibration fits the measured history of the whole programme: only its grid is coarsened.
-QUICK_FOR = {"calibrate": {"wear.grid": [12, 48]}}
+#: A calibration fits the measured history of the whole programme: only its numerics are coarse.
+QUICK_FOR = {"calibrate": {"wear.grid": [12, 48], "wear.max_depth_step": "0.4 um"}}
 
 
 def quick_argv(argv: list[str], folder: Path) -> list[str]:
