@@ -26,8 +26,9 @@ def test_the_3d_field_is_drawn_in_celsius_on_both_bodies(tmp_path, monkeypatch):
     monkeypatch.setattr(
         matplotlib.axes.Axes,
         "tricontourf",
-        lambda self, tri, values, **kw: drawn.append((tri, values))
-        or original(self, tri, values, **kw),
+        lambda self, tri, values, **kw: (
+            drawn.append((tri, values)) or original(self, tri, values, **kw)
+        ),
     )
     path = field_3d(result, tmp_path / "field.png")
     assert path.stat().st_size > 10_000
