@@ -114,20 +114,24 @@ def _sweep_2d() -> xr.Dataset:
     )
 
 
-def test_a_2d_sweep_is_a_contour_map_with_readable_axes(tmp_path, monkeypatch):
+def spy(monkeypatch, method: str, keep) -> list:
+    """Record ``keep(*args)`` of every call of ``Axes.<method>``; the call still draws."""
     import matplotlib.axes
 
-    labels = []
-    monkeypatch.setattr(
-        matplotlib.axes.Axes, "set_ylabel", lambda self, text, **kw: labels.append(text)
-    )
-    drawn = []
-    original = matplotlib.axes.Axes.contourf
-    monkeypatch.setattr(
-        matplotlib.axes.Axes,
-        "contourf",
-        lambda self, *a, **kw: drawn.append(a[2].shape) or original(self, *a, **kw),
-    )
+    seen = []
+    original = getattr(matplotlib.axes.Axes, method)
+
+    def wrapper(self, *args, **kwargs):
+        seen.append(keep(*args))
+        return original(self, *args, **kwargs)
+
+    monkeypatch.setattr(matplotlib.axes.Axes, method, wrapper)
+    return seen
+
+
+def test_a_2d_sweep_is_a_contour_map_with_readable_axes(tmp_path, monkeypatch):
+    labels = spy(monkeypatch, "set_ylabel", lambda text, *a: text)
+    drawn = spy(monkeypatch, "contourf", lambda *a: a[2].shape)
     path = plot_variable(_sweep_2d(), "resistance_per_area", tmp_path / "map.png")
     assert path.stat().st_size > 0
     assert drawn == [(5, 4)]  # (axial loads, D values): a map, not 4 lines
@@ -135,26 +139,11 @@ def test_a_2d_sweep_is_a_contour_map_with_readable_axes(tmp_path, monkeypatch):
 
 
 def test_a_swept_spin_of_round_off_is_plotted_as_zero(tmp_path, monkeypatch):
-    import matplotlib.axes
-
-    plotted = []
-    original = matplotlib.axes.Axes.plot
-    monkeypatch.setattr(
-        matplotlib.axes.Axes,
-        "plot",
-        lambda self, x, y, *a, **kw: (
-            plotted.append(np.asarray(y)) or original(self, x, y, *a, **kw)
-        ),
-    )
+    plotted = spy(monkeypatch, "plot", lambda x, y, *a: np.asarray(y))
     speed = np.linspace(10.0, 200.0, 4)
+    spin = ("operating.speed", [1e-15, -2e-15, 3e-16, 0.0], {"units": "rad/s"})
     ds = xr.Dataset(
-        {
-            "nuts.nut1.spin_nut": (
-                "operating.speed",
-                [1e-15, -2e-15, 3e-16, 0.0],
-                {"units": "rad/s"},
-            )
-        },
+        {"nuts.nut1.spin_nut": spin},
         coords={"operating.speed": ("operating.speed", speed, {"units": "rad/s"})},
     )
     plot_variable(ds, "nuts.nut1.spin_nut", tmp_path / "spin.png")
@@ -162,15 +151,7 @@ def test_a_swept_spin_of_round_off_is_plotted_as_zero(tmp_path, monkeypatch):
 
 
 def test_the_nut_forces_mark_the_lift_off(tmp_path, monkeypatch):
-    import matplotlib.axes
-
-    lines = []
-    original = matplotlib.axes.Axes.axvline
-    monkeypatch.setattr(
-        matplotlib.axes.Axes,
-        "axvline",
-        lambda self, x=0, *a, **kw: lines.append(x) or original(self, x, *a, **kw),
-    )
+    lines = spy(monkeypatch, "axvline", lambda x=0, *a: x)
     load = np.linspace(0.0, 6000.0, 7)
     f2 = np.clip(1500.0 - 0.4 * load, 0.0, None)
     ds = xr.Dataset(
