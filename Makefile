@@ -5,7 +5,9 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 DEMO   := results/demo
 
-.PHONY: demo test bench lint format clean
+.PHONY: demo test docs bench lint format clean
+
+CHROMIUM := /usr/bin/chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -29,11 +31,28 @@ demo: $(STAMP)
 	$(VENV)/bin/ballscrew index $(DEMO) --title "ballscrew demo: the reference screws"
 	@echo "report: $(DEMO)/index.html (links each analysis's own report.html)"
 
+# Debian's chromium for the browser test of the reports (tests/results/test_browser.py)
+$(CHROMIUM):
+	@if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+		apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium; \
+	else echo "chromium missing and not installable here: the browser test will be skipped"; fi
+
 ## test: create .venv, install, run the test suite
-test: $(STAMP)
+test: $(STAMP) $(CHROMIUM)
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(VENV)/bin/lint-imports
 	$(PY) -m pytest -q
+
+DOCS_STAMP := $(VENV)/.docs-installed
+
+$(DOCS_STAMP): $(STAMP)
+	$(PY) -m pip install --quiet -e ".[docs]"
+	touch $(DOCS_STAMP)
+
+## docs: build the documentation site into site/ (warnings are errors; runs the tutorials)
+docs: $(DOCS_STAMP)
+	$(VENV)/bin/mkdocs build --strict
+	@echo "site: site/index.html"
 
 ## bench: run the benchmarks (prints tables; not part of the tests)
 bench: $(STAMP)
@@ -56,4 +75,4 @@ format: $(STAMP)
 	$(VENV)/bin/ruff check --fix src tests benchmarks
 
 clean:
-	rm -rf $(VENV) results .pytest_cache .ruff_cache
+	rm -rf $(VENV) results site .cache .pytest_cache .ruff_cache

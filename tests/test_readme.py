@@ -11,14 +11,16 @@ import re
 import shlex
 import tokenize
 from decimal import Decimal
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+import ballscrew
 from ballscrew.cli import app
-from quick_cases import EXAMPLES, REPO, write_case
+from quick_cases import EXAMPLES, REPO, quick_overrides, write_case
 
 README = (REPO / "README.md").read_text(encoding="utf-8")
 NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
@@ -147,6 +149,45 @@ def test_every_readme_command_line_parses(argv):
     assert "Usage:" in result.output
 
 
+#: A calibration fits the measured history of the whole programme: only its numerics are coarse.
+QUICK_FOR = {"calibrate": {"wear.grid": [12, 48], "wear.max_depth_step": "0.4 um"}}
+
+
+def quick_argv(argv: list[str], folder: Path) -> list[str]:
+    """``argv`` with its case files made quick (coarse grids, short runs) and ``--out`` in
+    ``folder``; the other files are the repository's."""
+    quick = []
+    for k, word in enumerate(argv):
+        if k and argv[k - 1] == "--out":
+            word = str(folder / word)
+        elif word.startswith("examples/") and word.endswith(".toml") and "/" not in word[9:]:
+            overrides = QUICK_FOR.get(argv[0]) or quick_overrides(ballscrew.load_case(REPO / word))
+            word = str(write_case(folder, Path(word).name, overrides))
+        elif word.startswith("examples/"):
+            word = str(REPO / word)
+        quick.append(word)
+    return quick
+
+
+#: The README's commands that run here; a sweep starts a Dask cluster (its machinery runs in
+#: tests/sweep and tests/test_examples.py), so it is only parsed.
+RUNNABLE = [argv for argv in COMMANDS if argv[0] != "sweep"]
+
+
+@pytest.mark.parametrize("argv", RUNNABLE, ids=[" ".join(a[:2]) for a in RUNNABLE])
+def test_every_readme_command_runs_and_writes_its_report(tmp_path, argv):
+    """As written, but on quick numerics: exit 0 and a results folder with its report."""
+    result = CliRunner().invoke(app, quick_argv(argv, tmp_path))
+    assert result.exit_code == 0, f"ballscrew {' '.join(argv)}:\n{result.output}"
+    out = tmp_path / argv[argv.index("--out") + 1]
+    assert (out / "report.html").is_file() and (out / "summary.json").is_file()
+
+
+def test_the_readme_calibration_fits_the_torque_scale():
+    (argv,) = [a for a in COMMANDS if a[0] == "calibrate"]
+    assert "--fit-torque-scale" in argv
+
+
 ERROR = re.compile(r"^\$ ballscrew (.+)\n(error: (\S+): (\S+) = (\S+) is not allowed.*)$", re.M)
 
 
@@ -177,3 +218,14 @@ def test_the_readme_error_example_is_the_cli_message(tmp_path, monkeypatch, exam
     assert result.exit_code == 2
     assert result.output.strip() == message
     assert not (tmp_path / "results").exists()
+
+
+def test_the_readme_case_snippet_is_the_example_case():
+    """The README's TOML excerpt parses and each of its values is the example file's."""
+    import tomllib
+
+    (snippet,) = blocks("toml")
+    example = tomllib.loads((EXAMPLES / "gao2019_tcr.toml").read_text(encoding="utf-8"))
+    for section, values in tomllib.loads(snippet).items():
+        for key, value in values.items():
+            assert example[section][key] == value, f"README [{section}] {key} = {value!r}"

@@ -116,3 +116,46 @@ def resistance_map(
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+_LINESTYLES = ("-", "--", "-.", ":")
+_MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*")
+
+
+def line_styles(n: int) -> list[dict[str, object]]:
+    """``n`` distinguishable line styles: colours of a perceptually ordered map, and for more
+    than ten curves also line styles and markers, so no two curves look alike."""
+    colours = (
+        plt.get_cmap("tab10").colors
+        if n <= 10
+        else plt.get_cmap("viridis")(np.linspace(0.0, 0.9, n))
+    )
+    return [
+        {
+            "color": colours[k % len(colours)],
+            "linestyle": _LINESTYLES[k % len(_LINESTYLES)] if n > 10 else "-",
+            "marker": _MARKERS[k % len(_MARKERS)],
+        }
+        for k in range(n)
+    ]
+
+
+def legend_outside(ax: plt.Axes, **kwargs: object) -> None:
+    """A legend to the right of the axes, never over the data."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, **kwargs)
+
+
+def zero_noise(values: np.ndarray, tolerance: float) -> np.ndarray:
+    """``values`` with every entry smaller in magnitude than ``tolerance`` set to 0.
+
+    A solver returns such values as round-off (a spin of 1e-15 rad/s); plotted, they would look
+    like data.
+    """
+    values = np.asarray(values, dtype=float)
+    return np.where(np.abs(values) < tolerance, 0.0, values)
+
+
+def label_box() -> dict[str, object]:
+    """A white, slightly transparent box behind a label drawn over a colour map (readable on
+    any colour)."""
+    return {"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.8, "linewidth": 0}

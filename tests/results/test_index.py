@@ -28,7 +28,7 @@ def test_index_lists_each_results_folder_with_its_key_numbers(tmp_path):
     (tmp_path / "not_results").mkdir()
     text = write_index(tmp_path).read_text()
     assert "resistance = 0.0195 K/W" in text
-    assert "final_preload = 244.3 N" in text
+    assert "final preload = 244.3 N" in text
     assert '<a href="wear/report.html">' in text
     assert "not_results" not in text
 
@@ -67,7 +67,7 @@ def test_index_shows_the_headlines_and_key_figure_of_each_descriptor(tmp_path):
         _png(sweep / name)
     assert ANALYSES["thermal-network"].headlines[0] == "steady.max_temperature_rise"
     text = write_index(tmp_path).read_text()
-    assert "steady.max_temperature_rise = 12.5 K" in text
+    assert "steady: max temperature rise = 12.5 K" in text
     assert "points = 7" not in text  # only the descriptor's headlines
     assert "points = 3" in text  # a sweep's headlines
     assert "sw: sweep_resistance_per_area" in text  # the sweep's key figure, not its first PNG

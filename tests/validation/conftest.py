@@ -17,6 +17,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
+import re
 import tomllib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -220,6 +221,11 @@ def base_raw(_gao_raw: dict[str, Any]) -> dict[str, Any]:
     return copy.deepcopy(_gao_raw)
 
 
+def _anchor(heading: str) -> str:
+    """The anchor GitHub and MkDocs give a ``## heading`` (punctuation but ``-``, ``_`` dropped)."""
+    return re.sub(r"[^\w-]", "", heading.lower())
+
+
 # --- hooks: marker, completeness and the generated table --------------------------------------
 
 
@@ -299,7 +305,7 @@ def render(state: _Session) -> str:
     for r in records:
         unit = f" [{r.unit}]" if r.unit else ""
         lines.append(
-            f"| [{r.id}](#{r.id.lower()}) | {r.kind} | {r.model} | {r.source} | "
+            f"| [{r.id}](#{_anchor(r.id)}) | {r.kind} | {r.model} | {r.source} | "
             f"{r.quantity}{unit} | {_fmt(r.measured)} | {_fmt(r.predicted)} | {_fmt_error(r)} | "
             f"{_fmt_tolerance(r)} | {r.status} |"
         )

@@ -19,6 +19,7 @@ from ballscrew.analyses.ball_loads import elastic_distribution, nut_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
+from ballscrew.plotting import legend_outside
 
 if TYPE_CHECKING:
     from ballscrew.analyses.design_check import DesignCheck
@@ -184,7 +185,8 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
         ax.axvline(result.case.operating.axial_load * 1e-3, ls=":", c="C3", label="case")
         ax.set_xlabel("axial load [kN]")
         ax.set_ylim(bottom=0)
-    axes[0].legend(fontsize=8)
+        ax.set_xlim(-0.04 * loads.max(), 1.02 * loads.max())  # a line at 0 kN stays visible
+    legend_outside(axes[1], fontsize=8)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -229,7 +231,7 @@ def _life_figure(result: DesignCheck, path: Path) -> Path:
         ax.axhline(result.rating_life, ls=":", c="k", lw=0.8, label="rating life, both halves")
     ax.set_xlabel("axial load [N]")
     ax.set_ylabel("rating life [rev]")
-    ax.legend(fontsize=8)
+    legend_outside(ax, fontsize=8)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

@@ -14,7 +14,7 @@ import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table, quantity
-from ballscrew.plotting import plain
+from ballscrew.plotting import legend_outside, line_styles, plain
 
 if TYPE_CHECKING:
     from ballscrew.analyses.duty_thermal import DutyThermal
@@ -71,11 +71,13 @@ def day_plot(result: DutyThermal, path: Path) -> Path:
     top.plot(hours, 1e6 * result.elongation, color="C0")
     top.set_ylabel("thermal elongation [µm]")
     bottom.plot(hours, result.max_temperature - CELSIUS, color="C3", label="largest")
+    styles = line_styles(len(result.sensor_names))
     for k, name in enumerate(result.sensor_names):
-        bottom.plot(hours, result.sensors[:, k] - CELSIUS, lw=1, label=plain(name))
+        style = {**styles[k], "marker": None}
+        bottom.plot(hours, result.sensors[:, k] - CELSIUS, lw=1, label=plain(name), **style)
     bottom.set_ylabel("temperature [°C]")
     bottom.set_xlabel("time [h] (shaded: the screw turns)")
-    bottom.legend(fontsize=8, loc="lower right")
+    legend_outside(bottom, fontsize=8)
     fig.suptitle(plain(f"{result.case.name}: duty cycle ({result.model} model)"), fontsize=10)
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -19,7 +19,7 @@ from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
-from ballscrew.plotting import plain
+from ballscrew.plotting import legend_outside, plain, zero_noise
 
 if TYPE_CHECKING:
     from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
@@ -184,7 +184,7 @@ def _loads_angles(run: KinematicsRun, path: Path) -> Path:
     axes[1].set_ylabel("contact angle [deg]")
     for ax in axes:
         ax.set_xlabel("screw speed [rpm]")
-        ax.legend(fontsize=8)
+        legend_outside(ax, fontsize=8)
     fig.suptitle(f"Ball of nut 1 versus speed (level {run.level})", fontsize=10)
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -201,25 +201,33 @@ def _torques(run: KinematicsRun, path: Path) -> Path:
     axes[1].plot(run.preloads, run.preload_catalogue, "k--", label="catalogue (E9.1)")
     axes[1].set_xlabel("preload [N]")
     for ax in axes:
-        ax.set_ylabel("drag torque [N m]")
+        ax.set_ylabel("drag torque [N·m]")
         ax.set_ylim(bottom=0)
-        ax.legend(fontsize=8)
+        legend_outside(ax, fontsize=8)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
 
 
+NOISE = 1e-9
+"""Speeds below this fraction of the screw speed are solver round-off, shown as 0 [-]."""
+
+
 def _state_rows(run: KinematicsRun) -> tuple[tuple[object, ...], ...]:
     rows = []
     for number, st in run.states.items():
+        orbital, spin_a, spin_b = zero_noise(
+            np.array([st.orbital_speed, st.spin_screw, st.spin_nut]) * _RPM,
+            NOISE * abs(run.speed) * _RPM,
+        )
         rows.append(
             (
                 f"nut {number} (s = {st.flank:+d})",
                 st.nut_force,
                 st.ball_speed,
-                st.orbital_speed,
-                st.spin_screw,
-                st.spin_nut,
+                orbital,
+                spin_a,
+                spin_b,
                 st.load_screw,
                 st.load_nut,
                 math.degrees(st.angle_screw),
@@ -274,9 +282,9 @@ def sections(run: KinematicsRun) -> list[Section]:
                         "nut",
                         "F [N]",
                         "V [m/s]",
-                        "ω_c [rad/s]",
-                        "spin A [rad/s]",
-                        "spin B [rad/s]",
+                        "ω_c [rpm]",
+                        "spin A [rpm]",
+                        "spin B [rpm]",
                         "Q_A [N]",
                         "Q_B [N]",
                         "β_A [°]",

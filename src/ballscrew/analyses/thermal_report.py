@@ -17,7 +17,7 @@ from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain
+from ballscrew.plotting import label_box, legend_outside, plain
 from ballscrew.thermal.elongation import displacement_profile
 
 if TYPE_CHECKING:
@@ -272,16 +272,62 @@ def fields(result: ThermalField) -> xr.Dataset:
 
 
 def _sensor_markers(ax: plt.Axes, result: ThermalField, z_scale: float = 1e3) -> None:
+    """Sensor points circled in black and white, named in dark text on a white box."""
     for k, s in enumerate(result.problem.sensors):
-        ax.plot(s.z * z_scale, s.r * 1e3, "o", ms=6, mfc="none", mec="cyan", mew=1.5)
+        ax.plot(s.z * z_scale, s.r * 1e3, "o", ms=7, mfc="none", mec="white", mew=2.4)
+        ax.plot(s.z * z_scale, s.r * 1e3, "o", ms=7, mfc="none", mec="black", mew=1.0)
         ax.annotate(
             plain(s.name),
             (s.z * z_scale, s.r * 1e3),
             textcoords="offset points",
-            xytext=(4, -10 - 8 * (k % 2)),
+            xytext=(5, -12 - 9 * (k % 2)),
             fontsize=7,
-            color="cyan",
+            color="black",
+            bbox=label_box(),
         )
+
+
+def _mixed_or_long(tri: Triangulation, body: np.ndarray, longest: float) -> np.ndarray:
+    """Triangles joining screw and nut nodes or longer than ``longest``: outside the bodies."""
+    corners = tri.triangles
+    mixed = body[corners].min(axis=1) != body[corners].max(axis=1)
+    x, y = tri.x[corners], tri.y[corners]
+    edges = np.hypot(x - np.roll(x, 1, axis=1), y - np.roll(y, 1, axis=1)).max(axis=1)
+    return mixed | (edges > longest)
+
+
+def field_3d(result: ThermalField, path: Path) -> Path:
+    """The 3-D model's steady field: the meridional section θ = 0 (z, r) and the screw surface
+    unrolled over (z, θ), where the helical ball-contact heat shows."""
+    disc = result.solution.discretisation
+    m3 = disc.extra["mesh"]
+    x, y, z = m3.mesh.p
+    temp = _c(
+        result.ambient_temperature + result.solution.steady[disc.extra["basis"].nodal_dofs[0]]
+    )
+    body = (np.arange(x.size) >= m3.shaft_nodes).astype(int)
+    r, theta = np.hypot(x, y), np.arctan2(y, x)
+    levels = np.linspace(temp.min(), temp.max() + 1e-9, 24)
+    fig, axes = plt.subplots(2, 1, figsize=(8.0, 5.8), layout="constrained")
+    plane = (np.abs(y) <= 1e-9 * r.max()) & (x >= 0.0)
+    tri = Triangulation(z[plane] * 1e3, r[plane] * 1e3)
+    spacing = np.diff(np.unique(np.round(z[plane] * 1e3, 6))).max(initial=0.0)
+    spacing = max(spacing, np.diff(np.unique(np.round(r[plane] * 1e3, 6))).max(initial=0.0))
+    tri.set_mask(_mixed_or_long(tri, body[plane], 1.5 * spacing))
+    image = axes[0].tricontourf(tri, temp[plane], levels=levels, cmap="inferno")
+    _sensor_markers(axes[0], result)
+    axes[0].set(xlabel="z [mm]", ylabel="r [mm]")
+    axes[0].set_title("section through the axis (θ = 0)", fontsize=9)
+    surface = (body == 0) & (r >= r[body == 0].max() * (1.0 - 1e-6))
+    tri = Triangulation(z[surface] * 1e3, np.degrees(theta[surface]))
+    axes[1].tricontourf(tri, temp[surface], levels=levels, cmap="inferno")
+    axes[1].set(xlabel="z [mm]", ylabel="θ [°]", ylim=(-180, 180))
+    axes[1].set_title("screw surface, unrolled", fontsize=9)
+    fig.colorbar(image, ax=axes, label="steady temperature [°C]")
+    fig.suptitle(plain(f"{result.case_name}: steady temperature (3-D model)"), fontsize=10)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
 
 
 def temperature_map(result: ThermalField, path: Path) -> Path:
@@ -326,7 +372,7 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
                 )
             ax.set_ylabel("steady temperature [°C]")
             ax.grid(alpha=0.3)
-        axes[0].legend(fontsize=7)
+        legend_outside(axes[0], fontsize=7)
     for ax in axes:
         ax.set_xlabel("z [mm]")
         if disc.model == "axisymmetric":
@@ -358,7 +404,7 @@ def temperature_rise(result: ThermalField, path: Path) -> Path:
     ax.set_xlabel("time [min]")
     ax.set_ylabel("temperature rise [K]")
     ax.set_title("Temperature rise from ambient (dashed: steady state)", fontsize=10)
-    ax.legend(fontsize=7)
+    legend_outside(ax, fontsize=7)
     ax.grid(alpha=0.3)
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -375,7 +421,7 @@ def elongation_plot(result: ThermalField, path: Path) -> Path:
     axes[0].axhline(result.elongation * 1e6, color="b", ls="--", lw=0.8, label="steady")
     axes[0].set_xlabel("time [min]")
     axes[0].set_ylabel("elongation ΔL = α∫ΔT dz [µm]")
-    axes[0].legend(fontsize=7)
+    legend_outside(axes[0], fontsize=7)
     axes[0].grid(alpha=0.3)
     z = sol.discretisation.axis_z * 1e3
     axes[1].plot(z, sol.axis, "r-")
@@ -405,6 +451,16 @@ def figures(result: ThermalField) -> list[Figure]:
             partial(elongation_plot, result),
         ),
     ]
+    if result.solution.discretisation.model == "3d":
+        out.insert(
+            1,
+            Figure(
+                "temperature_field_3d",
+                "Steady 3-D temperature field: a section through the axis and the screw surface "
+                "unrolled.",
+                partial(field_3d, result),
+            ),
+        )
     if result.solution.transient is not None:
         out.insert(
             1,

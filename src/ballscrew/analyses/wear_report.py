@@ -21,6 +21,7 @@ import xarray as xr
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.case import Case
+from ballscrew.plotting import legend_outside
 from ballscrew.wear.history import WearLife
 
 if TYPE_CHECKING:
@@ -133,14 +134,14 @@ def _torque_preload(life: WearLife, path: Path) -> Path:
     n, t = life.torque_samples
     axes[0].plot(life.revolutions, life.friction_torque, "-", lw=1)
     axes[0].plot(n, t, "o", ms=3, label="sampled")
-    axes[0].set_ylabel("drag torque [N m]")
+    axes[0].set_ylabel("drag torque [N·m]")
     axes[1].plot(life.revolutions, life.preload, "-", lw=1)
     axes[1].set_ylabel("preload [N]")
     for ax in axes:
         _levels(ax, life)
         ax.set_xlabel("screw revolutions")
         ax.set_ylim(bottom=0)
-    axes[0].legend(fontsize=8)
+    axes[0].legend(fontsize=8, loc="lower left")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -153,7 +154,7 @@ def _profiles(life: WearLife, path: Path) -> Path:
         ax.plot(1e6 * life.y, 1e6 * life.profiles[i, 0], label=f"end of level {k + 1}")
     ax.set_xlabel("y, across the groove [µm]")
     ax.set_ylabel("wear depth [µm]")
-    ax.legend(fontsize=8)
+    legend_outside(ax, fontsize=8)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

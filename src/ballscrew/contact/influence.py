@@ -29,7 +29,7 @@ def _love_primitive(x: NDArray[np.float64], y: NDArray[np.float64]) -> NDArray[n
 def love_coefficient(
     x: ArrayLike, y: ArrayLike, dx: float, dy: float, e_star: float
 ) -> NDArray[np.float64]:
-    """Displacement at (x, y) per unit pressure on the cell [−dx/2, dx/2] × [−dy/2, dy/2] [m/Pa].
+    """Displacement at (x, y) per unit pressure on the cell [−dx/2, dx/2] × [−dy/2, dy/2], in m/Pa.
 
     (K4), Love (1929):
     K = (1/(π E*)) [F(x+a, y+b) − F(x+a, y−b) − F(x−a, y+b) + F(x−a, y−b)], a = dx/2, b = dy/2,

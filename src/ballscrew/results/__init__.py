@@ -1,5 +1,6 @@
-"""Writing results: atomic folders, summary.json, NetCDF fields, plots and report.html."""
+"""Writing results: atomic folders, summary.json, NetCDF fields, plots, report.html, exports."""
 
+from ballscrew.results.export import export_results
 from ballscrew.results.folder import (
     ResultsWriteError,
     check_output_folder,
@@ -16,6 +17,7 @@ __all__ = [
     "Section",
     "check_output_folder",
     "claim_output",
+    "export_results",
     "results_folder",
     "value",
     "write_netcdf",

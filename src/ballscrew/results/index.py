@@ -40,13 +40,8 @@ def _headlines(summary: dict[str, Any], analysis: str) -> list[str]:
     """'label = value unit' for the analysis' headlines (or its first top-level numbers)."""
     descriptor = _descriptor(analysis)
     keys = descriptor.headlines if descriptor is not None else ()
-    rows = headline_rows(summary, keys, HEADLINES, label=_short_key)
+    rows = headline_rows(summary, keys, HEADLINES)
     return [f"{label} = {text}" for label, text in rows]
-
-
-def _short_key(dotted: str) -> str:
-    """The last two parts of a dotted summary key (the index names each number by its key)."""
-    return ".".join(dotted.split(".")[-2:])
 
 
 class SkippedFolderWarning(UserWarning):

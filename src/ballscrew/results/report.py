@@ -12,6 +12,8 @@ from typing import Any
 
 from ballscrew import __version__
 from ballscrew.case.inputs import input_rows
+from ballscrew.results.about import ABOUT, theory_link
+from ballscrew.results.display import engineering
 from ballscrew.units import format_number
 
 _STYLE = """
@@ -36,22 +38,43 @@ class Section:
     paragraphs: list[str] = field(default_factory=list)
     tables: list[tuple[Sequence[str], Sequence[Sequence[object]]]] = field(default_factory=list)
     figures: list[tuple[Path, str]] = field(default_factory=list)
+    links: list[tuple[str, str]] = field(default_factory=list)
+    """(text, URL) links shown after the paragraphs."""
 
 
-def inputs_warnings_sections(inputs: Mapping[str, Any], warnings: Sequence[str]) -> list[Section]:
-    """The first two sections of every report: the inputs as they ran, then the warnings."""
-    rows = [
-        [key, format_number(value, 6) if isinstance(value, float) else value, unit]
-        for key, value, unit in input_rows(dict(inputs))
-    ]
-    return [
+def _input_row(key: str, value: Any, unit: str) -> list[object]:
+    shown, shown_unit = engineering(value, unit, key)
+    return [key, shown, shown_unit]
+
+
+def inputs_warnings_sections(
+    inputs: Mapping[str, Any], warnings: Sequence[str], analysis: str | None = None
+) -> list[Section]:
+    """The first sections of every report: the inputs as they ran, the warnings and, for a
+    known ``analysis``, what was computed and how (linked to the theory manual)."""
+    rows = [_input_row(key, value, unit) for key, value, unit in input_rows(dict(inputs))]
+    sections = [
         Section(
             "Inputs",
-            paragraphs=["The case as it ran: every value, defaults included (SI units)."],
+            paragraphs=[
+                "The case as it ran: every value, defaults included, in engineering units "
+                "(summary.json and inputs.json keep SI)."
+            ],
             tables=[(["input", "value", "unit"], rows)],
         ),
-        Section("Warnings", paragraphs=list(warnings) or ["None."]),
+        Section("Warnings", paragraphs=list(warnings) or ["No warnings."]),
     ]
+    if analysis in ABOUT:
+        text, page = ABOUT[analysis]
+        title = page.removesuffix(".md").replace("-", " ")
+        sections.append(
+            Section(
+                "What was computed and how",
+                paragraphs=[text],
+                links=[(f"Theory manual: {title}", theory_link(page))],
+            )
+        )
+    return sections
 
 
 def _cell(item: object) -> str:
@@ -86,6 +109,10 @@ def write_report(path: str | Path, title: str, subtitle: str, sections: list[Sec
     for section in sections:
         parts.append(f"<h2>{html.escape(section.title)}</h2>")
         parts += [f"<p>{html.escape(p)}</p>" for p in section.paragraphs]
+        parts += [
+            f"<p class='note'><a href=\"{html.escape(url)}\">{html.escape(text)}</a></p>"
+            for text, url in section.links
+        ]
         parts += [_table(h, r) for h, r in section.tables]
         parts += [_figure(p, c) for p, c in section.figures]
     parts.append("</body></html>")

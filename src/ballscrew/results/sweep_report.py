@@ -20,6 +20,8 @@ import xarray as xr
 
 from ballscrew.case import Case
 from ballscrew.case.inputs import resolved_inputs
+from ballscrew.plotting import legend_outside, line_styles, zero_noise
+from ballscrew.results.display import NOISE, engineering_array, readable
 from ballscrew.results.folder import (
     SUMMARY_NAME,
     SWEEP_PATTERNS,
@@ -33,33 +35,87 @@ from ballscrew.results.summary import write_summary
 from ballscrew.sweep.axes import SweepAxis
 
 
-def _label(da: xr.DataArray, name: str) -> str:
-    unit = da.attrs.get("units", "")
-    return f"{name} [{unit}]" if unit else name
+def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
+    """Values of ``name`` in engineering units (round-off speeds as 0) and its axis label."""
+    unit = ds[name].attrs.get("units", "")
+    values = zero_noise(ds[name].values, NOISE.get(unit, 0.0))
+    values, unit = engineering_array(values, unit, name)
+    return values, f"{readable(name)} [{unit}]" if unit else readable(name)
 
 
-def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
-    """Line plot over the first swept key; one line per value of the second, if any (PNG)."""
-    da = ds[name]
-    dims = list(da.dims)
-    fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
-    x = ds[dims[0]]
-    if len(dims) == 1:
-        ax.plot(x, da, "o-", markersize=4)
-    else:
-        other = dims[1]
-        for k, level in enumerate(ds[other].values):
-            series = da.isel({other: k}).values.reshape(len(x), -1)[:, 0]
-            unit = ds[other].attrs.get("units", "")
-            ax.plot(x, series, "o-", markersize=3, label=f"{other} = {level:.4g} {unit}".strip())
-        ax.legend(fontsize=7, ncol=2)
-    ax.set_xlabel(_label(x, dims[0]))
-    ax.set_ylabel(_label(da, name))
-    ax.grid(alpha=0.3)
+def _save(fig: plt.Figure, path: Path) -> Path:
     with atomic_file(path) as tmp:
         fig.savefig(tmp, dpi=110, format="png")
     plt.close(fig)
     return path
+
+
+def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
+    """One result over the sweep (PNG): a line over a 1-D sweep; over a 2-D sweep a contour map
+    of the first two swept keys, or one distinct line per value of the second key when it has
+    fewer than three values. Engineering units and readable names on the axes."""
+    da = ds[name]
+    dims = list(da.dims)
+    x, xlabel = _axis(ds, dims[0])
+    z, zlabel = _axis(ds, name)
+    if len(dims) >= 2 and ds.sizes[dims[1]] >= 3 and ds.sizes[dims[0]] >= 3:
+        y, ylabel = _axis(ds, dims[1])
+        grid = z.reshape(len(x), len(y), -1)[:, :, 0]
+        fig, ax = plt.subplots(figsize=(5.8, 4.0), layout="constrained")
+        filled = ax.contourf(x, y, grid.T, levels=14, cmap="viridis")
+        lines = ax.contour(x, y, grid.T, levels=filled.levels[::2], colors="white", linewidths=0.6)
+        ax.clabel(lines, fontsize=7, fmt="%.4g")
+        ax.plot(*np.meshgrid(x, y), ".", color="black", markersize=2)
+        fig.colorbar(filled, ax=ax, label=zlabel)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.set_title(readable(name), fontsize=10)
+        return _save(fig, path)
+    fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
+    if len(dims) == 1:
+        ax.plot(x, z, "o-", markersize=4)
+    else:
+        other = dims[1]
+        levels, unit = engineering_array(
+            ds[other].values, ds[other].attrs.get("units", ""), str(other)
+        )
+        for k, style in enumerate(line_styles(len(levels))):
+            series = z.reshape(len(x), len(levels), -1)[:, k, 0]
+            ax.plot(x, series, markersize=3, label=f"{levels[k]:.4g} {unit}".strip(), **style)
+        legend_outside(ax, fontsize=7, title=readable(str(other)), title_fontsize=7)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(zlabel)
+    ax.set_title(readable(name), fontsize=10)
+    ax.grid(alpha=0.3)
+    return _save(fig, path)
+
+
+def plot_nut_forces(ds: xr.Dataset, path: Path) -> Path:
+    """The nut forces F1 and F2 over a 1-D sweep, the lift-off of nut 2 marked (PNG)."""
+    dim = ds["F1"].dims[0]
+    x, xlabel = _axis(ds, dim)
+    fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
+    f1, f2 = ds["F1"].values * 1e-3, ds["F2"].values * 1e-3
+    ax.plot(x, f1, "o-", markersize=4, label="nut 1 (loaded) F1")
+    ax.plot(x, f2, "s--", markersize=4, label="nut 2 (preload side) F2")
+    off = np.flatnonzero(f2 <= 1e-9 * np.nanmax(np.abs(f1)))
+    if off.size:
+        ax.axvline(x[off[0]], color="grey", linestyle=":", linewidth=1.2)
+        ax.annotate(
+            "nut 2 lifted off",
+            (x[off[0]], 0.5 * np.nanmax(f1)),
+            xytext=(4, 0),
+            textcoords="offset points",
+            fontsize=8,
+            color="dimgray",
+        )
+    ax.axhline(0.0, color="black", linewidth=0.6)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("nut force [kN]")
+    ax.set_title("Nut forces", fontsize=10)
+    ax.grid(alpha=0.3)
+    legend_outside(ax, fontsize=7)
+    return _save(fig, path)
 
 
 def sweep_inputs(
@@ -105,8 +161,19 @@ def write_sweep(
 def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any]) -> None:
     write_netcdf(ds, folder / "sweep.nc")
     names = [n for n in ds.data_vars if n not in ("error", "failed")]
-    figures = [
-        (plot_variable(ds, n, folder / f"sweep_{n}.png"), f"{n} over the sweep") for n in names
+    forces = {"F1", "F2"} <= set(names) and ds["F1"].ndim == 1
+    figures = []
+    if forces:
+        names = [n for n in names if n not in ("F1", "F2")]
+        figures.append(
+            (
+                plot_nut_forces(ds, folder / "sweep_nut_forces.png"),
+                "Nut forces over the sweep; a dotted line marks the lift-off of nut 2.",
+            )
+        )
+    figures += [
+        (plot_variable(ds, n, folder / f"sweep_{n}.png"), f"{readable(str(n))} over the sweep")
+        for n in names
     ]
     failed = np.argwhere(ds["failed"].values)
     dims = list(ds["failed"].dims)
@@ -132,7 +199,7 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, 
     with atomic_file(folder / SUMMARY_NAME) as tmp:
         write_summary(tmp, summary)
     sections = [
-        *inputs_warnings_sections(inputs, warnings),
+        *inputs_warnings_sections(inputs, warnings, "sweep"),
         Section(
             "Sweep",
             paragraphs=[

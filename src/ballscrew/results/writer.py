@@ -8,6 +8,8 @@ A results folder holds
 * ``<figure>.png`` — its figures;
 * ``report.html`` — one self-contained page: the inputs, the warnings, then the result's own
   sections with their figures embedded;
+* ``summary.csv``, ``results.xlsx``, ``<stem>.mat`` … — the exports asked for
+  (:mod:`ballscrew.results.export`);
 * ``case.toml`` — the case file as the user gave it (when there is one) and ``inputs.json``,
   the case as resolved (every default filled in, SI values with units).
 
@@ -18,7 +20,7 @@ from __future__ import annotations
 
 import json
 import shutil
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -27,6 +29,7 @@ import xarray as xr
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.case import Case
 from ballscrew.case.plausibility import implausible_values
+from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import results_folder, write_netcdf
 from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
@@ -61,14 +64,18 @@ def write_results(
     out: str | Path,
     case_file: str | Path | None = None,
     extra_files: Mapping[str, bytes] | None = None,
+    export: Sequence[str] = (),
 ) -> Path:
     """Write the results folder of ``result`` at ``out`` and return its path.
 
     ``case_file``: the case file as given, copied into the folder as ``case.toml``.
     ``extra_files``: further files of the command (file name → content), written with the rest
     so that the folder still appears complete or not at all.
+    ``export``: formats of :func:`~ballscrew.results.export.export_results` (``csv``,
+    ``xlsx``, ``mat``) written into the folder before it appears.
     """
     warnings = result_warnings(result)
+    export = parse_formats(export)
     with results_folder(out) as folder:
         summary = {
             "analysis": result.analysis,
@@ -85,7 +92,8 @@ def write_results(
         for stem, dataset in _datasets(result).items():
             write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
-        sections = inputs_warnings_sections(result.inputs, warnings) + _headline_section(summary)
+        sections = inputs_warnings_sections(result.inputs, warnings, result.analysis)
+        sections += _headline_section(summary)
         for s in result.report():
             sections.append(
                 Section(
@@ -98,4 +106,6 @@ def write_results(
         write_report(folder / "report.html", result.title, f"ballscrew {result.analysis}", sections)
         for name, content in (extra_files or {}).items():
             (folder / name).write_bytes(content)
+        if export:
+            export_results(folder, export)
     return Path(out).resolve()
