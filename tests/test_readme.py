@@ -10,6 +10,7 @@ import os
 import re
 import shlex
 import tokenize
+import tomllib
 from decimal import Decimal
 from pathlib import Path
 from typing import Any
@@ -19,8 +20,10 @@ import pytest
 from typer.testing import CliRunner
 
 import ballscrew
+from ballscrew import load_case
+from ballscrew.case.loader import apply_overrides
 from ballscrew.cli import app
-from quick_cases import EXAMPLES, REPO, quick_overrides, write_case
+from quick_cases import EXAMPLES, REPO, dump_toml, quick_overrides, write_case
 
 README = (REPO / "README.md").read_text(encoding="utf-8")
 NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
@@ -171,7 +174,9 @@ def quick_argv(argv: list[str], folder: Path) -> list[str]:
 
 #: The README's commands that run here; a sweep starts a Dask cluster (its machinery runs in
 #: tests/sweep and tests/test_examples.py), so it is only parsed.
-RUNNABLE = [argv for argv in COMMANDS if argv[0] != "sweep"]
+RUNNABLE = [argv for argv in COMMANDS if argv[0] not in ("sweep", "init") and "my.toml" not in argv]
+#: The catalogue-sheet walk-through: ``init ... > my.toml``, then commands on my.toml.
+SHEET = [argv for argv in COMMANDS if argv[0] == "init" or "my.toml" in argv]
 
 
 @pytest.mark.parametrize("argv", RUNNABLE, ids=[" ".join(a[:2]) for a in RUNNABLE])
@@ -181,6 +186,24 @@ def test_every_readme_command_runs_and_writes_its_report(tmp_path, argv):
     assert result.exit_code == 0, f"ballscrew {' '.join(argv)}:\n{result.output}"
     out = tmp_path / argv[argv.index("--out") + 1]
     assert (out / "report.html").is_file() and (out / "summary.json").is_file()
+
+
+def test_the_catalogue_sheet_walk_through_runs(tmp_path):
+    """``init`` as written prints a case; every README command on it runs (quick numerics)."""
+    (init,) = [argv for argv in SHEET if argv[0] == "init"]
+    made = CliRunner().invoke(app, init[: init.index(">")])
+    assert made.exit_code == 0, made.output
+    full = tmp_path / "full.toml"
+    full.write_text(made.stdout, encoding="utf-8")
+    raw = apply_overrides(tomllib.loads(made.stdout), quick_overrides(load_case(full)), "my.toml")
+    quick = tmp_path / "my.toml"
+    quick.write_text(dump_toml(raw), encoding="utf-8")
+    for argv in (a for a in SHEET if a[0] != "init"):
+        argv = [str(quick) if w == "my.toml" else w for w in argv]
+        argv[argv.index("--out") + 1] = str(tmp_path / argv[argv.index("--out") + 1])
+        result = CliRunner().invoke(app, argv)
+        assert result.exit_code == 0, f"ballscrew {' '.join(argv)}:\n{result.output}"
+        assert (Path(argv[argv.index("--out") + 1]) / "report.html").is_file()
 
 
 def test_the_readme_calibration_fits_the_torque_scale():

@@ -67,7 +67,7 @@ def test_index_shows_the_headlines_and_key_figure_of_each_descriptor(tmp_path):
         _png(sweep / name)
     assert ANALYSES["thermal-network"].headlines[0] == "steady.max_temperature_rise"
     text = write_index(tmp_path).read_text()
-    assert "steady: max temperature rise = 12.5 K" in text
+    assert "max temperature rise = 12.5 K" in text
     assert "points = 7" not in text  # only the descriptor's headlines
     assert "points = 3" in text  # a sweep's headlines
     assert "sw: sweep_resistance_per_area" in text  # the sweep's key figure, not its first PNG
