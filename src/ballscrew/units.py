@@ -218,12 +218,13 @@ DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
     "temperature": (("°C", 1.0),),
     "temperature_difference": (("K", 1.0),),
     "time": (("s", 1.0), ("min", 60.0), ("h", 3600.0)),
+    "duration": (("s", 1.0), ("h", 3600.0)),
     "power": (("W", 1.0), ("kW", 1e3)),
     "torque": (("N·m", 1.0),),
     "stiffness": (("N/µm", 1e6),),
     "viscosity": (("mPa·s", 1e-3), ("Pa·s", 1.0)),
     "thermal_resistance": (("K/W", 1.0),),
-    "area_resistance": (("m²·K/W", 1.0),),
+    "area_resistance": (("mm²·K/W", 1e-6), ("m²·K/W", 1.0)),
     "heat_transfer_coefficient": (("W/(m²·K)", 1.0),),
     "thermal_conductivity": (("W/(m·K)", 1.0),),
     "energy": (("J", 1.0), ("kJ", 1e3), ("MJ", 1e6)),
@@ -267,6 +268,27 @@ KIND_OF_UNIT: dict[str, str] = {
     "rev": "revolutions",
     "": "dimensionless",
 }
+
+#: Lengths that are small displacements (shown in µm whatever their size).
+_DISPLACEMENTS = ("depth", "elongation", "displacement", "approach", "deflection")
+#: Words that make a temperature a difference (kelvin), not an absolute value (°C).
+_DIFFERENCES = ("rise", "difference", "delta", "error")
+
+
+def display_kind(unit: str, key: str = "") -> str | None:
+    """The display kind of a value in SI ``unit`` named ``key`` (a dotted summary key or a case
+    field); None when the unit has no engineering display. An absolute temperature (a key that
+    names a temperature, not a rise) is in °C, a worn depth or elongation in µm, a count of
+    revolutions in rev."""
+    name = key.rsplit(".", 1)[-1].lower()
+    if unit == "K" and "temperature" in name and not any(w in name for w in _DIFFERENCES):
+        return "temperature"
+    if not unit and ("revolutions" in name or name.endswith("_life")):
+        return "revolutions"
+    if unit == "m" and any(word in name for word in _DISPLACEMENTS):
+        return "displacement"
+    return KIND_OF_UNIT.get(unit)
+
 
 _CELSIUS = 273.15
 _EXPONENT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")

@@ -10,9 +10,10 @@ import xarray as xr
 
 from ballscrew.plotting import line_styles, zero_noise
 from ballscrew.results.about import ABOUT, theory_link
-from ballscrew.results.display import engineering, engineering_array, format_quantity, readable
+from ballscrew.results.display import engineering, engineering_array, readable
 from ballscrew.results.report import inputs_warnings_sections
 from ballscrew.results.sweep_report import plot_nut_forces, plot_variable
+from ballscrew.units import format_quantity
 
 
 @pytest.mark.parametrize(
@@ -20,7 +21,8 @@ from ballscrew.results.sweep_report import plot_nut_forces, plot_variable
     [
         (0.04, "m", "screw.pitch_diameter", (40.0, "mm")),
         (2.43e-6, "m", "max_wear_depth", (2.43, "µm")),
-        (9.633e8, "Pa", "p0", (0.9633, "GPa")),
+        (9.633e8, "Pa", "p0", (963.3, "MPa")),
+        (2.06e11, "Pa", "E", (206.0, "GPa")),
         (2.1e7, "Pa", "yield", (21.0, "MPa")),
         (157.07963267948966, "rad/s", "operating.speed", (1500.0, "rpm")),
         (math.pi / 4, "rad", "contact_angle", (45.0, "°")),
@@ -29,6 +31,7 @@ from ballscrew.results.sweep_report import plot_nut_forces, plot_variable
         (12.5, "K", "max_temperature_rise", (12.5, "K")),
         (0.42, "N*m", "torque", (0.42, "N·m")),
         (28800.0, "s", "duration", (8.0, "h")),
+        (2.43e-6, "m", "wear_depth", (2.43, "µm")),
         (1.37e-7, "m^2*K/W", "resistance_per_area", (0.137, "mm²·K/W")),
     ],
 )
@@ -54,7 +57,7 @@ def test_one_spelling_per_unit():
 def test_arrays_share_one_unit_and_headlines_keep_four_figures():
     values, unit = engineering_array(np.array([1e-7, 2.4e-6]), "m")
     assert unit == "µm" and values == pytest.approx([0.1, 2.4])
-    assert format_quantity(9.633e8, "Pa") == "0.9633 GPa"
+    assert format_quantity(9.633e8, "Pa") == "963.3 MPa"
     assert format_quantity(4.652 * math.pi / 30, "rad/s") == "4.652 rpm"
 
 
@@ -135,7 +138,7 @@ def test_a_2d_sweep_is_a_contour_map_with_readable_axes(tmp_path, monkeypatch):
     path = plot_variable(_sweep_2d(), "resistance_per_area", tmp_path / "map.png")
     assert path.stat().st_size > 0
     assert drawn == [(5, 4)]  # (axial loads, D values): a map, not 4 lines
-    assert "axial load [N]" in labels and "resistance per area [mm²·K/W]" in labels
+    assert "axial load [kN]" in labels and "resistance per area [mm²·K/W]" in labels
 
 
 def test_a_swept_spin_of_round_off_is_plotted_as_zero(tmp_path, monkeypatch):
@@ -159,4 +162,4 @@ def test_the_nut_forces_mark_the_lift_off(tmp_path, monkeypatch):
         coords={"operating.axial_load": ("operating.axial_load", load, {"units": "N"})},
     )
     plot_nut_forces(ds, tmp_path / "forces.png")
-    assert lines == [4000.0]
+    assert lines == [4.0]  # kN, the axis unit

@@ -12,7 +12,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from ballscrew.analyses.catalog import ANALYSES
-from ballscrew.units import KIND_OF_UNIT, format_number, format_quantity
+from ballscrew.units import display_kind, format_number, format_quantity
 
 __all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
 
@@ -20,27 +20,11 @@ __all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
 _GROUPS = {"steady", "numerical", "recommended", "heat_balance", "contacts", "nuts", "margins"}
 
 
-#: Lengths that are small displacements (shown in µm whatever their size).
-_DISPLACEMENTS = ("depth", "elongation", "displacement", "approach", "deflection")
-
-
 def label_of(dotted: str) -> str:
     """A readable label of a dotted summary key: ``nuts.nut1.orbital_speed`` → ``nut1 orbital
     speed``, ``contacts.screw.numerical.peak_pressure`` → ``screw peak pressure``."""
     parts = [p for p in dotted.split(".") if p not in _GROUPS] or dotted.split(".")[-1:]
     return " ".join(parts[-2:]).replace("_", " ")
-
-
-def _kind(dotted: str, unit: str) -> str | None:
-    """The display kind of a summary value (an absolute temperature is in °C)."""
-    name = dotted.rsplit(".", 1)[-1]
-    if unit == "K" and "temperature" in name and "rise" not in name:
-        return "temperature"
-    if not unit and ("revolutions" in name or name.endswith("_life")):  # counts of turns
-        return "revolutions"
-    if unit == "m" and any(word in name for word in _DISPLACEMENTS):
-        return "displacement"  # always in µm, as a machine-tool engineer reads them
-    return KIND_OF_UNIT.get(unit)
 
 
 def format_entry(dotted: str, entry: Any) -> str | None:
@@ -52,7 +36,7 @@ def format_entry(dotted: str, entry: Any) -> str | None:
         return None
     if isinstance(entry, int):
         return str(entry)
-    kind = _kind(dotted, unit)
+    kind = display_kind(unit, dotted)
     if kind is None:  # a unit without an engineering display
         return f"{format_number(entry)} {unit}".rstrip()
     return format_quantity(entry, kind)

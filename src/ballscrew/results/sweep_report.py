@@ -21,7 +21,7 @@ import xarray as xr
 from ballscrew.case import Case
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.plotting import legend_outside, line_styles, zero_noise
-from ballscrew.results.display import NOISE, engineering_array, readable
+from ballscrew.results.display import engineering_array, readable
 from ballscrew.results.folder import (
     SUMMARY_NAME,
     SWEEP_PATTERNS,
@@ -33,12 +33,13 @@ from ballscrew.results.folder import (
 from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
 from ballscrew.sweep.axes import SweepAxis
+from ballscrew.units import KIND_OF_UNIT, NOISE_FLOOR
 
 
 def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
     """Values of ``name`` in engineering units (round-off speeds as 0) and its axis label."""
     unit = ds[name].attrs.get("units", "")
-    values = zero_noise(ds[name].values, NOISE.get(unit, 0.0))
+    values = zero_noise(ds[name].values, NOISE_FLOOR.get(KIND_OF_UNIT.get(unit, ""), 0.0))
     values, unit = engineering_array(values, unit, name)
     return values, f"{readable(name)} [{unit}]" if unit else readable(name)
 
