@@ -22,13 +22,13 @@ from ballscrew.calibration.fit import (
     CalibrationResult,
     fit_wear_coefficient,
 )
-from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
 from ballscrew.calibration.measured import (
     QUANTITIES,
     MeasuredHistory,
     measured_history,
     read_measured,
 )
+from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
 
 __all__ = [
     "DEFAULT_FIT",
@@ -46,4 +46,5 @@ __all__ = [
     "fit_wear_coefficient",
     "measured_history",
     "read_measured",
+    "residual_diagnostics",
 ]

@@ -38,7 +38,9 @@ def as_measured(measured: Any, quantity: str = "friction_torque") -> MeasuredHis
         names = [c for c in QUANTITIES if c in columns]
         if "revolutions" not in columns or len(names) != 1:
             raise InputError(
-                "measured", list(columns), f"'revolutions' and exactly one of {', '.join(QUANTITIES)}"
+                "measured",
+                list(columns),
+                f"'revolutions' and exactly one of {', '.join(QUANTITIES)}",
             )
         return measured_history(
             measured["revolutions"].to_numpy(), measured[names[0]].to_numpy(), names[0], "DataFrame"
@@ -127,9 +129,7 @@ def calibrate(
     if "running_in_depth" in names:
         running = getattr(wear, "running_in", None)
         if running is None:
-            raise InputError(
-                "--fit", "running_in_depth", "a case with a [wear.running_in] section"
-            )
+            raise InputError("--fit", "running_in_depth", "a case with a [wear.running_in] section")
         start["running_in_depth"] = running.depth
     scale0 = getattr(wear, "torque_scale", None) or 1.0
     initial_torque = getattr(wear, "initial_torque", None)

@@ -72,9 +72,7 @@ def residual_diagnostics(residuals: ArrayLike) -> ResidualDiagnostics:
     pos = int(np.count_nonzero(signs > 0))
     neg = n - pos
     expected = 2.0 * pos * neg / n + 1.0 if n else 0.0
-    variance = (
-        2.0 * pos * neg * (2.0 * pos * neg - n) / (n * n * (n - 1.0)) if n > 1 else 0.0
-    )
+    variance = 2.0 * pos * neg * (2.0 * pos * neg - n) / (n * n * (n - 1.0)) if n > 1 else 0.0
     p = float(norm.cdf((runs - expected) / math.sqrt(variance))) if variance > 0.0 else 1.0
     m = e.size
     total = float(e @ e)
