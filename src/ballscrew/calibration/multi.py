@@ -31,7 +31,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares
+from scipy.optimize import least_squares, minimize_scalar
 
 from ballscrew.calibration.diagnostics import residual_diagnostics
 from ballscrew.calibration.fit import (
@@ -138,10 +138,10 @@ def fit_parameters(
     *,
     torque_scale: float = 1.0,
     fit_until: float | None = None,
-    max_evaluations: int = 80,
+    max_evaluations: int = 200,
     diff_step: float = 1.0e-2,
     scan_steps: int = 6,
-    refine_steps: int = 2,
+    refine_steps: int = 6,
 ) -> CalibrationResult:
     """Fit the parameters ``fit`` (names of :data:`FIT_PARAMETERS`) to ``data``.
 
@@ -176,19 +176,13 @@ def fit_parameters(
     lower = [math.log(FIT_PARAMETERS[n].lower) for n in model_names]
     upper = [math.log(FIT_PARAMETERS[n].upper) for n in model_names]
     x0 = [math.log(base[n]) for n in model_names]
-    scan: tuple[tuple[float, float], ...] = ()
-    if "wear_coefficient" in model_names:
+    base, scan, k_bracket = _start(
+        model, fitted_data, base, model_names, fit_scale, scan_steps, refine_steps
+    )
+    x0 = [math.log(base[n]) for n in model_names]
+    if k_bracket is not None:
         i = model_names.index("wear_coefficient")
-        objective = _Objective(
-            lambda k: _History(*model.run({**base, "wear_coefficient": k}), data.quantity),
-            fitted_data,
-            fit_scale,
-            max_evaluations,
-        )
-        ln_k, scanned = _scan(objective, x0[i], scan_steps)
-        scan = tuple((math.exp(v), objective.rms_at(v)[0]) for v in scanned)
-        x0[i] = _refine(objective, ln_k, scanned, refine_steps)
-        lower[i], upper[i] = ln_k - _LN10, ln_k + _LN10
+        lower[i], upper[i] = k_bracket
 
     def values_of(x: np.ndarray) -> dict[str, float]:
         return {**base, **{n: math.exp(v) for n, v in zip(model_names, x, strict=False)}}
@@ -312,6 +306,81 @@ def fit_parameters(
         prediction_sigma=sigma,
         diagnostics=diagnostics.as_dict(),
     )
+
+
+def _grid(name: str, value: float, points: int = 5) -> list[float]:
+    """Half-decade trial values of ``name`` around ``value`` (towards the interior of its
+    bounds), the start first."""
+    spec = FIT_PARAMETERS[name]
+    step = math.sqrt(10.0)
+    trials = [value * step**k for k in range(-(points // 2), points - points // 2)]
+    if value * step > spec.upper:  # at the upper bound: go down only
+        trials = [value / step**k for k in range(points)]
+    inside = [v for v in trials if spec.lower <= v <= spec.upper]
+    return sorted(inside, key=lambda v: abs(math.log(v / value)))
+
+
+def _start(
+    model: _Model,
+    data: MeasuredHistory,
+    base: dict[str, float],
+    names: list[str],
+    fit_scale: bool,
+    scan_steps: int,
+    refine_steps: int,
+) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
+    """Starting values: for each parameter other than K in turn, the best of half-decade trial
+    values, K scanned at each (a decade scan, surrogate steps and, with other parameters, a
+    bounded Brent search in ln K to 0.02); the scan of the best trial; and the bracket of ln K
+    (a decade either side of its best)."""
+    fit_k = "wear_coefficient" in names
+
+    def best_k(values: dict[str, float]) -> tuple[float, float, tuple[tuple[float, float], ...]]:
+        objective = _Objective(
+            lambda k: _History(*model.run({**values, "wear_coefficient": k}), data.quantity),
+            data,
+            fit_scale,
+            model.max_evaluations,
+        )
+        if not fit_k:
+            return (
+                values["wear_coefficient"],
+                objective.rms_at(math.log(values["wear_coefficient"]))[0],
+                (),
+            )
+        ln_k, scanned = _scan(objective, math.log(values["wear_coefficient"]), scan_steps)
+        best = _refine(objective, ln_k, scanned, refine_steps)
+        if len(names) > 1:  # a sharper valley: a bounded Brent search in ln K
+            line = minimize_scalar(
+                lambda v: objective.rms_at(v)[0],
+                bounds=(ln_k - _LN10, ln_k + _LN10),
+                method="bounded",
+                options={"xatol": 0.02, "maxiter": 14},
+            )
+            if line.fun < objective.rms_at(best)[0]:
+                best = float(line.x)
+        scan = tuple((math.exp(v), objective.rms_at(v)[0]) for v in scanned)
+        return math.exp(best), objective.rms_at(best)[0], scan
+
+    k, rms, scan = best_k(base)
+    current = {**base, "wear_coefficient": k}
+    for name in (n for n in names if n != "wear_coefficient"):
+        for trial in _grid(name, current[name])[1:]:
+            try:
+                k_t, rms_t, scan_t = best_k({**current, name: trial})
+            except CalibrationError:  # K cannot reach the data at this trial value
+                continue
+            if rms_t < rms:
+                current, rms, scan = (
+                    {**current, name: trial, "wear_coefficient": k_t},
+                    rms_t,
+                    scan_t,
+                )
+    bracket = None
+    if fit_k:
+        ln_k = math.log(current["wear_coefficient"])
+        bracket = (ln_k - _LN10, ln_k + _LN10)
+    return current, scan, bracket
 
 
 @dataclass(frozen=True)

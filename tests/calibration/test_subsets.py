@@ -1,0 +1,171 @@
+"""Calibration of every parameter subset: known values come back from noisy synthetic
+histories, the held-out error matches the noise, and the warnings fire."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from ballscrew.calibration import (
+    CalibrationError,
+    calibrate,
+    calibrated_case,
+    fit_parameters,
+    measured_history,
+    residual_diagnostics,
+)
+from ballscrew.case import load_case, with_overrides
+from ballscrew.errors import InputError
+
+from .multi_model import MEASURED_AT, START, TRUE, MultiModel, history
+
+NOISE = 0.002  # N·m
+K_ONLY = {"wear_coefficient": START["wear_coefficient"]}
+
+
+def noisy(names, seed: int = 1, noise: float = NOISE):
+    truth = {k: v for k, v in TRUE.items() if k in names or k == "wear_coefficient"}
+    model = {k: v for k, v in truth.items() if k != "torque_scale"}
+    scale = TRUE["torque_scale"] if "torque_scale" in names else 1.0
+    clean = history(model, MEASURED_AT, scale).friction_torque
+    rng = np.random.default_rng(seed)
+    return measured_history(
+        MEASURED_AT, clean + rng.normal(0.0, noise, clean.size), "friction_torque"
+    )
+
+
+SUBSETS = [
+    ("wear_coefficient",),
+    ("wear_coefficient", "torque_scale"),
+    ("wear_coefficient", "film_factor"),
+    ("wear_coefficient", "running_in_depth"),
+    ("wear_coefficient", "film_factor", "torque_scale"),
+    ("wear_coefficient", "running_in_depth", "torque_scale"),
+    ("film_factor", "torque_scale"),
+]
+
+
+@pytest.mark.parametrize("names", SUBSETS, ids=["+".join(s) for s in SUBSETS])
+def test_known_parameters_come_back(names) -> None:
+    start = {k: v for k, v in START.items() if k in names or k == "wear_coefficient"}
+    if "wear_coefficient" not in names:
+        start["wear_coefficient"] = TRUE["wear_coefficient"]
+    result = fit_parameters(MultiModel(), noisy(names), names, start)
+    for name in names:
+        error = result.errors[name]
+        assert abs(result.values[name] - TRUE[name]) < 3.5 * error, (name, result.values)
+        assert 0.0 < error < 0.3 * TRUE[name]
+    assert result.rms_residual == pytest.approx(NOISE, rel=0.3)
+    assert not result.diagnostics["systematic"]
+
+
+def test_held_out_error_matches_the_noise() -> None:
+    names = ("wear_coefficient", "torque_scale")
+    errors = []
+    for seed in range(4):
+        result = fit_parameters(MultiModel(), noisy(names, seed), names, K_ONLY, fit_until=0.75e6)
+        assert result.n_fit == int(np.count_nonzero(MEASURED_AT <= 0.75e6))
+        errors.append(result.prediction_rmse)
+        band = result.prediction_sigma
+        assert band is not None and np.all(band >= NOISE * 0.5)
+    assert np.mean(errors) == pytest.approx(NOISE, rel=0.35)
+
+
+def test_prediction_band_widens_beyond_the_fit() -> None:
+    names = ("wear_coefficient", "torque_scale")
+    result = fit_parameters(MultiModel(), noisy(names), names, K_ONLY, fit_until=0.5e6)
+    rev, sigma = result.model_revolutions, result.prediction_sigma
+    assert sigma[rev > 1.3e6].mean() > 1.05 * sigma[(rev > 0.1e6) & (rev < 0.5e6)].mean()
+
+
+def test_systematic_residuals_are_flagged() -> None:
+    """Data with strong running-in fitted by a model without it: long runs of one sign."""
+    data = noisy(("wear_coefficient", "running_in_depth"), noise=2e-4)
+    result = fit_parameters(MultiModel(), data, ("wear_coefficient", "torque_scale"), K_ONLY)
+    assert result.diagnostics["systematic"]
+    assert result.diagnostics["runs_test_p_value"] < 0.01
+
+
+def test_runs_test_of_noise_and_of_a_trend() -> None:
+    rng = np.random.default_rng(3)
+    calm = residual_diagnostics(rng.normal(size=200))
+    assert not calm.systematic and abs(calm.lag1_autocorrelation) < 0.15
+    trend = residual_diagnostics(np.sin(np.linspace(0.0, 6.0, 200)))
+    assert trend.systematic and trend.runs <= 3
+
+
+def test_unknown_and_ill_posed_requests() -> None:
+    with pytest.raises(InputError, match="--fit"):
+        fit_parameters(MultiModel(), noisy(()), ("wear_depth_factor",), K_ONLY)
+    preload = measured_history(MEASURED_AT, np.linspace(1500, 900, MEASURED_AT.size), "preload")
+    with pytest.raises(InputError, match="torque_scale"):
+        fit_parameters(MultiModel(), preload, ("torque_scale",), K_ONLY)
+    with pytest.raises(InputError, match="--fit-until"):
+        fit_parameters(MultiModel(), noisy(()), ("wear_coefficient",), K_ONLY, fit_until=2e6)
+    with pytest.raises(CalibrationError, match="cannot determine"):
+        fit_parameters(
+            MultiModel(), noisy(()), ("wear_coefficient",), K_ONLY, fit_until=MEASURED_AT[0]
+        )
+
+
+class CaseModel:
+    """The closed form driven by the case's ``[wear]`` keys."""
+
+    def __call__(self, case):
+        w = case.wear
+        values = {"wear_coefficient": w.coefficient, "film_factor": w.film_factor}
+        if w.running_in is not None:
+            values["running_in_depth"] = w.running_in.depth
+        return MultiModel()(values) if w.torque_scale == 1.0 else None
+
+
+@pytest.fixture
+def case(wear_case_path):
+    return load_case(wear_case_path)
+
+
+def test_calibrate_api_fits_the_scale_by_default_and_warns(case) -> None:
+    data = noisy(("wear_coefficient", "running_in_depth", "torque_scale"), noise=2e-4)
+    result = calibrate(case, data, model=CaseModel())
+    assert set(result.values) == {"wear_coefficient", "torque_scale"}
+    assert any("systematic" in w for w in result.warnings)
+    assert result.calibrated_range["load_max"] == 4000.0
+    with_running_in = with_overrides(
+        case, {"wear.running_in": {"D": 1.3, "G": 1e-9, "depth": 1e-6}}
+    )
+    good = calibrate(
+        with_running_in,
+        data,
+        fit="wear_coefficient,running_in_depth,torque_scale",
+        fit_until=1.0e6,
+        model=CaseModel(),
+    )
+    assert not any("systematic" in w for w in good.warnings)
+    assert good.values["running_in_depth"] == pytest.approx(0.3e-6, rel=0.2)
+    assert good.prediction_rmse < 3 * 2e-4
+    with pytest.raises(InputError, match="running_in"):
+        calibrate(case, data, fit=("wear_coefficient", "running_in_depth"), model=CaseModel())
+
+
+def test_preload_data_fit_only_k_by_default(case) -> None:
+    values = history({"wear_coefficient": 2e-4}, MEASURED_AT).preload
+    data = measured_history(MEASURED_AT, values * (1 + 1e-3 * np.sin(MEASURED_AT)), "preload")
+    result = calibrate(case, data, model=CaseModel())
+    assert list(result.values) == ["wear_coefficient"]
+    assert result.wear_coefficient == pytest.approx(2e-4, rel=0.01)
+
+
+def test_calibrated_case_carries_the_range(case) -> None:
+    from ballscrew.analyses.wear import wear_options
+    from ballscrew.analyses.wear_duty import range_messages
+
+    result = calibrate(case, noisy(("wear_coefficient",)), model=CaseModel())
+    tuned = calibrated_case(result)
+    assert tuned.wear.coefficient == pytest.approx(result.wear_coefficient)
+    assert tuned.wear.calibrated.load_min == 2000.0
+    assert range_messages(tuned.wear, wear_options(tuned).programme) == []
+    fast = with_overrides(
+        tuned, {"wear.programme": [{"axial_load": 3000, "speed": 157.0, "revolutions": 1e5}]}
+    )
+    (message,) = range_messages(fast.wear, wear_options(fast).programme)
+    assert "1499 rpm" in message and "extrapolation" in message
