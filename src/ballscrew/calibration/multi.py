@@ -290,7 +290,7 @@ def fit_parameters(
         n_points=n_fit,
         parameters=p,
         evaluations=len(model.cache),
-        initial_coefficient=float(base.get("wear_coefficient", math.nan)),
+        initial_coefficient=float(start.get("wear_coefficient", math.nan)),
         revolutions=data.revolutions,
         measured=data.values,
         fitted=fitted_all,
