@@ -65,7 +65,7 @@ def test_programme_and_duty_together_are_refused(case: Case) -> None:
     raw = case.model_dump()
     raw["wear"]["programme"] = [{"axial_load": 1000.0, "speed": 10.0, "revolutions": 1e4}]
     both = type(case).model_validate(raw)
-    with pytest.raises(InputError, match="wear.programme"):
+    with pytest.raises(InputError, match=r"wear\.programme"):
         wear_options(both)
 
 
