@@ -86,10 +86,11 @@ def wear_options(case: Case) -> WearOptions:
 
 
 def _programme(case: Case, spec: WearSpec) -> tuple[WearLevel, ...]:
-    """``[[wear.programme]]``, or the case's ``[[duty]]`` at its operating points."""
+    """``[[wear.programme]]``, or the case's ``[[duty]]`` at its operating points (then the
+    programme must be left at its default)."""
     if not case.duty:
         return tuple(WearLevel(lv.axial_load, lv.speed, lv.revolutions) for lv in spec.programme)
-    if case.wear is not None and "programme" in case.wear.model_fields_set:
+    if spec.programme != WearSpec().programme:  # a programme of its own besides the duty
         raise InputError(
             "wear.programme",
             f"{len(spec.programme)} levels",

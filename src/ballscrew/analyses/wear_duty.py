@@ -63,9 +63,23 @@ def _segment_level(
     )
 
 
+_CACHE: dict[str, tuple[WearLevel, ...]] = {}
+_CACHE_SIZE = 16
+
+
 def duty_programme(case: Case) -> tuple[WearLevel, ...]:
     """The wear levels of ``case.duty`` (see the module docstring); one operating point per
-    distinct (speed, load)."""
+    distinct (speed, load). The operating points do not depend on ``[wear]``: a calibration's
+    runs of one case (only its ``[wear]`` values change) reuse them."""
+    key = case.model_dump_json(exclude={"wear", "name", "description"})
+    if key not in _CACHE:
+        if len(_CACHE) >= _CACHE_SIZE:
+            _CACHE.pop(next(iter(_CACHE)))
+        _CACHE[key] = _duty_programme(case)
+    return _CACHE[key]
+
+
+def _duty_programme(case: Case) -> tuple[WearLevel, ...]:
     points: dict[tuple[float, float, float], WearLevel] = {}
     levels: list[WearLevel] = []
     start = None  # each iteration starts at the previous contact temperature

@@ -308,7 +308,7 @@ def fit_parameters(
     )
 
 
-def _grid(name: str, value: float, points: int = 5) -> list[float]:
+def _grid(name: str, value: float, points: int = 3) -> list[float]:
     """Half-decade trial values of ``name`` around ``value`` (towards the interior of its
     bounds), the start first."""
     spec = FIT_PARAMETERS[name]
@@ -330,12 +330,16 @@ def _start(
     refine_steps: int,
 ) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
     """Starting values: for each parameter other than K in turn, the best of half-decade trial
-    values, K scanned at each (a decade scan, surrogate steps and, with other parameters, a
-    bounded Brent search in ln K to 0.02); the scan of the best trial; and the bracket of ln K
-    (a decade either side of its best)."""
+    values, K re-fitted at each (first a decade scan and surrogate steps, then, with other
+    parameters, a bounded Brent search in ln K to 0.02); the decade scan; and the bracket of
+    ln K (a decade either side of its best)."""
     fit_k = "wear_coefficient" in names
 
-    def best_k(values: dict[str, float]) -> tuple[float, float, tuple[tuple[float, float], ...]]:
+    def best_k(
+        values: dict[str, float], around: float | None = None
+    ) -> tuple[float, float, tuple[tuple[float, float], ...]]:
+        """Best K at ``values`` (m closed-form): from the decade scan, or, ``around`` a known
+        ln K, by a bounded Brent search a decade either side; its RMS; the scan."""
         objective = _Objective(
             lambda k: _History(*model.run({**values, "wear_coefficient": k}), data.quantity),
             data,
@@ -343,23 +347,25 @@ def _start(
             model.max_evaluations,
         )
         if not fit_k:
-            return (
-                values["wear_coefficient"],
-                objective.rms_at(math.log(values["wear_coefficient"]))[0],
-                (),
-            )
-        ln_k, scanned = _scan(objective, math.log(values["wear_coefficient"]), scan_steps)
-        best = _refine(objective, ln_k, scanned, refine_steps)
-        if len(names) > 1:  # a sharper valley: a bounded Brent search in ln K
-            line = minimize_scalar(
-                lambda v: objective.rms_at(v)[0],
-                bounds=(ln_k - _LN10, ln_k + _LN10),
-                method="bounded",
-                options={"xatol": 0.02, "maxiter": 14},
-            )
-            if line.fun < objective.rms_at(best)[0]:
-                best = float(line.x)
-        scan = tuple((math.exp(v), objective.rms_at(v)[0]) for v in scanned)
+            ln_k = math.log(values["wear_coefficient"])
+            return values["wear_coefficient"], objective.rms_at(ln_k)[0], ()
+        scan: tuple[tuple[float, float], ...] = ()
+        if around is None:
+            ln_k, scanned = _scan(objective, math.log(values["wear_coefficient"]), scan_steps)
+            best = _refine(objective, ln_k, scanned, refine_steps)
+            scan = tuple((math.exp(v), objective.rms_at(v)[0]) for v in scanned)
+            if len(names) == 1:
+                return math.exp(best), objective.rms_at(best)[0], scan
+        else:
+            ln_k = best = around
+        line = minimize_scalar(  # other parameters make the valley in ln K sharper
+            lambda v: objective.rms_at(v)[0],
+            bounds=(ln_k - _LN10, ln_k + _LN10),
+            method="bounded",
+            options={"xatol": 0.02, "maxiter": 12},
+        )
+        if line.fun < objective.rms_at(best)[0]:
+            best = float(line.x)
         return math.exp(best), objective.rms_at(best)[0], scan
 
     k, rms, scan = best_k(base)
@@ -367,15 +373,13 @@ def _start(
     for name in (n for n in names if n != "wear_coefficient"):
         for trial in _grid(name, current[name])[1:]:
             try:
-                k_t, rms_t, scan_t = best_k({**current, name: trial})
+                k_t, rms_t, _ = best_k(
+                    {**current, name: trial}, math.log(current["wear_coefficient"])
+                )
             except CalibrationError:  # K cannot reach the data at this trial value
                 continue
             if rms_t < rms:
-                current, rms, scan = (
-                    {**current, name: trial, "wear_coefficient": k_t},
-                    rms_t,
-                    scan_t,
-                )
+                current, rms = {**current, name: trial, "wear_coefficient": k_t}, rms_t
     bracket = None
     if fit_k:
         ln_k = math.log(current["wear_coefficient"])
