@@ -169,3 +169,37 @@ def test_calibrated_case_carries_the_range(case) -> None:
     )
     (message,) = range_messages(fast.wear, wear_options(fast).programme)
     assert "1499 rpm" in message and "extrapolation" in message
+
+
+def test_cli_fit_and_fit_until(tmp_path, wear_case_path, monkeypatch) -> None:
+    """``--fit`` and ``--fit-until`` reach the fit; summary.json keeps its keys and adds the
+    held-out error, the diagnostics and the calibrated range."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from ballscrew.analyses import wear
+    from ballscrew.cli import app
+
+    monkeypatch.setattr(wear, "wear_life", CaseModel())
+    names = ("wear_coefficient", "film_factor", "torque_scale")
+    data = noisy(names)
+    csv = tmp_path / "bench.csv"
+    rows = "\n".join(f"{n:g},{t:.6g}" for n, t in zip(data.revolutions, data.values, strict=True))
+    csv.write_text("revolutions,friction_torque [N*m]\n" + rows + "\n")
+    out = tmp_path / "cal"
+    args = [str(wear_case_path), "--measured", str(csv), "--out", str(out)]
+    run = CliRunner().invoke(
+        app, ["calibrate", *args, "--fit", ",".join(names), "--fit-until", "1.0e6"]
+    )
+    assert run.exit_code == 0, run.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert {"wear_coefficient", "torque_scale", "rms_residual"} <= set(summary)
+    assert set(summary["fitted"]) == set(names)
+    assert summary["fitted"]["film_factor"]["value"] == pytest.approx(0.5, rel=0.2)
+    assert summary["prediction_rmse"]["value"] < 2 * NOISE
+    assert summary["fit_until"] == 1.0e6
+    assert summary["calibrated_range"]["load_max"]["value"] == 4000.0
+    assert summary["residual_diagnostics"]["systematic"] is False
+    bad = CliRunner().invoke(app, ["calibrate", *args, "--force", "--fit", "wear_depth"])
+    assert bad.exit_code == 2 and "--fit" in bad.output
