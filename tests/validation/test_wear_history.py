@@ -105,13 +105,7 @@ def _check(validation, dataset, key: str, known_miss: bool) -> None:
         f"xjtu_wear_forecast_{key.removesuffix('_Nm')}",
         model="wear_life per duty segment + calibrate(fit_until=490 h)",
         source=SOURCE,
-        reference={
-            "fitted rows": f"1–{FIT_ROWS} (0–490 h)",
-            "K": f"{out['wear_coefficient']:.3g}",
-            "torque scale": f"{out['torque_scale']:.3g}",
-            "held-out RMS error, model [N m]": f"{out['model_rmse']:.4f}",
-            "held-out RMS error, straight line [N m]": f"{out['line_rmse']:.4f}",
-        },
+        reference=data,
         quantity=f"friction torque at 1015 h ({key.removesuffix('_Nm')}), forecast from 0–490 h",
         unit="N*m",
         measured=out["measured_end"],
@@ -122,7 +116,8 @@ def _check(validation, dataset, key: str, known_miss: bool) -> None:
             "the error of a straight line in revolutions fitted to the same first 15 rows "
             f"({line_error:.1%}): the model must forecast at least as well; over the whole "
             f"held-out half the RMS errors are {out['model_rmse']:.4f} N m (model) and "
-            f"{out['line_rmse']:.4f} N m (line)"
+            f"{out['line_rmse']:.4f} N m (line); fitted on rows 1–{FIT_ROWS} (0–490 h): "
+            f"K = {out['wear_coefficient']:.3g}, torque scale {out['torque_scale']:.3g}"
         ),
         assumptions=ASSUMPTIONS,
         known_miss=known_miss,
