@@ -209,6 +209,20 @@ def model_values(history: WearHistory, quantity: str) -> tuple[np.ndarray, np.nd
     return rev, val
 
 
+def covering_history(history: WearHistory, data: MeasuredHistory) -> tuple[np.ndarray, ...]:
+    """:func:`model_values` of ``data``'s quantity; InputError unless they span the data."""
+    rev, val = model_values(history, data.quantity)
+    first, last = data.revolutions[0], data.revolutions[-1]
+    if last > rev[-1] * (1.0 + 1e-9) or first < rev[0]:
+        raise InputError(
+            f"{data.source}: revolutions",
+            float(last if last > rev[-1] else first),
+            f"within the simulated test, {rev[0]:g} to {rev[-1]:g} rev "
+            "(lengthen the case's load programme)",
+        )
+    return rev, val
+
+
 class _Objective:
     """Residuals of the fit with a per-K cache of model runs."""
 
@@ -240,15 +254,7 @@ class _Objective:
                 raise ConvergenceError(
                     "calibration (least squares on ln K)", len(self.cache), self.best_rms, 0.0
                 )
-            rev, val = model_values(self.simulate(math.exp(key)), self.data.quantity)
-            last = self.data.revolutions[-1]
-            if last > rev[-1] * (1.0 + 1e-9) or self.data.revolutions[0] < rev[0]:
-                raise InputError(
-                    f"{self.data.source}: revolutions",
-                    float(last if last > rev[-1] else self.data.revolutions[0]),
-                    f"within the simulated test, {rev[0]:g} to {rev[-1]:g} rev "
-                    "(lengthen the case's load programme)",
-                )
+            rev, val = covering_history(self.simulate(math.exp(key)), self.data)
             at_data = np.interp(self.data.revolutions, rev, val)
             self.cache[key] = (at_data, rev, val)
             rms = float(np.sqrt(np.mean((at_data - self.data.values) ** 2)))
@@ -419,30 +425,15 @@ def fit_wear_coefficient(
     x0 = np.array([start, m0] if fit_torque_scale else [start])
     lower = [ln_k - _LN10] + ([0.0] if fit_torque_scale else [])
     upper = [ln_k + _LN10] + ([np.inf] if fit_torque_scale else [])
-    try:
-        solution = least_squares(
-            objective.residuals,
-            x0,
-            jac=lambda theta: objective.jacobian(theta, diff_step),
-            bounds=(lower, upper),
-            method="trf",
-            x_scale=np.ones(p),
-            xtol=1e-4,
-            ftol=1e-6,
-            gtol=1e-8,
-            max_nfev=max_evaluations,
-        )
-    except ConvergenceError as exc:
-        raise ConvergenceError(
-            "calibration (least squares on ln K)", exc.iterations, objective.best_rms, 0.0
-        ) from None
-    if solution.status <= 0:
-        raise ConvergenceError(
-            "calibration (least squares on ln K)",
-            int(solution.nfev),
-            objective.best_rms,
-            0.0,
-        )
+    solution = solve_least_squares(
+        objective.residuals,
+        x0,
+        lambda theta: objective.jacobian(theta, diff_step),
+        (lower, upper),
+        max_evaluations,
+        "calibration (least squares on ln K)",
+        lambda: objective.best_rms,
+    )
     theta = solution.x
     if abs(theta[0] - lower[0]) < 1e-9 or abs(theta[0] - upper[0]) < 1e-9:
         raise CalibrationError(
@@ -499,21 +490,59 @@ def _check_determined(source: str, name: str, value: float, error: float) -> Non
         )
 
 
-def _covariance(jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str) -> np.ndarray:
-    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient."""
+def solve_least_squares(
+    residuals: Callable[[np.ndarray], np.ndarray],
+    x0: Any,
+    jacobian: Callable[[np.ndarray], np.ndarray],
+    bounds: tuple[Any, Any],
+    max_evaluations: int,
+    label: str,
+    best_rms: Callable[[], float],
+) -> Any:
+    """Trust-region reflective least squares with the calibration's tolerances; a
+    ConvergenceError (with the best RMS so far) when it does not converge."""
+    x0 = np.asarray(x0, dtype=float)
+    try:
+        solution = least_squares(
+            residuals,
+            x0,
+            jac=jacobian,
+            bounds=bounds,
+            method="trf",
+            x_scale=np.ones(x0.size),
+            xtol=1e-4,
+            ftol=1e-6,
+            gtol=1e-8,
+            max_nfev=max_evaluations,
+        )
+    except ConvergenceError as exc:
+        raise ConvergenceError(label, exc.iterations, best_rms(), 0.0) from None
+    if solution.status <= 0:
+        raise ConvergenceError(label, int(solution.nfev), best_rms(), 0.0)
+    return solution
+
+
+def _covariance(
+    jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str, what: str | None = None
+) -> np.ndarray:
+    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient.
+
+    ``what`` names the fitted parameters in the message (default: K, and the torque scale)."""
     _, singular, vt = np.linalg.svd(jac, full_matrices=False)
     if (
         singular.size < p
         or not np.all(np.isfinite(singular))
         or singular[-1] <= (1e-10 * max(singular[0], 1e-300))
     ):
-        raise CalibrationError(
-            f"{source}: the measured history does not determine "
-            + (
+        if what is None:
+            what = (
                 "the wear coefficient"
                 if p == 1
                 else "both the wear coefficient and the torque scale"
             )
+        raise CalibrationError(
+            f"{source}: the measured history does not determine "
+            + what
             + " (the model is insensitive to them over the measured revolutions; singular values "
             + ", ".join(f"{s:.2e}" for s in singular)
             + ")"

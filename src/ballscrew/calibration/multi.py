@@ -31,7 +31,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from ballscrew.calibration.diagnostics import residual_diagnostics
 from ballscrew.calibration.fit import (
@@ -43,8 +43,10 @@ from ballscrew.calibration.fit import (
     _Objective,
     _refine,
     _scan,
-    model_values,
+    covering_history,
+    solve_least_squares,
 )
+from ballscrew.calibration.fit import _covariance as _fit_covariance
 from ballscrew.calibration.measured import MeasuredHistory, check_values, measured_history
 from ballscrew.errors import ConvergenceError, InputError
 
@@ -113,16 +115,7 @@ class _Model:
         if key not in self.cache:
             if len(self.cache) >= self.max_evaluations:
                 raise ConvergenceError("calibration (least squares)", len(self.cache), math.nan, 0)
-            rev, val = model_values(self.simulate(dict(key)), self.data.quantity)
-            last, first = self.data.revolutions[-1], self.data.revolutions[0]
-            if last > rev[-1] * (1.0 + 1e-9) or first < rev[0]:
-                raise InputError(
-                    f"{self.data.source}: revolutions",
-                    float(last if last > rev[-1] else first),
-                    f"within the simulated test, {rev[0]:g} to {rev[-1]:g} rev "
-                    "(lengthen the case's load programme)",
-                )
-            self.cache[key] = (rev, val)
+            self.cache[key] = covering_history(self.simulate(dict(key)), self.data)
         return self.cache[key]
 
     def at(self, values: Mapping[str, float], revolutions: np.ndarray) -> np.ndarray:
@@ -216,25 +209,15 @@ def fit_parameters(
         m0 = max(float(here @ y) / float(here @ here), 1e-12) if here @ here > 0 else 1.0
         x0, lower, upper = [*x0, m0], [*lower, 0.0], [*upper, np.inf]
     x0 = [min(max(v, lo), hi) for v, lo, hi in zip(x0, lower, upper, strict=True)]
-    try:
-        solution = least_squares(
-            residuals,
-            np.array(x0),
-            jac=jacobian,
-            bounds=(lower, upper),
-            method="trf",
-            x_scale=np.ones(p),
-            xtol=1e-4,
-            ftol=1e-6,
-            gtol=1e-8,
-            max_nfev=max_evaluations,
-        )
-    except ConvergenceError as exc:
-        raise ConvergenceError(
-            "calibration (least squares)", exc.iterations, exc.residual, 0.0
-        ) from None
-    if solution.status <= 0:
-        raise ConvergenceError("calibration (least squares)", int(solution.nfev), math.nan, 0.0)
+    solution = solve_least_squares(
+        residuals,
+        x0,
+        jacobian,
+        (lower, upper),
+        max_evaluations,
+        "calibration (least squares)",
+        lambda: math.nan,
+    )
     x = solution.x
     if "wear_coefficient" in model_names:
         i = model_names.index("wear_coefficient")
@@ -422,23 +405,9 @@ def _check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
 def _covariance(
     jac: np.ndarray, residuals: np.ndarray, n: int, names: list[str], source: str
 ) -> np.ndarray:
-    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient."""
-    p = len(names)
-    _, singular, vt = np.linalg.svd(jac, full_matrices=False)
-    if (
-        singular.size < p
-        or not np.all(np.isfinite(singular))
-        or singular[-1] <= 1e-10 * max(singular[0], 1e-300)
-    ):
-        raise CalibrationError(
-            f"{source}: the measured history does not determine "
-            + " and ".join(FIT_PARAMETERS[n].description for n in names)
-            + " together (the model is insensitive to a combination of them over the measured "
-            "revolutions; singular values "
-            + ", ".join(f"{s:.2e}" for s in singular)
-            + "): fit fewer parameters"
-        )
-    return float(residuals @ residuals) / (n - p) * (vt.T / singular**2) @ vt
+    """RSS/(n − p) · (JᵀJ)⁻¹; CalibrationError naming the parameters when J is rank-deficient."""
+    what = " and ".join(FIT_PARAMETERS[n].description for n in names)
+    return _fit_covariance(jac, residuals, n, len(names), source, what + " together")
 
 
 def _correlation(cov: np.ndarray, names: list[str]) -> float | None:
