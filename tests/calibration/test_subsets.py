@@ -3,6 +3,8 @@ histories, the held-out error matches the noise, and the warnings fire."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -203,3 +205,32 @@ def test_cli_fit_and_fit_until(tmp_path, wear_case_path, monkeypatch) -> None:
     assert summary["residual_diagnostics"]["systematic"] is False
     bad = CliRunner().invoke(app, ["calibrate", *args, "--force", "--fit", "wear_depth"])
     assert bad.exit_code == 2 and "--fit" in bad.output
+
+
+def test_schedule_columns_become_the_programme(tmp_path, case) -> None:
+    from ballscrew.calibration import read_measured
+
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],friction_torque [N*m]\n"
+        "0,100,2,0.42\n4.8e5,100,2,0.30\n9.6e5,100,3,0.25\n1.44e6,300,3,0.21\n"
+    )
+    data = read_measured(csv)
+    assert data.schedule[3, 0] == pytest.approx(300 * math.pi / 30)
+    assert data.schedule[2, 1] == 3000.0
+    seen = []
+
+    def model(c):
+        seen.append([(lv.speed, lv.axial_load, lv.revolutions) for lv in c.wear.programme])
+        return CaseModel()(c)
+
+    calibrate(case, data, fit=("wear_coefficient",), model=model)
+    assert seen[0] == [
+        (pytest.approx(100 * math.pi / 30), 2000.0, 4.8e5),
+        (pytest.approx(100 * math.pi / 30), 3000.0, 4.8e5),
+        (pytest.approx(300 * math.pi / 30), 3000.0, 4.8e5),
+    ]
+    half = tmp_path / "half.csv"
+    half.write_text("revolutions,speed [rpm],friction_torque\n0,100,0.4\n1,100,0.3\n")
+    with pytest.raises(InputError, match="axial_load"):
+        read_measured(half)

@@ -20,7 +20,7 @@ from ballscrew.calibration.measured import read_measured as read_file
 from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
 from ballscrew.errors import InputError
 
-__all__ = ["DEFAULT_FIT", "as_measured", "calibrate", "calibrated_case"]
+__all__ = ["DEFAULT_FIT", "as_measured", "calibrate", "calibrated_case", "schedule_programme"]
 
 DEFAULT_FIT: tuple[str, ...] = ("wear_coefficient", "torque_scale")
 """Fitted by default; the torque scale only for friction-torque data."""
@@ -98,7 +98,8 @@ def calibrate(
 
     Args:
         case: the case of the tested screw and its programme (``[wear]`` or ``[[duty]]``).
-        measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`.
+        measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
+            (speed and axial-load columns) replaces the case's programme.
         fit: names from ``wear_coefficient``, ``torque_scale``, ``film_factor``,
             ``running_in_depth`` (a comma-separated string also works). The default fits K and,
             for friction-torque data, the torque scale.
@@ -118,6 +119,12 @@ def calibrate(
 
     data = as_measured(measured)
     names = _names(fit, fit_torque_scale, data)
+    if data.schedule is not None:
+        if getattr(case, "duty", None):
+            raise InputError(
+                f"{data.source}: speed, axial_load", "a schedule", "a case without [[duty]]"
+            )
+        case = with_overrides(case, {"wear.programme": schedule_programme(data)})
     if model is None:
         from ballscrew.analyses.wear import wear_life
 
@@ -181,6 +188,28 @@ def calibrate(
         warnings=tuple(messages),
         calibrated_range=_programme_range(case),
     )
+
+
+def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:
+    """``[[wear.programme]]`` levels of a measured schedule: the interval up to each row at that
+    row's speed and load, equal neighbours merged; standstill intervals dropped."""
+    assert data.schedule is not None
+    starts = np.r_[0.0, data.revolutions[:-1]]
+    levels: list[dict[str, float]] = []
+    for start, end, (speed, load) in zip(starts, data.revolutions, data.schedule, strict=True):
+        if end <= start or speed <= 0.0:
+            continue
+        if levels and levels[-1]["speed"] == speed and levels[-1]["axial_load"] == load:
+            levels[-1]["revolutions"] += float(end - start)
+        else:
+            levels.append(
+                {
+                    "axial_load": float(load),
+                    "speed": float(speed),
+                    "revolutions": float(end - start),
+                }
+            )
+    return levels
 
 
 def _names(
