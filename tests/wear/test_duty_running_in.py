@@ -151,3 +151,16 @@ def test_running_in_case_section(coarse_case: Case) -> None:
     base = ballscrew.wear_life(coarse_case)
     assert life.max_wear_depth[-1] > base.max_wear_depth[-1]
     assert np.all(np.diff(life.max_wear_depth) >= 0.0) and life.preload.min() >= 0.0
+
+
+def test_summary_lists_the_segments_operating_points(case: Case) -> None:
+    import json
+
+    from ballscrew.analyses.wear_report import summary
+
+    with pytest.warns(CalibrationRangeWarning):
+        result = ballscrew.wear_life(case)
+    options = json.loads(json.dumps(summary(result)))["options"]
+    assert options["programme"] == "duty" and options["film_factor"] == 1.0
+    temperatures = [s["contact_temperature"]["value"] for s in options["segments"]]
+    assert temperatures == [lv.temperature for lv in duty_programme(case)]
