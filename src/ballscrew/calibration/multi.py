@@ -314,7 +314,7 @@ def _start(
 ) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
     """Starting values: for each parameter other than K in turn, the best of half-decade trial
     values, K re-fitted at each (first a decade scan and surrogate steps, then, with other
-    parameters, a bounded Brent search in ln K to 0.02); the decade scan; and the bracket of
+    parameters, a bounded Brent search in ln K to 0.05, at most 8 runs); the decade scan; and the bracket of
     ln K (a decade either side of its best)."""
     fit_k = "wear_coefficient" in names
 
@@ -345,7 +345,7 @@ def _start(
             lambda v: objective.rms_at(v)[0],
             bounds=(ln_k - _LN10, ln_k + _LN10),
             method="bounded",
-            options={"xatol": 0.02, "maxiter": 12},
+            options={"xatol": 0.05, "maxiter": 8},
         )
         if line.fun < objective.rms_at(best)[0]:
             best = float(line.x)
