@@ -314,8 +314,8 @@ def _start(
 ) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
     """Starting values: for each parameter other than K in turn, the best of half-decade trial
     values, K re-fitted at each (first a decade scan and surrogate steps, then, with other
-    parameters, a bounded Brent search in ln K to 0.05, at most 8 runs); the decade scan; and the bracket of
-    ln K (a decade either side of its best)."""
+    parameters, a bounded Brent search in ln K to 0.05, at most 8 runs); the decade scan; and
+    the bracket of ln K (a decade either side of its best)."""
     fit_k = "wear_coefficient" in names
 
     def best_k(
