@@ -234,3 +234,16 @@ def test_schedule_columns_become_the_programme(tmp_path, case) -> None:
     half.write_text("revolutions,speed [rpm],friction_torque\n0,100,0.4\n1,100,0.3\n")
     with pytest.raises(InputError, match="axial_load"):
         read_measured(half)
+
+
+def test_cli_refuses_the_torque_scale_for_preload_data(tmp_path, wear_case_path) -> None:
+    from typer.testing import CliRunner
+
+    from ballscrew.cli import app
+
+    csv = tmp_path / "preload.csv"
+    csv.write_text("revolutions,preload [N]\n0,1500\n1e5,1400\n2e5,1300\n")
+    args = [str(wear_case_path), "--measured", str(csv), "--out", str(tmp_path / "o")]
+    run = CliRunner().invoke(app, ["calibrate", *args, "--fit-torque-scale"])
+    assert run.exit_code == 2 and "--fit-torque-scale" in run.output
+    assert not (tmp_path / "o").exists()

@@ -61,6 +61,7 @@ def calibrate(
     from ballscrew.calibration import calibrate as calibrate_case
     from ballscrew.calibration.report import fit_table
     from ballscrew.case import load_case
+    from ballscrew.errors import InputError
     from ballscrew.results import claim_output, value, write_results
 
     case = load_case(case_file)
@@ -70,6 +71,10 @@ def calibrate(
     if fit_torque_scale and "torque_scale" not in names:
         names = (*names, "torque_scale")
     data = read_measured(measured, min_points=2)
+    if fit_torque_scale and data.quantity != "friction_torque":
+        raise InputError(
+            "--fit-torque-scale", True, f"only with friction_torque data (got {data.quantity})"
+        )
     inputs = [case_file, measured]
     with claim_output(out, command="calibrate", force=force, inputs=inputs):
         log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
