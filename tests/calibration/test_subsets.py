@@ -247,3 +247,19 @@ def test_cli_refuses_the_torque_scale_for_preload_data(tmp_path, wear_case_path)
     run = CliRunner().invoke(app, ["calibrate", *args, "--fit-torque-scale"])
     assert run.exit_code == 2 and "--fit-torque-scale" in run.output
     assert not (tmp_path / "o").exists()
+
+
+def test_measured_as_path_frame_or_array(tmp_path) -> None:
+    import pandas as pd
+
+    from ballscrew.calibration import as_measured
+
+    frame = pd.DataFrame({"revolutions": [0.0, 1e5, 2e5], "preload": [1500.0, 1400.0, 1350.0]})
+    assert as_measured(frame).quantity == "preload"
+    array = as_measured(np.array([[0.0, 0.4], [1e5, 0.38]]))
+    assert array.quantity == "friction_torque" and array.values[1] == 0.38
+    csv = tmp_path / "t.csv"
+    csv.write_text("revolutions,wear_depth [um]\n0,0\n1e5,0.5\n")
+    assert as_measured(str(csv)).values[1] == pytest.approx(0.5e-6)
+    with pytest.raises(InputError, match="measured"):
+        as_measured(np.zeros((3, 3)))
