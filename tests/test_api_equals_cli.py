@@ -229,10 +229,21 @@ def _measured_history(folder: Path) -> Path:
 CALIBRATE = Parity(
     WEAR,
     CALIBRATION_OPTIONS,
-    lambda case, out: ["calibrate", case, "--measured", out.parent / "measured.csv", "--out", out],
+    lambda case, out: [
+        "calibrate",
+        case,
+        "--measured",
+        out.parent / "measured.csv",
+        "--fit",
+        "wear_coefficient",
+        "--out",
+        out,
+    ],
     {
         lambda path: calibrate(
-            ballscrew.load_case(path), read_measured(path.parent / "measured.csv", min_points=2)
+            ballscrew.load_case(path),
+            read_measured(path.parent / "measured.csv", min_points=2),
+            fit=("wear_coefficient",),
         ): {
             "wear_coefficient": lambda r: r.wear_coefficient,
             "wear_coefficient_standard_error": lambda r: r.standard_error,

@@ -31,6 +31,7 @@ from ballscrew.analyses.operating_point import operating_point
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
 from ballscrew.analyses.wear import wear_life
+from ballscrew.calibration import calibrate
 from ballscrew.case import load_case
 from ballscrew.loads import nut_forces
 
@@ -38,6 +39,7 @@ __all__ = [
     "__version__",
     "ball_kinematics",
     "ball_loads",
+    "calibrate",
     "case",
     "contact",
     "contact_resistance",

@@ -70,8 +70,9 @@ def test_command_writes_the_folder(
 ) -> None:
     """The subcommand with the wear model replaced by the closed-form stand-in."""
 
-    def stand_in(case, data, *, fit_torque_scale=False):
-        return fit_wear_coefficient(SyntheticModel(), data, fit_torque_scale=fit_torque_scale)
+    def stand_in(case, data, fit=("wear_coefficient",), fit_until=None):
+        assert fit_until is None
+        return fit_wear_coefficient(SyntheticModel(), data, fit_torque_scale="torque_scale" in fit)
 
     monkeypatch.setattr(ballscrew.calibration, "calibrate", stand_in)
     app = typer.Typer()

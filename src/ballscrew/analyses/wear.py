@@ -20,6 +20,7 @@ from ballscrew.analyses import wear_report
 from ballscrew.analyses.ball_loads import elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.analyses.wear_duty import duty_programme, warn_outside_range
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import Case
 from ballscrew.case.wear_spec import WearSpec
@@ -32,7 +33,7 @@ from ballscrew.lubrication import AsperitySurface
 from ballscrew.validation import case_with
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.life import check_wear_work, integrate_wear
-from ballscrew.wear.programme import WearLevel, WearOptions
+from ballscrew.wear.programme import RunningIn, WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, WearSetup, nut_force_pair
 from ballscrew.wear.strips import working_raceway_length
 
@@ -66,6 +67,8 @@ class WearResult(Presented):
 def wear_options(case: Case) -> WearOptions:
     """The ``[wear]`` section of ``case`` (its defaults when absent) as plain SI values."""
     spec = case.wear if case.wear is not None else WearSpec()
+    programme = _programme(case, spec)
+    running = spec.running_in
     return WearOptions(
         model=spec.model,
         coefficient=spec.coefficient,
@@ -74,13 +77,30 @@ def wear_options(case: Case) -> WearOptions:
         torque_sampling=spec.torque_sampling,
         torque_scale=spec.torque_scale,
         initial_torque=spec.initial_torque,
-        programme=tuple(
-            WearLevel(lv.axial_load, lv.speed, lv.revolutions) for lv in spec.programme
-        ),
+        programme=programme,
         grid=tuple(spec.grid),
         box_factor=spec.box_factor,
         checkpoint_every=spec.checkpoint_every,
+        film_factor=spec.film_factor,
+        running_in=(None if running is None else RunningIn(running.D, running.G, running.depth)),
     )
+
+
+def _programme(case: Case, spec: WearSpec) -> tuple[WearLevel, ...]:
+    """``[[wear.programme]]``, or the case's ``[[duty]]`` at its operating points (then the
+    programme must be left at its default)."""
+    if not case.duty:
+        return tuple(WearLevel(lv.axial_load, lv.speed, lv.revolutions) for lv in spec.programme)
+    if spec.programme != WearSpec().programme:  # a programme of its own besides the duty
+        raise InputError(
+            "wear.programme",
+            f"{len(spec.programme)} levels",
+            "either [[wear.programme]] or the case's [[duty]] list, not both",
+        )
+    programme = duty_programme(case)
+    if not programme:
+        raise InputError("duty", "no turning segment", "a [[duty]] segment with speed > 0")
+    return programme
 
 
 def wear_setup(case: Case) -> WearSetup:
@@ -102,13 +122,14 @@ def wear_setup(case: Case) -> WearSetup:
     q_max = max(
         float(
             ball_load(
-                nut_force_pair(preload, lv.axial_load)[0],
+                nut_force_pair(preload, part.axial_load)[0],
                 balls,
                 geometry.contact_angle,
                 geometry.lead_angle,
             )
         )
         for lv in spec.programme
+        for _, part in lv.parts()
     )
     hz = hertz(ca.rx, ca.ry, e_star, q_max)  # a along x (rolling), b along y (across)
     nx, ny = spec.grid
@@ -222,6 +243,7 @@ def wear_life(
     case_with(case, "screw", "operating")
     with recorded_warnings() as messages:
         setup = wear_setup(case)
+        warn_outside_range(case.wear or WearSpec(), setup.spec.programme)
         life = integrate_wear(
             setup,
             fingerprint(case, setup),

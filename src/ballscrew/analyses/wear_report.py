@@ -41,6 +41,34 @@ def _provenance(case: Case) -> str:
     )
 
 
+def _lubrication_options(case: Case) -> dict[str, Any]:
+    """Supply factor, running-in and, for a duty programme, each segment's operating point."""
+    from ballscrew.analyses.wear_duty import duty_programme
+
+    spec = case.wear
+    running = None if spec is None or spec.running_in is None else spec.running_in
+    out: dict[str, Any] = {
+        "film_factor": 1.0 if spec is None else spec.film_factor,
+        "running_in": None
+        if running is None
+        else {"D": running.D, "G": value(running.G, "m"), "depth": value(running.depth, "m")},
+        "programme": "duty" if case.duty else "wear.programme",
+    }
+    if case.duty:
+        out["segments"] = [
+            {
+                "speed": value(part.speed, "rad/s"),
+                "axial_load": value(part.axial_load, "N"),
+                "revolutions": part.revolutions,
+                "contact_temperature": value(part.temperature, "K"),
+                "viscosity": None if part.viscosity is None else value(part.viscosity, "Pa*s"),
+            }
+            for level in duty_programme(case)
+            for _, part in level.parts()
+        ]
+    return out
+
+
 def summary(result: WearResult) -> dict[str, Any]:
     """Scalars of the run: final wear, contact width, preload, torque and the model options."""
     life, case = result.life, result.case
@@ -74,6 +102,7 @@ def summary(result: WearResult) -> dict[str, Any]:
             "compliance_constant": value(life.compliance, "m/N^(2/3)"),
             "cell_area": value(life.cell_area, "m^2"),
             "initial_psi": life.initial_psi,
+            **_lubrication_options(case),
         },
         "solver": {
             "steps": life.steps,

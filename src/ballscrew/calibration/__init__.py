@@ -2,10 +2,12 @@
 
 1. ``data = read_measured("bench.csv")`` reads a measured history of friction torque, preload
    or wear depth against screw revolutions (header row; units in brackets are converted).
-2. ``result = calibrate(case, data)`` fits the wear coefficient K (and, with
-   ``fit_torque_scale=True`` on torque data, the drag-torque scale) by nonlinear least squares on
-   ln K, running :func:`ballscrew.wear_life` on the case for each trial K.
-   :func:`fit_wear_coefficient` is the same fit with any model callable ``K -> history``.
+2. ``result = calibrate(case, data, fit=("wear_coefficient", "torque_scale"), fit_until=None)``
+   fits any subset of K, the torque scale (torque data; fitted by default), the film supply
+   factor and the running-in depth by nonlinear least squares, running
+   :func:`ballscrew.wear_life` on the case for each trial; ``fit_until`` holds the rest of the
+   data out and reports ``prediction_rmse`` on it. :func:`fit_wear_coefficient` is the K-only
+   fit with any model callable ``K -> history``; :func:`fit_parameters` the general one.
 3. ``result.wear_coefficient``, ``result.standard_error``, ``result.torque_scale`` and
    ``result.rms_residual`` are the fit; ``ballscrew.results.write_results`` writes its folder.
 
@@ -13,10 +15,11 @@ K is confounded with the stroke and the revolution count of the case (theory man
 report it together with them.
 """
 
+from ballscrew.calibration.api import DEFAULT_FIT, as_measured, calibrate, calibrated_case
+from ballscrew.calibration.diagnostics import ResidualDiagnostics, residual_diagnostics
 from ballscrew.calibration.fit import (
     CalibrationError,
     CalibrationResult,
-    calibrate,
     fit_wear_coefficient,
 )
 from ballscrew.calibration.measured import (
@@ -25,14 +28,23 @@ from ballscrew.calibration.measured import (
     measured_history,
     read_measured,
 )
+from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
 
 __all__ = [
+    "DEFAULT_FIT",
+    "FIT_PARAMETERS",
     "QUANTITIES",
     "CalibrationError",
     "CalibrationResult",
+    "CalibrationWarning",
     "MeasuredHistory",
+    "ResidualDiagnostics",
+    "as_measured",
     "calibrate",
+    "calibrated_case",
+    "fit_parameters",
     "fit_wear_coefficient",
     "measured_history",
     "read_measured",
+    "residual_diagnostics",
 ]

@@ -43,9 +43,8 @@ noise; they do not include the model's own (structural) uncertainty.
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from types import ModuleType
 from typing import Any, ClassVar, Protocol
 
@@ -54,8 +53,7 @@ import xarray as xr
 from numpy.typing import NDArray
 from scipy.optimize import least_squares
 
-from ballscrew.analyses.result import Presented, recorded_warnings
-from ballscrew.budget import BudgetError
+from ballscrew.analyses.result import Presented
 from ballscrew.calibration import report as calibration_report
 from ballscrew.calibration.measured import MeasuredHistory, check_values
 from ballscrew.case.inputs import resolved_inputs
@@ -65,7 +63,6 @@ __all__ = [
     "CalibrationError",
     "CalibrationResult",
     "WearHistory",
-    "calibrate",
     "fit_wear_coefficient",
     "model_values",
 ]
@@ -148,6 +145,22 @@ class CalibrationResult(Presented):
     case: Any = None
     options: Mapping[str, Any] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    values: Mapping[str, float] = field(default_factory=dict)
+    """Every fitted parameter by name (``wear_coefficient``, ``torque_scale``, …)."""
+    errors: Mapping[str, float] = field(default_factory=dict)
+    """Their standard errors (delta method)."""
+    n_fit: int | None = None
+    """Points the fit used (the first ``n_fit``; None: all)."""
+    fit_until: float | None = None
+    """Revolutions up to which the data were fitted (None: all)."""
+    prediction_rmse: float | None = None
+    """RMS of (model − measured) on the held-out points after ``fit_until`` (None: none)."""
+    prediction_sigma: NDArray[np.float64] | None = None
+    """σ of a new measurement at :attr:`model_revolutions`: √(gᵀ cov g + s²) (delta method)."""
+    diagnostics: Mapping[str, Any] = field(default_factory=dict)
+    """Runs test and lag-1 autocorrelation of the fitted residuals."""
+    calibrated_range: Mapping[str, float] | None = None
+    """Speeds [rad/s] and axial loads [N] of the calibrated programme."""
 
     analysis: ClassVar[str] = "calibrate"
     presentation: ClassVar[ModuleType] = calibration_report
@@ -196,6 +209,20 @@ def model_values(history: WearHistory, quantity: str) -> tuple[np.ndarray, np.nd
     return rev, val
 
 
+def covering_history(history: WearHistory, data: MeasuredHistory) -> tuple[np.ndarray, ...]:
+    """:func:`model_values` of ``data``'s quantity; InputError unless they span the data."""
+    rev, val = model_values(history, data.quantity)
+    first, last = data.revolutions[0], data.revolutions[-1]
+    if last > rev[-1] * (1.0 + 1e-9) or first < rev[0]:
+        raise InputError(
+            f"{data.source}: revolutions",
+            float(last if last > rev[-1] else first),
+            f"within the simulated test, {rev[0]:g} to {rev[-1]:g} rev "
+            "(lengthen the case's load programme)",
+        )
+    return rev, val
+
+
 class _Objective:
     """Residuals of the fit with a per-K cache of model runs."""
 
@@ -227,15 +254,7 @@ class _Objective:
                 raise ConvergenceError(
                     "calibration (least squares on ln K)", len(self.cache), self.best_rms, 0.0
                 )
-            rev, val = model_values(self.simulate(math.exp(key)), self.data.quantity)
-            last = self.data.revolutions[-1]
-            if last > rev[-1] * (1.0 + 1e-9) or self.data.revolutions[0] < rev[0]:
-                raise InputError(
-                    f"{self.data.source}: revolutions",
-                    float(last if last > rev[-1] else self.data.revolutions[0]),
-                    f"within the simulated test, {rev[0]:g} to {rev[-1]:g} rev "
-                    "(lengthen the case's load programme)",
-                )
+            rev, val = covering_history(self.simulate(math.exp(key)), self.data)
             at_data = np.interp(self.data.revolutions, rev, val)
             self.cache[key] = (at_data, rev, val)
             rms = float(np.sqrt(np.mean((at_data - self.data.values) ** 2)))
@@ -406,30 +425,15 @@ def fit_wear_coefficient(
     x0 = np.array([start, m0] if fit_torque_scale else [start])
     lower = [ln_k - _LN10] + ([0.0] if fit_torque_scale else [])
     upper = [ln_k + _LN10] + ([np.inf] if fit_torque_scale else [])
-    try:
-        solution = least_squares(
-            objective.residuals,
-            x0,
-            jac=lambda theta: objective.jacobian(theta, diff_step),
-            bounds=(lower, upper),
-            method="trf",
-            x_scale=np.ones(p),
-            xtol=1e-4,
-            ftol=1e-6,
-            gtol=1e-8,
-            max_nfev=max_evaluations,
-        )
-    except ConvergenceError as exc:
-        raise ConvergenceError(
-            "calibration (least squares on ln K)", exc.iterations, objective.best_rms, 0.0
-        ) from None
-    if solution.status <= 0:
-        raise ConvergenceError(
-            "calibration (least squares on ln K)",
-            int(solution.nfev),
-            objective.best_rms,
-            0.0,
-        )
+    solution = solve_least_squares(
+        objective.residuals,
+        x0,
+        lambda theta: objective.jacobian(theta, diff_step),
+        (lower, upper),
+        max_evaluations,
+        "calibration (least squares on ln K)",
+        lambda: objective.best_rms,
+    )
     theta = solution.x
     if abs(theta[0] - lower[0]) < 1e-9 or abs(theta[0] - upper[0]) < 1e-9:
         raise CalibrationError(
@@ -486,100 +490,62 @@ def _check_determined(source: str, name: str, value: float, error: float) -> Non
         )
 
 
-def _covariance(jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str) -> np.ndarray:
-    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient."""
+def solve_least_squares(
+    residuals: Callable[[np.ndarray], np.ndarray],
+    x0: Any,
+    jacobian: Callable[[np.ndarray], np.ndarray],
+    bounds: tuple[Any, Any],
+    max_evaluations: int,
+    label: str,
+    best_rms: Callable[[], float],
+) -> Any:
+    """Trust-region reflective least squares with the calibration's tolerances; a
+    ConvergenceError (with the best RMS so far) when it does not converge."""
+    x0 = np.asarray(x0, dtype=float)
+    try:
+        solution = least_squares(
+            residuals,
+            x0,
+            jac=jacobian,
+            bounds=bounds,
+            method="trf",
+            x_scale=np.ones(x0.size),
+            xtol=1e-4,
+            ftol=1e-6,
+            gtol=1e-8,
+            max_nfev=max_evaluations,
+        )
+    except ConvergenceError as exc:
+        raise ConvergenceError(label, exc.iterations, best_rms(), 0.0) from None
+    if solution.status <= 0:
+        raise ConvergenceError(label, int(solution.nfev), best_rms(), 0.0)
+    return solution
+
+
+def _covariance(
+    jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str, what: str | None = None
+) -> np.ndarray:
+    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient.
+
+    ``what`` names the fitted parameters in the message (default: K, and the torque scale)."""
     _, singular, vt = np.linalg.svd(jac, full_matrices=False)
     if (
         singular.size < p
         or not np.all(np.isfinite(singular))
         or singular[-1] <= (1e-10 * max(singular[0], 1e-300))
     ):
-        raise CalibrationError(
-            f"{source}: the measured history does not determine "
-            + (
+        if what is None:
+            what = (
                 "the wear coefficient"
                 if p == 1
                 else "both the wear coefficient and the torque scale"
             )
+        raise CalibrationError(
+            f"{source}: the measured history does not determine "
+            + what
             + " (the model is insensitive to them over the measured revolutions; singular values "
             + ", ".join(f"{s:.2e}" for s in singular)
             + ")"
         )
     variance = float(residuals @ residuals) / (n - p)
     return variance * (vt.T / singular**2) @ vt
-
-
-def calibrate(
-    case: Any,
-    data: MeasuredHistory,
-    *,
-    model: Callable[[Any], WearHistory] | None = None,
-    fit_torque_scale: bool = False,
-    **options: Any,
-) -> CalibrationResult:
-    """Calibrate the case's wear coefficient to a measured history.
-
-    Each model run is ``model(with_overrides(case, {"wear.coefficient": K}))``; ``model``
-    defaults to :func:`ballscrew.wear_life`. The scan starts at the case's
-    ``wear.coefficient`` (1e-4 if it has none); the torque scale is taken relative to the case's
-    ``wear.torque_scale``. A ``wear.initial_torque`` of the case rescales K_T so that the
-    torque at N = 0 matches it (E9.3): the reported scale is then that effective one,
-    T_0/T_p(F_p0); when the torque scale is fitted, ``initial_torque`` is cleared for the fit.
-    ``options`` go to :func:`fit_wear_coefficient`.
-    """
-    from ballscrew.case import with_overrides
-
-    if model is None:
-        from ballscrew.analyses.wear import wear_life
-
-        model = wear_life
-    wear = getattr(case, "wear", None)
-    k0 = getattr(wear, "coefficient", None) or 1.0e-4
-    scale0 = getattr(wear, "torque_scale", None) or 1.0
-    initial_torque = getattr(wear, "initial_torque", None)
-    base: dict[str, Any] = {}
-    if initial_torque is not None:
-        if fit_torque_scale:
-            base["wear.initial_torque"] = None
-        else:
-            scale0 = _initial_torque_scale(case, float(initial_torque))
-
-    warned: dict[float, list[warnings.WarningMessage]] = {}
-
-    def simulate(k: float) -> WearHistory:
-        with warnings.catch_warnings(record=True) as seen:
-            warnings.simplefilter("always")
-            try:
-                history = model(with_overrides(case, {**base, "wear.coefficient": k}))
-            except BudgetError as exc:
-                raise CalibrationError(
-                    f"{data.source}: the wear model cannot run at the trial K = {k:.3g} ({exc}); "
-                    f"the measured {data.quantity} is out of the model's reach (check the data)"
-                ) from None
-        warned[k] = seen
-        return history
-
-    result = fit_wear_coefficient(
-        simulate,
-        data,
-        initial_coefficient=float(k0),
-        torque_scale=float(scale0),
-        fit_torque_scale=fit_torque_scale,
-        **options,
-    )  # Warnings of the model at trial K values far from the fit are noise; re-issue only those
-    # of the run nearest the fitted K.
-    with recorded_warnings() as messages:
-        if warned:
-            nearest = min(warned, key=lambda k: abs(math.log(k / result.wear_coefficient)))
-            for w in warned[nearest]:
-                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    return replace(result, case=case, warnings=tuple(messages))
-
-
-def _initial_torque_scale(case: Any, initial_torque: float) -> float:
-    """Effective K_T factor of a case whose drag torque is rescaled to T(0) (E9.1, E9.3)."""
-    from ballscrew.loads import preload_drag_torque
-
-    lead, diameter = case.screw.lead, case.screw.pitch_diameter
-    lead_angle = math.atan2(lead, math.pi * diameter)  # (G2)
-    return initial_torque / preload_drag_torque(case.operating.preload, lead, lead_angle)

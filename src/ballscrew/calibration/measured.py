@@ -16,6 +16,10 @@ File format (``ballscrew calibrate --measured FILE.csv``)::
 * A column name may carry a unit in square brackets, ``wear_depth [um]``, ``preload [kN]``; it
   is converted to SI with :func:`ballscrew.units.to_si` and must have the dimension of the
   quantity (a dimensionless unit such as ``[%]`` is refused). Without a unit the numbers are SI.
+* Optional schedule columns ``speed`` and ``axial_load`` (both or neither; e.g. ``speed [rpm]``,
+  ``axial_load [kN]``) give the speed and load the bench ran at since the previous row (the
+  first row's: since revolution 0); :func:`ballscrew.calibrate` then runs the model on that
+  programme instead of the case's ``[[wear.programme]]``.
 * The measured values must be physically plausible: some > 0, none above
   :data:`PLAUSIBLE_MAX`, none below −5 % of the largest (noise around 0); at most
   :data:`MAX_POINTS` rows.
@@ -55,6 +59,9 @@ QUANTITIES: dict[str, str] = {
     "wear_depth": "length",
 }
 
+#: Optional schedule columns of a test-bench file: name → physical kind.
+SCHEDULE: dict[str, str] = {"speed": "angular_velocity", "axial_load": "force"}
+
 #: Largest plausible measured value of each quantity (SI): a ball-screw drag torque, a preload
 #: and a raceway wear depth beyond these are a unit or data error.
 PLAUSIBLE_MAX: dict[str, float] = {
@@ -91,6 +98,9 @@ class MeasuredHistory:
     values: NDArray[np.float64]
     quantity: str
     source: str = "measured data"
+    schedule: NDArray[np.float64] | None = None
+    """(speed [rad/s], axial load [N]) run since the previous row, one row per point; None:
+    the case's programme."""
 
     @property
     def unit(self) -> str:
@@ -107,6 +117,7 @@ def measured_history(
     quantity: str,
     source: str = "measured data",
     min_points: int = 2,
+    schedule: ArrayLike | None = None,
 ) -> MeasuredHistory:
     """Validate arrays (SI) and return them as a read-only :class:`MeasuredHistory`.
 
@@ -151,7 +162,27 @@ def measured_history(
         )
     rev.setflags(write=False)
     val.setflags(write=False)
-    return MeasuredHistory(revolutions=rev, values=val, quantity=quantity, source=source)
+    plan = None if schedule is None else _check_schedule(source, schedule, rev.size)
+    return MeasuredHistory(
+        revolutions=rev, values=val, quantity=quantity, source=source, schedule=plan
+    )
+
+
+def _check_schedule(source: str, schedule: ArrayLike, points: int) -> NDArray[np.float64]:
+    plan = np.array(schedule, dtype=np.float64)
+    if plan.shape != (points, 2):
+        raise InputError(
+            f"{source}: schedule", plan.shape, f"(speed, axial_load) per row ({points})"
+        )
+    for column, (name, low) in enumerate((("speed", 0.0), ("axial_load", 0.0))):
+        bad = np.flatnonzero(~(np.isfinite(plan[:, column]) & (plan[:, column] >= low)))
+        if bad.size:
+            row = int(bad[0])
+            raise InputError(f"{source}: {name} (point {row + 1})", plan[row, column], "≥ 0")
+    if not np.any(plan[:, 0] > 0.0):
+        raise InputError(f"{source}: speed", "all 0", "a turning screw in some rows")
+    plan.setflags(write=False)
+    return plan
 
 
 def _check_count(source: str, points: int) -> None:
@@ -274,10 +305,16 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
         raise InputError(f"{source}: column 'revolutions'", f"[{rev_unit}]", "no unit or [rev]")
     val_index, val_unit = columns[quantity]
     factor = _unit_factor(source, quantity, val_unit, QUANTITIES[quantity])
+    scheduled = [name for name in SCHEDULE if name in columns]
+    if scheduled and len(scheduled) != len(SCHEDULE):
+        raise InputError(f"{source}: schedule columns", scheduled, "both speed and axial_load")
     rev: list[float] = []
     val: list[float] = []
+    plan: dict[str, list[float]] = {name: [] for name in scheduled}
+    wanted = [("revolutions", rev_index, rev), (quantity, val_index, val)]
+    wanted += [(name, columns[name][0], plan[name]) for name in scheduled]
     for (line_number, _), row in zip(numbered[1:], rows[1:], strict=True):
-        for name, index, store in (("revolutions", rev_index, rev), (quantity, val_index, val)):
+        for name, index, store in wanted:
             cell = row[index].strip() if index < len(row) else ""
             try:
                 number = float(cell)
@@ -286,6 +323,19 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
                     f"{source}: line {line_number}, column {name!r}", cell, "a number"
                 ) from None
             store.append(number)
+    schedule = None
+    if scheduled:
+        schedule = np.column_stack(
+            [
+                np.asarray(plan[name]) * _unit_factor(source, name, columns[name][1], kind)
+                for name, kind in SCHEDULE.items()
+            ]
+        )
     return measured_history(
-        rev, np.asarray(val) * factor, quantity, source=source, min_points=min_points
+        rev,
+        np.asarray(val) * factor,
+        quantity,
+        source=source,
+        min_points=min_points,
+        schedule=schedule,
     )

@@ -43,6 +43,20 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         ),
         "torque_scale_fitted": result.torque_scale_error is not None,
         "correlation_ln_wear_coefficient_torque_scale": result.correlation,
+        "fitted": {
+            name: {"value": v, "standard_error": result.errors.get(name)}
+            for name, v in result.values.items()
+        },
+        "fit_until": result.fit_until,
+        "prediction_rmse": (
+            value(result.prediction_rmse, result.unit)
+            if result.prediction_rmse is not None
+            else None
+        ),
+        "residual_diagnostics": dict(result.diagnostics),
+        "calibrated_range": _range(result),
+        "prediction_band": "95 % prediction band ŷ ± 1.96 √(gᵀ cov g + s²), delta method "
+        "from the Jacobian covariance",
         "measured": {
             "file": result.source,
             "quantity": result.quantity,
@@ -67,6 +81,18 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         "note": "K is confounded with the stroke and the revolution count of the case "
         "(theory manual, Wear); quote it with them. Standard errors assume the model is "
         "right and the noise independent with equal variance.",
+    }
+
+
+def _range(result: CalibrationResult) -> dict[str, Any] | None:
+    bounds = result.calibrated_range
+    if bounds is None:
+        return None
+    return {
+        "speed_min": value(bounds["speed_min"], "rad/s"),
+        "speed_max": value(bounds["speed_max"], "rad/s"),
+        "load_min": value(bounds["load_min"], "N"),
+        "load_max": value(bounds["load_max"], "N"),
     }
 
 
@@ -102,6 +128,21 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
             else ""
         ),
     )
+    if result.prediction_sigma is not None:
+        half = 1.96 * result.prediction_sigma * factor
+        ax.fill_between(
+            result.model_revolutions * 1e-6,
+            result.model_values * factor - half,
+            result.model_values * factor + half,
+            color="tab:blue",
+            alpha=0.2,
+            linewidth=0,
+            label="95 % prediction band (delta method)",
+        )
+    if result.fit_until is not None:
+        for axis in (ax, axr):
+            axis.axvline(result.fit_until * 1e-6, color="0.3", linestyle="--", linewidth=0.8)
+        ax.text(result.fit_until * 1e-6, ax.get_ylim()[1], " held out →", va="top", fontsize=8)
     ax.plot(
         result.revolutions * 1e-6,
         result.measured * factor,
@@ -166,6 +207,21 @@ def sections(result: CalibrationResult) -> list[Section]:
         rows.append(("standard error of the torque scale", result.torque_scale_error))
         rows.append(("correlation (ln K, torque scale)", result.correlation))
     rows += [
+        (f"{name} (fitted)", v)
+        for name, v in result.values.items()
+        if name not in ("wear_coefficient", "torque_scale")
+    ]
+    rows += [
+        (f"standard error of {name}", e)
+        for name, e in result.errors.items()
+        if name not in ("wear_coefficient", "torque_scale")
+    ]
+    if result.prediction_rmse is not None:
+        rows.append((f"held-out RMS error [{unit}]", result.prediction_rmse * factor))
+    if result.diagnostics:
+        rows.append(("runs-test p (residual signs)", result.diagnostics["runs_test_p_value"]))
+        rows.append(("lag-1 autocorrelation", result.diagnostics["lag1_autocorrelation"]))
+    rows += [
         (f"RMS residual [{unit}]", result.rms_residual * factor),
         ("measured points", result.n_points),
         ("model evaluations", result.evaluations),
@@ -179,7 +235,10 @@ def sections(result: CalibrationResult) -> list[Section]:
                 "ln K (scipy least_squares, trust-region reflective, after a coarse scan "
                 "one decade apart), the model history interpolated linearly onto the "
                 "measured revolutions. Standard errors from the Jacobian at the solution: "
-                "cov = RSS/(n − p)·(JᵀJ)⁻¹, K's by the delta method from ln K.",
+                "cov = RSS/(n − p)·(JᵀJ)⁻¹, K's by the delta method from ln K. The shaded band "
+                "is the 95 % prediction band ŷ ± 1.96 √(gᵀ cov g + s²) (delta method, g the "
+                "model's sensitivity); a runs test and the lag-1 autocorrelation check that the "
+                "residuals are noise.",
                 "K is confounded with the stroke and the revolution count of the case: quote "
                 "it together with them. The standard errors cover measurement noise only, not "
                 "the model's own uncertainty.",

@@ -54,6 +54,51 @@ class WearLevel(Model):
     ]
 
 
+class RunningInSpec(Model):
+    """The as-machined raceway surface and the worn depth over which it runs in.
+
+    Each fractal parameter approaches the steady (run-in) value of ``[surface]`` exponentially
+    with the worn depth h: X(h) = X_ss + (X_0 − X_ss) e^(−h/h_r), ln G likewise (theory manual,
+    *Wear*, running-in).
+    """
+
+    D: Annotated[
+        float,
+        Field(gt=1.0, lt=2.0, description="initial profile fractal dimension D_0 (1 < D_0 < 2)"),
+    ]
+    G: quantity("length", "initial fractal roughness G_0 (m)", gt=0, le=1e-6)
+    depth: quantity(
+        "length",
+        "running-in depth h_r of the exponential approach (m, 1 nm to 0.1 mm)",
+        ge=1e-9,
+        le=1e-4,
+    )
+
+
+class CalibratedRange(Model):
+    """Speeds and axial loads of the test the wear coefficient was calibrated on."""
+
+    speed_min: quantity("angular_velocity", "lowest calibrated screw speed", gt=0, le=MAX_SPEED)
+    speed_max: quantity("angular_velocity", "highest calibrated screw speed", gt=0, le=MAX_SPEED)
+    load_min: quantity("force", "lowest calibrated axial load", ge=0, le=1e8)
+    load_max: quantity("force", "highest calibrated axial load", ge=0, le=1e8)
+
+    @model_validator(mode="after")
+    def _ordered(self) -> CalibratedRange:
+        if self.speed_min > self.speed_max or self.load_min > self.load_max:
+            raise ValueError("speed_min ≤ speed_max and load_min ≤ load_max are required")
+        return self
+
+
+REFERENCE_RANGE = CalibratedRange(
+    speed_min=100.0 * 3.141592653589793 / 30.0,
+    speed_max=100.0 * 3.141592653589793 / 30.0,
+    load_min=2000.0,
+    load_max=4000.0,
+)
+"""Where the default wear coefficient was calibrated: the step-stress test, 100 rpm, 2–4 kN."""
+
+
 class WearSpec(Model):
     """Fractal wear model, load programme and integration options of ``ballscrew wear``."""
 
@@ -129,6 +174,26 @@ class WearSpec(Model):
             description="grid half-widths / Hertz semi-axes at the largest ball load (default 1.4)",
         ),
     ] = 1.4
+    film_factor: Annotated[
+        float,
+        Field(
+            gt=0.0,
+            le=1.0,
+            description="supply factor φ on the EHL film, h = φ h_flooded (1: fully flooded oil; "
+            "below 1 for a starved or grease supply)",
+        ),
+    ] = 1.0
+    running_in: RunningInSpec | None = Field(
+        None,
+        description="initial raceway surface and running-in depth ([wear.running_in]); "
+        "None: the [surface] values throughout",
+    )
+    calibrated: CalibratedRange | None = Field(
+        None,
+        description="speed and load range of the test the coefficient was calibrated on "
+        "([wear.calibrated]; written by ballscrew calibrate); a programme outside it warns. "
+        "None with the default coefficient: the reference test (100 rpm, 2000–4000 N)",
+    )
     checkpoint_every: Annotated[
         int,
         Field(ge=1, le=1_000_000_000, description="time steps between checkpoint saves (count)"),

@@ -43,33 +43,74 @@ def calibrate(
         bool,
         typer.Option(
             "--fit-torque-scale",
-            help="also fit the drag-torque scale (friction_torque data only)",
+            help="also fit the drag-torque scale (friction_torque data only; the default there)",
         ),
     ] = False,
+    fit: Annotated[
+        str | None,
+        typer.Option(
+            "--fit",
+            help="parameters to fit, comma-separated: wear_coefficient, torque_scale, "
+            "film_factor, running_in_depth (default: wear_coefficient, and torque_scale for "
+            "friction_torque data)",
+            show_default=False,
+        ),
+    ] = None,
+    fit_until: Annotated[
+        float | None,
+        typer.Option(
+            "--fit-until",
+            help="fit the points up to N revolutions and report the prediction error on the rest",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOpt = False,
     set_: SetOpt = None,
     export: ExportOpt = None,
 ) -> None:
-    """Fit the wear coefficient (and the torque scale) to a measured history."""
+    """Fit the wear model (K, torque scale, …) to a measured history."""
     from dataclasses import replace
 
-    from ballscrew.calibration import calibrate as fit
-    from ballscrew.calibration import read_measured
+    from ballscrew.calibration import DEFAULT_FIT, read_measured
+    from ballscrew.calibration import calibrate as calibrate_case
     from ballscrew.calibration.report import fit_table
     from ballscrew.case import load_case
+    from ballscrew.errors import InputError
     from ballscrew.results import claim_output, value, write_results
 
     formats = export_formats(export)
     case = load_case(case_file, parse_sets(set_))
-    data = read_measured(measured, min_points=3 if fit_torque_scale else 2)
+    names: tuple[str, ...] = DEFAULT_FIT
+    if fit is not None:
+        names = tuple(n.strip() for n in fit.split(",") if n.strip())
+    if fit_torque_scale and "torque_scale" not in names:
+        names = (*names, "torque_scale")
+    data = read_measured(measured, min_points=2)
+    if fit_torque_scale and data.quantity != "friction_torque":
+        raise InputError(
+            "--fit-torque-scale", True, f"only with friction_torque data (got {data.quantity})"
+        )
     inputs = [case_file, measured]
     with claim_output(out, command="calibrate", force=force, inputs=inputs):
         log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
-        result = fit(case, data, fit_torque_scale=fit_torque_scale)
+        result = calibrate_case(case, data, fit=names, fit_until=fit_until)
+        log.info(
+            "K = %.4e ± %.2e, torque scale %.4g, RMS residual %.3g %s (%d model runs)",
+            result.wear_coefficient,
+            result.standard_error,
+            result.torque_scale,
+            result.rms_residual,
+            result.unit,
+            result.evaluations,
+        )
+        if result.prediction_rmse is not None:
+            log.info("held-out RMS error %.3g %s", result.prediction_rmse, result.unit)
         options: dict[str, object] = {
             "case_file": str(case_file),
             "measured_file": str(measured),
-            "fit_torque_scale": fit_torque_scale,
+            "fit_torque_scale": "torque_scale" in result.values,
+            "fit": list(result.values),
+            "fit_until": fit_until,
         }
         if case.wear is not None:  # K is confounded with these
             options["wear_model"] = case.wear.model

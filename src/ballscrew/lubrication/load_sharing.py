@@ -118,6 +118,7 @@ def share_load(
     *,
     xtol: float = 1e-14,
     film_model: str | FilmModel = "hamrock_dowson",
+    film_factor: float = 1.0,
 ) -> LoadSharing:
     """Asperity share ψ of the normal load Q of one EHL contact, (E6.1)–(E6.4).
 
@@ -133,7 +134,13 @@ def share_load(
 
     Contact A of the reference screw of ``examples/wear_step_stress.toml``, Ds = 2.4, G = 1e-10 m,
     ΔA = 100 µm², A_n = π a b: Q = 39.41 N gives ψ = 0.767, h = 58.76 nm.
+
+    ``film_factor`` φ ∈ (0, 1] scales the film of a fully flooded inlet, h = φ h_c, for a
+    starved or grease-lubricated supply (a lumped supply factor; Hamrock & Dowson 1977, IV,
+    give φ for a known inlet meniscus).
     """
+    if not (math.isfinite(film_factor) and 0.0 < film_factor <= 1.0):
+        raise InputError("film_factor", film_factor, "a supply factor in (0, 1]")
     q = float(load)
     if not (math.isfinite(q) and q > 0.0):
         raise InputError("load", load, "a finite normal load > 0 N")
@@ -146,7 +153,7 @@ def share_load(
     args = (q, rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, film_model)
 
     def residual_t(t: float) -> float:  # r at ψ = 1 − e^t
-        h = _film(math.exp(t), *args).central
+        h = film_factor * _film(math.exp(t), *args).central
         return area * float(surface.pressure(h)) + math.expm1(t) * q
 
     t = 0.0
@@ -167,7 +174,7 @@ def share_load(
             raise ConvergenceError("JGP load sharing", info.iterations, residual_t(t), xtol)
         psi = -math.expm1(t)
     film = _film(math.exp(t), *args)
-    return LoadSharing(float(psi), q, film.central, film)
+    return LoadSharing(float(psi), q, film_factor * film.central, film)
 
 
 def _bracket(residual: Callable[[float], float]) -> tuple[float, float] | None:

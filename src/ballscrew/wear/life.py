@@ -38,7 +38,7 @@ from ballscrew.progress import advance
 from ballscrew.units import format_quantity
 from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
 from ballscrew.wear.history import WearLife
-from ballscrew.wear.programme import WearOptions
+from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, FloatArray, WearSetup, nut_force_pair
 from ballscrew.wear.step import flank_rate
 from ballscrew.wear.strips import reciprocating_rate
@@ -146,27 +146,31 @@ def _is_sample(revolutions: float, every: float) -> bool:
     return k >= 1 and abs(revolutions - k * every) <= 1e-9 * max(revolutions, 1.0)
 
 
-def _step_rates(
-    setup: WearSetup, state: _State, preload: float, axial_load: float, speed: float
-) -> tuple[FloatArray, tuple[float, float]]:
-    """ḣ per revolution of both flanks (2, ny) under reciprocation (E8.4)."""
-    forces = nut_force_pair(preload, axial_load)
+def _step_rates(setup: WearSetup, state: _State, preload: float, level: WearLevel) -> FloatArray:
+    """ḣ per revolution of both flanks (2, ny) under reciprocation (E8.4) at ``level``.
+
+    A duty-cycle level's rate is the revolution-weighted mean of its segments' rates.
+    """
     rates = np.zeros_like(state.depth)
-    for k, flank in enumerate(FLANKS):
-        parts: list[FloatArray | None] = []
-        for nut, force in enumerate(forces, start=1):
-            if force <= 0.0:
-                parts.append(None)
-                continue
-            key = f"{flank:+d}_{nut}"
-            out = flank_rate(setup, flank, force, speed, state.depth[k], state.warm.get(key))
-            state.warm[key] = out.pressure
-            state.solves += 1
-            state.initial_psi.setdefault(key, out.psi)
-            parts.append(out.depth_per_revolution)
-        loaded = parts[0] if parts[0] is not None else np.zeros(setup.y.size)
-        rates[k] = reciprocating_rate(loaded, parts[1])
-    return rates, forces
+    for index, (share, part) in enumerate(level.parts()):
+        forces = nut_force_pair(preload, part.axial_load)
+        for k, flank in enumerate(FLANKS):
+            parts: list[FloatArray | None] = []
+            for nut, force in enumerate(forces, start=1):
+                if force <= 0.0:
+                    parts.append(None)
+                    continue
+                key = f"{flank:+d}_{nut}" + (f"_{index}" if level.segments else "")
+                out = flank_rate(
+                    setup, flank, force, part.speed, state.depth[k], state.warm.get(key), part
+                )
+                state.warm[key] = out.pressure
+                state.solves += 1
+                state.initial_psi.setdefault(key, out.psi)
+                parts.append(out.depth_per_revolution)
+            loaded = parts[0] if parts[0] is not None else np.zeros(setup.y.size)
+            rates[k] += share * reciprocating_rate(loaded, parts[1])
+    return rates
 
 
 def check_wear_work(
@@ -217,11 +221,13 @@ def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> Wea
     extras: dict[str, Any] = {}
     solves = state.solves
     if complete:
-        last = spec.programme[-1]
+        last = spec.programme[-1].parts()[-1][1]
         f1 = nut_force_pair(float(r["preload"][-1]), last.axial_load)[0]
         if f1 > 0.0:
-            worn = flank_rate(setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"))
-            unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y))
+            worn = flank_rate(
+                setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"), last
+            )
+            unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y), level=last)
             solves += 2
             extras["ellipse_major_axis"] = _extent(worn.pressure, setup.dy)
             extras["ellipse_major_axis_unworn"] = _extent(unworn.pressure, setup.dy)
@@ -311,7 +317,7 @@ def integrate_wear(
                 _save(path, state, fingerprint)
             return _finish(setup, state, False, time.perf_counter() - start)
         preload = setup.preload(float(state.depth.max()))
-        rates, _ = _step_rates(setup, state, preload, level.axial_load, level.speed)
+        rates = _step_rates(setup, state, preload, level)
         check_wear_work(spec, state.steps, state.revolutions, state.level, rates)
         next_sample = (math.floor(state.revolutions / every + 1e-9) + 1) * every
         target = min(end, next_sample)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -10,7 +10,8 @@ from numpy.typing import NDArray
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads import ball_load, nut_forces, preload_after_wear, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
-from ballscrew.wear.programme import WearOptions
+from ballscrew.wear.programme import WearLevel, WearOptions
+from ballscrew.wear.strips import working_raceway_length
 
 __all__ = ["FLANKS", "WearSetup", "nut_force_pair"]
 
@@ -60,6 +61,30 @@ class WearSetup:
     @property
     def lubricated(self) -> bool:
         return self.viscosity is not None and self.pressure_viscosity is not None
+
+    def surface_at(self, depth: float) -> AsperitySurface:
+        """The raceway surface after the worn depth ``depth`` [m] (running-in, if any)."""
+        law = self.spec.running_in
+        if law is None:
+            return self.surface
+        d, g = law.surface(self.surface.Ds - 1.0, self.surface.G, depth)
+        return replace(self.surface, Ds=d + 1.0, G=g)
+
+    def lubricant(self, level: WearLevel | None) -> tuple[float | None, float | None]:
+        """(η₀, α_p) of ``level``'s operating point, or the run's own values."""
+        if level is None or level.viscosity is None or not self.lubricated:
+            return self.viscosity, self.pressure_viscosity
+        alpha = level.pressure_viscosity
+        return level.viscosity, self.pressure_viscosity if alpha is None else alpha
+
+    def raceway_length_of(self, level: WearLevel | None) -> float:
+        """L_w (E8.3) of ``level``'s stroke, or of the ``[wear]`` stroke [m]."""
+        if level is None or level.stroke is None or level.stroke == self.spec.stroke:
+            return self.raceway_length
+        g = self.geometry
+        return working_raceway_length(
+            level.stroke, g.lead, g.pitch_radius, g.ball_radius, g.contact_angle
+        )
 
     def preload(self, max_depth: float) -> float:
         """F_p after wear h_max (E1.13), contacts and bodies in series [N]."""

@@ -13,6 +13,7 @@ from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.lubrication import share_load
 from ballscrew.wear.profile import worn_gap
+from ballscrew.wear.programme import WearLevel
 from ballscrew.wear.rates import cell_wear_rate
 from ballscrew.wear.setup import FloatArray, WearSetup
 from ballscrew.wear.strips import depth_per_revolution, raceway_depth_rate, strip_wear_speed
@@ -61,8 +62,13 @@ def flank_rate(
     screw_speed: float,
     depth: FloatArray,
     initial: FloatArray | None = None,
+    level: WearLevel | None = None,
 ) -> FlankRate:
-    """Wear-depth rate across the groove of ``flank`` under one nut force (the inner loop)."""
+    """Wear-depth rate across the groove of ``flank`` under one nut force (the inner loop).
+
+    ``level`` gives the lubricant state and stroke of the running programme level (None: the
+    run's own); the surface is that after the flank's largest worn depth (running-in).
+    """
     q = setup.ball_load(nut_force)
     gap = worn_gap(setup.nominal_gap[flank], depth)
     sol = solve_normal(
@@ -84,25 +90,28 @@ def flank_rate(
             stacklevel=2,
         )
     cell = setup.cell_area
-    if setup.lubricated:
+    surface = setup.surface_at(float(np.max(depth)))
+    eta, alpha = setup.lubricant(level)
+    if eta is not None and alpha is not None:
         area = float(np.count_nonzero(p > 0.0)) * cell
         psi = share_load(
             q,
             setup.rx,
             setup.ry,
-            setup.viscosity,
-            setup.pressure_viscosity,
+            eta,
+            alpha,
             entrainment_speed(setup.geometry, screw_speed),
             area,
-            setup.surface,
+            surface,
             film_model=setup.film_model,
+            film_factor=setup.spec.film_factor,
         ).psi
     else:
         psi = 1.0
     speed = sliding_field_closed_form(
         setup.geometry, screw_speed, setup.x, setup.y, flank, curvature=True
     ).speed
-    s = setup.surface
+    s = surface
     w = cell_wear_rate(
         setup.spec.model,
         psi * p,
@@ -115,5 +124,7 @@ def flank_rate(
         setup.spec.coefficient,
         s.gamma,
     )
-    rate = raceway_depth_rate(strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length)
+    rate = raceway_depth_rate(
+        strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length_of(level)
+    )
     return FlankRate(q, p, float(psi), w, depth_per_revolution(rate, screw_speed), sol.iterations)

@@ -1,0 +1,232 @@
+"""``ballscrew.calibrate(case, measured, fit=…, fit_until=…)``: the wear model of a case fitted
+to a test bench's history (method: :mod:`ballscrew.calibration.multi`)."""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ballscrew.analyses.result import recorded_warnings
+from ballscrew.budget import BudgetError
+from ballscrew.calibration.fit import CalibrationError, CalibrationResult, WearHistory
+from ballscrew.calibration.measured import QUANTITIES, MeasuredHistory, measured_history
+from ballscrew.calibration.measured import read_measured as read_file
+from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
+from ballscrew.errors import InputError
+
+__all__ = ["DEFAULT_FIT", "as_measured", "calibrate", "calibrated_case", "schedule_programme"]
+
+DEFAULT_FIT: tuple[str, ...] = ("wear_coefficient", "torque_scale")
+"""Fitted by default; the torque scale only for friction-torque data."""
+
+
+def as_measured(measured: Any, quantity: str = "friction_torque") -> MeasuredHistory:
+    """A :class:`MeasuredHistory` from a CSV path, a DataFrame (``revolutions`` and one measured
+    column, SI) or an (n, 2) array of revolutions and ``quantity`` (SI)."""
+    if isinstance(measured, MeasuredHistory):
+        return measured
+    if isinstance(measured, str | Path):
+        return read_file(measured)
+    columns = getattr(measured, "columns", None)
+    if columns is not None:
+        names = [c for c in QUANTITIES if c in columns]
+        if "revolutions" not in columns or len(names) != 1:
+            raise InputError(
+                "measured",
+                list(columns),
+                f"'revolutions' and exactly one of {', '.join(QUANTITIES)}",
+            )
+        return measured_history(
+            measured["revolutions"].to_numpy(), measured[names[0]].to_numpy(), names[0], "DataFrame"
+        )
+    array = np.asarray(measured, dtype=float)
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise InputError("measured", f"array of shape {array.shape}", "an (n, 2) array")
+    return measured_history(array[:, 0], array[:, 1], quantity, "array")
+
+
+def _programme_range(case: Any) -> dict[str, float] | None:
+    """Speeds and loads of the case's wear programme (or duty), as the calibrated range."""
+    from ballscrew.analyses.wear import wear_options
+
+    try:
+        levels = [part for lv in wear_options(case).programme for _, part in lv.parts()]
+    except (AttributeError, TypeError):  # a stand-in case without a programme
+        return None
+    speeds = [lv.speed for lv in levels]
+    loads = [lv.axial_load for lv in levels]
+    return {
+        "speed_min": min(speeds),
+        "speed_max": max(speeds),
+        "load_min": min(loads),
+        "load_max": max(loads),
+    }
+
+
+def calibrated_case(result: CalibrationResult) -> Any:
+    """The calibrated case: the fitted values in its ``[wear]`` section and the calibrated
+    speed/load range in ``[wear.calibrated]`` (a programme outside it then warns)."""
+    from ballscrew.case import with_overrides
+
+    overrides: dict[str, Any] = {
+        FIT_PARAMETERS[n].key or "wear.torque_scale": v for n, v in result.values.items()
+    }
+    if "torque_scale" in result.values:
+        overrides["wear.initial_torque"] = None
+    if result.calibrated_range is not None:
+        overrides["wear.calibrated"] = dict(result.calibrated_range)
+    return with_overrides(result.case, overrides)
+
+
+def calibrate(
+    case: Any,
+    measured: Any,
+    fit: Sequence[str] | str = DEFAULT_FIT,
+    fit_until: float | None = None,
+    *,
+    model: Callable[[Any], WearHistory] | None = None,
+    fit_torque_scale: bool | None = None,
+    **options: Any,
+) -> CalibrationResult:
+    """Fit the wear model of ``case`` to a measured history.
+
+    Args:
+        case: the case of the tested screw and its programme (``[wear]`` or ``[[duty]]``).
+        measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
+            (speed and axial-load columns) replaces the case's programme.
+        fit: names from ``wear_coefficient``, ``torque_scale``, ``film_factor``,
+            ``running_in_depth`` (a comma-separated string also works). The default fits K and,
+            for friction-torque data, the torque scale.
+        fit_until: fit the points up to these revolutions and report ``prediction_rmse`` on the
+            rest (None: fit all points).
+        model: the wear model, case → history (default :func:`ballscrew.wear_life`).
+        fit_torque_scale: former switch; True/False fit K with/without the torque scale.
+        options: go to :func:`ballscrew.calibration.multi.fit_parameters`.
+
+    Returns:
+        :class:`CalibrationResult`: ``values`` and ``errors`` of the fitted parameters (also
+        ``wear_coefficient``, ``standard_error``, ``torque_scale``, ``torque_scale_error``),
+        ``rms_residual``, ``prediction_rmse``, ``prediction_sigma``, ``diagnostics``,
+        ``calibrated_range`` and ``warnings`` (systematic residuals; the model's own).
+    """
+    from ballscrew.case import with_overrides
+
+    data = as_measured(measured)
+    names = _names(fit, fit_torque_scale, data)
+    if data.schedule is not None:
+        if getattr(case, "duty", None):
+            raise InputError(
+                f"{data.source}: speed, axial_load", "a schedule", "a case without [[duty]]"
+            )
+        case = with_overrides(case, {"wear.programme": schedule_programme(data)})
+    if model is None:
+        from ballscrew.analyses.wear import wear_life
+
+        model = wear_life
+    wear = getattr(case, "wear", None)
+    start = {"wear_coefficient": getattr(wear, "coefficient", None) or 1.0e-4}
+    if "film_factor" in names:
+        start["film_factor"] = getattr(wear, "film_factor", 1.0)
+    if "running_in_depth" in names:
+        running = getattr(wear, "running_in", None)
+        if running is None:
+            raise InputError("--fit", "running_in_depth", "a case with a [wear.running_in] section")
+        start["running_in_depth"] = running.depth
+    scale0 = getattr(wear, "torque_scale", None) or 1.0
+    initial_torque = getattr(wear, "initial_torque", None)
+    base: dict[str, Any] = {}
+    if initial_torque is not None:
+        if "torque_scale" in names:
+            base["wear.initial_torque"] = None
+        else:
+            scale0 = _initial_torque_scale(case, float(initial_torque))
+    warned: dict[tuple[tuple[str, float], ...], list[warnings.WarningMessage]] = {}
+
+    def simulate(values: Mapping[str, float]) -> WearHistory:
+        overrides = {**base, **{FIT_PARAMETERS[n].key: v for n, v in values.items()}}
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            try:
+                history = model(with_overrides(case, overrides))
+            except BudgetError as exc:
+                trial = ", ".join(
+                    ("K" if n == "wear_coefficient" else n) + f" = {v:.3g}"
+                    for n, v in values.items()
+                )
+                raise CalibrationError(
+                    f"{data.source}: the wear model cannot run at the trial {trial} ({exc}); "
+                    f"the measured {data.quantity} is out of the model's reach (check the data)"
+                ) from None
+        warned[tuple(sorted(values.items()))] = seen
+        return history
+
+    result = fit_parameters(
+        simulate, data, names, start, torque_scale=float(scale0), fit_until=fit_until, **options
+    )
+    with recorded_warnings() as messages:
+        if warned:  # re-issue only the warnings of the run nearest the fit
+
+            def distance(key: tuple[tuple[str, float], ...]) -> float:
+                return sum(abs(math.log(v / result.values.get(k, v))) for k, v in key)
+
+            for w in warned[min(warned, key=distance)]:
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+        if result.diagnostics.get("systematic"):
+            from ballscrew.calibration.diagnostics import residual_diagnostics
+
+            text = residual_diagnostics(result.fitted[: result.n_fit] - data.values[: result.n_fit])
+            warnings.warn(text.message(), CalibrationWarning, stacklevel=2)
+    return replace(
+        result,
+        case=case,
+        warnings=tuple(messages),
+        calibrated_range=_programme_range(case),
+    )
+
+
+def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:
+    """``[[wear.programme]]`` levels of a measured schedule: the interval up to each row at that
+    row's speed and load, equal neighbours merged; standstill intervals dropped."""
+    assert data.schedule is not None
+    starts = np.r_[0.0, data.revolutions[:-1]]
+    levels: list[dict[str, float]] = []
+    for start, end, (speed, load) in zip(starts, data.revolutions, data.schedule, strict=True):
+        if end <= start or speed <= 0.0:
+            continue
+        if levels and levels[-1]["speed"] == speed and levels[-1]["axial_load"] == load:
+            levels[-1]["revolutions"] += float(end - start)
+        else:
+            levels.append(
+                {
+                    "axial_load": float(load),
+                    "speed": float(speed),
+                    "revolutions": float(end - start),
+                }
+            )
+    return levels
+
+
+def _names(
+    fit: Sequence[str] | str, fit_torque_scale: bool | None, data: MeasuredHistory
+) -> list[str]:
+    if fit_torque_scale is not None:
+        return ["wear_coefficient"] + (["torque_scale"] if fit_torque_scale else [])
+    names = [n.strip() for n in fit.split(",")] if isinstance(fit, str) else list(fit)
+    if tuple(names) == DEFAULT_FIT and data.quantity != "friction_torque":
+        names = ["wear_coefficient"]
+    return names
+
+
+def _initial_torque_scale(case: Any, initial_torque: float) -> float:
+    """Effective K_T factor of a case whose drag torque is rescaled to T(0) (E9.1, E9.3)."""
+    from ballscrew.loads import preload_drag_torque
+
+    lead, diameter = case.screw.lead, case.screw.pitch_diameter
+    lead_angle = math.atan2(lead, math.pi * diameter)  # (G2)
+    return initial_torque / preload_drag_torque(case.operating.preload, lead, lead_angle)

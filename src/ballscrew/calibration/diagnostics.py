@@ -1,0 +1,81 @@
+"""Residual diagnostics of a fit: are the residuals noise, or does the model miss a shape?
+
+* Wald–Wolfowitz runs test on the signs of the residuals in revolution order (Wald &
+  Wolfowitz 1940): with n₊, n₋ residuals of each sign and R runs,
+
+      μ_R = 2 n₊ n₋ / n + 1,   σ_R² = 2 n₊ n₋ (2 n₊ n₋ − n) / (n² (n − 1)),   z = (R − μ_R)/σ_R,
+
+  and the one-sided p = Φ(z) of too few runs (a systematic misfit gives long runs).
+* Lag-1 autocorrelation r₁ = Σ e_t e_(t+1) / Σ e_t²; for independent noise r₁ ≈ N(−1/n, 1/n)
+  (Box & Jenkins 1976), so z₁ = (r₁ + 1/n) √n.
+
+Residuals are called systematic when p < :data:`ALPHA` or z₁ > the one-sided normal quantile of
+:data:`ALPHA`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy.stats import norm
+
+__all__ = ["ALPHA", "ResidualDiagnostics", "residual_diagnostics"]
+
+ALPHA = 0.01
+"""Significance level of both tests (one-sided)."""
+
+
+@dataclass(frozen=True)
+class ResidualDiagnostics:
+    """Runs test and lag-1 autocorrelation of a residual series."""
+
+    runs: int
+    expected_runs: float
+    runs_p_value: float
+    """One-sided p of so few runs under independent noise (1 when undefined)."""
+    lag1_autocorrelation: float
+    lag1_z: float
+
+    @property
+    def systematic(self) -> bool:
+        """True when either test rejects independent noise at :data:`ALPHA`."""
+        return self.runs_p_value < ALPHA or self.lag1_z > float(norm.ppf(1.0 - ALPHA))
+
+    def message(self) -> str:
+        """One line describing the evidence."""
+        return (
+            f"the residuals are systematic ({self.runs} runs of equal sign where "
+            f"{self.expected_runs:.1f} are expected, runs-test p = {self.runs_p_value:.2g}; "
+            f"lag-1 autocorrelation {self.lag1_autocorrelation:.2f}): the model misses the shape "
+            "of the data and the standard errors understate the uncertainty"
+        )
+
+    def as_dict(self) -> dict[str, float | int | bool]:
+        return {
+            "runs": self.runs,
+            "expected_runs": self.expected_runs,
+            "runs_test_p_value": self.runs_p_value,
+            "lag1_autocorrelation": self.lag1_autocorrelation,
+            "systematic": self.systematic,
+        }
+
+
+def residual_diagnostics(residuals: ArrayLike) -> ResidualDiagnostics:
+    """Runs test and lag-1 autocorrelation of ``residuals`` (in revolution order)."""
+    e = np.asarray(residuals, dtype=float).reshape(-1)
+    signs = np.sign(e[e != 0.0])
+    n = signs.size
+    runs = int(1 + np.count_nonzero(np.diff(signs))) if n else 0
+    pos = int(np.count_nonzero(signs > 0))
+    neg = n - pos
+    expected = 2.0 * pos * neg / n + 1.0 if n else 0.0
+    variance = 2.0 * pos * neg * (2.0 * pos * neg - n) / (n * n * (n - 1.0)) if n > 1 else 0.0
+    p = float(norm.cdf((runs - expected) / math.sqrt(variance))) if variance > 0.0 else 1.0
+    m = e.size
+    total = float(e @ e)
+    r1 = float(e[:-1] @ e[1:]) / total if m > 1 and total > 0.0 else 0.0
+    z1 = (r1 + 1.0 / m) * math.sqrt(m) if m > 1 else 0.0
+    return ResidualDiagnostics(runs, expected, p, r1, z1)
