@@ -98,6 +98,11 @@ def _sums(a: Any) -> Any:
     return a.sum(axis=(1, 2))
 
 
+def _dot(a: Any, b: Any) -> Any:
+    """Σ a·b over each grid of two (B, nx, ny) stacks, shape (B,), without a temporary."""
+    return array_module(a).einsum("bij,bij->b", a, b)
+
+
 def _col(v: Any) -> Any:
     """A (B,) vector as (B, 1, 1) for broadcasting against the stack."""
     return v[:, None, None]
@@ -138,43 +143,52 @@ def _pcg(
     lone_step = 1.0 / operator.self_coefficient
     for iteration in range(1, max_iterations + 1):
         q = u + hw
-        c = pw > 0.0
-        n_c = np.maximum(_host(_sums(c)), 1)
-        g_mean = _host(_sums(q * c)) / n_c if load_control else np.zeros(len(work))
+        c = (pw > 0.0).astype(np.float64)
+        n_c = np.maximum(_host(_sums(c)), 1.0)
+        g_mean = _host(_dot(q, c)) / n_c if load_control else np.zeros(len(work))
         g_bar = _col(xp.asarray(g_mean))
-        s = (q - g_bar) * c
-        z = preconditioner.apply(s, dtype) * c
+        s = q - g_bar
+        s *= c
+        z = preconditioner.apply(s, dtype)
+        z *= c
         if load_control:
-            z -= _col(xp.asarray(_host(_sums(z)) / n_c)) * c
-        rho = _host(_sums(s * z))
+            z -= _col(xp.asarray(_host(_dot(z, c)) / n_c))
+            z *= c
+        rho = _host(_dot(s, z))
         beta = np.where(conjugate & (rho_old > 0.0), rho / np.where(rho_old > 0.0, rho_old, 1.0), 0)
         t *= c
         t *= _col(xp.asarray(beta))
         t += z
         rho_old = rho
         operator.apply_batch(t, r)
-        curvature = _host(_sums(r * t))
+        curvature = _host(_dot(r, t))
         if load_control:
-            curvature -= _host(_sums(r * c)) / n_c * _host(_sums(t))
+            curvature -= _host(_dot(r, c)) / n_c * _host(_sums(t))
         moving = (curvature > 0.0) & (rho > 0.0)
-        tau = np.where(moving, _host(_sums(s * t)) / np.where(moving, curvature, 1.0), 0.0)
+        tau = np.where(moving, _host(_dot(s, t)) / np.where(moving, curvature, 1.0), 0.0)
         tau_b = _col(xp.asarray(tau))
         p_old = pw.copy()
-        pw -= tau_b * t
-        clipped = _host(_sums(pw < 0.0)) > 0
+        xp.multiply(t, tau_b, out=z)
+        pw -= z
+        clipped = _host(pw.min(axis=(1, 2))) < 0.0
         xp.maximum(pw, 0.0, out=pw)
-        enter = (pw <= 0.0) & (q < g_bar)
-        readmitted = _host(_sums(enter)) > 0
-        pw -= (q - g_bar) * enter * lone_step
+        readmitted = _host(xp.where(pw > 0.0, xp.inf, q).min(axis=(1, 2))) < g_mean
+        if readmitted.any():  # cells with p = 0 and a negative gap re-enter (Eq. 37)
+            s = q - g_bar
+            s *= (pw <= 0.0) & (s < 0.0)
+            pw -= s * lone_step
         conjugate = ~readmitted
         current = _host(_sums(pw))
         alive = current > 0.0
         scale = totw / np.where(alive, current, 1.0) if load_control else np.ones(len(work))
-        pw *= _col(xp.asarray(scale))
-        res = _host(_sums(xp.abs(pw - p_old))) / (totw if load_control else current)
+        scale_b = _col(xp.asarray(scale))
+        pw *= scale_b
+        p_old -= pw
+        res = _host(_sums(xp.abs(p_old, out=p_old))) / (totw if load_control else current)
         res = np.where(alive, res, np.inf)
-        u -= tau_b * r
-        u *= _col(xp.asarray(scale))
+        r *= tau_b
+        u -= r
+        u *= scale_b
         exact = np.flatnonzero(clipped | readmitted)
         if exact.size:  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
             u[exact] = operator.apply_batch(pw[exact], xp.empty_like(pw[exact]))
