@@ -19,8 +19,8 @@ the same with float32 FFTs finished in float64; ``pk`` = the plain Polonsky & Ke
 same problem, measured in the same run when Tamaas is installed, else its time recorded earlier
 on this machine (marked *), over the pcg time.
 
-Then ``solve_normal_batch`` on 32 ball contacts of 128 × 128 cells (radii and loads drawn around
-the sphere case): contacts per second, batched and one at a time.
+Then ``solve_normal_batch`` on 32 ball contacts of 128 × 128 cells (--quick: 8 of 64 × 64; radii
+and loads drawn around the sphere case): contacts per second, batched and one at a time.
 
 Usage: python benchmarks/bench_contact.py [--quick]   (--quick: N = 64, 128 and 2 repeats)
 """
@@ -187,9 +187,10 @@ def main() -> None:
                 f"{row['mixed_error']:8.1e} {row['pk_time']:8.4f} {row['pk_iterations']:4d} "
                 f"{row['pk_ratio']:5.2f} {row['tamaas']:>8s}"
             )
-    batch_rate, alone_rate, iterations = run_batch(repeats=1 if args.quick else 3)
+    batch, n = (8, 64) if args.quick else (32, 128)
+    batch_rate, alone_rate, iterations = run_batch(batch, n, repeats=1 if args.quick else 3)
     print(
-        f"batch of 32 ball contacts, 128 x 128 cells: {batch_rate:.0f} contacts/s batched, "
+        f"batch of {batch} ball contacts, {n} x {n} cells: {batch_rate:.0f} contacts/s batched, "
         f"{alone_rate:.0f} contacts/s one at a time (<= {iterations} fine iterations; "
         "target >= 2000/s)"
     )
