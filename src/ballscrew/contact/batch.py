@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from ballscrew.backend import array_module
-from ballscrew.contact._validation import integer_at_least, positive
+from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.convolution import DCFFTOperator
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
@@ -30,19 +30,6 @@ from ballscrew.contact.result import ContactResult
 from ballscrew.errors import ConvergenceError, InputError
 
 __all__ = ["solve_normal_batch"]
-
-
-def _stack(name: str, array: Any, xp: Any) -> Any:
-    """``array`` as a (B, nx, ny) float64 stack of finite values, else :class:`InputError`."""
-    try:
-        stack = xp.asarray(array, dtype=xp.float64)
-    except (TypeError, ValueError):
-        raise InputError(name, f"a {type(array).__name__}", "a real (B, nx, ny) array") from None
-    if stack.ndim != 3 or stack.size == 0:
-        raise InputError(name, f"array of shape {stack.shape}", "a non-empty (B, nx, ny) array")
-    if not bool(xp.isfinite(stack).all()):
-        raise InputError(name, "array with non-finite values", "finite values only")
-    return stack
 
 
 def _loads(loads: Any, batch: int) -> np.ndarray:
@@ -100,7 +87,7 @@ def solve_normal_batch(
         One result per contact, in the order of the stack.
     """
     xp = array_module(gaps)
-    h = _stack("gaps", gaps, xp)
+    h = finite_grid("gaps", gaps, xp, ndim=3)
     batch, nx, ny = h.shape
     dx, dy, e_star = positive("dx", dx, "m"), positive("dy", dy, "m"), positive("e_star", e_star)
     tol = positive("tol", tol)
@@ -110,7 +97,7 @@ def solve_normal_batch(
     total = _loads(loads, batch) / (dx * dy)
     p = None
     if initial is not None:
-        p = _stack("initial", initial, xp)
+        p = finite_grid("initial", initial, xp, ndim=3)
         if p.shape != h.shape:
             raise InputError("initial", f"array of shape {p.shape}", f"shape {h.shape}")
         if bool((p < 0.0).any()) or not bool((p.sum(axis=(1, 2)) > 0.0).all()):
