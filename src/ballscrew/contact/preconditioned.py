@@ -191,20 +191,22 @@ def _pcg(
         u *= scale_b
         exact = np.flatnonzero(clipped | readmitted)
         if exact.size:  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
-            u[exact] = operator.apply_batch(pw[exact], xp.empty_like(pw[exact]))
+            rows = xp.asarray(exact)
+            u[rows] = operator.apply_batch(pw[rows], xp.empty_like(pw[rows]))
         residual[work], iterations[work] = res, iteration
         stopped = (res < tol) | ~alive
         if stopped.any():
-            p[work[stopped]] = pw[stopped]
+            p[xp.asarray(work[stopped])] = pw[xp.asarray(stopped)]
             done[work[stopped]] = res[stopped] < tol
             keep = ~stopped
             if not keep.any():
                 break
-            work, hw, pw, u, t, r = work[keep], hw[keep], pw[keep], u[keep], t[keep], r[keep]
-            rho_old, conjugate = rho_old[keep], conjugate[keep]
+            rows = xp.asarray(keep)
+            hw, pw, u, t, r = hw[rows], pw[rows], u[rows], t[rows], r[rows]
+            work, rho_old, conjugate = work[keep], rho_old[keep], conjugate[keep]
             totw = None if totw is None else totw[keep]
     else:
-        p[work] = pw
+        p[xp.asarray(work)] = pw
     return p, iterations, residual, done
 
 
@@ -225,8 +227,8 @@ def _refine_axis(p: Any, axis: int) -> Any:
     neighbour on the side of the fine cell (the edge cell repeated)."""
     xp = array_module(p)
     n = p.shape[axis]
-    lower = xp.take(p, np.maximum(np.arange(n) - 1, 0), axis=axis)
-    upper = xp.take(p, np.minimum(np.arange(n) + 1, n - 1), axis=axis)
+    lower = xp.take(p, xp.asarray(np.maximum(np.arange(n) - 1, 0)), axis=axis)
+    upper = xp.take(p, xp.asarray(np.minimum(np.arange(n) + 1, n - 1)), axis=axis)
     fine = xp.stack([0.75 * p + 0.25 * lower, 0.75 * p + 0.25 * upper], axis=axis + 1)
     shape = list(p.shape)
     shape[axis] *= 2
