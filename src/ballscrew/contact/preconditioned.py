@@ -32,11 +32,11 @@ from ballscrew.contact.convolution import DCFFTOperator
 __all__ = ["COARSEST", "COARSE_TOLERANCE", "MIXED_SWITCH", "BatchIterate", "solve_batch"]
 
 COARSEST = 48
-"""Cells along the shorter axis below which a grid is not coarsened further (GUESS, measured
-to give the fewest fine-grid iterations on 256²-2048² Hertz problems among 32, 48 and 64)."""
+"""Cells along the shorter axis below which a grid is not coarsened further (GUESS, not tuned:
+with it the fine-grid iterations stay at 13-15 on the 128²-2048² Hertz problems)."""
 COARSE_TOLERANCE = 1e-5
-"""Stop of the coarse solves of the nested start: Σ|Δp|/Σp (GUESS, of the order of the h²
-discretisation error between two grids; a tighter stop does not reduce the fine iterations)."""
+"""Stop of the coarse solves of the nested start: Σ|Δp|/Σp (GUESS, not tuned: of the order of the
+h² discretisation error between two grids)."""
 MIXED_SWITCH = 1e-5
 """Σ|Δp|/Σp at which the float32 iterations of the mixed-precision solve hand over to float64
 (float32 FFTs carry a relative error ~1e-7·log N; measured to stall near 1e-6)."""
