@@ -174,14 +174,16 @@ class _FFTWPadded:
     _PLAN_EXECUTIONS = 5
     """Executions timed when a plan is made, to compare ESTIMATE with MEASURE."""
 
-    def __init__(self, shape: tuple[int, int], threads: int) -> None:
+    def __init__(
+        self, shape: tuple[int, int], threads: int, dtype: type[np.floating] = np.float64
+    ) -> None:
         m, n = shape
         self.shape = shape
         self.scale = 1.0 / (4 * m * n)
         self._threads = threads
-        self._rows_in = pyfftw.zeros_aligned((m, 2 * n), dtype=np.float64)
-        self._rows_out = pyfftw.empty_aligned((m, 2 * n), dtype=np.float64)
-        self._spectrum = pyfftw.zeros_aligned((2 * m, n + 1), dtype=np.complex128)
+        self._rows_in = pyfftw.zeros_aligned((m, 2 * n), dtype=dtype)
+        self._rows_out = pyfftw.empty_aligned((m, 2 * n), dtype=dtype)
+        self._spectrum = pyfftw.zeros_aligned((2 * m, n + 1), dtype=np.result_type(dtype, 1j))
         self._plan("FFTW_ESTIMATE")
         self._exec_time = self._time_pair()
         self._spent = 0.0
@@ -266,14 +268,18 @@ class _FFTWPadded:
 class _ScipyPadded:
     """:mod:`scipy.fft` implementation of :class:`PaddedRealFFT` with pruned zero padding."""
 
-    def __init__(self, shape: tuple[int, int], threads: int) -> None:
+    def __init__(
+        self, shape: tuple[int, int], threads: int, dtype: type[np.floating] = np.float64
+    ) -> None:
         m, n = shape
         self.shape = shape
         self.scale = 1.0 / (4 * m * n)
         self._workers = threads
+        self._dtype = dtype
 
     def forward(self, a: np.ndarray) -> np.ndarray:
         m, n = self.shape
+        a = np.asarray(a, dtype=self._dtype)
         rows = scipy.fft.rfft(a, n=2 * n, axis=1, workers=self._workers)
         return scipy.fft.fft(rows, n=2 * m, axis=0, overwrite_x=True, workers=self._workers)
 
@@ -291,14 +297,15 @@ class _ScipyPadded:
 class _CupyPadded:
     """:mod:`cupy.fft` implementation of :class:`PaddedRealFFT` (cuFFT caches the plans)."""
 
-    def __init__(self, shape: tuple[int, int]) -> None:
+    def __init__(self, shape: tuple[int, int], dtype: type[np.floating] = np.float64) -> None:
         m, n = shape
         self.shape = shape
         self.scale = 1.0 / (4 * m * n)
+        self._dtype = dtype
 
     def forward(self, a: Any) -> Any:
         m, n = self.shape
-        return cupy.fft.rfft2(a, s=(2 * m, 2 * n))
+        return cupy.fft.rfft2(a.astype(self._dtype, copy=False), s=(2 * m, 2 * n))
 
     def inverse(self, spectrum: Any, out: Any) -> Any:
         m, n = self.shape
@@ -316,21 +323,29 @@ CACHED_SHAPES = 8
 """Transforms kept per thread (plans + buffers: ~66 MB at 1024 x 1024), least recently used out."""
 
 
-def padded_rfft(shape: tuple[int, int], xp: ModuleType = np) -> PaddedRealFFT:
-    """The :class:`PaddedRealFFT` of ``shape`` for array module ``xp``, cached per thread."""
+def padded_rfft(
+    shape: tuple[int, int], xp: ModuleType = np, dtype: type[np.floating] = np.float64
+) -> PaddedRealFFT:
+    """The :class:`PaddedRealFFT` of ``shape`` for array module ``xp``, cached per thread.
+
+    ``dtype`` (``numpy.float64`` or ``numpy.float32``) is the precision of the transform: its
+    spectrum is complex of the same precision and its input is cast to it.
+    """
     shape = (int(shape[0]), int(shape[1]))
+    dtype = np.dtype(dtype).type
     transforms = getattr(_local, "transforms", None)
     if transforms is None:
         transforms = _local.transforms = OrderedDict()
-    key = (shape, xp.__name__, fft_threads(4 * shape[0] * shape[1]))
+    threads = fft_threads(4 * shape[0] * shape[1])
+    key = (shape, xp.__name__, threads, dtype.__name__)
     transform = transforms.get(key)
     if transform is None:
         if xp is not np:
-            transform = _CupyPadded(shape)
+            transform = _CupyPadded(shape, dtype)
         elif pyfftw is not None:
-            transform = _FFTWPadded(shape, fft_threads(4 * shape[0] * shape[1]))
+            transform = _FFTWPadded(shape, threads, dtype)
         else:
-            transform = _ScipyPadded(shape, fft_threads(4 * shape[0] * shape[1]))
+            transform = _ScipyPadded(shape, threads, dtype)
         transforms[key] = transform
         if len(transforms) > CACHED_SHAPES:
             transforms.popitem(last=False)

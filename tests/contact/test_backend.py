@@ -8,7 +8,7 @@ import pytest
 from threadpoolctl import threadpool_info
 
 from ballscrew import backend
-from ballscrew.contact import hertz, solve_normal
+from ballscrew.contact import hertz, solve_normal, solve_normal_batch
 from ballscrew.contact.grid import cell_centres
 
 
@@ -115,3 +115,21 @@ def test_small_transforms_are_serial_and_the_limit_applies(monkeypatch):
     # A transform planned inside the limit is not handed out outside it (thread count is keyed).
     if backend.fft_threads(4 * 512 * 512) > 1:
         assert backend.padded_rfft((512, 512)) is not transform
+
+
+def test_batched_solver_runs_on_cupy_arrays():
+    """solve_normal_batch on the GPU (batched cuFFT) gives the NumPy answer (skipped, no CuPy)."""
+    cupy = pytest.importorskip("cupy")
+
+    reference = hertz(10e-3, 10e-3, 113.19e9, 100.0)
+    dx = 3 * reference.a / 96
+    x = cell_centres(96, dx)
+    gaps = np.stack([(x[:, None] ** 2 + x[None, :] ** 2) / (2 * r) for r in (10e-3, 12e-3, 9e-3)])
+    loads = [100.0, 80.0, 120.0]
+    on_cpu = solve_normal_batch(gaps, dx, dx, 113.19e9, loads)
+    on_gpu = solve_normal_batch(cupy.asarray(gaps), dx, dx, 113.19e9, loads, precision="mixed")
+    for gpu, cpu in zip(on_gpu, on_cpu, strict=True):
+        assert backend.array_module(gpu.pressure) is cupy
+        np.testing.assert_allclose(
+            cupy.asnumpy(gpu.pressure), cpu.pressure, atol=1e-6 * reference.p0
+        )

@@ -5,10 +5,14 @@
 2. :func:`solve_normal` (load given) and :func:`solve_normal_displacement` (approach given): the
    Polonsky & Keer (1999) conjugate-gradient solver on any gap h(x, y) sampled on a cell-centred
    grid, with Love's (1929) cell coefficients and DC-FFT convolution (Liu, Wang & Liu 2000).
+   :func:`solve_normal_batch`: many contacts on one grid in one call (batched FFTs). The solver
+   is chosen from :data:`NORMAL_SOLVERS` (``method``): the preconditioned, nested-grid CG
+   (``"pcg"``, after Vollebregt 2014) or the plain Polonsky & Keer CG (``"pk"``).
 3. :func:`solve_contact`: sizes the grid from the Hertz estimate, warm-starts from the Hertz
    pressure and enlarges the box until the pressure vanishes on its edge.
 """
 
+from ballscrew.contact.batch import solve_normal_batch
 from ballscrew.contact.convolution import DCFFTOperator, direct_convolution, wraparound_kernel
 from ballscrew.contact.grid import (
     DEFAULT_BOX_FACTOR,
@@ -21,7 +25,9 @@ from ballscrew.contact.hertz import HertzContact, hamrock_brewe, hertz
 from ballscrew.contact.influence import love_coefficient, love_coefficients
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
+    DEFAULT_METHOD,
     DEFAULT_TOLERANCE,
+    NORMAL_SOLVERS,
     solve_normal,
     solve_normal_displacement,
 )
@@ -31,7 +37,9 @@ __all__ = [
     "DEFAULT_BOX_FACTOR",
     "DEFAULT_CELLS_ACROSS",
     "DEFAULT_MAX_ITERATIONS",
+    "DEFAULT_METHOD",
     "DEFAULT_TOLERANCE",
+    "NORMAL_SOLVERS",
     "ContactResult",
     "DCFFTOperator",
     "GridContactResult",
@@ -44,6 +52,7 @@ __all__ = [
     "love_coefficients",
     "solve_contact",
     "solve_normal",
+    "solve_normal_batch",
     "solve_normal_displacement",
     "wraparound_kernel",
 ]

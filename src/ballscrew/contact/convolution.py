@@ -42,11 +42,18 @@ class DCFFTOperator:
     solvers (``operator=``), or take the cached one from :meth:`for_grid`.
 
     Parameters: ``shape`` = (nx, ny) cells, ``dx``, ``dy`` cell sizes [m], ``e_star`` composite
-    modulus [Pa], ``xp`` the array module of the pressures (numpy or cupy).
+    modulus [Pa], ``xp`` the array module of the pressures (numpy or cupy), ``dtype`` the precision
+    of the FFTs (``numpy.float32`` for the mixed-precision iterations; u is returned in float64).
     """
 
     def __init__(
-        self, shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType = np
+        self,
+        shape: tuple[int, int],
+        dx: float,
+        dy: float,
+        e_star: float,
+        xp: ModuleType = np,
+        dtype: type[np.floating] = np.float64,
     ) -> None:
         nx, ny = int(shape[0]), int(shape[1])
         self.shape = (nx, ny)
@@ -54,6 +61,7 @@ class DCFFTOperator:
         self.dy = float(dy)
         self.e_star = float(e_star)
         self.xp = xp
+        self.dtype = np.dtype(dtype).type
         # K̃ is even along both axes (K̃[2n − i] = K̃[i]), so its DFT is real. It is stored twice
         # per entry to multiply the complex spectrum viewed as (re, im) float pairs (2x faster than
         # complex-by-real), with the 1/(4 nx ny) of the unnormalised inverse folded in.
@@ -61,16 +69,27 @@ class DCFFTOperator:
         self.self_coefficient = float(kernel[0, 0])
         """K(0, 0): displacement of a cell per unit pressure on itself [m/Pa]."""
         spectrum = scipy.fft.rfft2(kernel).real
-        spectrum *= padded_rfft(self.shape, xp).scale
-        self._kernel_pairs = xp.asarray(np.repeat(spectrum, 2, axis=1))
+        spectrum *= padded_rfft(self.shape, xp, self.dtype).scale
+        self._kernel_pairs = xp.asarray(np.repeat(spectrum, 2, axis=1).astype(self.dtype))
 
     @classmethod
     def for_grid(
-        cls, shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType = np
+        cls,
+        shape: tuple[int, int],
+        dx: float,
+        dy: float,
+        e_star: float,
+        xp: ModuleType = np,
+        dtype: type[np.floating] = np.float64,
     ) -> DCFFTOperator:
         """The operator of this grid from a small cache (the last 8 grids), built on first use."""
         return _cached_operator(
-            (int(shape[0]), int(shape[1])), float(dx), float(dy), float(e_star), xp
+            (int(shape[0]), int(shape[1])),
+            float(dx),
+            float(dy),
+            float(e_star),
+            xp,
+            np.dtype(dtype).type,
         )
 
     def matches(self, shape: tuple[int, ...], dx: float, dy: float, e_star: float) -> bool:
@@ -84,9 +103,9 @@ class DCFFTOperator:
 
         ``out``, if given, is an (nx, ny) float64 array that receives u.
         """
-        transform = padded_rfft(self.shape, self.xp)
+        transform = padded_rfft(self.shape, self.xp, self.dtype)
         spectrum = transform.forward(pressure)
-        pairs = spectrum.view(self.xp.float64)
+        pairs = spectrum.view(self.dtype)
         self.xp.multiply(pairs, self._kernel_pairs, out=pairs)
         if out is None:
             out = self.xp.empty(self.shape, dtype=np.float64)
@@ -94,12 +113,36 @@ class DCFFTOperator:
 
     __call__ = apply
 
+    def apply_batch(self, pressures: Any, out: Any) -> Any:
+        """u = K ∗ p of each grid of a (batch, nx, ny) stack ``pressures``, written to ``out``.
+
+        CuPy: one batched cuFFT over the stack. NumPy: the planned transform of one grid, grid
+        after grid (measured on 2 cores as fast as or faster than scipy's batched transform of the
+        stack at 32 × 128², and each contact's u is then bit-identical to a single solve's).
+        """
+        xp = self.xp
+        if xp is np:
+            for p, u in zip(pressures, out, strict=True):
+                self.apply(p, out=u)
+            return out
+        m, n = self.shape
+        spectrum = xp.fft.rfft2(pressures.astype(self.dtype, copy=False), s=(2 * m, 2 * n))
+        pairs = spectrum.view(self.dtype)
+        xp.multiply(pairs, self._kernel_pairs, out=pairs)
+        out[...] = xp.fft.irfft2(spectrum, s=(2 * m, 2 * n), norm="forward")[:, :m, :n]
+        return out
+
 
 @lru_cache(maxsize=8)
 def _cached_operator(
-    shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType
+    shape: tuple[int, int],
+    dx: float,
+    dy: float,
+    e_star: float,
+    xp: ModuleType,
+    dtype: type[np.floating],
 ) -> DCFFTOperator:
-    return DCFFTOperator(shape, dx, dy, e_star, xp)
+    return DCFFTOperator(shape, dx, dy, e_star, xp, dtype)
 
 
 def direct_convolution(

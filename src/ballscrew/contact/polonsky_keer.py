@@ -11,11 +11,16 @@ Each iteration costs one convolution (of the search direction); the displacement
 updated from it as u ← scale·(u − τ r) when the step neither clips a pressure nor re-admits a cell,
 and recomputed by a second convolution otherwise. All array work is written against the array module
 of the gap, so the same code runs on NumPy and CuPy arrays.
+
+The solver is chosen by name from :data:`NORMAL_SOLVERS`: ``"pcg"`` (default), the same iteration
+with the spectral preconditioner and the nested-grid start of
+:mod:`ballscrew.contact.preconditioned`, or ``"pk"``, the plain Polonsky & Keer CG of this module.
 """
 
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Callable
 from dataclasses import dataclass
 from types import ModuleType
 from typing import Any
@@ -25,12 +30,24 @@ import numpy as np
 from ballscrew.backend import array_module, blas_single_thread
 from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.convolution import DCFFTOperator
+from ballscrew.contact.preconditioned import solve_batch
 from ballscrew.contact.result import ContactResult
 from ballscrew.errors import ConvergenceError, InputError
+from ballscrew.registry import Registry
 
-__all__ = ["solve_normal", "solve_normal_displacement"]
+__all__ = [
+    "DEFAULT_METHOD",
+    "NORMAL_SOLVERS",
+    "PRECISIONS",
+    "solve_normal",
+    "solve_normal_displacement",
+]
 
 SOLVER = "Polonsky-Keer conjugate gradient"
+DEFAULT_METHOD = "pcg"
+"""Solver of :func:`solve_normal` (a name of :data:`NORMAL_SOLVERS`)."""
+PRECISIONS = {"float64": np.float64, "mixed": np.float32}
+"""``precision`` → FFT precision of the iterations; ``"mixed"`` finishes in float64 (pcg only)."""
 DEFAULT_MAX_ITERATIONS = 2000
 """CG iterations before a solve is a :class:`~ballscrew.errors.ConvergenceError`."""
 DEFAULT_TOLERANCE = 1e-8
@@ -45,6 +62,7 @@ class _Iterate:
     iterations: int
     residual: float
     converged: bool
+    coarse_work: float = 0.0
 
 
 def _reductions_context(xp: ModuleType) -> contextlib.AbstractContextManager[None]:
@@ -182,6 +200,71 @@ def _conjugate_gradient(
     return _Iterate(p, max_iterations, residual, False)
 
 
+Solver = Callable[[Any, Any, DCFFTOperator, float, int, Any, bool, type], _Iterate]
+NORMAL_SOLVERS: Registry[Solver] = Registry("normal contact solver", "method")
+"""Iterations of the normal contact solvers: f(h, p, operator, tol, max_iterations, total,
+nested, dtype) → state; ``p`` None asks for the solver's own start, ``total`` None for
+displacement control."""
+
+
+@NORMAL_SOLVERS.register(
+    "pcg",
+    "Polonsky & Keer CG with the spectral preconditioner of Vollebregt (2014) and a nested-grid "
+    "start (iteration count nearly independent of the grid)",
+)
+def _preconditioned(
+    h: Any,
+    p: Any,
+    operator: DCFFTOperator,
+    tol: float,
+    max_iterations: int,
+    total: float | None,
+    nested: bool,
+    dtype: type,
+) -> _Iterate:
+    """One contact through :func:`~ballscrew.contact.preconditioned.solve_batch` (batch of 1)."""
+    state = solve_batch(
+        h[None], operator.dx, operator.dy, operator.e_star,
+        None if total is None else np.array([total]), tol, max_iterations,
+        initial=None if p is None else p[None], nested=nested, dtype=dtype, operator=operator,
+    )  # fmt: skip
+    return _Iterate(
+        state.pressure[0],
+        int(state.iterations[0]),
+        float(state.residual[0]),
+        bool(state.converged[0]),
+        float(state.coarse_work[0]),
+    )
+
+
+@NORMAL_SOLVERS.register("pk", "Polonsky & Keer (1999) CG, unpreconditioned, uniform start")
+def _plain(
+    h: Any,
+    p: Any,
+    operator: DCFFTOperator,
+    tol: float,
+    max_iterations: int,
+    total: float | None,
+    nested: bool,
+    dtype: type,
+) -> _Iterate:
+    """:func:`_conjugate_gradient` from ``p`` (uniform if None); ``nested`` is ignored."""
+    xp = array_module(h)
+    if dtype is not np.float64:
+        raise InputError("precision", "mixed", "float64 with method 'pk' (mixed needs 'pcg')")
+    if p is None:
+        p = xp.full(h.shape, total / h.size)
+    with _reductions_context(xp):
+        return _conjugate_gradient(h, p, operator.apply(p), operator, tol, max_iterations, total)
+
+
+def _solver(method: str, precision: str) -> tuple[Solver, type]:
+    """The registered solver ``method`` and the FFT precision named ``precision``."""
+    if precision not in PRECISIONS:
+        raise InputError("precision", precision, f"one of {', '.join(PRECISIONS)}")
+    return NORMAL_SOLVERS[method], PRECISIONS[precision]
+
+
 @dataclass(frozen=True)
 class _Problem:
     """Checked inputs shared by both solvers."""
@@ -259,6 +342,7 @@ def _finish(
         converged=state.converged,
         dx=problem.dx,
         dy=problem.dy,
+        coarse_work=state.coarse_work,
     )
 
 
@@ -274,6 +358,9 @@ def solve_normal(
     initial: Any = None,
     operator: DCFFTOperator | None = None,
     raise_on_failure: bool = True,
+    method: str = DEFAULT_METHOD,
+    precision: str = "float64",
+    nested: bool = True,
 ) -> ContactResult:
     """Pressure under the normal load W between two bodies with the initial gap ``gap``.
 
@@ -296,11 +383,19 @@ def solve_normal(
     max_iterations
         Iterations allowed before :class:`~ballscrew.errors.ConvergenceError` is raised.
     initial
-        Warm-start pressures (≥ 0, shape of ``gap``); rescaled to the load. Default: uniform.
+        Warm-start pressures (≥ 0, shape of ``gap``); rescaled to the load. Default: the nested-grid
+        start (``method="pcg"`` with ``nested``), else uniform.
     operator
         A :class:`DCFFTOperator` of this grid to reuse; default: the cached one of the grid.
     raise_on_failure
         If False, return the last iterate with ``converged=False`` instead of raising.
+    method
+        A name of :data:`NORMAL_SOLVERS`: ``"pcg"`` (preconditioned, default) or ``"pk"``.
+    precision
+        ``"float64"``, or ``"mixed"``: float32 FFTs down to Σ|Δp|/Σp = 1e-5, then float64 to
+        ``tol`` (``"pcg"`` only).
+    nested
+        Start from the solution on the grids coarsened 2 × 2 (``"pcg"`` without ``initial``).
 
     Returns
     -------
@@ -311,18 +406,15 @@ def solve_normal(
     :func:`ballscrew.contact.solve_contact` sizes the grid and checks its edge.
     """
     load = positive("load", load)
+    solver, dtype = _solver(method, precision)
     problem = _problem(gap, dx, dy, e_star, tol, max_iterations, operator)
     h, xp, op = problem.h, problem.xp, problem.operator
     total = load / (problem.dx * problem.dy)
-    if initial is None:
-        p = xp.full(h.shape, total / h.size)
-    else:
+    p = None
+    if initial is not None:
         p = _initial_pressure(initial, h, xp)
         p *= total / float(p.sum())
-    with _reductions_context(xp):
-        state = _conjugate_gradient(
-            h, p, op.apply(p), op, problem.tol, problem.max_iterations, total
-        )
+    state = solver(h, p, op, problem.tol, problem.max_iterations, total, bool(nested), dtype)
     return _finish(state, problem, raise_on_failure)
 
 
@@ -338,6 +430,8 @@ def solve_normal_displacement(
     initial: Any = None,
     operator: DCFFTOperator | None = None,
     raise_on_failure: bool = True,
+    method: str = DEFAULT_METHOD,
+    precision: str = "float64",
 ) -> ContactResult:
     """Pressure and load for a given rigid-body approach δ (displacement control).
 
@@ -345,20 +439,18 @@ def solve_normal_displacement(
     rescaling; stops when Σ|p − p_old| / Σp < tol. The initial guess is p ∝ (δ − h)⁺ scaled to
     minimise the complementary energy (C3) along it, unless ``initial`` (pressures [Pa], used as
     given) is. The load W = dx·dy·Σp is an output. Parameters as :func:`solve_normal`, with
-    ``approach`` δ [m] (> 0) in place of the load.
+    ``approach`` δ [m] (> 0) in place of the load (no nested-grid start).
     """
     approach = positive("approach", approach)
+    solver, dtype = _solver(method, precision)
     problem = _problem(gap, dx, dy, e_star, tol, max_iterations, operator)
     h, xp, op = problem.h, problem.xp, problem.operator
     h_shifted = h - approach
     p = xp.maximum(-h_shifted, 0.0) if initial is None else _initial_pressure(initial, h, xp)
     if not float(p.sum()) > 0.0:  # No interference anywhere: the bodies do not touch.
         return _finish(_Iterate(p, 0, 0.0, True), problem, raise_on_failure, approach)
-    with _reductions_context(xp):
-        u = op.apply(p)
-        if initial is None:
-            scale = -float(xp.vdot(p, h_shifted)) / float(xp.vdot(p, u))
-            p *= scale
-            u *= scale
-        state = _conjugate_gradient(h_shifted, p, u, op, problem.tol, problem.max_iterations, None)
+    if initial is None:
+        with _reductions_context(xp):
+            p *= -float(xp.vdot(p, h_shifted)) / float(xp.vdot(p, op.apply(p)))
+    state = solver(h_shifted, p, op, problem.tol, problem.max_iterations, None, False, dtype)
     return _finish(state, problem, raise_on_failure, approach)

@@ -34,6 +34,9 @@ class ContactResult:
     """Cell size along x [m]."""
     dy: float
     """Cell size along y [m]."""
+    coarse_work: float = 0.0
+    """Iterations on the coarser grids of a nested-grid start, each weighted by its cell count over
+    the cell count of this grid (fine-grid equivalents; 0 without a nested start)."""
 
     @property
     def peak_pressure(self) -> float:

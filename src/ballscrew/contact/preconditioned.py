@@ -1,0 +1,319 @@
+"""Preconditioned, nested-grid and batched conjugate gradients for the normal contact problem.
+
+The constrained CG of Polonsky & Keer (1999) with two additions (``docs/theory/contact.md``):
+
+1. A spectral preconditioner (after Vollebregt 2014, J. Comput. Phys. 257:333, "A new solver for
+   the elastic normal contact problem using conjugate gradients, deflation, and an FFT-based
+   preconditioner"): the projected gap g on the contact set I_c is multiplied by the inverse
+   symbol of the half-space, M̂(k) = (E*/2)·|κ| ≈ 1/K̂(k), on the periodic nx × ny grid, and the
+   result is restricted to I_c and made mean-free there, z = P (M ∗ g). P M P is symmetric and
+   positive definite on the mean-free functions of I_c, so the projected CG stays a CG.
+2. A nested-grid start (as in full multigrid, Brandt 1977; ASPHER): the problem is solved first on
+   grids coarsened by 2 × 2 (gap averaged over the four cells), down to :data:`COARSEST` cells,
+   each to :data:`COARSE_TOLERANCE`, and the pressure is interpolated bilinearly to the next grid
+   as its initial guess.
+
+Every array carries a leading batch axis: B contacts on the same grid (one operator), each with its
+own gap and load, step length, conjugacy and stop. A contact that has converged leaves the batch.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from types import ModuleType
+from typing import Any
+
+import numpy as np
+import scipy.fft
+
+from ballscrew.backend import array_module, fft_threads
+from ballscrew.contact.convolution import DCFFTOperator
+
+__all__ = ["COARSEST", "COARSE_TOLERANCE", "MIXED_SWITCH", "BatchIterate", "solve_batch"]
+
+COARSEST = 48
+"""Cells along the shorter axis below which a grid is not coarsened further (GUESS, not tuned:
+with it the fine-grid iterations stay at 13-15 on the 128²-2048² Hertz problems)."""
+COARSE_TOLERANCE = 1e-5
+"""Stop of the coarse solves of the nested start: Σ|Δp|/Σp (GUESS, not tuned: of the order of the
+h² discretisation error between two grids)."""
+MIXED_SWITCH = 1e-5
+"""Σ|Δp|/Σp at which the float32 iterations of the mixed-precision solve hand over to float64
+(float32 FFTs carry a relative error ~1e-7·log N; measured to stall near 1e-6)."""
+
+
+@dataclass
+class BatchIterate:
+    """State of a batch of contacts handed back by :func:`solve_batch`."""
+
+    pressure: Any
+    """(B, nx, ny) cell pressures [Pa]."""
+    iterations: Any
+    """(B,) iterations on the finest grid."""
+    coarse_work: Any
+    """(B,) coarse-grid iterations in fine-grid equivalents (each × its cell count / the fine)."""
+    residual: Any
+    """(B,) final Σ|p − p_old| / Σp."""
+    converged: Any
+    """(B,) whether the residual reached the tolerance."""
+
+
+class SpectralPreconditioner:
+    """z = M ∗ g with M̂(k) = (E*/2)·√(κx² + κy²), κ = (2/Δ)·sin(πf), f = cycles per cell.
+
+    The half-space's displacement symbol is K̂(k) = 2/(E*|k|) (Johnson 1985, the Fourier transform
+    of the Boussinesq kernel 1/(π E* r)); its inverse is the Dirichlet-to-Neumann map (E*/2)|k|,
+    taken on the periodic nx × ny grid with the finite-difference wave number κ (positive, equal
+    to |k| at low frequencies). The mean mode, where M̂ = 0, gets the smallest non-zero value.
+    """
+
+    def __init__(self, shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType):
+        nx, ny = shape
+        kx = 2.0 / dx * np.sin(np.pi * np.fft.fftfreq(nx))
+        ky = 2.0 / dy * np.sin(np.pi * np.fft.rfftfreq(ny))
+        symbol = 0.5 * e_star * np.hypot(kx[:, None], ky[None, :])
+        nonzero = symbol[symbol > 0.0]
+        symbol[0, 0] = nonzero.min() if nonzero.size else 0.5 * e_star / max(dx, dy)
+        symbol /= nx * ny  # the unnormalised inverse FFT's factor
+        self.shape = (nx, ny)
+        self.xp = xp
+        self._symbol = {np.float64: xp.asarray(symbol), np.float32: xp.asarray(symbol, np.float32)}
+
+    def apply(self, g: Any, dtype: type[np.floating] = np.float64) -> Any:
+        """M ∗ g of each (nx, ny) grid of the stack ``g`` (float64 result)."""
+        xp, shape = self.xp, self.shape
+        g = g.astype(dtype, copy=False)
+        if xp is np:
+            workers = fft_threads(g.size)
+            spectrum = scipy.fft.rfft2(g, workers=workers)
+            spectrum *= self._symbol[dtype]
+            z = scipy.fft.irfft2(spectrum, s=shape, norm="forward", workers=workers)
+        else:
+            z = xp.fft.irfft2(xp.fft.rfft2(g) * self._symbol[dtype], s=shape, norm="forward")
+        return z.astype(np.float64, copy=False)
+
+
+def _sums(a: Any) -> Any:
+    """Σ over each grid of a (B, nx, ny) stack, shape (B,)."""
+    return a.sum(axis=(1, 2))
+
+
+def _dot(a: Any, b: Any) -> Any:
+    """Σ a·b over each grid of two (B, nx, ny) stacks, shape (B,), without a temporary."""
+    return array_module(a).einsum("bij,bij->b", a, b)
+
+
+def _col(v: Any) -> Any:
+    """A (B,) vector as (B, 1, 1) for broadcasting against the stack."""
+    return v[:, None, None]
+
+
+def _pcg(
+    h: Any,
+    p: Any,
+    operator: DCFFTOperator,
+    preconditioner: SpectralPreconditioner,
+    tol: float,
+    max_iterations: int,
+    total: Any | None,
+) -> tuple[Any, Any, Any, Any]:
+    """Preconditioned projected CG on a (B, nx, ny) stack; returns p, iterations, residual, done.
+
+    Load control (``total`` = W/(dx·dy) per contact) or displacement control (``total`` None,
+    ``h`` = h − δ). Per contact and iteration (Polonsky & Keer 1999 with z in place of g):
+    g = (u + h − ḡ)·[p > 0];  z = P(M ∗ g);  β = (g·z)/(g·z)_old (0 after a re-entry);
+    t = z + β t;  r = K ∗ t;  τ = (g·t)/(r·t − r̄ Σt);  p ← max(p − τ t, 0);
+    cells with p = 0 and u + h < ḡ re-enter with p = (ḡ − u − h)/K(0, 0);  p ← p·total/Σp.
+    Converged contacts leave the working stack; ``p`` is modified in place.
+    """
+    xp = array_module(h)
+    batch = h.shape[0]
+    load_control = total is not None
+    dtype = operator.dtype
+    iterations = np.zeros(batch, dtype=int)
+    residual = np.full(batch, np.inf)
+    done = np.zeros(batch, dtype=bool)
+    work = np.arange(batch)  # indices of the contacts still iterating
+    hw, pw = h, p.copy()
+    totw = None if total is None else np.asarray(total, dtype=np.float64)
+    u = operator.apply_batch(pw, xp.empty_like(pw))
+    t, r = xp.zeros_like(pw), xp.empty_like(pw)
+    rho_old = np.ones(batch)
+    conjugate = np.zeros(batch, dtype=bool)
+    lone_step = 1.0 / operator.self_coefficient
+    for iteration in range(1, max_iterations + 1):
+        q = u + hw
+        c = (pw > 0.0).astype(np.float64)
+        n_c = np.maximum(_host(_sums(c)), 1.0)
+        g_mean = _host(_dot(q, c)) / n_c if load_control else np.zeros(len(work))
+        g_bar = _col(xp.asarray(g_mean))
+        s = q - g_bar
+        s *= c
+        z = preconditioner.apply(s, dtype)
+        z *= c
+        if load_control:
+            z -= _col(xp.asarray(_host(_dot(z, c)) / n_c))
+            z *= c
+        rho = _host(_dot(s, z))
+        beta = np.where(conjugate & (rho_old > 0.0), rho / np.where(rho_old > 0.0, rho_old, 1.0), 0)
+        t *= c
+        t *= _col(xp.asarray(beta))
+        t += z
+        rho_old = rho
+        operator.apply_batch(t, r)
+        curvature = _host(_dot(r, t))
+        if load_control:
+            curvature -= _host(_dot(r, c)) / n_c * _host(_sums(t))
+        moving = (curvature > 0.0) & (rho > 0.0)
+        tau = np.where(moving, _host(_dot(s, t)) / np.where(moving, curvature, 1.0), 0.0)
+        tau_b = _col(xp.asarray(tau))
+        p_old = pw.copy()
+        xp.multiply(t, tau_b, out=z)
+        pw -= z
+        clipped = _host(pw.min(axis=(1, 2))) < 0.0
+        xp.maximum(pw, 0.0, out=pw)
+        readmitted = _host(xp.where(pw > 0.0, xp.inf, q).min(axis=(1, 2))) < g_mean
+        if readmitted.any():  # cells with p = 0 and a negative gap re-enter (Eq. 37)
+            s = q - g_bar
+            s *= (pw <= 0.0) & (s < 0.0)
+            pw -= s * lone_step
+        conjugate = ~readmitted
+        current = _host(_sums(pw))
+        alive = current > 0.0
+        scale = totw / np.where(alive, current, 1.0) if load_control else np.ones(len(work))
+        scale_b = _col(xp.asarray(scale))
+        pw *= scale_b
+        p_old -= pw
+        res = _host(_sums(xp.abs(p_old, out=p_old))) / (totw if load_control else current)
+        res = np.where(alive, res, np.inf)
+        r *= tau_b
+        u -= r
+        u *= scale_b
+        exact = np.flatnonzero(clipped | readmitted)
+        if exact.size:  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
+            rows = xp.asarray(exact)
+            u[rows] = operator.apply_batch(pw[rows], xp.empty_like(pw[rows]))
+        residual[work], iterations[work] = res, iteration
+        stopped = (res < tol) | ~alive
+        if stopped.any():
+            p[xp.asarray(work[stopped])] = pw[xp.asarray(stopped)]
+            done[work[stopped]] = res[stopped] < tol
+            keep = ~stopped
+            if not keep.any():
+                break
+            rows = xp.asarray(keep)
+            hw, pw, u, t, r = hw[rows], pw[rows], u[rows], t[rows], r[rows]
+            work, rho_old, conjugate = work[keep], rho_old[keep], conjugate[keep]
+            totw = None if totw is None else totw[keep]
+    else:
+        p[xp.asarray(work)] = pw
+    return p, iterations, residual, done
+
+
+def _host(a: Any) -> np.ndarray:
+    """A (B,) device vector as a NumPy array of float64 (or bool)."""
+    a = a.get() if hasattr(a, "get") else a
+    return np.asarray(a, dtype=bool if a.dtype == bool else np.float64)
+
+
+def _coarsen(h: Any) -> Any:
+    """Mean of each 2 × 2 block of cells of a (B, 2m, 2n) stack: (B, m, n)."""
+    b, nx, ny = h.shape
+    return h.reshape(b, nx // 2, 2, ny // 2, 2).mean(axis=(2, 4))
+
+
+def _refine_axis(p: Any, axis: int) -> Any:
+    """Cell-centred linear interpolation doubling ``axis``: 3/4 of the own cell + 1/4 of the
+    neighbour on the side of the fine cell (the edge cell repeated)."""
+    xp = array_module(p)
+    n = p.shape[axis]
+    lower = xp.take(p, xp.asarray(np.maximum(np.arange(n) - 1, 0)), axis=axis)
+    upper = xp.take(p, xp.asarray(np.minimum(np.arange(n) + 1, n - 1)), axis=axis)
+    fine = xp.stack([0.75 * p + 0.25 * lower, 0.75 * p + 0.25 * upper], axis=axis + 1)
+    shape = list(p.shape)
+    shape[axis] *= 2
+    return fine.reshape(shape)
+
+
+def _nested_start(
+    h: Any, dx: float, dy: float, e_star: float, total: Any, max_iterations: int, dtype: type
+) -> tuple[Any, Any]:
+    """Initial pressures for the (B, nx, ny) stack from the coarser grids, and their work."""
+    xp = array_module(h)
+    nx, ny = h.shape[1:]
+    zero = np.zeros(h.shape[0])
+    if nx % 2 or ny % 2 or min(nx, ny) // 2 < COARSEST:
+        return xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy(), zero
+    coarse = solve_batch(
+        _coarsen(h), 2 * dx, 2 * dy, e_star, total / 4.0, COARSE_TOLERANCE, max_iterations,
+        nested=True, dtype=dtype,
+    )  # fmt: skip
+    p = _refine_axis(_refine_axis(coarse.pressure, 1), 2)
+    p *= _col(xp.asarray(total) / _sums(p))
+    return p, (coarse.iterations + coarse.coarse_work) / 4.0
+
+
+def solve_batch(
+    h: Any,
+    dx: float,
+    dy: float,
+    e_star: float,
+    total: Any | None,
+    tol: float,
+    max_iterations: int,
+    *,
+    initial: Any = None,
+    nested: bool = True,
+    dtype: type[np.floating] = np.float64,
+    operator: DCFFTOperator | None = None,
+) -> BatchIterate:
+    """Preconditioned CG on the (B, nx, ny) gaps ``h`` (checked by the caller).
+
+    ``total`` (B,) = W/(dx·dy) per contact (load control) or None (displacement control, ``h`` =
+    h − δ and ``initial`` required). ``initial`` (B, nx, ny) pressures, rescaled to ``total``;
+    default: the nested-grid start (``nested``) or uniform pressure. ``dtype`` is the precision of
+    the FFTs (float32: iterate to :data:`MIXED_SWITCH` in float32, then to ``tol`` in float64 if
+    ``tol`` is below it; the coarse grids of a nested start stay in float32).
+    ``operator``: the float64 DC-FFT operator of the grid (default: the cached one).
+    """
+    xp = array_module(h)
+    nx, ny = h.shape[1:]
+    coarse_work = np.zeros(h.shape[0])
+    if initial is not None:
+        p = xp.array(initial, dtype=np.float64, copy=True)
+        if total is not None:
+            p *= _col(xp.asarray(total) / _sums(p))
+    elif nested:
+        p, coarse_work = _nested_start(h, dx, dy, e_star, total, max_iterations, dtype)
+    else:
+        p = xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy()
+    preconditioner = _preconditioner((nx, ny), dx, dy, e_star, xp)
+    iterations = np.zeros(h.shape[0], dtype=int)
+    if dtype is np.float32:
+        single = DCFFTOperator.for_grid((nx, ny), dx, dy, e_star, xp, np.float32)
+        p, iterations, residual, converged = _pcg(
+            h, p, single, preconditioner, max(tol, MIXED_SWITCH), max_iterations, total
+        )
+        if tol >= MIXED_SWITCH:  # the float32 iterations met the stop (Σ|Δp| taken in float64)
+            return BatchIterate(p, iterations, coarse_work, residual, converged)
+    if operator is None:
+        operator = DCFFTOperator.for_grid((nx, ny), dx, dy, e_star, xp)
+    p, more, residual, converged = _pcg(
+        h, p, operator, preconditioner, tol, max(max_iterations - int(iterations.max()), 1), total
+    )
+    return BatchIterate(p, iterations + more, coarse_work, residual, converged)
+
+
+_PRECONDITIONERS: dict[tuple[Any, ...], SpectralPreconditioner] = {}
+
+
+def _preconditioner(
+    shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType
+) -> SpectralPreconditioner:
+    """The preconditioner of this grid from a small cache (the last 8 grids)."""
+    key = (shape, dx, dy, e_star, xp.__name__)
+    if key not in _PRECONDITIONERS:
+        if len(_PRECONDITIONERS) >= 8:
+            _PRECONDITIONERS.pop(next(iter(_PRECONDITIONERS)))
+        _PRECONDITIONERS[key] = SpectralPreconditioner(shape, dx, dy, e_star, xp)
+    return _PRECONDITIONERS[key]

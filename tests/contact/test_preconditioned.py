@@ -1,0 +1,166 @@
+"""Preconditioned nested-grid CG ("pcg"): Hertz accuracy as the plain Polonsky & Keer CG ("pk") at
+every size, an iteration count that does not grow with the grid, batched = one at a time, and the
+mixed-precision option."""
+
+import numpy as np
+import pytest
+
+from ballscrew.backend import limited_fft_threads
+from ballscrew.contact import (
+    NORMAL_SOLVERS,
+    hertz,
+    solve_normal,
+    solve_normal_batch,
+    solve_normal_displacement,
+)
+from ballscrew.contact.grid import cell_centres
+from ballscrew.errors import ConvergenceError, InputError
+
+E_STAR = 113.19e9
+CASES = {"sphere": (10e-3, 10e-3, 100.0), "ellipse": (3.6e-3, 40e-3, 1000.0)}
+
+
+def hertz_problem(name, n):
+    """The benchmark's problem: box 3 × the Hertz contact diameter, n × n cells, one centred."""
+    rx, ry, load = CASES[name]
+    reference = hertz(rx, ry, E_STAR, load)
+    dx, dy = 6.0 * reference.a / n, 6.0 * reference.b / n
+    centred = np.arange(n) - n // 2
+    x, y = dx * centred[:, None], dy * centred[None, :]
+    return x**2 / (2 * rx) + y**2 / (2 * ry), dx, dy, load, reference
+
+
+def work(result):
+    """Fine-grid iterations plus the coarse grids' iterations in fine-grid equivalents."""
+    return result.iterations + result.coarse_work
+
+
+@pytest.fixture(scope="module")
+def solutions():
+    """Both solvers on both Hertz problems at 64², 128² and 256² cells (serial FFTs: threaded ones
+    crawl when the cores are shared with a parallel test run)."""
+    out = {}
+    with limited_fft_threads(1):
+        for name in CASES:
+            for n in (64, 128, 256):
+                gap, dx, dy, load, reference = hertz_problem(name, n)
+                for method in ("pcg", "pk"):
+                    result = solve_normal(gap, dx, dy, E_STAR, load, method=method)
+                    out[name, n, method] = (result, reference)
+    return out
+
+
+def test_both_solvers_are_registered_and_pcg_is_the_default():
+    assert NORMAL_SOLVERS.names == ("pcg", "pk")
+    gap, dx, dy, load, _ = hertz_problem("sphere", 128)
+    assert solve_normal(gap, dx, dy, E_STAR, load).coarse_work > 0.0
+    assert solve_normal(gap, dx, dy, E_STAR, load, method="pk").coarse_work == 0.0
+    with pytest.raises(InputError, match="method"):
+        solve_normal(gap, dx, dy, E_STAR, load, method="multigrid")
+
+
+@pytest.mark.parametrize("name", list(CASES))
+@pytest.mark.parametrize("n", [64, 128, 256])
+def test_hertz_accuracy_is_that_of_the_plain_solver_at_every_size(solutions, name, n):
+    """Peak pressure and approach against Hertz: the same errors (to 1e-7 of p0) as "pk"."""
+    new, reference = solutions[name, n, "pcg"]
+    old, _ = solutions[name, n, "pk"]
+    assert new.converged and new.residual < 1e-8
+    assert new.load == pytest.approx(CASES[name][2], rel=1e-10)
+    assert abs(new.peak_pressure / reference.p0 - 1) < 5e-4
+    assert new.peak_pressure == pytest.approx(old.peak_pressure, rel=1e-7)
+    assert new.approach == pytest.approx(old.approach, rel=1e-7)
+    np.testing.assert_allclose(new.pressure, old.pressure, atol=1e-6 * reference.p0)
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_iteration_count_does_not_grow_with_the_grid(solutions, name):
+    """Work (fine iterations + coarse equivalents) at 256² ≤ 1.3 × that at 64²; the plain CG grows
+    more than that (54/32 on the sphere), so the bound tells the two solvers apart."""
+    growth = {
+        m: work(solutions[name, 256, m][0]) / work(solutions[name, 64, m][0])
+        for m in NORMAL_SOLVERS
+    }
+    assert growth["pcg"] <= 1.3
+    assert growth["pk"] > 1.3
+    assert work(solutions[name, 256, "pcg"][0]) < 0.5 * work(solutions[name, 256, "pk"][0])
+
+
+def ball_stack(batch, n=96, seed=3):
+    """``batch`` ellipsoidal gaps with a ripple, radii and loads drawn at random, one grid."""
+    rng = np.random.default_rng(seed)
+    reference = hertz(5e-3, 20e-3, E_STAR, 200.0)
+    dx, dy = 4.0 * reference.a / n, 4.0 * reference.b / n
+    x, y = cell_centres(n, dx)[:, None], cell_centres(n, dy)[None, :]
+    rx = 5e-3 * (1.0 + 0.3 * rng.random(batch))
+    ry = 20e-3 * (1.0 + 0.3 * rng.random(batch))
+    ripple = 2e-8 * rng.random(batch)[:, None, None] * np.sin(x / (3 * dx)) * np.cos(y / (5 * dy))
+    gaps = x**2 / (2 * rx[:, None, None]) + y**2 / (2 * ry[:, None, None]) + ripple
+    return gaps, dx, dy, 100.0 + 150.0 * rng.random(batch)
+
+
+@pytest.mark.parametrize("precision", ["float64", "mixed"])
+def test_batched_contacts_equal_one_at_a_time(precision):
+    gaps, dx, dy, loads = ball_stack(5)
+    batch = solve_normal_batch(gaps, dx, dy, E_STAR, loads, precision=precision)
+    assert len(batch) == 5
+    assert len({r.iterations for r in batch} | {r.coarse_work for r in batch}) > 1  # own stops
+    for gap, load, together in zip(gaps, loads, batch, strict=True):
+        alone = solve_normal(gap, dx, dy, E_STAR, load, precision=precision)
+        assert together.converged and together.iterations == alone.iterations
+        scale = alone.peak_pressure
+        np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
+        assert together.approach == pytest.approx(alone.approach, rel=1e-10)
+        assert together.load == pytest.approx(load, rel=1e-10)
+
+
+def test_batch_with_warm_starts_and_a_failing_contact():
+    gaps, dx, dy, loads = ball_stack(3)
+    cold = solve_normal_batch(gaps, dx, dy, E_STAR, loads, nested=False)
+    warm = solve_normal_batch(
+        gaps, dx, dy, E_STAR, loads, initial=np.stack([r.pressure for r in cold])
+    )
+    assert all(w.iterations < c.iterations for w, c in zip(warm, cold, strict=True))
+    with pytest.raises(ConvergenceError, match="contact 0 of the batch"):
+        solve_normal_batch(gaps, dx, dy, E_STAR, loads, max_iterations=2)
+    partial = solve_normal_batch(
+        gaps, dx, dy, E_STAR, loads, max_iterations=2, raise_on_failure=False
+    )
+    assert not any(r.converged for r in partial)
+
+
+@pytest.mark.parametrize(
+    ("field", "kwargs"),
+    [
+        ("gaps", {"gaps": np.zeros((4, 4))}), ("gaps", {"gaps": np.full((2, 4, 4), np.nan)}),
+        ("loads", {"loads": [1.0, 2.0, 3.0]}), ("loads", {"loads": [1.0, -2.0]}),
+        ("precision", {"precision": "half"}), ("initial", {"initial": np.ones((2, 4, 5))}),
+        ("initial", {"initial": -np.ones((2, 4, 4))}), ("tol", {"tol": 0.0}),
+    ],
+)  # fmt: skip
+def test_batch_input_errors_name_the_argument(field, kwargs):
+    arguments = {"gaps": np.zeros((2, 4, 4)), "dx": 1e-6, "dy": 1e-6, "e_star": E_STAR}
+    arguments |= {"loads": [1.0, 2.0]} | kwargs
+    with pytest.raises(InputError, match=field):
+        solve_normal_batch(**arguments)
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_mixed_precision_meets_the_float64_tolerance(name):
+    """float32 FFTs to Σ|Δp|/Σp = 1e-5, then float64: the same certified stop, the same answer."""
+    gap, dx, dy, load, reference = hertz_problem(name, 128)
+    exact = solve_normal(gap, dx, dy, E_STAR, load, tol=1e-10)
+    double = solve_normal(gap, dx, dy, E_STAR, load)
+    mixed = solve_normal(gap, dx, dy, E_STAR, load, precision="mixed")
+    assert mixed.converged and mixed.residual < 1e-8
+    error = np.abs(mixed.pressure - exact.pressure).max() / reference.p0
+    assert error <= max(2.0 * np.abs(double.pressure - exact.pressure).max() / reference.p0, 1e-8)
+    assert mixed.approach == pytest.approx(exact.approach, rel=1e-8)
+
+
+def test_mixed_precision_needs_the_preconditioned_solver():
+    gap, dx, dy, load, _ = hertz_problem("sphere", 32)
+    with pytest.raises(InputError, match="precision"):
+        solve_normal(gap, dx, dy, E_STAR, load, method="pk", precision="mixed")
+    with pytest.raises(InputError, match="precision"):
+        solve_normal_displacement(gap, dx, dy, E_STAR, 1e-6, precision="double")
