@@ -291,12 +291,12 @@ class MeshSpec(Model):
     ) = 0.005
     size_3d: quantity(
         "length", "3-D model: axial element size over the nut and its stroke", gt=0, le=1.0
-    ) = 0.005
+    ) = 0.008
     far_size_3d: quantity(
         "length", "3-D model: axial element size of the shaft away from the nut", gt=0, le=1.0
-    ) = 0.02
+    ) = 0.03
     divisions_3d: int = Field(
-        48, ge=8, le=1024, multiple_of=4, description="3-D model: circumferential divisions"
+        32, ge=8, le=1024, multiple_of=4, description="3-D model: circumferential divisions"
     )
     layers_3d: int = Field(
         4, ge=1, le=64, description="3-D model: radial layers of the shaft O-grid"
