@@ -164,3 +164,23 @@ def test_summary_lists_the_segments_operating_points(case: Case) -> None:
     assert options["programme"] == "duty" and options["film_factor"] == 1.0
     temperatures = [s["contact_temperature"]["value"] for s in options["segments"]]
     assert temperatures == [lv.temperature for lv in duty_programme(case)]
+
+
+def test_a_starved_supply_wears_faster_than_a_flooded_one(case: Case) -> None:
+    """The wear chain takes the case's supply state: a starved inlet thins the film, the
+    asperities carry more of the load and the raceway wears faster (1500 rpm, 1 kN)."""
+    starved = ballscrew.case.with_overrides(
+        case, {"lubrication.supply": "starved", "lubrication.inlet_ratio": 1.2}
+    )
+    rates = []
+    for c in (case, starved):
+        setup = wear_setup(c)
+        level = duty_programme(c)[1]
+        flank, gap = next(iter(setup.nominal_gap.items()))
+        force = nut_force_pair(setup.initial_preload, 1000.0)[0]
+        depth = np.zeros(gap.shape[1])
+        rates.append(flank_rate(setup, flank, force, 1500 * RPM, depth, level=level))
+    flooded, thin = rates
+    assert not isinstance(wear_setup(starved).film_model, str)
+    assert thin.psi > flooded.psi
+    assert thin.depth_per_revolution.max() > flooded.depth_per_revolution.max()

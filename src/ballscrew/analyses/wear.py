@@ -186,6 +186,7 @@ def wear_setup(case: Case) -> WearSetup:
         tolerance=case.numerics.tolerance,
         max_iterations=case.numerics.max_iterations,
         body_compliance=_preload_loop_compliance(case, params),
+        film_model=params.lubrication.film_model,
     )
 
 
@@ -214,6 +215,10 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
     }
     if setup.body_compliance:
         data["body_compliance"] = setup.body_compliance
+    if not isinstance(setup.film_model, str):  # a starved or heated inlet
+        data["lubrication"] = case.lubrication.model_dump(mode="json")
+    if setup.film_model != "hamrock_dowson":
+        data["film_model"] = case.medium.film_model
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 

@@ -3,8 +3,8 @@
 Theory manual ``docs/theory/thermal.md``, time integration and solvers: a sparse LU (SuperLU, COLAMD
 ordering) up to a model's ``direct_limit`` (2-D and 1-D models), factorised once and reused for
 every step of a constant time step; above it smoothed-aggregation AMG preconditioned CG (pyamg),
-which the 3-D model always uses (its LU fills in: 16–24 s for 35k unknowns against 1.3 s). Implicit Euler with
-consistent matrices conserves energy discretely:
+which the 3-D model always uses (its LU fills in: 16–24 s for 35k unknowns against 1.3 s).
+Implicit Euler with consistent matrices conserves energy discretely:
     1ᵀC(θₙ − θₙ₋₁) + Δt·1ᵀAθₙ = Δt·1ᵀf,   and 1ᵀA θ is the convective loss (1ᵀK = 0).
 """
 

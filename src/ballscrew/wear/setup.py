@@ -10,6 +10,7 @@ from numpy.typing import NDArray
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads import ball_load, nut_forces, preload_after_wear, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
+from ballscrew.lubrication.film import FilmModel
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.strips import working_raceway_length
 
@@ -49,8 +50,9 @@ class WearSetup:
     """Factor on the catalogue torque of (E9.1) (torque_scale or the initial-torque fit)."""
     tolerance: float
     max_iterations: int
-    film_model: str = "hamrock_dowson"
-    """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``)."""
+    film_model: str | FilmModel = "hamrock_dowson"
+    """Film-thickness model: a registered name (``ballscrew.lubrication.FILM_MODELS``) or that
+    model corrected for the supply state and inlet heating (``ballscrew.lubrication.supply``)."""
     body_compliance: float = 0.0
     """c_b of shaft and nut body in the preload loop, per nut [m/N] (0: rigid bodies)."""
 
