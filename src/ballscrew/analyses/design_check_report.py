@@ -203,8 +203,8 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
             ax.plot(z[k][lifted] * 1e3, q[k][lifted], "x", c="k", label="lifted off")
     ax.set_xlabel("axial position of the ball [mm] (loaded end right)")
     ax.set_ylabel("normal ball load [N]")
-    ax.set_ylim(bottom=0)
-    ax.legend(fontsize=8)
+    ax.set_ylim(0.0, 1.1 * max(float(dist.loads.max()), 1e-9))
+    ax.legend(fontsize=8, loc="lower center")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
