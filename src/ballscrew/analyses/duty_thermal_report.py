@@ -70,7 +70,7 @@ def day_plot(result: DutyThermal, path: Path) -> Path:
                 ax.axvspan(phase.start / 3600.0, phase.end / 3600.0, color="0.93", lw=0)
     top.plot(hours, 1e6 * result.elongation, color="C0")
     top.set_ylabel("thermal elongation [µm]")
-    bottom.plot(hours, result.max_temperature - CELSIUS, color="C3", label="largest")
+    bottom.plot(hours, result.max_temperature - CELSIUS, color="k", lw=1.8, label="largest")
     styles = line_styles(len(result.sensor_names))
     for k, name in enumerate(result.sensor_names):
         style = {**styles[k], "marker": None}
