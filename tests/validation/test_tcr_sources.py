@@ -1,9 +1,10 @@
 """Every TCR model on a further row of the vendor conductance table: BeCu–steel at 330 MPa.
 
 A search for independent, readable measurements (tables or values in text) of rough metal and
-ball–raceway joints found none whose numbers could be read here (see the theory manual,
-*Validation*); this row is from the same vendor table as ``test_tcr.py`` and is therefore not
-an independent source. It tests the pressure exponent far from the 7–15 MPa rows.
+ball–raceway joints found none whose numbers could be read here (theory manual, contact
+resistance, *What the published data say about the models*); this row is from the same vendor
+table as ``test_tcr.py`` and is therefore not an independent source. It tests the pressure
+exponent far from the 7–15 MPa rows.
 """
 
 from __future__ import annotations
