@@ -109,7 +109,7 @@ class DesignCheck(Presented):
     dynamic_load_rating: float | None
     """C_a [N] (catalogue, else computed from the geometry)."""
     static_load_rating: float | None
-    """C_0a [N] (catalogue, else computed from the geometry)."""
+    """C_0a [N] (catalogue, else computed from the geometry × f_H f_ac)."""
     equivalent_loads: tuple[float, float]
     """Cube-mean equivalent loads F_bm of nut half 1 and 2 [N] (half 2 = 0 for a single nut)."""
     rating_life: float | None
@@ -207,15 +207,30 @@ def _equivalent_loads(spectrum: LoadSpectrum, preload: float, nuts: int) -> tupl
     return tuple(design.cube_mean_loads(h, spectrum.shares)[0] for h in halves)  # type: ignore[return-value]
 
 
+def static_rating(case: Case, params: ScrewParameters) -> float:
+    """C_0a from the geometry times the hardness factor f_H of the softer raceway and the
+    accuracy factor f_ac of ``[design] accuracy_grade`` (NBS catalogue,
+    :mod:`ballscrew.design.rating_factors`) [N]."""
+    raceway = min(params.material(side).hardness for side in ("screw", "nut"))
+    grade = case.design.accuracy_grade if case.design else 5
+    basic = design.static_load_rating(
+        params.geometry,
+        params.balls_per_nut,
+        (params.contact_modulus("screw"), params.contact_modulus("nut")),
+    )
+    return basic * design.hardness_factor(raceway) * design.accuracy_factor(grade)
+
+
 def load_ratings(case: Case, params: ScrewParameters) -> tuple[float, float, tuple[str, ...]]:
-    """(C_a, C_0a, names of those computed): ``[design]``'s values, else from the geometry."""
+    """(C_a, C_0a, names of those computed): ``[design]``'s values, else from the geometry.
+
+    A maker's C_0a is taken as printed (it holds for the hardness and class of his product).
+    """
     spec = case.design
     given = (spec.dynamic_load_rating, spec.static_load_rating) if spec else (None, None)
     balls = params.balls_per_nut
     ca = given[0] or design.dynamic_load_rating(params.geometry, balls)
-    c0a = given[1] or design.static_load_rating(
-        params.geometry, balls, (params.contact_modulus("screw"), params.contact_modulus("nut"))
-    )
+    c0a = given[1] or static_rating(case, params)
     names = ("dynamic_load_rating", "static_load_rating")
     return ca, c0a, tuple(n for n, g in zip(names, given, strict=True) if g is None)
 
