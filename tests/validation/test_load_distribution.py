@@ -1,24 +1,22 @@
 """Per-ball load distribution against the closed form of a threaded joint with elastic bars.
 
-No published per-ball distribution of a ball screw with readable numbers was found (the ball-
-screw papers, e.g. Mei et al. 2003, Zhen & An 2018, Bertolaso et al. 2014, give theirs as plots),
-so the bar part of the model is verified against the classical closed form of the load
-distribution over the threads of a bolt and nut (Sopwith 1948; Yamamoto 1980, *The Theory and
-Computation of Threads Connection*, ch. 3): with equal thread (here ball) springs k and bars
-of compliance c = 1/(E_s A_s) + 1/(E_n A_n) per length, the force of the j-th load carrier
-counted from the unloaded end of a nut loaded at its flange end (bolt in tension, nut in
-compression, the "standard nut") obeys the difference equation Q_{j+1} − 2Q_j + Q_{j−1} =
-k s² c Δz Q_j with Q_1 − Q_0 = k s² c Δz Q_0, whose solution is
+No published per-ball distribution of a ball screw with numbers we could read was found (Mei et
+al. 2003 and Zhen & An 2018 give theirs as figures), so the bar part of the model is verified
+against the classical closed form of the load distribution over the threads of a bolt and nut
+(Sopwith 1948; Yamamoto 1980, *The Theory and Computation of Threads Connection*). With equal
+thread (here ball) springs k and bars of compliance c = 1/(E_s A_s) + 1/(E_n A_n) per length,
+the force of the j-th carrier, counted from the unloaded end of a nut loaded at its flange end
+(bolt in tension, nut in compression: the "standard nut"), obeys
 
-    Q_j ∝ cosh(μ (j + 1/2)),   cosh μ = 1 + k s² c Δz / 2
+    Q_{j+1} − 2 Q_j + Q_{j−1} = k s² c Δz Q_j,   Q_1 − Q_0 = k s² c Δz Q_0,
 
-(s = sinβ cosλ the axial share of a ball load, Δz the axial ball spacing). Hertz contacts have
-no single spring constant, so the check is made on the tangent problem about a uniform state:
-a lead error e_j that cancels the body strain of a uniform load Q̄ makes every ball carry Q̄,
-and every ball then has the same tangent spring k = 3/(2K) Q̄^{1/3}; the increment of the ball
-loads for a small load increment (central difference) must follow the closed form. This is a
-verification of the equations and the solver (bars, lead-error input, Newton), not a
-validation against measurements.
+whose solution is Q_j ∝ cosh(μ (j + 1/2)), cosh μ = 1 + k s² c Δz / 2 (s = sinβ cosλ the axial
+share of a ball load, Δz the axial ball spacing). Hertz contacts have no single spring constant,
+so the check is made on the tangent problem about a uniform state: a lead error e_j that cancels
+the body strain of a uniform load Q̄ makes every ball carry Q̄, and every ball then has the same
+tangent spring k = 3/(2K) Q̄^{1/3}; the increments of the ball loads for a small load increment
+(central difference) must follow the closed form. A verification of the equations and the
+solver (bars, lead-error input, Newton), not a validation against measurements.
 """
 
 from __future__ import annotations
@@ -37,9 +35,19 @@ ALPHA = math.atan(LEAD / (math.pi * D_M))
 HERTZ = 1.0e-7  # K of a ball's two contacts [m N^-2/3]
 Q_BAR = 200.0  # uniform ball load of the reference state [N]
 SOURCE = (
-    "Sopwith (1948), Proc. IMechE 160; Yamamoto (1980), ch. 3: thread-load distribution of a "
+    "Sopwith (1948), Proc. IMechE 159; Yamamoto (1980): thread-load distribution of a "
     "bolt-nut joint with elastic bars, cosh law"
 )
+REFERENCE = {
+    "citation": "Sopwith, D.G. (1948), The distribution of load in screw threads, Proc. IMechE "
+    "159, 373-383; Yamamoto, A. (1980), The Theory and Computation of Threads Connection, Yokendo",
+    "location": "load distribution over the threads of a bolt and nut with elastic bars and equal "
+    "thread springs (the discrete form of the cosh law)",
+    "retrieved_via": "the closed form as derived in this test's docstring from the bar equations "
+    "(the sources were not read in this work)",
+    "quote": "Q_j ∝ cosh(μ (j + 1/2)), cosh μ = 1 + k s² c Δz / 2",
+    "verified": False,
+}
 ASSUMPTIONS = (
     "single nut of 40 balls in one row (4 turns of a 40 x 10 screw with 6.35 mm balls), "
     "contact angle 45°, Hertz constant K = 1e-7 m N^-2/3",
@@ -88,7 +96,7 @@ def test_tangent_distribution_follows_the_cosh_law(validation, label: str, e_a: 
         kind="verification against a closed form",
         model="solve_distribution (bars, Hertz, lead error)",
         source=SOURCE,
-        reference={"bar rigidity E A [N]": e_a, "mu": mu, "balls": 40},
+        reference=REFERENCE | {"bar rigidity E A [N]": e_a, "mu": mu, "balls": 40},
         quantity="share of a load increment taken by the ball at the loaded end",
         unit="-",
         measured=float(closed[loaded_end]),
