@@ -1,4 +1,4 @@
-"""Hardness and accuracy factors of the static rating (NBS catalogue ch. 4 §2.5.2-2.5.3)."""
+"""Hardness and accuracy factors of the load ratings (NBS catalogue ch. 4 §2.5.2-2.5.3, §2.7.3)."""
 
 from __future__ import annotations
 
@@ -39,29 +39,31 @@ def test_unknown_accuracy_grade_names_the_field() -> None:
 
 def _computed(**overrides: object):
     raw = raw_case(**overrides)
-    del raw["design"]["static_load_rating"]
+    del raw["design"]["static_load_rating"], raw["design"]["dynamic_load_rating"]
     with pytest.warns(UserWarning, match="computed from the geometry"):
         return design_check(case_from_dict(raw))
 
 
-def test_grade_and_hardness_scale_the_computed_static_rating() -> None:
+@pytest.mark.parametrize("rating", ["dynamic_load_rating", "static_load_rating"])
+def test_grade_and_hardness_scale_the_computed_ratings(rating: str) -> None:
     """Class 7 takes 0.9 of the class-5 rating; class 10 with a softer screw raceway (HV 500
-    against the example's 6.5 GPa) takes 0.7 (500/663)^3 / f_H(663) of it."""
-    c5 = _computed().static_load_rating
-    assert _computed(accuracy_grade=7).static_load_rating == pytest.approx(0.9 * c5, rel=1e-12)
+    against the example's 6.5 GPa) takes 0.7 (500/700)^3 / f_H(6.5 GPa) of it."""
+    c5 = getattr(_computed(), rating)
+    assert getattr(_computed(accuracy_grade=7), rating) == pytest.approx(0.9 * c5, rel=1e-12)
+    soft_screw = f"{500.0 * KGF_MM2 * 1e-9!r} GPa"
     raw = raw_case(accuracy_grade=10)
-    del raw["design"]["static_load_rating"]
+    del raw["design"]["static_load_rating"], raw["design"]["dynamic_load_rating"]
     assert raw["materials"]["screw"]["hardness"] == "6.5 GPa"
-    raw["materials"]["screw"]["hardness"] = f"{500.0 * KGF_MM2 * 1e-9!r} GPa"
+    raw["materials"]["screw"]["hardness"] = soft_screw
     with pytest.warns(UserWarning, match="computed from the geometry"):
-        soft = design_check(case_from_dict(raw)).static_load_rating
+        soft = getattr(design_check(case_from_dict(raw)), rating)
     ratio = (500.0 / 700.0) ** 3 / design.hardness_factor(6.5e9)
     assert soft == pytest.approx(0.7 * ratio * c5, rel=1e-9)
 
 
-def test_a_maker_static_rating_is_taken_as_printed() -> None:
+def test_a_maker_rating_is_taken_as_printed() -> None:
     result = design_check(case_from_dict(raw_case(accuracy_grade=10)))
-    assert result.static_load_rating == 141_100.0
+    assert (result.dynamic_load_rating, result.static_load_rating) == (52_700.0, 141_100.0)
 
 
 def test_bad_grade_in_the_case_is_one_clear_error() -> None:

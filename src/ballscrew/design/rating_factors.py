@@ -1,16 +1,16 @@
-"""Hardness and accuracy-grade factors of the static axial load rating (NBS catalogue).
+"""Hardness and accuracy-class factors of the axial load ratings (NBS catalogue).
 
-The NBS ball-screw catalogue (*Components for linear motion*, ch. 4 "Ball screws", §2.5.1–2.5.3,
-pp. 109–110) reduces the basic static rating C_0a of its static safety factor
-a_S = f_H f_ac C_0a / P_a by
+The NBS ball-screw catalogue (*Components for linear motion*, ch. 4 "Ball screws", §2.5.1–2.5.3
+and §2.7.3, pp. 109–112) multiplies the ratings by
 
 * the hardness factor f_H = (HV10 / 700)³ ≤ 1 of the raceways (700 HV10 ≈ 60 HRC; the catalogue
-  states f_H = 0.98–1.0 for its 58–62 HRC raceways), and
-* the accuracy factor f_ac of the precision class: 1.0 for classes 1–5, 0.9 and 0.7 for the
-  rolled classes 7 and 10 (read from the catalogue's table, whose class cells for 0.9 and 0.7 are
-  not legible in the copy we had: ASSIGNED to classes 7 and 10, the ISO 3408 classes after 5).
+  calls f_H 0.98–1.0 for its 58–62 HRC raceways), and
+* the accuracy factor f_ac of the precision class: 1 for classes 1–5, 0.9 for class 7, 0.7 for
+  class 10 (table "fac", p. 110),
 
-Neither factor is applied to the dynamic rating C_a: the catalogue gives none for it.
+in the static safety factor a_S = f_H f_ac C_0a / P_a, and, by the same factors, in the life of a
+nut whose raceways are not of 60 HRC or whose class is not 1–5 (§2.7.3; that formula is printed
+as an image in the copy we read, only its list of factors is legible).
 """
 
 from __future__ import annotations
@@ -38,8 +38,8 @@ ACCURACY_FACTORS: dict[int, float] = {
     7: 0.9,
     10: 0.7,
 }
-"""f_ac by accuracy (precision) class (NBS catalogue §2.5.3; classes 0, 2, 4 are the JIS
-grades between ISO 1, 3 and 5 and take their neighbours' 1.0)."""
+"""f_ac by accuracy (precision) class (NBS catalogue §2.5.3; classes 0, 2, 4, JIS grades between
+ISO 1, 3 and 5, take their neighbours' 1)."""
 
 _KGF_MM2 = 9.80665e6  # Pa per kgf/mm²
 
