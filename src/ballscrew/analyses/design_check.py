@@ -107,9 +107,9 @@ class DesignCheck(Presented):
     case: Case
     spectrum: LoadSpectrum
     dynamic_load_rating: float | None
-    """C_a [N] (catalogue, else computed from the geometry)."""
+    """C_a [N] (catalogue, else computed from the geometry × f_H f_ac)."""
     static_load_rating: float | None
-    """C_0a [N] (catalogue, else computed from the geometry)."""
+    """C_0a [N] (catalogue, else computed from the geometry × f_H f_ac)."""
     equivalent_loads: tuple[float, float]
     """Cube-mean equivalent loads F_bm of nut half 1 and 2 [N] (half 2 = 0 for a single nut)."""
     rating_life: float | None
@@ -207,13 +207,26 @@ def _equivalent_loads(spectrum: LoadSpectrum, preload: float, nuts: int) -> tupl
     return tuple(design.cube_mean_loads(h, spectrum.shares)[0] for h in halves)  # type: ignore[return-value]
 
 
+def rating_factor(case: Case, params: ScrewParameters) -> float:
+    """f_H f_ac: hardness factor of the softer of screw and nut raceway times the accuracy factor
+    of ``[design] accuracy_grade`` (NBS catalogue, :mod:`ballscrew.design.rating_factors`)."""
+    raceway = min(params.material(side).hardness for side in ("screw", "nut"))
+    grade = case.design.accuracy_grade if case.design else 5
+    return design.hardness_factor(raceway) * design.accuracy_factor(grade)
+
+
 def load_ratings(case: Case, params: ScrewParameters) -> tuple[float, float, tuple[str, ...]]:
-    """(C_a, C_0a, names of those computed): ``[design]``'s values, else from the geometry."""
+    """(C_a, C_0a, names of those computed): ``[design]``'s values, else from the geometry
+    times :func:`rating_factor`.
+
+    A maker's ratings are taken as printed (they hold for the hardness and class of his product).
+    """
     spec = case.design
     given = (spec.dynamic_load_rating, spec.static_load_rating) if spec else (None, None)
     balls = params.balls_per_nut
-    ca = given[0] or design.dynamic_load_rating(params.geometry, balls)
-    c0a = given[1] or design.static_load_rating(
+    factor = rating_factor(case, params) if None in given else 1.0
+    ca = given[0] or factor * design.dynamic_load_rating(params.geometry, balls)
+    c0a = given[1] or factor * design.static_load_rating(
         params.geometry, balls, (params.contact_modulus("screw"), params.contact_modulus("nut"))
     )
     names = ("dynamic_load_rating", "static_load_rating")

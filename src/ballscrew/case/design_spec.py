@@ -5,6 +5,7 @@ Example (THK BNFN4010-5 on a 1.3 m shaft)::
     [design]
     dynamic_load_rating = "52.7 kN"   # C_a from the maker's table (else from the geometry)
     static_load_rating = "141.1 kN"   # C_0a from the maker's table (else from the geometry)
+    accuracy_grade = 5                # C5 / P5: f_ac = 1 (0.9 for class 7, 0.7 for class 10)
     mounting = "fixed-supported"
     unsupported_length = "1.3 m"      # between the bearings (buckling and whirling)
     nut_distance = "1.0 m"            # fixed bearing to nut (shaft stiffness); default the length
@@ -51,6 +52,10 @@ class DesignSpec(Model):
         )
         | None
     ) = None
+    accuracy_grade: Literal[0, 1, 2, 3, 4, 5, 7, 10] = Field(
+        5,
+        description="accuracy class (ISO 3408 / JIS C or P grade number): f_ac of C_0a",
+    )
     catalogue_rigidity: (
         quantity(
             "stiffness", "nut rigidity K of the maker's table at preload 0.1 C_a", gt=0, le=1e13

@@ -17,6 +17,11 @@ from ballscrew.design.life import (
     reliability_factor,
     static_safety_factor,
 )
+from ballscrew.design.rating_factors import (
+    ACCURACY_FACTORS,
+    accuracy_factor,
+    hardness_factor,
+)
 from ballscrew.design.ratings import (
     MAX_PRELOAD_SHARE,
     STATIC_CONTACT_PRESSURE,
@@ -47,6 +52,7 @@ from ballscrew.design.stiffness import (
 )
 
 __all__ = [
+    "ACCURACY_FACTORS",
     "BUCKLING_SAFETY",
     "CATALOGUE_RIGIDITY_SHARE",
     "LIFT_OFF_FACTOR",
@@ -56,6 +62,7 @@ __all__ = [
     "RELIABILITY_FACTORS",
     "SPEED_SAFETY",
     "STATIC_CONTACT_PRESSURE",
+    "accuracy_factor",
     "balls_per_turn",
     "buckling_load",
     "catalogue_nut_rigidity",
@@ -63,6 +70,7 @@ __all__ = [
     "combined_life",
     "cube_mean_loads",
     "dynamic_load_rating",
+    "hardness_factor",
     "life_hours",
     "life_travel",
     "maker_buckling_load",
