@@ -33,6 +33,7 @@ from ballscrew.lubrication import AsperitySurface
 from ballscrew.validation import case_with
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.life import check_wear_work, integrate_wear
+from ballscrew.wear.load_classes import LoadClasses, load_classes
 from ballscrew.wear.programme import RunningIn, WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, WearSetup, nut_force_pair
 from ballscrew.wear.strips import working_raceway_length
@@ -83,6 +84,7 @@ def wear_options(case: Case) -> WearOptions:
         checkpoint_every=spec.checkpoint_every,
         film_factor=spec.film_factor,
         running_in=(None if running is None else RunningIn(running.D, running.G, running.depth)),
+        load_classes=spec.load_classes,
     )
 
 
@@ -131,7 +133,11 @@ def wear_setup(case: Case) -> WearSetup:
         for lv in spec.programme
         for _, part in lv.parts()
     )
-    hz = hertz(ca.rx, ca.ry, e_star, q_max)  # a along x (rolling), b along y (across)
+    classes = _ball_classes(case, params, spec)
+    widest = max((c.ratios[-1] for _, pair in classes for c in pair), default=1.0)
+    hz = hertz(
+        ca.rx, ca.ry, e_star, max(widest, 1.0) * q_max
+    )  # a along x (rolling), b along y (across)
     nx, ny = spec.grid
     grid_bytes = contact_grid_bytes(nx, ny) + 8.0 * nx * ny * 16  # + warm starts, gaps, rates
     check_memory("wear.grid", list(spec.grid), grid_bytes, f"the {nx} × {ny} wear grid")
@@ -187,7 +193,28 @@ def wear_setup(case: Case) -> WearSetup:
         max_iterations=case.numerics.max_iterations,
         body_compliance=_preload_loop_compliance(case, params),
         film_model=params.lubrication.film_model,
+        ball_classes=classes,
     )
+
+
+def _ball_classes(
+    case: Case, params: ScrewParameters, spec: WearOptions
+) -> tuple[tuple[float, tuple[LoadClasses, LoadClasses]], ...]:
+    """Per axial load of the programme the ball-load classes of both nuts: the elastic
+    distribution (with the case's lead and ball-diameter errors) at the initial preload, split
+    into ``spec.load_classes`` equal-count classes; empty for ``loads.distribution =
+    "uniform"``. The class ratios stay fixed as the preload falls (ASSUMED)."""
+    if case.loads.distribution == "uniform":
+        return ()
+    loads = sorted({part.axial_load for lv in spec.programme for _, part in lv.parts()})
+    root = None if case.design is None else case.design.root_diameter
+    out = []
+    for load in loads:
+        dist = elastic_distribution(params.with_loads(axial_load=load), case.loads, root)
+        q = dist.per_nut(dist.loads)
+        n = spec.load_classes
+        out.append((load, (load_classes(q[0], n), load_classes(q[1], n))))
+    return tuple(out)
 
 
 def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
@@ -215,6 +242,10 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
     }
     if setup.body_compliance:
         data["body_compliance"] = setup.body_compliance
+    if setup.ball_classes:
+        data["loads"] = case.loads.model_dump(mode="json")
+    else:  # the uniform distribution: the checkpoints of earlier versions stay valid
+        del data["wear"]["load_classes"]
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":

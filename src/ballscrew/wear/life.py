@@ -149,7 +149,9 @@ def _is_sample(revolutions: float, every: float) -> bool:
 def _step_rates(setup: WearSetup, state: _State, preload: float, level: WearLevel) -> FloatArray:
     """ḣ per revolution of both flanks (2, ny) under reciprocation (E8.4) at ``level``.
 
-    A duty-cycle level's rate is the revolution-weighted mean of its segments' rates.
+    A duty-cycle level's rate is the revolution-weighted mean of its segments' rates; a nut's
+    rate is the ball-share-weighted mean over its load classes, ḣ = Σ_k w_k ḣ(r_k Q̄) (every ball
+    passes every raceway point; :mod:`.load_classes`).
     """
     rates = np.zeros_like(state.depth)
     for index, (share, part) in enumerate(level.parts()):
@@ -161,13 +163,29 @@ def _step_rates(setup: WearSetup, state: _State, preload: float, level: WearLeve
                     parts.append(None)
                     continue
                 key = f"{flank:+d}_{nut}" + (f"_{index}" if level.segments else "")
-                out = flank_rate(
-                    setup, flank, force, part.speed, state.depth[k], state.warm.get(key), part
-                )
-                state.warm[key] = out.pressure
-                state.solves += 1
-                state.initial_psi.setdefault(key, out.psi)
-                parts.append(out.depth_per_revolution)
+                classes = setup.load_classes(part.axial_load, nut)
+                rate = np.zeros(setup.y.size)
+                for c, (ratio, weight) in enumerate(
+                    zip(classes.ratios, classes.weights, strict=True)
+                ):
+                    if ratio <= 0.0:  # lifted-off balls
+                        continue
+                    name = key + (f"_c{c}" if c else "")
+                    out = flank_rate(
+                        setup,
+                        flank,
+                        force,
+                        part.speed,
+                        state.depth[k],
+                        state.warm.get(name),
+                        part,
+                        ratio,
+                    )
+                    state.warm[name] = out.pressure
+                    state.solves += 1
+                    state.initial_psi.setdefault(name, out.psi)
+                    rate += weight * out.depth_per_revolution
+                parts.append(rate)
             loaded = parts[0] if parts[0] is not None else np.zeros(setup.y.size)
             rates[k] += share * reciprocating_rate(loaded, parts[1])
     return rates

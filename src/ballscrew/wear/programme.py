@@ -99,3 +99,5 @@ class WearOptions:
     """Supply factor φ on the EHL film, h = φ h_flooded (1: fully flooded) [-]."""
     running_in: RunningIn | None = None
     """Initial surface and running-in depth; None: one surface throughout."""
+    load_classes: int = 3
+    """Ball-load classes per nut of the elastic distribution (:mod:`.load_classes`) [-]."""

@@ -11,6 +11,7 @@ from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads import ball_load, nut_forces, preload_after_wear, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface
 from ballscrew.lubrication.film import FilmModel
+from ballscrew.wear.load_classes import UNIFORM, LoadClasses
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.strips import working_raceway_length
 
@@ -55,6 +56,9 @@ class WearSetup:
     model corrected for the supply state and inlet heating (``ballscrew.lubrication.supply``)."""
     body_compliance: float = 0.0
     """c_b of shaft and nut body in the preload loop, per nut [m/N] (0: rigid bodies)."""
+    ball_classes: tuple[tuple[float, tuple[LoadClasses, LoadClasses]], ...] = ()
+    """Per axial load of the programme, the ball-load classes of nut 1 and nut 2 (elastic
+    distribution at the initial preload); empty or an absent load: every ball the mean load."""
 
     @property
     def cell_area(self) -> float:
@@ -87,6 +91,13 @@ class WearSetup:
         return working_raceway_length(
             level.stroke, g.lead, g.pitch_radius, g.ball_radius, g.contact_angle
         )
+
+    def load_classes(self, axial_load: float, nut: int) -> LoadClasses:
+        """The ball-load classes of ``nut`` (1 or 2) at ``axial_load`` [N]."""
+        for load, classes in self.ball_classes:
+            if load == axial_load:
+                return classes[nut - 1]
+        return UNIFORM
 
     def preload(self, max_depth: float) -> float:
         """F_p after wear h_max (E1.13), contacts and bodies in series [N]."""

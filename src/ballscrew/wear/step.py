@@ -63,13 +63,16 @@ def flank_rate(
     depth: FloatArray,
     initial: FloatArray | None = None,
     level: WearLevel | None = None,
+    load_ratio: float = 1.0,
 ) -> FlankRate:
     """Wear-depth rate across the groove of ``flank`` under one nut force (the inner loop).
 
     ``level`` gives the lubricant state and stroke of the running programme level (None: the
-    run's own); the surface is that after the flank's largest worn depth (running-in).
+    run's own); the surface is that after the flank's largest worn depth (running-in). Every ball
+    carries ``load_ratio`` times the nut's mean ball load (a load class of the elastic
+    distribution; 1: the uniform distribution).
     """
-    q = setup.ball_load(nut_force)
+    q = load_ratio * setup.ball_load(nut_force)
     gap = worn_gap(setup.nominal_gap[flank], depth)
     sol = solve_normal(
         gap,
