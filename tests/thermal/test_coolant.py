@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -18,8 +17,10 @@ from ballscrew.thermal import build_network, simulate
 from ballscrew.thermal.coolant import FLUIDS, BoreFlow, bore_nusselt, bore_outlet_rise
 from ballscrew.thermal.models import MeshOptions, build_model
 from ballscrew.thermal.problem import TableMass
+from ballscrew.thermal.simulate import time_to_fraction
 
-EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
+from .test_boundary_conditions import EXAMPLE, field, nut_rise
+
 FAST = {
     "thermal.mesh.size": "5 mm",
     "thermal.transient.time_step": "300 s",
@@ -35,14 +36,6 @@ BORE = {
 @pytest.fixture(scope="module")
 def case():
     return bs.load_case(EXAMPLE, FAST)
-
-
-def field(case, overrides=None, transient=False):
-    return bs.thermal_field(with_overrides(case, overrides or {}), "network", transient=transient)
-
-
-def nut_rise(result) -> float:
-    return {s.name: s.steady for s in result.sensors}["nut 1"] - result.ambient_temperature
 
 
 def test_bore_nusselt_laminar_and_turbulent_by_hand():
@@ -150,10 +143,15 @@ def test_table_capacity_slows_the_transient_and_keeps_the_energy_balance(case):
         assert nut_rise(r) == pytest.approx(nut_rise(quasi), rel=0.02)
     k = [s.name for s in heavy.sensors].index("nut 1")
 
-    def at_end(r):
-        return r.solution.transient.sensors[-1, k]
+    def time_to_half(r):  # time to half the nut's steady rise; inf: beyond the record
+        t = r.solution.transient
+        time = time_to_fraction(t.time, t.sensors[:, k], nut_rise(r), 0.5)
+        return math.inf if math.isnan(time) else time
 
-    assert at_end(heavy) < at_end(light)
+    # about 300 s, 1200 s and beyond the 5400 s record (C_t/G_t = 2000 s and 20000 s)
+    assert time_to_half(quasi) < time_to_half(light) < time_to_half(heavy)
+    assert time_to_half(light) < 0.5 * heavy.solution.transient.time[-1]
+    assert heavy.solution.transient.sensors[-1, k] < light.solution.transient.sensors[-1, k]
     assert any("mounting" in c.surface for c in quasi.convection)
     assert not any("mounting" in c.surface for c in heavy.convection)
 
