@@ -16,7 +16,7 @@ from ballscrew.errors import InputError
 from ballscrew.thermal import build_network, simulate
 from ballscrew.thermal.coolant import FLUIDS, BoreFlow, bore_nusselt, bore_outlet_rise
 from ballscrew.thermal.models import MeshOptions, build_model
-from ballscrew.thermal.problem import TableMass
+from ballscrew.thermal.problem import Sensor, TableMass
 from ballscrew.thermal.simulate import time_to_fraction
 
 from .test_boundary_conditions import EXAMPLE, field, nut_rise
@@ -80,8 +80,12 @@ def test_cooled_shaft_energy_balance_and_colder_screw(case):
     assert 0.0 < removed < problem.heat_input
     assert cooled.elongation < 0.5 * solid.elongation
     assert cooled.max_temperature_rise < solid.max_temperature_rise
-    surf = {c.surface for c in cooled.convection}
-    assert "screw" in surf
+    bore = {c.surface: c for c in cooled.convection}["shaft bore coolant"]
+    assert (
+        bore.value == pytest.approx(cool.coefficient) and "Gnielinski, Re = 412" in bore.correlation
+    )
+    with pytest.raises(InputError, match=r"sensors\.axis"):
+        replace(problem, sensors=(Sensor("axis", "screw", 0.0, 0.5),))
 
 
 def test_bore_outlet_matches_the_closed_form():

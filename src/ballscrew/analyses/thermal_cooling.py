@@ -26,13 +26,26 @@ def bore_flow(spec: ThermalSpec) -> BoreFlow | None:
     return BoreFlow(sc.bore_diameter, sc.flow_rate, medium)
 
 
-def shaft_coolant(spec: ThermalSpec) -> ShaftCoolant | None:
-    """The :class:`ShaftCoolant` of the case (h from the correlation unless given)."""
+def bore_coefficient(spec: ThermalSpec) -> tuple[float, str] | None:
+    """h of the shaft bore [W/(m² K)] and how it was found; None for a solid shaft."""
     flow = bore_flow(spec)
     if flow is None:
         return None
     sc = spec.shaft_coolant
-    h = sc.coefficient if sc.coefficient is not None else flow.coefficient(sc.correlation)
+    if sc.coefficient is not None:
+        return float(sc.coefficient), "override"
+    name = "Gnielinski" if sc.correlation == "gnielinski" else "Dittus–Boelter"
+    regime = "laminar Nu = 4.36" if flow.reynolds <= 2300 else name
+    return flow.coefficient(sc.correlation), f"{regime}, Re = {flow.reynolds:.4g} (Q11)"
+
+
+def shaft_coolant(spec: ThermalSpec) -> ShaftCoolant | None:
+    """The :class:`ShaftCoolant` of the case (h from the correlation unless given)."""
+    flow, found = bore_flow(spec), bore_coefficient(spec)
+    if flow is None or found is None:
+        return None
+    sc = spec.shaft_coolant
+    h = found[0]
     inlet = spec.ambient_temperature if sc.inlet_temperature is None else sc.inlet_temperature
     return ShaftCoolant(
         0.5 * flow.diameter, h, flow.capacity_rate, inlet - spec.ambient_temperature

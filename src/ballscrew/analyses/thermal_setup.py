@@ -17,7 +17,12 @@ import numpy as np
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
-from ballscrew.analyses.thermal_cooling import nut_coolant_flux, shaft_coolant, table_mass
+from ballscrew.analyses.thermal_cooling import (
+    bore_coefficient,
+    nut_coolant_flux,
+    shaft_coolant,
+    table_mass,
+)
 from ballscrew.budget import check_memory
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
@@ -392,6 +397,9 @@ def _coefficients(
             ConvectionCoefficient("nut coolant", h_cool, "given h over the channel area (Q10)")
         )
         h_extra += h_cool
+    bore = bore_coefficient(spec)
+    if bore is not None:
+        coefficients.append(ConvectionCoefficient("shaft bore coolant", *bore))
     return Convection(h_screw, h_screw_ends, h_nut + h_extra, h_nut_ends), tuple(coefficients)
 
 

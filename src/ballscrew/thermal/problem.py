@@ -203,11 +203,13 @@ class ThermalProblem:
     def _check_sensor(self, s: Sensor) -> None:
         R, tol = self.shaft_radius, 1e-9 * self.shaft_length
         if s.body == "screw":
-            if not (0.0 <= s.r <= R + tol and -tol <= s.z <= self.shaft_length + tol):
+            bore = 0.0 if self.shaft_coolant is None else self.shaft_coolant.bore_radius
+            if not (bore <= s.r <= R + tol and -tol <= s.z <= self.shaft_length + tol):
                 raise InputError(
                     f"sensors.{s.name}",
                     (s.r, s.z),
-                    f"a point in the screw: r in [0, {R:g}] m, z in [0, {self.shaft_length:g}] m",
+                    f"a point in the screw: r in [{bore:g}, {R:g}] m, z in "
+                    f"[0, {self.shaft_length:g}] m",
                 )
             return
         start = self.ring_centre - 0.5 * self.ring_length
