@@ -47,6 +47,8 @@ SI_UNITS: dict[str, str] = {
     "power": "W",
     "torque": "N*m",
     "stiffness": "N/m",
+    "volume_flow": "m^3/s",
+    "heat_capacity": "J/K",
     "dimensionless": "",
 }
 

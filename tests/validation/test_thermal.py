@@ -103,7 +103,9 @@ def test_thk_blk3232_wiper_ring(validation, dataset) -> None:
         quantity="shaft-centre temperature rise after 90 min, with wiper ring W",
         unit="K",
         measured=data["temperature_rise_wiper_K"],
-        reason="no model of seal or wiper-ring friction: the heat sources are the balls and the "
-        "support bearings only. Missing: a seal/wiper friction torque (e.g. from the maker's "
-        "seal resistance data) as a heat source.",
+        reason="no published torque of the wiper ring W: the heat of a seal enters through the "
+        "friction model ([friction] seals, seal_force × d_m/2, half into the screw) with "
+        "drag_torque.source = 'operating_point', but its 5 N lip force is a GUESS; THK prints "
+        "seal resistance only for its LM blocks (A-372 to A-374), not for ball-screw wipers "
+        "(A-819 to A-821). Missing: a measured wiper torque.",
     )

@@ -152,8 +152,8 @@ class ThermalField(Presented):
 
     @property
     def heat_input(self) -> float:
-        """Heat entering the model [W]."""
-        return self.solution.heat_input
+        """Friction heat entering the model [W] (a coolant's inlet enthalpy is not counted)."""
+        return self.problem.heat_input
 
     @property
     def heat_balance_error(self) -> float:

@@ -17,6 +17,12 @@ import numpy as np
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.analyses.thermal_cooling import (
+    bore_coefficient,
+    nut_coolant_flux,
+    shaft_coolant,
+    table_mass,
+)
 from ballscrew.budget import check_memory
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
@@ -285,6 +291,9 @@ def build_problem(
         stroke=spec.stroke.length,
         expansion=mats.screw.thermal_expansion,
         sensors=tuple(Sensor(s.name, s.body, s.r, s.z, s.theta) for s in spec.sensors),
+        shaft_coolant=shaft_coolant(spec),
+        nut_coolant_flux=nut_coolant_flux(spec, surfaces.outer_area),
+        table=table_mass(spec, surfaces.outer_area),
     )
     problem, coefficients = _cooled(spec, surfaces, problem)
     return problem, tuple(sources), coefficients, tuple(interfaces), feed
@@ -367,7 +376,7 @@ def _coefficients(
     h_nut_ends = pick("nut ends", cs.nut_ends, {"= nut": h_nut})
     h_extra = 0.0
     mounting = spec.mounting
-    if mounting.kind == "table":
+    if mounting.kind == "table" and mounting.table_heat_capacity is None:
         area = surfaces.outer_area
         contact = mounting.contact_area
         contact = mounting.contact_fraction * area if contact is None else contact
@@ -388,6 +397,9 @@ def _coefficients(
             ConvectionCoefficient("nut coolant", h_cool, "given h over the channel area (Q10)")
         )
         h_extra += h_cool
+    bore = bore_coefficient(spec)
+    if bore is not None:
+        coefficients.append(ConvectionCoefficient("shaft bore coolant", *bore))
     return Convection(h_screw, h_screw_ends, h_nut + h_extra, h_nut_ends), tuple(coefficients)
 
 

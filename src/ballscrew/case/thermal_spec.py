@@ -196,6 +196,17 @@ class MountingSpec(Model):
         le=MAX_H,
     ) = 10.0
 
+    table_heat_capacity: (
+        quantity(
+            "heat_capacity",
+            "heat capacity m·c of the table for transients (e.g. 200 kg of cast iron: 1e5 J/K; "
+            "needs table_area and the network model); None = a quasi-steady table",
+            gt=0,
+            le=1e10,
+        )
+        | None
+    ) = None
+
     @property
     def table_conductance(self) -> float | None:
         """G_t = h_t A_t of the table to ambient [W/K]; None for a table held at ambient."""
@@ -203,7 +214,7 @@ class MountingSpec(Model):
 
 
 class CoolantSpec(Model):
-    """A cooled nut: a given h over the area of its cooling channels (Q10), coolant at ambient."""
+    """A cooled nut: a given h over the area of its cooling channels (Q10)."""
 
     nut_coefficient: quantity(
         "heat_transfer_coefficient",
@@ -212,6 +223,49 @@ class CoolantSpec(Model):
         le=MAX_H,
     ) = 0.0
     nut_channel_area: quantity("area", "wetted area of the nut's channels", ge=0, le=100.0) = 0.0
+    inlet_temperature: (
+        quantity("temperature", "coolant temperature; None = ambient", gt=150.0, lt=700.0) | None
+    ) = None
+
+
+class ShaftCoolantSpec(Model):
+    """Coolant through an axial bore of the screw (hollow-shaft cooling, Q11), inlet at z = 0.
+
+    Off unless ``bore_diameter`` is given. h from the pipe correlations at the flow's Reynolds
+    number (laminar Nu below Re = 2300), or ``coefficient``; only the network model solves it.
+    """
+
+    bore_diameter: quantity("length", "diameter of the coolant bore", gt=0, le=5.0) | None = None
+    flow_rate: quantity("volume_flow", 'coolant flow V̇ ("2 L/min")', gt=0, le=10.0) = 3.333e-5
+    fluid: Literal["water", "oil VG 10", "oil VG 32", "custom"] = Field(
+        "water", description="named coolant, or 'custom' with the four properties below"
+    )
+    density: quantity("density", "ρ of a custom coolant", gt=0, le=3e4) | None = None
+    specific_heat: quantity("specific_heat", "c_p of a custom coolant", gt=0, le=1e5) | None = None
+    viscosity: quantity("viscosity", "μ of a custom coolant", gt=0, le=1e3) | None = None
+    conductivity: quantity("thermal_conductivity", "λ of a custom coolant", gt=0, le=1e3) | None = (
+        None
+    )
+    inlet_temperature: (
+        quantity("temperature", "coolant inlet temperature; None = ambient", gt=150.0, lt=700.0)
+        | None
+    ) = None
+    correlation: Literal["gnielinski", "dittus_boelter"] = Field(
+        "gnielinski", description="turbulent Nusselt correlation of the bore"
+    )
+    coefficient: (
+        quantity("heat_transfer_coefficient", "override h of the bore wall", gt=0, le=MAX_H) | None
+    ) = None
+
+    @model_validator(mode="after")
+    def _custom_needs_properties(self) -> ShaftCoolantSpec:
+        props = (self.density, self.specific_heat, self.viscosity, self.conductivity)
+        if self.fluid == "custom" and None in props:
+            raise ValueError(
+                "fluid = 'custom' is not allowed without density, specific_heat, viscosity and "
+                "conductivity"
+            )
+        return self
 
 
 class ContactSpec(Model):
@@ -366,6 +420,7 @@ class ThermalSpec(Model):
     convection: ConvectionSpec = ConvectionSpec()
     mounting: MountingSpec = MountingSpec()
     coolant: CoolantSpec = CoolantSpec()
+    shaft_coolant: ShaftCoolantSpec = ShaftCoolantSpec()
     contact: ContactSpec = ContactSpec()
     stroke: StrokeSpec = StrokeSpec()
     transient: TransientSpec = TransientSpec()
@@ -384,6 +439,17 @@ class ThermalSpec(Model):
             raise ValueError(
                 f"nut_position = {self.nut_position:g} is not allowed: it must lie on the "
                 f"shaft, in [0, {self.shaft_length:g}] m"
+            )
+        bore = self.shaft_coolant.bore_diameter
+        if bore is not None and self.shaft_diameter is not None and bore >= self.shaft_diameter:
+            raise ValueError(
+                f"shaft_coolant.bore_diameter = {bore:g} is not allowed: it must be below the "
+                f"shaft diameter {self.shaft_diameter:g} m"
+            )
+        if self.mounting.table_heat_capacity is not None and self.mounting.table_area is None:
+            raise ValueError(
+                "mounting.table_heat_capacity is not allowed with table_area = None (a table "
+                "held at ambient has no temperature of its own)"
             )
         names = [s.name for s in self.sensors]
         if len(set(names)) != len(names):

@@ -9,7 +9,8 @@ with J the jump operator (+1 on a nut-bore DOF, −1 on the shaft-surface DOF it
 coordinates) and M_Γ the bore facet mass matrix; a stroke offset of m cells pairs each bore
 DOF with the shaft DOF m·Δz further along, and the time average sums the offsets with their
 weights. Every integrand carries the axisymmetric weight 2πr. Friction heat is a flux on the
-bore (nut side) and on the faced shaft surface (screw side), normalised to the exact watts.
+bore (nut side) and on the faced shaft surface (screw side), normalised to the exact watts. A
+cooled nut whose coolant enters above ambient adds the flux h_cool·θ_in on the nut OD.
 """
 
 from __future__ import annotations
@@ -261,6 +262,9 @@ def build_axisymmetric(
                 f"a band wider than the mesh {size:g} m",
             )
         bearing_load += bearing.power * g / g.sum()
+
+    if problem.nut_coolant_flux != 0.0 and am.facets["ring_outer"].size:
+        bearing_load += problem.nut_coolant_flux * asm(surface, facet_basis("ring_outer"))
 
     def assemble(weights: NDArray[np.float64]) -> tuple[sp.csr_matrix, NDArray[np.float64]]:
         @BilinearForm

@@ -17,6 +17,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from ballscrew.errors import InputError
 from ballscrew.registry import Registry
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.problem import ThermalProblem
@@ -91,5 +92,17 @@ def build_model(
     """Discretise ``problem`` with the registered model ``name``.
 
     ``patches``: per ring part, the ball contact patches of the 3-D model (None elsewhere).
+    Only the network models a hollow cooled shaft and a table heat capacity; the 3-D model has
+    no coolant inlet rise either.
     """
+    unsupported = {
+        "thermal.shaft_coolant": problem.shaft_coolant is not None and name != "network",
+        "thermal.mounting.table_heat_capacity": problem.table is not None and name != "network",
+        "thermal.coolant.inlet_temperature": problem.nut_coolant_flux != 0.0 and name == "3d",
+    }
+    for key, refused in unsupported.items():
+        if refused:
+            raise InputError(
+                key, "set", f'not supported by the {name} model: use model = "network"'
+            )
     return THERMAL_MODELS[name](problem, mesh, patches)

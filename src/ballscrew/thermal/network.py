@@ -11,6 +11,11 @@ Unknowns per axial cell (theory manual ``docs/theory/thermal.md``, 1-D axial net
 - balls: a resistor 1/(h_c 2πR Δz) between the nut bore node and the shaft surface node it
   faces at each stroke offset, weighted by the offset's time fraction; friction heat enters the
   two surface nodes. Convection h(1 − coverage)·2πRΔz from the shaft surface.
+- hollow shaft with coolant (optional): the shaft cell is the annulus r_i … R, split like the
+  nut; a coolant node per cell, bore wall h·2πr_iΔz to the cell mean, upwind advection
+  ṁc_p(θ_c,k − θ_c,k−1) from the inlet at z = 0 (the energy balance of the flow).
+- table (optional): one lumped node of capacity C_t, joint h_j·2πr_oΔz to every nut OD node and
+  G_t to ambient.
 Steady and transient solves take milliseconds (a few hundred unknowns).
 """
 
@@ -54,7 +59,13 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     mean_r, bore_r, od_r = 2 * ns + np.arange(nr), 2 * ns + nr + np.arange(nr), 2 * ns + 2 * nr
     od_r = od_r + np.arange(nr)
     n = 2 * ns + 3 * nr
-    area_s = problem.shaft_area
+    cool, table = problem.shaft_coolant, problem.table
+    coolant = n + np.arange(ns if cool is not None else 0)
+    n += coolant.size
+    table_node = n
+    n += table is not None
+    r_in = 0.0 if cool is None else cool.bore_radius
+    area_s = np.pi * (R**2 - r_in**2)
     area_r = np.pi * (ro**2 - R**2)
 
     ii: list[NDArray[np.int64]] = []
@@ -69,7 +80,13 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
 
     zc = 0.5 * (z[1:] + z[:-1])
     link(mean_s[:-1], mean_s[1:], ks * area_s / np.diff(zc))
-    link(mean_s, surf_s, 8.0 * np.pi * ks * dzs)
+    if cool is None:
+        link(mean_s, surf_s, 8.0 * np.pi * ks * dzs)
+    else:
+        to_bore, to_surface = annulus_split(r_in, R)
+        link(mean_s, surf_s, 2.0 * np.pi * ks * dzs / to_surface)
+        wall = 1.0 / (to_bore / (2.0 * np.pi * ks) + 1.0 / (cool.coefficient * 2.0 * np.pi * r_in))
+        link(mean_s, coolant, wall * dzs)
 
     def end_face(h: float, area: float, half: float, k: float) -> float:
         return 0.0 if h <= 0.0 else 1.0 / (1.0 / (h * area) + half / (k * area))
@@ -90,7 +107,23 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     for cell_index, a_step in zip(bigger, step, strict=True):
         if a_step > 0.0:
             ground[cell_index] += end_face(conv.nut_ends, a_step, 0.5 * dz, kr)
+    fixed_load = np.zeros(n)
+    fixed_load[od_r] += problem.nut_coolant_flux * 2.0 * np.pi * ro * dz
+    if table is not None:
+        link(od_r, np.full(nr, table_node), table.joint_coefficient * 2.0 * np.pi * ro * dz)
+        ground[table_node] += table.conductance
     static = laplacian(n, np.concatenate(ii), np.concatenate(jj), np.concatenate(gg), ground)
+    if cool is not None:
+        w = cool.capacity_rate
+        advection = sp.coo_matrix(
+            (
+                np.r_[np.full(ns, w), np.full(ns - 1, -w)],
+                (np.r_[coolant, coolant[1:]], np.r_[coolant, coolant[:-1]]),
+            ),
+            shape=(n, n),
+        )
+        static = sp.csr_matrix(static + advection)
+        fixed_load[coolant[0]] += w * cool.inlet_rise
 
     capacity = sp.diags(
         np.concatenate(
@@ -98,7 +131,8 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
                 problem.shaft.heat_capacity * area_s * dzs,
                 np.zeros(ns),
                 problem.ring.heat_capacity * area_r * dz,
-                np.zeros(2 * nr),
+                np.zeros(2 * nr + coolant.size),
+                [table.capacity] if table is not None else [],
             ]
         )
     ).tocsr()
@@ -117,9 +151,11 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     def assemble(weights: NDArray[np.float64]) -> tuple[sp.csr_matrix, NDArray[np.float64]]:
         cover = grid.coverage(zc, weights)
         a = static + sp.diags(
-            np.concatenate([np.zeros(ns), conv.screw * surf_area * (1.0 - cover), np.zeros(3 * nr)])
+            np.concatenate(
+                [np.zeros(ns), conv.screw * surf_area * (1.0 - cover), np.zeros(n - 2 * ns)]
+            )
         )
-        f = np.zeros(n)
+        f = fixed_load.copy()
         f[bore_r] += q_nut
         f[surf_s] += bearing_heat
         active = np.nonzero(weights)[0]
@@ -156,6 +192,8 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
             "ring_outer": od_r,
             "ring_z": 0.5 * (grid.ring_z[1:] + grid.ring_z[:-1]),
             "ring_outer_radius": ro,
+            "coolant": coolant,
+            "table": table_node if table is not None else None,
         },
     )
 

@@ -23,6 +23,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ballscrew.errors import InputError
+from ballscrew.thermal.coolant import ShaftCoolant
 
 
 @dataclass(frozen=True)
@@ -103,6 +104,29 @@ class Sensor:
 
 
 @dataclass(frozen=True)
+class TableMass:
+    """The table as a lumped heat capacity between the nut joint and ambient (Q8 transient).
+
+    Node θ_t: C_t dθ_t/dt = h_j ∫(θ_od − θ_t) dA − G_t θ_t, with the joint h_j smeared over the
+    outer surface of the nut assembly.
+    """
+
+    joint_coefficient: float
+    """h_j = h_c A_c / A_od of the nut–table joint over the nut outer area [W/(m² K)]."""
+    conductance: float
+    """G_t of the table to ambient [W/K]."""
+    capacity: float
+    """C_t = m c of the table [J/K]."""
+
+    def __post_init__(self) -> None:
+        for name in ("joint_coefficient", "conductance"):
+            if not getattr(self, name) >= 0.0:
+                raise InputError(f"thermal.mounting.{name}", getattr(self, name), "a value ≥ 0")
+        if not self.capacity > 0.0:
+            raise InputError("thermal.mounting.table_heat_capacity", self.capacity, "> 0 J/K")
+
+
+@dataclass(frozen=True)
 class ThermalProblem:
     """Geometry, materials, heat sources and cooling of the screw–nut thermal model (SI)."""
 
@@ -121,8 +145,22 @@ class ThermalProblem:
     expansion: float = 0.0
     """Thermal expansion coefficient α of the shaft [1/K]."""
     sensors: tuple[Sensor, ...] = field(default=())
+    shaft_coolant: ShaftCoolant | None = None
+    """Coolant through an axial bore of the shaft (None: a solid shaft)."""
+    nut_coolant_flux: float = 0.0
+    """h_cool·θ_in of a cooled nut whose coolant enters θ_in above ambient, smeared over the
+    nut assembly's outer surface [W/m²] (its h_cool is part of ``convection.nut``)."""
+    table: TableMass | None = None
+    """The table as a lumped heat capacity (None: quasi-steady, inside ``convection.nut``)."""
 
     def __post_init__(self) -> None:
+        cool = self.shaft_coolant
+        if cool is not None and not cool.bore_radius < self.shaft_radius:
+            raise InputError(
+                "thermal.shaft_coolant.bore_diameter",
+                2.0 * cool.bore_radius,
+                f"a diameter < the shaft diameter {2.0 * self.shaft_radius:g} m",
+            )
         for name in ("shaft_radius", "shaft_length"):
             if not getattr(self, name) > 0.0:
                 raise InputError(name, getattr(self, name), "a length > 0 m")
@@ -165,11 +203,13 @@ class ThermalProblem:
     def _check_sensor(self, s: Sensor) -> None:
         R, tol = self.shaft_radius, 1e-9 * self.shaft_length
         if s.body == "screw":
-            if not (0.0 <= s.r <= R + tol and -tol <= s.z <= self.shaft_length + tol):
+            bore = 0.0 if self.shaft_coolant is None else self.shaft_coolant.bore_radius
+            if not (bore <= s.r <= R + tol and -tol <= s.z <= self.shaft_length + tol):
                 raise InputError(
                     f"sensors.{s.name}",
                     (s.r, s.z),
-                    f"a point in the screw: r in [0, {R:g}] m, z in [0, {self.shaft_length:g}] m",
+                    f"a point in the screw: r in [{bore:g}, {R:g}] m, z in "
+                    f"[0, {self.shaft_length:g}] m",
                 )
             return
         start = self.ring_centre - 0.5 * self.ring_length

@@ -50,10 +50,10 @@ class Transient:
 
     @property
     def heat_balance_error(self) -> float:
-        """|heat in − stored − convected| / heat in [-]."""
-        if self.heat_in <= 0.0:
+        """|heat in − stored − convected| / |heat in| [-] (heat in < 0: a coolant below ambient)."""
+        if self.heat_in == 0.0:
             return 0.0
-        return abs(self.heat_in - self.stored - self.convected) / self.heat_in
+        return abs(self.heat_in - self.stored - self.convected) / abs(self.heat_in)
 
 
 @dataclass(frozen=True)
@@ -83,10 +83,11 @@ class Solution:
 
     @property
     def heat_balance_error(self) -> float:
-        """|heat in − convective loss| / heat in in steady state [-]."""
-        if self.heat_input <= 0.0:
+        """|heat in − loss| / |heat in| in steady state [-] (loss: convection and coolant
+        outflow; heat in includes a coolant's inlet enthalpy, negative below ambient)."""
+        if self.heat_input == 0.0:
             return abs(self.heat_loss)
-        return abs(self.heat_input - self.heat_loss) / self.heat_input
+        return abs(self.heat_input - self.heat_loss) / abs(self.heat_input)
 
     @property
     def sensors(self) -> NDArray[np.float64]:
