@@ -10,8 +10,9 @@ import pytest
 
 from ballscrew import load_case
 from ballscrew.analyses.screw_tcr import tcr_scalars
-from ballscrew.case import CaseError
-from ballscrew.sweep import parse_axis, run_sweep
+from ballscrew.case import CaseError, with_overrides
+from ballscrew.sweep import parse_axis, run_point, run_sweep
+from ballscrew.sweep.runner import chunk_indices
 
 # Workers are separate processes that cannot import this test module: ship it by value.
 cloudpickle.register_pickle_by_value(sys.modules[__name__])
@@ -33,18 +34,24 @@ def coarse_case(gao_case_path):
     )
 
 
-def test_sweep_on_local_dask_cluster(tmp_path, coarse_case):
+def _sweep_with_one_failure(store, case, workers):
+    """The 3 × 2 sweep of D and axial load with one failing point: (Dataset, computed, progress)."""
     axes = [parse_axis("surface.D=1.45:1.55:3"), parse_axis("operating.axial_load=0,1000")]
     seen = []
     ds, computed = run_sweep(
-        coarse_case,
+        case,
         axes,
         tcr_with_one_failure,
         "tcr-test",
-        tmp_path,
-        workers=2,
+        store,
+        workers=workers,
         progress=lambda done, total: seen.append((done, total)),
     )
+    return axes, ds, computed, seen
+
+
+def test_sweep_on_local_dask_cluster(tmp_path, coarse_case):
+    axes, ds, computed, seen = _sweep_with_one_failure(tmp_path, coarse_case, workers=2)
     assert computed == 6
     assert seen[-1] == (6, 6)
     assert list(ds.dims) == ["surface.D", "operating.axial_load"]
@@ -105,3 +112,28 @@ def test_sweeps_of_one_process_share_one_cluster(tmp_path, coarse_case):
     assert client.status == "closed"
     assert shared_client(None, 1) is not client  # a closed client is replaced
     close_clients()
+
+
+def test_chunks_cover_every_point_once_and_keep_both_workers_busy():
+    todo = list(range(3, 103))
+    chunks = chunk_indices(todo, threads=2)
+    assert [i for chunk in chunks for i in chunk] == todo
+    assert len(chunks) == 8  # 4 tasks per worker thread
+    assert sorted(map(len, chunks)) == [9] + [13] * 7
+    assert chunk_indices([5], threads=2) == [[5]]
+    assert chunk_indices(list(range(3)), threads=4) == [[0], [1], [2]]
+
+
+def test_a_failed_point_in_a_chunk_keeps_the_others_and_reports_every_point(tmp_path, coarse_case):
+    # Six points on one worker go as three chunks of two; the failing point shares one.
+    _, ds, computed, seen = _sweep_with_one_failure(tmp_path, coarse_case, workers=1)
+    assert computed == 6
+    assert seen == [(n, 6) for n in range(7)]  # every point reported once
+    assert int(ds["failed"].sum()) == 1
+    assert int(np.isfinite(ds["resistance"]).sum()) == 5
+    assert len(list((tmp_path / "points").glob("*.json"))) == 6
+    # The failing point's chunk partner equals the same point run on its own, unchunked.
+    partner = {"surface.D": 1.5, "operating.axial_load": 0.0}
+    alone = run_point(tcr_scalars, with_overrides(coarse_case, partner), partner)
+    assert alone.error is None
+    assert float(ds["resistance"].sel(partner)) == alone.results["resistance"][0]

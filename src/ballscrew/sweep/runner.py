@@ -2,8 +2,9 @@
 
 Each point runs ``analysis(case) -> {name: (value, unit)}`` on a Dask worker: a local cluster
 by default, or any running scheduler given by address; the client is shared by every sweep of
-the process (:mod:`ballscrew.sweep.cluster`). A point that raises is recorded with
-its error and does not stop the sweep. Finished points are stored one JSON file each under
+the process (:mod:`ballscrew.sweep.cluster`). Points go in chunks of several per task
+(:func:`chunk_indices`), the analysis once to each worker. A point that raises is recorded
+with its error and does not stop the sweep. Finished points are stored one JSON file each under
 ``points/``, so re-running into the same folder computes only what is missing.
 """
 
@@ -12,6 +13,7 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
+import math
 import time
 import traceback
 from collections.abc import Callable, Sequence
@@ -58,6 +60,25 @@ def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> Po
         results, error = None, f"{type(exc).__name__}: {exc}"
         log.debug("point %s failed:\n%s", overrides, traceback.format_exc())
     return PointRecord(overrides, results, error, time.perf_counter() - start)
+
+
+def run_chunk(
+    analysis: Analysis, cases: Sequence[Case], points: Sequence[dict[str, float]]
+) -> list[PointRecord]:
+    """Run several points in one task (runs on a worker); each point fails on its own."""
+    return [run_point(analysis, case, point) for case, point in zip(cases, points, strict=True)]
+
+
+#: Tasks per worker thread: enough that the last tasks balance the workers, few enough that
+#: the scheduler's per-task cost (some ms) stays small beside the points' own.
+TASKS_PER_THREAD = 4
+
+
+def chunk_indices(todo: Sequence[int], threads: int) -> list[list[int]]:
+    """Split ``todo`` into about ``TASKS_PER_THREAD × threads`` chunks of near-equal size."""
+    tasks = max(1, min(len(todo), TASKS_PER_THREAD * max(threads, 1)))
+    size = math.ceil(len(todo) / tasks)
+    return [list(todo[n : n + size]) for n in range(0, len(todo), size)]
 
 
 def point_key(analysis_name: str, case: Case) -> str:
@@ -117,16 +138,25 @@ def run_sweep(
         from distributed import as_completed
 
         client = shared_client(scheduler, workers)
+        chunks = chunk_indices(todo, sum(client.nthreads().values()))
+        [shipped] = client.scatter([analysis], broadcast=True, hash=False)  # sent once
         futures = {
-            client.submit(run_point, analysis, cases[i], points[i], pure=False): i for i in todo
+            client.submit(
+                run_chunk,
+                shipped,
+                [cases[i] for i in chunk],
+                [points[i] for i in chunk],
+                pure=False,
+            ): chunk
+            for chunk in chunks
         }
         try:
             for future in as_completed(futures, loop=client.loop):
-                i = futures[future]
-                _save(folder / f"{keys[i]}.json", future.result())
-                done += 1
-                if progress:
-                    progress(done, len(points))
+                for i, record in zip(futures[future], future.result(), strict=True):
+                    _save(folder / f"{keys[i]}.json", record)
+                    done += 1
+                    if progress:
+                        progress(done, len(points))
         finally:
             client.cancel(list(futures))  # an interrupted sweep leaves no work behind
     records = [_load(folder / f"{key}.json") for key in keys]
