@@ -45,7 +45,7 @@ _KGF_MM2 = 9.80665e6  # Pa per kgf/mm²
 
 
 def hardness_factor(hardness: float) -> float:
-    """f_H = min(1, (HV / 700)³) of a raceway of indentation hardness H = HV·g [Pa] [-]."""
+    """f_H = min(1, (HV / 700)³) of a raceway of indentation hardness H = HV·g in Pa."""
     hv = positive("hardness", hardness, "Pa") / _KGF_MM2
     return min(1.0, (hv / REFERENCE_HARDNESS_HV) ** 3)
 
