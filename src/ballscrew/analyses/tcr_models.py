@@ -150,7 +150,16 @@ def _peak_relative_pressure(nuts: Sequence[NutTCR], joints: dict[Side, GaussianJ
 
 
 def _screw_resistance(nuts: Sequence[NutTCR], contact: ContactResistance) -> float:
-    per_nut = [(contact(n.screw, "screw") + contact(n.nut, "nut")) / n.balls for n in nuts]
+    """(A2)–(A3) with ``contact`` evaluated once per solved contact: nuts of equal ball load
+    share their :class:`RacewayTCR` objects (one solve serves both)."""
+    done: dict[int, float] = {}
+
+    def once(raceway: RacewayTCR, side: Side) -> float:
+        if id(raceway) not in done:
+            done[id(raceway)] = contact(raceway, side)
+        return done[id(raceway)]
+
+    per_nut = [(once(n.screw, "screw") + once(n.nut, "nut")) / n.balls for n in nuts]
     return float(parallel_resistance(per_nut))
 
 
