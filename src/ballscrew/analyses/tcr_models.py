@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ballscrew.analyses.parameters import ScrewParameters, Side
@@ -53,6 +53,8 @@ class ModelTCR:
     """R of the screw, every loaded ball of every nut in parallel [K/W]."""
     resistance_per_area: float
     """R″ = R·S with the headline model's apparent area S [m² K/W]."""
+    nut_resistances: dict[int, float] = field(default_factory=dict)
+    """R of each loaded nut, all its balls in parallel (A3): nut index → R [K/W]."""
 
 
 @dataclass(frozen=True)
@@ -149,9 +151,9 @@ def _peak_relative_pressure(nuts: Sequence[NutTCR], joints: dict[Side, GaussianJ
     return f"p/H = {peak:.2f} at the {side} contact of nut {nut} (the correlations need < 0.5)"
 
 
-def _screw_resistance(nuts: Sequence[NutTCR], contact: ContactResistance) -> float:
-    """(A2)–(A3) with ``contact`` evaluated once per solved contact: nuts of equal ball load
-    share their :class:`RacewayTCR` objects (one solve serves both)."""
+def _nut_resistances(nuts: Sequence[NutTCR], contact: ContactResistance) -> dict[int, float]:
+    """(A2)–(A3) per nut with ``contact`` evaluated once per solved contact: nuts of equal ball
+    load share their :class:`RacewayTCR` objects (one solve serves both)."""
     done: dict[int, float] = {}
 
     def once(raceway: RacewayTCR, side: Side) -> float:
@@ -159,8 +161,7 @@ def _screw_resistance(nuts: Sequence[NutTCR], contact: ContactResistance) -> flo
             done[id(raceway)] = contact(raceway, side)
         return done[id(raceway)]
 
-    per_nut = [(once(n.screw, "screw") + once(n.nut, "nut")) / n.balls for n in nuts]
-    return float(parallel_resistance(per_nut))
+    return {n.index: (once(n.screw, "screw") + once(n.nut, "nut")) / n.balls for n in nuts}
 
 
 def _expanded(names: Sequence[str]) -> list[str]:
@@ -198,8 +199,9 @@ def compare_models(
         if name in CORRELATIONS and out_of_range:
             warnings.warn(f"TCR model {name} left out: {out_of_range}", ModelRangeWarning, 2)
             continue
-        r = _screw_resistance(nuts, contact)
-        results[name] = ModelTCR(name, description, r, r * apparent_area)
+        per_nut = _nut_resistances(nuts, contact)
+        r = float(parallel_resistance(list(per_nut.values())))
+        results[name] = ModelTCR(name, description, r, r * apparent_area, per_nut)
     values = [m.resistance_per_area for m in results.values() if math.isfinite(m.resistance)]
     if len(values) < 2:
         return results, None

@@ -577,6 +577,7 @@ def sections(result: ThermalField) -> list[Section]:
         Section("Convection (Q5, Q6)", tables=(_table(("surface", "h [W/(m² K)]", "from"), conv),)),
         Section(
             "Thermal contact of the balls",
+            paragraphs=(f"Micro TCR of the balls: {_micro_model(result)}.",),
             tables=(
                 _table(
                     (
@@ -630,3 +631,13 @@ def _coupling_text(result: ThermalField) -> tuple[str, ...]:
 
 def _table(header: tuple[str, ...], rows: list[list[object]]) -> Table:
     return Table(header, tuple(tuple(r) for r in rows))
+
+
+def _micro_model(result: ThermalField) -> str:
+    """Which model gave the micro TCR of the balls, as text."""
+    contact = result.case.thermal.contact if result.case.thermal else None
+    if contact is None or contact.source == "given":
+        return "the case's given R″"
+    if contact.tcr_model is not None:
+        return f"model {contact.tcr_model} of the TCR analysis ([thermal.contact] tcr_model)"
+    return f"the headline fractal element model ({result.case.tcr.variant})"

@@ -17,6 +17,7 @@ import numpy as np
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.analyses.tcr_models import PATCH
 from ballscrew.analyses.thermal_cooling import (
     bore_coefficient,
     nut_coolant_flux,
@@ -24,7 +25,7 @@ from ballscrew.analyses.thermal_cooling import (
     table_mass,
 )
 from ballscrew.budget import check_memory
-from ballscrew.case import Case
+from ballscrew.case import Case, with_overrides
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.errors import InputError
@@ -93,7 +94,8 @@ class NutInterface:
 
     name: str
     micro_resistance: float
-    """Fractal TCR of all its balls, R_sbn/n_b (A2–A3), or R″/A for a given R″ [K/W]."""
+    """Micro TCR of all its balls, R_sbn/n_b (A2–A3), of the headline fractal model or of
+    ``[thermal.contact] tcr_model``; R″/A for a given R″ [K/W]."""
     constriction_resistance: float
     """Macro-constriction of the Hertz patches into balls and raceways, all balls [K/W]."""
     resistance_per_area: float
@@ -137,6 +139,27 @@ def _cached_tcr(case: Case) -> ScrewTCR:
             _TCR_CACHE.pop(next(iter(_TCR_CACHE)))
         _TCR_CACHE[key] = screw_tcr(case)
     return _TCR_CACHE[key]
+
+
+def model_nut_resistances(case: Case, tcr: ScrewTCR, name: str) -> dict[int, float]:
+    """R of each loaded nut by the TCR model ``name`` of :func:`screw_tcr`'s models [K/W].
+
+    ``tcr`` serves when it holds the model; else the case's TCR is solved with ``name`` added
+    to ``[tcr] models``. A correlation left out of the contact (p/H ≥ 0.5) is an error.
+    """
+    if name not in tcr.models:
+        base = name.removesuffix(PATCH)
+        if base not in case.tcr.models:
+            case = with_overrides(case, {"tcr.models": [*case.tcr.models, base]})
+        tcr = _cached_tcr(case)
+    if name not in tcr.models:
+        raise InputError(
+            "thermal.contact.tcr_model",
+            name,
+            f"a model valid on this contact: {', '.join(tcr.models)} ({name} was left out: "
+            "its range ends below the contact's peak p/H)",
+        )
+    return tcr.models[name].nut_resistances
 
 
 def build_problem(
@@ -233,6 +256,9 @@ def build_problem(
     if contact.source == "tcr":
         tcr = tcr if tcr is not None else _cached_tcr(case)
         by_index = {n.index: n for n in tcr.nuts}
+        micro = {n.index: n.resistance for n in tcr.nuts}
+        if contact.tcr_model is not None:
+            micro = model_nut_resistances(case, tcr, contact.tcr_model)
     mats = case.materials
     for k in range(nuts_count):
         name = f"nut {k + 1}"
@@ -256,11 +282,8 @@ def build_problem(
                 mats.nut.thermal_conductivity,
             )
             constriction = per_ball / nut.balls
-        interfaces.append(
-            NutInterface(
-                name, nut.resistance, constriction, nut.resistance * nut.apparent_area, bore_area
-            )
-        )
+        r = micro[nut.index]
+        interfaces.append(NutInterface(name, r, constriction, r * nut.apparent_area, bore_area))
 
     nut_parts = [
         RingPart(

@@ -14,9 +14,11 @@ from __future__ import annotations
 import math
 from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import Model, model_choice, quantity
+from ballscrew.contact_resistance.correlations import CORRELATIONS
+from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.loads.drag_torque import DRAG_TORQUE_MODELS
 from ballscrew.thermal.models import THERMAL_MODELS
 
@@ -287,6 +289,19 @@ class ContactSpec(Model):
         description="add the macro-constriction of the Hertz patches into ball and raceways "
         "(Yovanovich) in series with the micro TCR (source = 'tcr')",
     )
+    tcr_model: str | None = Field(
+        None,
+        description="micro TCR of the balls from this model of screw_tcr's side-by-side models "
+        "(source = 'tcr'); None = the headline model ([tcr] variant)",
+    )
+
+    @field_validator("tcr_model")
+    @classmethod
+    def _known_tcr_model(cls, name: str | None) -> str | None:
+        names = tcr_model_names()
+        if name is not None and name not in names:
+            raise ValueError(f"is not allowed: it must be one of {', '.join(names)}")
+        return name
 
     @model_validator(mode="after")
     def _given_needs_value(self) -> ContactSpec:
@@ -294,7 +309,16 @@ class ContactSpec(Model):
             raise ValueError(
                 "resistance_per_area = None is not allowed: source = 'given' needs a value"
             )
+        if self.source == "given" and self.tcr_model is not None:
+            raise ValueError(f"tcr_model = {self.tcr_model!r} needs source = 'tcr'")
         return self
+
+
+def tcr_model_names() -> tuple[str, ...]:
+    """Names of the TCR models of ``screw_tcr``: element variants, correlations, and each
+    element variant on the whole Hertz patch (``V2/patch``)."""
+    element = tuple(ELEMENT_MODELS.names)
+    return (*element, *CORRELATIONS.names, *(f"{n}/patch" for n in element))
 
 
 class StrokeSpec(Model):
