@@ -3,6 +3,8 @@ ball model's new part at the nut contact B."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -112,3 +114,18 @@ def test_groove_slip_is_a_part_of_the_torque_and_heats_the_nut(wear_case_path):
     # B is the nut's contact: its slip adds to the nut's heat, not to the screw's share
     assert r.heat_to_screw == pytest.approx(losses.screw_share * 100.0, rel=1e-12)
     assert losses.screw_share < 0.5 * (losses.total - losses.groove_slip)
+
+
+def test_lead_angle_slip_at_the_screw_contact_is_omega_rb_tan_lambda(wear_case_path):
+    """The screw's surface at r_A = r_m − r_b cosβ runs on a steeper helix than the ball centre:
+    with B rolling, the ball slides across the groove at A by ω_s r_b tan λ (theory manual,
+    *Friction*, breakdown)."""
+    case = ballscrew.load_case(wear_case_path, {"operating.axial_load": 0.0})
+    model = ball_model(case)
+    geometry = model.geometry
+    for force, flank in ((1500.0, 1), (1500.0, -1)):
+        state = solve_ball(model, 100.0, force, flank, 0)
+        axes = state.motion.screw_contact
+        slip = state.motion.sliding_velocity(axes.origin)
+        expected = 100.0 * geometry.ball_radius * math.tan(geometry.lead_angle)
+        assert abs(float(slip @ axes.y)) == pytest.approx(expected, rel=0.01)
