@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from ballscrew.kinematics.traction import hertz_pressure_grid
+from ballscrew.kinematics.traction import hertz_pressure_grid, shear_stress
 
 __all__ = [
     "HEATHCOTE_COEFFICIENT",
@@ -104,12 +104,15 @@ def differential_slip_power(
     c = HEATHCOTE_ROLLING_LINE * semi_across
     slip = abs(rolling_rate) * np.abs(y * y - c * c) / (2.0 * deformed_radius)
     slip = np.broadcast_to(slip[None, :], p.shape)
-    shear = boundary_friction * psi * p
-    if psi < 1.0 and film_thickness > 0.0 and viscosity is not None:
-        alpha = pressure_viscosity or 0.0
-        log_eta = math.log(viscosity) + np.minimum(alpha * p, 700.0)
-        with np.errstate(divide="ignore"):
-            viscous = np.exp(np.minimum(log_eta + np.log(slip / film_thickness), 700.0))
-        shear = shear + (1.0 - psi) * np.minimum(viscous, limiting_shear * p)
+    shear = shear_stress(
+        p,
+        slip,
+        psi=psi,
+        film_thickness=film_thickness,
+        viscosity=viscosity,
+        pressure_viscosity=pressure_viscosity,
+        boundary_friction=boundary_friction,
+        limiting_shear=limiting_shear,
+    )
     cell_area = (x[1] - x[0]) * (y[1] - y[0])
     return float(np.sum(shear * slip)) * cell_area
