@@ -78,7 +78,8 @@ PHYSICS_ASSUMPTIONS = (
     "model's defaults); no seals; flooded, isothermal film; kinematics level 2",
 )
 PHYSICS_MODEL = (
-    "friction_torque (ball_model: traction, EHL rolling, hysteresis, ball–ball friction, drag, "
+    "friction_torque (ball_model: traction, Heathcote slip at the nut contact, EHL rolling, "
+    "hysteresis, ball–ball friction, drag, "
     "ball returns; level 2)"
 )
 

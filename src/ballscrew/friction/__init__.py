@@ -4,9 +4,11 @@
    the working load (makers' formulas, THK General Catalog A-664 to A-666).
 2. :mod:`~ballscrew.friction.ball_losses` — sliding and spin traction, EHL rolling and elastic
    hysteresis of the loaded balls (kinematics model; Johnson 1985 §9.2; JGP 1972).
-3. :mod:`~ballscrew.friction.nut_losses` — ball–ball friction (Olaru et al. 2005), drag of the
+3. :mod:`~ballscrew.friction.groove_slip` — differential (Heathcote) slip of the ball in the
+   conforming nut groove (Heathcote 1921; Johnson 1985 ch. 8).
+4. :mod:`~ballscrew.friction.nut_losses` — ball–ball friction (Olaru et al. 2005), drag of the
    balls in the lubricant (Harris & Kotzalas 2007) and the ball-return loss.
-4. :mod:`~ballscrew.friction.torque` — the parts together, the rival total models
+5. :mod:`~ballscrew.friction.torque` — the parts together, the rival total models
    (:data:`FRICTION_MODELS`) and :func:`nut_friction_torque`.
 
 The case-level composer is :func:`ballscrew.analyses.friction.friction_torque`.

@@ -8,6 +8,10 @@ Per ball of each nut, from the quasi-static state of :mod:`ballscrew.kinematics`
   Λ = h/σ: boundary friction μ_b on the asperity-borne pressure ψ p, viscous film shear capped at
   the limiting shear stress Λ_L p (Bair & Winer 1979) on the rest; Λ → 0 is boundary
   (μ → μ_b), Λ ≳ 3 is full EHL (Hamrock 1994, ch. 1: Λ < 1 boundary, 1–3 mixed, > 3 full film);
+* differential (Heathcote) slip at the nut contact B (:mod:`ballscrew.friction.groove_slip`):
+  the kinematics holds B free of slip and spin at its centre, but the curved contact surface
+  of the conforming groove slides on both sides of the two rolling lines (at A this slip is
+  part of the sliding field of the traction grid);
 * EHL rolling resistance at A and B (Harris & Kotzalas 2007; (E3.4));
 * elastic hysteresis of the Hertz contacts A and B (Tabor 1955; Johnson 1985, *Contact
   Mechanics*, §9.2: a sphere rolling on a plane loses the fraction α of the elastic work,
@@ -29,6 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ballscrew.friction.groove_slip import differential_slip_power
 from ballscrew.friction.nut_losses import (
     NutLossParameters,
     ball_ball_power,
@@ -83,6 +88,8 @@ class BallLosses:
     """Torque whose heat goes into the screw (the rest goes into the nut)."""
     film_parameter: float
     """Λ = h/σ at A of the first loaded nut (0 dry)."""
+    groove_slip: float = 0.0
+    """Differential (Heathcote) slip at the nut contact B."""
     ball_ball: float = 0.0
     """Sliding friction between adjacent balls."""
     drag: float = 0.0
@@ -94,6 +101,7 @@ class BallLosses:
     def total(self) -> float:
         return (
             self.sliding
+            + self.groove_slip
             + self.ehl_rolling
             + self.hysteresis
             + self.ball_ball
@@ -121,11 +129,35 @@ def _ball_ball_torque(model: BallModel, state: BallState, nut: NutLossParameters
     return ball_ball_power(force, nut.ball_ball_friction, surface) / omega
 
 
+def _groove_slip_torque(model: BallModel, state: BallState) -> float:
+    """Screw torque of the differential slip at B of one ball (P_H/ω_s; dry at ω_s = 0)."""
+    motion = _unit_motion(model, state)
+    rate = float(np.linalg.norm(np.cross(motion.angular_velocity, motion.nut_contact.z)))
+    a, b = model.hertz_semi_axes("nut", state.load_nut)
+    u_e = abs(state.ball_speed)
+    sharing = model.sharing(state.load_nut, u_e, "nut")
+    power = differential_slip_power(
+        state.load_nut,
+        a,
+        b,
+        model.deformed_radius("nut"),
+        rate,
+        psi=sharing.psi,
+        boundary_friction=model.boundary_friction,
+        limiting_shear=model.limiting_shear,
+        film_thickness=sharing.separation,
+        viscosity=model.viscosity if u_e > 0.0 else None,
+        pressure_viscosity=model.pressure_viscosity,
+        cells=model.traction_cells,
+    )
+    return power / motion.screw_speed
+
+
 def _one_ball(
     model: BallModel, state: BallState, fraction: float, nut: NutLossParameters
 ) -> tuple[float, ...]:
-    """(sliding, rolling A, rolling B, hysteresis A, hysteresis B, ball–ball, drag) torques of
-    one ball."""
+    """(sliding, rolling A, rolling B, hysteresis A, hysteresis B, ball–ball, drag, slip at B)
+    torques of one ball."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
@@ -150,7 +182,17 @@ def _one_ball(
         )
         viscous = power / state.screw_speed
     balls = _ball_ball_torque(model, state, nut)
-    return sliding, rolling - rolling_b, rolling_b, hysteresis[0], hysteresis[1], balls, viscous
+    groove = _groove_slip_torque(model, state)
+    return (
+        sliding,
+        rolling - rolling_b,
+        rolling_b,
+        hysteresis[0],
+        hysteresis[1],
+        balls,
+        viscous,
+        groove,
+    )
 
 
 def _recirculation_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
@@ -185,7 +227,7 @@ def ball_losses(
     :class:`~ballscrew.friction.nut_losses.NutLossParameters`).
     """
     nut = NutLossParameters() if nut is None else nut
-    sums = [0.0] * 7
+    sums = [0.0] * 8
     returns = 0.0
     film = 0.0
     for index, (force, flank) in enumerate(nuts):
@@ -198,9 +240,10 @@ def ball_losses(
         if index == 0 and model.lubricated and state.ball_speed != 0.0:
             sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
             film = film_parameter(sharing.separation, model.surface.rms_height)
-    sliding, rolling_a, rolling_b, hyst_a, hyst_b, balls, drag = sums
+    sliding, rolling_a, rolling_b, hyst_a, hyst_b, balls, drag, groove = sums
     return BallLosses(
         sliding=sliding,
+        groove_slip=groove,
         ehl_rolling=rolling_a + rolling_b,
         hysteresis=hyst_a + hyst_b,
         ball_ball=balls,

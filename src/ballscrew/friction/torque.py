@@ -8,8 +8,9 @@ the work F_a L/(2π) on the load plus friction parts; the heat is everything not
 work, Q = T ω_s − F_a v = (T − F_a L/2π) ω_s ≥ 0 with v = L ω_s/(2π). T_load = F_a L/(2π)(1/η − 1)
 is the makers' efficiency form (:mod:`ballscrew.friction.efficiency`). The preload part is the
 makers' catalogue torque (``"catalogue"``) or the ball losses of
-:mod:`ballscrew.friction.ball_losses` at the preload (``"ball_model"``: traction, EHL rolling,
-hysteresis, ball–ball friction, drag in the lubricant and the ball-return loss). A seal's torque
+:mod:`ballscrew.friction.ball_losses` at the preload (``"ball_model"``: traction, Heathcote
+slip at the nut contact, EHL rolling, hysteresis, ball–ball friction, drag in the lubricant and
+the ball-return loss). A seal's torque
 is a parameter (its default is set by the case); ``recirculation_torque`` is a given ball-return
 torque added to the modelled one (the catalogue model has only the given one, default 0).
 
@@ -79,7 +80,8 @@ class FrictionTorque:
     """Screw torque T [N m] (work on the load included)."""
     parts: dict[str, float]
     """Its parts [N m]: ``work``, ``load``, ``preload`` or the ball losses (``sliding``,
-    ``ehl_rolling``, ``hysteresis``, ``ball_ball``, ``drag``), ``seals``, ``recirculation``."""
+    ``groove_slip``, ``ehl_rolling``, ``hysteresis``, ``ball_ball``, ``drag``), ``seals``,
+    ``recirculation``."""
     efficiency_driving: float
     """η = tan λ/tan(λ + ρ′)."""
     efficiency_backdriving: float
@@ -185,6 +187,7 @@ def ball_model_friction(inputs: FrictionInputs) -> FrictionTorque:
     parts = {
         "load": load,
         "sliding": losses.sliding,
+        "groove_slip": losses.groove_slip,
         "ehl_rolling": losses.ehl_rolling,
         "hysteresis": losses.hysteresis,
         "ball_ball": losses.ball_ball,

@@ -22,7 +22,7 @@ from numpy.typing import NDArray
 
 from ballscrew.kinematics.motion import BallMotion
 
-__all__ = ["ContactTraction", "contact_traction", "hertz_pressure_grid"]
+__all__ = ["ContactTraction", "contact_traction", "hertz_pressure_grid", "shear_stress"]
 
 FloatArray = NDArray[np.float64]
 
@@ -56,6 +56,36 @@ def hertz_pressure_grid(
     return x, y, p * (load / (p.sum() * cell_area))
 
 
+def shear_stress(
+    pressure: FloatArray,
+    slip: FloatArray,
+    *,
+    psi: float,
+    film_thickness: float,
+    viscosity: float | None,
+    pressure_viscosity: float | None,
+    boundary_friction: float,
+    limiting_shear: float,
+) -> FloatArray:
+    """|τ| = μ_b ψ p + (1 − ψ) min(η(p) |Δv|/h, Λ p) of (E3.3) on cells of pressure p, slip |Δv|.
+
+    η(p) = η₀ exp(α_p p) (Barus); without a film (``film_thickness`` 0 or no viscosity) only
+    the boundary term μ_b ψ p acts [Pa].
+    """
+    shear = boundary_friction * psi * pressure
+    if psi < 1.0 and film_thickness > 0.0 and viscosity is not None:
+        alpha = pressure_viscosity or 0.0
+        with np.errstate(divide="ignore"):
+            log_viscous = (
+                math.log(viscosity)
+                + np.minimum(alpha * pressure, 700.0)
+                + np.log(slip / film_thickness)
+            )
+            viscous = np.exp(np.minimum(log_viscous, 700.0))
+        shear = shear + (1.0 - psi) * np.minimum(viscous, limiting_shear * pressure)
+    return shear
+
+
 def contact_traction(
     motion: BallMotion,
     x: FloatArray,
@@ -84,16 +114,16 @@ def contact_traction(
     speed = np.linalg.norm(dv, axis=-1)
     reference = max(abs(motion.screw_speed) * motion.frame.ball_radius, 1e-30)
     direction = dv / np.sqrt(speed**2 + (1e-12 * reference) ** 2)[..., None]
-    p = np.asarray(pressure, dtype=float)
-    shear = boundary_friction * psi * p
-    if psi < 1.0 and film_thickness > 0.0 and viscosity is not None:
-        alpha = pressure_viscosity or 0.0
-        with np.errstate(divide="ignore"):
-            log_viscous = (
-                math.log(viscosity) + np.minimum(alpha * p, 700.0) + np.log(speed / film_thickness)
-            )
-            viscous = np.exp(np.minimum(log_viscous, 700.0))
-        shear = shear + (1.0 - psi) * np.minimum(viscous, limiting_shear * p)
+    shear = shear_stress(
+        np.asarray(pressure, dtype=float),
+        speed,
+        psi=psi,
+        film_thickness=film_thickness,
+        viscosity=viscosity,
+        pressure_viscosity=pressure_viscosity,
+        boundary_friction=boundary_friction,
+        limiting_shear=limiting_shear,
+    )
     tau = -shear[..., None] * direction
     force = tau.sum(axis=(0, 1)) * cell_area
     moment = np.cross(points - motion.frame.centre, tau).sum(axis=(0, 1)) * cell_area
