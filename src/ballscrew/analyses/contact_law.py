@@ -37,6 +37,7 @@ __all__ = [
     "TABLE_POINTS",
     "TABLE_SPAN",
     "TOP_FACTOR",
+    "clear_cache",
     "numerical_contact",
     "outside_ball",
     "raceway_approaches",
@@ -137,6 +138,11 @@ def _table(
         for side, e in zip(SIDES, e_stars, strict=True)
     )
     return TabulatedContact(loads, np.asarray(approach))
+
+
+def clear_cache() -> None:
+    """Forget the tabulated laws (the next :func:`numerical_contact` solves again)."""
+    _table.cache_clear()
 
 
 def numerical_contact(params: ScrewParameters, numerics: NumericsSpec) -> TabulatedContact:
