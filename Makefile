@@ -64,6 +64,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_design.py
 	$(PY) benchmarks/bench_design_check.py
 	$(PY) benchmarks/bench_duty.py
+	$(PY) benchmarks/bench_batch.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -15,6 +15,7 @@ import numpy as np
 
 from ballscrew.analyses import contact_report
 from ballscrew.analyses.ball_loads import chain_ball_loads
+from ballscrew.analyses.contact_law import outside_ball
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case, NumericsSpec
@@ -122,13 +123,7 @@ def solve_raceway_contact(
             max_iterations=numerics.max_iterations,
         )
     except InputError as exc:
-        if exc.field != "x, y":  # the gap of a grid point outside the ball
-            raise
-        allowed = (
-            f"larger than the {side} contact of the ball load Q = {load:.4g} N (its grid reaches "
-            "outside the ball): lower operating.preload / axial_load or numerics.box_factor"
-        )
-        raise InputError("screw.ball_diameter", 2.0 * geometry.ball_radius, allowed) from None
+        raise outside_ball(exc, geometry, side, load) from None
     return RacewayContact(
         side=side,
         load=load,

@@ -5,6 +5,8 @@ Q = F/(Z sinβ cosα) at the nominal contact angle β (rigid bodies, no lead err
 ``"elastic"``: Hertz contacts with the elastic screw shaft and nut body, the nut ring's
 expansion, lead error and ball-diameter variation, contact angle under load
 (:mod:`ballscrew.loads.distribution`; theory manual, *Loads*). Uniform is its rigid limit.
+With ``loads.contact = "numerical"`` every ball's contacts follow the contact solver's
+load–approach law on the raceway gap (:mod:`ballscrew.analyses.contact_law`) instead of Hertz.
 """
 
 from __future__ import annotations
@@ -14,10 +16,12 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ballscrew.analyses.contact_law import numerical_contact
 from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.case import Case
+from ballscrew.case import Case, NumericsSpec
 from ballscrew.case.loads_spec import LoadsSpec
 from ballscrew.kinematics.limits import groove_root_diameter
+from ballscrew.loads.contact_law import TabulatedContact
 from ballscrew.loads.distribution import (
     BallLayout,
     Distribution,
@@ -33,6 +37,7 @@ __all__ = [
     "NUT_DIAMETER_BALLS",
     "BallLoads",
     "NutBallLoad",
+    "ball_contact_law",
     "ball_loads",
     "chain_ball_loads",
     "elastic_distribution",
@@ -109,6 +114,16 @@ def nut_model(
     return layout, bodies
 
 
+def ball_contact_law(
+    params: ScrewParameters, spec: LoadsSpec, numerics: NumericsSpec | None = None
+) -> TabulatedContact | None:
+    """The tabulated law of ``spec.contact = "numerical"`` (``numerics`` None: the defaults of
+    ``[numerics]``); None for Hertz contacts."""
+    if spec.contact != "numerical":
+        return None
+    return numerical_contact(params, numerics or NumericsSpec())
+
+
 def elastic_distribution(
     params: ScrewParameters,
     spec: LoadsSpec,
@@ -116,10 +131,16 @@ def elastic_distribution(
     axial_load: float | None = None,
     interference: float | None = None,
     errors: bool = True,
+    numerics: NumericsSpec | None = None,
 ) -> Distribution:
-    """The elastic distribution of the case's screw at ``axial_load`` (None: the case's)."""
+    """The elastic distribution of the case's screw at ``axial_load`` (None: the case's).
+
+    ``spec.contact = "numerical"`` tabulates the contact law with ``numerics`` (None: the
+    defaults of ``[numerics]``) once per screw and load range (cached).
+    """
     layout, bodies = nut_model(params, spec, root_diameter)
     g = params.geometry
+    contact = ball_contact_law(params, spec, numerics)
     with as_case_fields(_FIELDS):
         return solve_distribution(
             layout,
@@ -132,6 +153,7 @@ def elastic_distribution(
             lead_error=spec.lead_error or None if errors else None,
             ball_excess=spec.ball_diameter_error or None if errors else None,
             interference=interference,
+            contact=contact,
         )
 
 
@@ -148,7 +170,7 @@ def ball_loads(case: Case) -> BallLoads:
         loads = np.array([np.full(z, nut.ball_load) for nut in params.nuts])
         angles = np.full_like(loads, g.contact_angle)
         return BallLoads(loads, angles, loads.sum(axis=1) * params.axial_projection)
-    dist = elastic_distribution(params, case.loads, _root(case))
+    dist = elastic_distribution(params, case.loads, _root(case), numerics=case.numerics)
     gap = (g.screw_conformity + g.nut_conformity - 1.0) * g.ball_diameter
     angles = loaded_contact_angle(dist.approach, g.contact_angle, gap)
     return BallLoads(

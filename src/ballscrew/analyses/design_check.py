@@ -337,7 +337,7 @@ def design_check(case: Case) -> DesignCheck:
     running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
-    nut_k = elastic_distribution(params, case.loads, root).stiffness
+    nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
     shaft_k = design.shaft_axial_stiffness(
         root, spec.nut_distance or length, screw.youngs_modulus, spec.mounting
     )

@@ -15,7 +15,7 @@ import numpy as np
 import xarray as xr
 
 from ballscrew import design
-from ballscrew.analyses.ball_loads import elastic_distribution, nut_model
+from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution, nut_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
@@ -95,18 +95,28 @@ def _params(result: DesignCheck) -> ScrewParameters:
 
 def ball_distribution(result: DesignCheck) -> Distribution:
     """Elastic load of every ball (contacts and bodies) at the case's preload and axial load."""
-    return elastic_distribution(_params(result), result.case.loads, result.root_diameter)
+    case = result.case
+    return elastic_distribution(
+        _params(result), case.loads, result.root_diameter, numerics=case.numerics
+    )
 
 
 def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     """Axial loads, displacement and stiffness with the bodies, and the lift-off load."""
-    params, spec = _params(result), result.case.loads
+    params, spec, numerics = _params(result), result.case.loads, result.case.numerics
     fp = params.preload
     loads = np.linspace(0.0 if fp > 0 else top / _BODY_POINTS, top, _BODY_POINTS)
-    first = elastic_distribution(params, spec, result.root_diameter, axial_load=0.0)
+    first = elastic_distribution(
+        params, spec, result.root_diameter, axial_load=0.0, numerics=numerics
+    )
     runs = [
         elastic_distribution(
-            params, spec, result.root_diameter, axial_load=f, interference=first.interference
+            params,
+            spec,
+            result.root_diameter,
+            axial_load=f,
+            interference=first.interference,
+            numerics=numerics,
         )
         for f in loads
     ]
@@ -116,7 +126,14 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
         layout, bodies = nut_model(params, spec, result.root_diameter)
         g = params.geometry
         lift = lift_off_load(
-            layout, sum(params.hertz_constants), g.contact_angle, g.lead_angle, fp, bodies, 1e-4
+            layout,
+            sum(params.hertz_constants),
+            g.contact_angle,
+            g.lead_angle,
+            fp,
+            bodies,
+            1e-4,
+            contact=ball_contact_law(params, spec, numerics),
         )
     return loads, x - x[0], np.array([r.stiffness for r in runs]), np.array(lift)
 

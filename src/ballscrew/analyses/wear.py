@@ -210,7 +210,9 @@ def _ball_classes(
     root = None if case.design is None else case.design.root_diameter
     out = []
     for load in loads:
-        dist = elastic_distribution(params.with_loads(axial_load=load), case.loads, root)
+        dist = elastic_distribution(
+            params.with_loads(axial_load=load), case.loads, root, numerics=case.numerics
+        )
         q = dist.per_nut(dist.loads)
         n = spec.load_classes
         out.append((load, (load_classes(q[0], n), load_classes(q[1], n))))
@@ -223,7 +225,9 @@ def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
     if case.loads.distribution == "uniform":
         return 0.0
     fp = params.preload
-    g = elastic_distribution(params.with_loads(axial_load=0.0), case.loads, errors=False)
+    g = elastic_distribution(
+        params.with_loads(axial_load=0.0), case.loads, errors=False, numerics=case.numerics
+    )
     return max(g.interference - params.nut_compliance * fp ** (2.0 / 3.0), 0.0) / fp
 
 

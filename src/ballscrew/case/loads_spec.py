@@ -4,6 +4,7 @@ Example (the elastic distribution of a double nut with a 1 µm lead error in its
 
     [loads]
     distribution = "elastic"        # "uniform" (default, rigid bodies) or "elastic"
+    contact = "hertz"               # elastic: "hertz" (default) or "numerical" (groove solver)
     nut_outer_diameter = "70 mm"    # nut body; default d_m + 5 D_b (GUESS)
     spacer = "10 mm"                # axial gap between the halves' nearest balls; default L
     flange = "loaded_end"           # or "free_end"
@@ -30,6 +31,12 @@ class LoadsSpec(Model):
         "uniform",
         description="uniform: every ball of a nut carries F/(Z sinβ cosα); elastic: Hertz "
         "contacts with elastic shaft and nut, lead error and ball-size variation",
+    )
+    contact: Literal["hertz", "numerical"] = Field(
+        "hertz",
+        description="load-approach law of every ball's contacts in the elastic distribution: "
+        "hertz (closed form) or numerical (the contact solver on the case's raceway gap, "
+        "tabulated once with [numerics])",
     )
     nut_outer_diameter: (
         quantity("length", "outer diameter of the nut body; None = d_m + 5 D_b", gt=0, le=10.0)

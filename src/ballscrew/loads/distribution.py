@@ -32,6 +32,7 @@ axial share s keeps β₀ (the change is of order δ/A, 1–2 %). Theory manual,
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,6 +41,7 @@ from numpy.typing import ArrayLike, NDArray
 from ballscrew.backend import blas_single_thread
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.loads.ball_load import validate_angles, validate_balls
+from ballscrew.loads.contact_law import TabulatedContact
 from ballscrew.loads.double_nut import nut_forces
 from ballscrew.validation import positive
 
@@ -249,6 +251,26 @@ def _window(layout: BallLayout) -> NDArray[np.float64]:
     return w * (per_turn / w.sum(axis=1, keepdims=True))
 
 
+Law = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.float64]]]
+"""Scaled contact law d ↦ (q(d), dq/dd)."""
+
+
+def _hertz_law(d: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """q = max(d, 0)^(3/2) and its slope (Hertz in the scaled units)."""
+    dp = np.maximum(d, 0.0)
+    return dp**1.5, 1.5 * np.sqrt(dp)
+
+
+def _scaled_law(contact: TabulatedContact, q_ref: float, d_ref: float) -> Law:
+    """The tabulated Q(δ) in the scaled units q = Q/q_ref, d = δ/d_ref."""
+
+    def law(d: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        q, slope = contact.load(d * d_ref)
+        return q / q_ref, slope * (d_ref / q_ref)
+
+    return law
+
+
 def _newton(
     a: NDArray[np.float64],
     b: NDArray[np.float64],
@@ -256,8 +278,9 @@ def _newton(
     g: NDArray[np.float64],
     f: NDArray[np.float64],
     y: NDArray[np.float64],
+    law: Law = _hertz_law,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
-    """Solve q = max(A q + B ξ + c, 0)^(3/2), G q = f for y = (q, ξ) (scaled units).
+    """Solve q = φ(A q + B ξ + c), G q = f for y = (q, ξ) (scaled units; Hertz φ(d) = d₊^(3/2)).
 
     Returns the solution, the Jacobian at it and the iteration count. Small dense systems:
     BLAS runs on one thread (threaded BLAS on busy cores is many times slower here).
@@ -266,16 +289,14 @@ def _newton(
     diagonal = np.arange(n)
 
     def residual(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        d = a @ y[:n] + b @ y[n:] + c
-        dp = np.maximum(d, 0.0)
-        return np.concatenate([y[:n] - dp**1.5, g @ y[:n] - f]), dp
+        q, slope = law(a @ y[:n] + b @ y[n:] + c)
+        return np.concatenate([y[:n] - q, g @ y[:n] - f]), slope
 
-    r, dp = residual(y)
+    r, slope = residual(y)
     norm = float(np.max(np.abs(r)))
     jac = np.zeros((n + m, n + m))
     with blas_single_thread():
         for it in range(1, _MAX_ITERATIONS + 1):
-            slope = 1.5 * np.sqrt(dp)
             np.multiply(-slope[:, None], a, out=jac[:n, :n])
             jac[diagonal, diagonal] += 1.0
             jac[:n, n:] = -slope[:, None] * b
@@ -286,12 +307,12 @@ def _newton(
             t, phi = 1.0, norm
             while True:
                 trial = y + t * step
-                r_t, dp_t = residual(trial)
+                r_t, slope_t = residual(trial)
                 norm_t = float(np.max(np.abs(r_t)))
                 if norm_t < (1.0 - 1e-4 * t) * phi or t < 1e-6:
                     break
                 t *= 0.5
-            y, r, dp, norm = trial, r_t, dp_t, norm_t
+            y, r, slope, norm = trial, r_t, slope_t, norm_t
     raise ConvergenceError("ball load distribution (Newton)", _MAX_ITERATIONS, norm, _TOLERANCE)
 
 
@@ -306,11 +327,14 @@ def solve_distribution(
     lead_error: ArrayLike | None = None,
     ball_excess: ArrayLike | None = None,
     interference: float | None = None,
+    contact: TabulatedContact | None = None,
 ) -> Distribution:
     """Normal load of every ball under the axial load F_a on nut 1, equations above.
 
     A double nut's spacer interference g is found from its preload (F_a = 0: nut 1 carries F_p)
-    unless ``interference`` is given; a single nut carries F_p + F_a.
+    unless ``interference`` is given; a single nut carries F_p + F_a. With ``contact`` every
+    ball follows that tabulated law Q(δ) (a numerical, non-Hertzian contact pair) instead of
+    Hertz; K then only scales the unknowns and starts Newton.
 
     Args:
         layout: where the balls are (:func:`ball_layout`).
@@ -322,6 +346,7 @@ def solve_distribution(
         lead_error: axial lead error e of the screw relative to the nut [m], per ball or turn.
         ball_excess: ball-diameter excess Δd [m], per ball or per turn.
         interference: the spacer interference g [m] of a double nut, if known.
+        contact: the load–approach law of a ball's two contacts; None = Hertz, δ = K Q^(2/3).
     """
     beta, alpha = validate_angles(contact_angle, lead_angle)
     k = positive("hertz_constant", hertz_constant, "m N^-2/3")
@@ -351,16 +376,23 @@ def solve_distribution(
     else:
         f1, f2 = (float(v) for v in nut_forces(fp, fa))
     q0 = np.where(sigma > 0, f1, f2) / f_ref  # rigid bodies, no errors
+    law = _hertz_law if contact is None else _scaled_law(contact, q_ref, d_ref)
     if layout.nuts == 1:
         g_hat = 0.0
     elif interference is None:
-        g_hat = _preload_interference(a, sigma, c, force_row, fp / f_ref)
+        g_hat = _preload_interference(a, sigma, c, force_row, fp / f_ref, law)
     else:
         g_hat = interference * s / d_ref
     c_load = c + g_hat
     x0 = (f1 / f_ref) ** (2.0 / 3.0) - g_hat
     y, jac, its = _newton(
-        a, sigma[:, None], c_load, force_row[None, :], np.array([fa / f_ref]), np.append(q0, x0)
+        a,
+        sigma[:, None],
+        c_load,
+        force_row[None, :],
+        np.array([fa / f_ref]),
+        np.append(q0, x0),
+        law,
     )
     n = sigma.size
     rhs = np.zeros(n + 1)
@@ -390,13 +422,14 @@ def _preload_interference(
     c: NDArray[np.float64],
     force_row: NDArray[np.float64],
     preload_hat: float,
+    law: Law,
 ) -> float:
     """ĝ at which nut 1 carries the preload with no external load (scaled units)."""
     n = sigma.size
     g = np.stack([force_row, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
     b = np.stack([sigma, np.ones(n)], axis=1)
     start = np.concatenate([np.full(n, preload_hat), [0.0, preload_hat ** (2.0 / 3.0)]])
-    y, _, _ = _newton(a, b, c, g, np.array([0.0, preload_hat]), start)
+    y, _, _ = _newton(a, b, c, g, np.array([0.0, preload_hat]), start, law)
     return float(y[-1])
 
 
@@ -420,15 +453,22 @@ def lift_off_load(
     preload: float,
     bodies: NutBodies | None = None,
     rtol: float = 1e-6,
+    contact: TabulatedContact | None = None,
 ) -> float:
-    """Axial load at which the last ball of nut 2 lifts off (bisection on F_2(F_a) = 0) [N]."""
+    """Axial load at which the last ball of nut 2 lifts off (bisection on F_2(F_a) = 0) [N].
+
+    ``contact``: the tabulated law of a ball's contacts (None = Hertz), as in
+    :func:`solve_distribution`.
+    """
     if layout.nuts != 2:
         raise InputError("nuts", layout.nuts, "2 (lift-off of the second nut)")
     args = (hertz_constant, contact_angle, lead_angle)
-    g = solve_distribution(layout, *args, 0.0, preload, bodies).interference
+    g = solve_distribution(layout, *args, 0.0, preload, bodies, contact=contact).interference
 
     def unloaded(fa: float) -> bool:
-        dist = solve_distribution(layout, *args, fa, preload, bodies, interference=g)
+        dist = solve_distribution(
+            layout, *args, fa, preload, bodies, interference=g, contact=contact
+        )
         return bool(dist.nut_forces[1] <= 0.0)
 
     lo, hi = 0.0, 2.0**1.5 * preload

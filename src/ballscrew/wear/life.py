@@ -40,7 +40,7 @@ from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_c
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, FloatArray, WearSetup, nut_force_pair
-from ballscrew.wear.step import flank_rate
+from ballscrew.wear.step import flank_rate, flank_rates
 from ballscrew.wear.strips import reciprocating_rate
 
 __all__ = ["check_wear_work", "integrate_wear"]
@@ -151,41 +151,42 @@ def _step_rates(setup: WearSetup, state: _State, preload: float, level: WearLeve
 
     A duty-cycle level's rate is the revolution-weighted mean of its segments' rates; a nut's
     rate is the ball-share-weighted mean over its load classes, ḣ = Σ_k w_k ḣ(r_k Q̄) (every ball
-    passes every raceway point; :mod:`.load_classes`).
+    passes every raceway point; :mod:`.load_classes`). The contacts of a flank (both nuts, all
+    classes) share the worn gap and are solved in one batch (:func:`.step.flank_rates`).
     """
     rates = np.zeros_like(state.depth)
     for index, (share, part) in enumerate(level.parts()):
         forces = nut_force_pair(preload, part.axial_load)
         for k, flank in enumerate(FLANKS):
-            parts: list[FloatArray | None] = []
+            # every loaded nut and load class of this flank: one batched contact solve
+            entries = []
             for nut, force in enumerate(forces, start=1):
                 if force <= 0.0:
-                    parts.append(None)
                     continue
                 key = f"{flank:+d}_{nut}" + (f"_{index}" if level.segments else "")
                 classes = setup.load_classes(part.axial_load, nut)
-                rate = np.zeros(setup.y.size)
                 for c, (ratio, weight) in enumerate(
                     zip(classes.ratios, classes.weights, strict=True)
                 ):
-                    if ratio <= 0.0:  # lifted-off balls
-                        continue
-                    name = key + (f"_c{c}" if c else "")
-                    out = flank_rate(
-                        setup,
-                        flank,
-                        force,
-                        part.speed,
-                        state.depth[k],
-                        state.warm.get(name),
-                        part,
-                        ratio,
-                    )
-                    state.warm[name] = out.pressure
-                    state.solves += 1
-                    state.initial_psi.setdefault(name, out.psi)
-                    rate += weight * out.depth_per_revolution
-                parts.append(rate)
+                    if ratio > 0.0:  # lifted-off balls wear nothing
+                        entries.append((nut, key + (f"_c{c}" if c else ""), force, ratio, weight))
+            outs = flank_rates(
+                setup,
+                flank,
+                [(force, ratio) for _, _, force, ratio, _ in entries],
+                part.speed,
+                state.depth[k],
+                [state.warm.get(name) for _, name, _, _, _ in entries],
+                part,
+            )
+            parts: list[FloatArray | None] = [
+                np.zeros(setup.y.size) if force > 0.0 else None for force in forces
+            ]
+            for (nut, name, _, _, weight), out in zip(entries, outs, strict=True):
+                state.warm[name] = out.pressure
+                state.solves += 1
+                state.initial_psi.setdefault(name, out.psi)
+                parts[nut - 1] += weight * out.depth_per_revolution
             loaded = parts[0] if parts[0] is not None else np.zeros(setup.y.size)
             rates[k] += share * reciprocating_rate(loaded, parts[1])
     return rates

@@ -1,14 +1,20 @@
-"""One contact of a wear step: pressure, asperity share, sliding and the wear-depth rate."""
+"""One contact of a wear step: pressure, asperity share, sliding and the wear-depth rate.
+
+The contacts of one flank within a step (the nuts and the ball-load classes of each) share the
+worn gap and the fixed grid and differ only in load: :func:`flank_rates` solves them together
+(:func:`ballscrew.contact.solve_normal_batch`; each result equals its own single solve).
+"""
 
 from __future__ import annotations
 
 import math
 import warnings
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from ballscrew.contact import solve_normal
+from ballscrew.contact import ContactResult, solve_normal, solve_normal_batch
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.lubrication import share_load
@@ -18,7 +24,7 @@ from ballscrew.wear.rates import cell_wear_rate
 from ballscrew.wear.setup import FloatArray, WearSetup
 from ballscrew.wear.strips import depth_per_revolution, raceway_depth_rate, strip_wear_speed
 
-__all__ = ["FlankRate", "GridEdgeWarning", "entrainment_speed", "flank_rate"]
+__all__ = ["FlankRate", "GridEdgeWarning", "entrainment_speed", "flank_rate", "flank_rates"]
 
 
 class GridEdgeWarning(UserWarning):
@@ -84,6 +90,66 @@ def flank_rate(
         max_iterations=setup.max_iterations,
         initial=initial,
     )
+    return _rate(setup, flank, q, sol, screw_speed, depth, level)
+
+
+def _solve_together(
+    setup: WearSetup, gap: FloatArray, loads: list[float], initial: list[FloatArray | None]
+) -> list[ContactResult]:
+    """The contacts of ``loads`` on one gap: one batched solve for those with a warm start and
+    one for those without (a batch takes a start for all or none)."""
+    out: list[ContactResult | None] = [None] * len(loads)
+    for warm in (True, False):
+        group = [i for i, p in enumerate(initial) if (p is not None) == warm]
+        if not group:
+            continue
+        stack = np.broadcast_to(gap, (len(group), *gap.shape)).copy()
+        starts = np.stack([initial[i] for i in group]) if warm else None
+        solved = solve_normal_batch(
+            stack,
+            setup.dx,
+            setup.dy,
+            setup.e_star,
+            np.array([loads[i] for i in group]),
+            setup.tolerance,
+            max_iterations=setup.max_iterations,
+            initial=starts,
+        )
+        for i, sol in zip(group, solved, strict=True):
+            out[i] = sol
+    return [sol for sol in out if sol is not None]
+
+
+def flank_rates(
+    setup: WearSetup,
+    flank: int,
+    contacts: Sequence[tuple[float, float]],
+    screw_speed: float,
+    depth: FloatArray,
+    initial: Sequence[FloatArray | None],
+    level: WearLevel | None = None,
+) -> tuple[FlankRate, ...]:
+    """:func:`flank_rate` of several (nut force, load ratio) ``contacts`` of one flank, their
+    contacts solved together (batched FFTs); ``initial`` gives each one's warm start or None."""
+    loads = [ratio * setup.ball_load(force) for force, ratio in contacts]
+    gap = worn_gap(setup.nominal_gap[flank], depth)
+    solved = _solve_together(setup, gap, loads, list(initial))
+    return tuple(
+        _rate(setup, flank, q, sol, screw_speed, depth, level)
+        for q, sol in zip(loads, solved, strict=True)
+    )
+
+
+def _rate(
+    setup: WearSetup,
+    flank: int,
+    q: float,
+    sol: ContactResult,
+    screw_speed: float,
+    depth: FloatArray,
+    level: WearLevel | None,
+) -> FlankRate:
+    """Asperity share, sliding, cell wear and raceway depth rate of one solved contact."""
     p = np.asarray(sol.pressure, dtype=float)
     if p[[0, -1], :].any() or p[:, [0, -1]].any():
         warnings.warn(

@@ -1,0 +1,76 @@
+"""``[loads] contact = "numerical"``: the ball contacts of the distribution from the solver."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import ballscrew
+from ballscrew.analyses.ball_loads import elastic_distribution
+from ballscrew.analyses.contact_law import (
+    TABLE_POINTS,
+    TABLE_SPAN,
+    numerical_contact,
+    table_loads,
+)
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.case.loader import CaseError
+from ballscrew.contact import hertz
+from ballscrew.geometry import raceway_curvature
+
+ELASTIC = {"loads.distribution": "elastic", "operating.axial_load": 2000.0}
+NUMERICAL = ELASTIC | {"loads.contact": "numerical"}
+HERTZ_GAP = {"numerics.gap_model": "quadratic"}
+
+
+def test_the_table_spans_the_nominal_ball_load():
+    loads = table_loads(31.5)
+    assert loads.size == TABLE_POINTS and loads[-1] == 256.0  # 2^⌈log2(6 × 31.5)⌉
+    assert loads[-1] / loads[0] == pytest.approx(TABLE_SPAN)
+
+
+def _hertz_approach(params: ScrewParameters, loads: np.ndarray) -> np.ndarray:
+    """δ_A + δ_B of the Hertz contacts at ``loads`` (computed per load, not from K)."""
+    total = np.zeros_like(loads)
+    for side in ("screw", "nut"):
+        c, e_star = raceway_curvature(params.geometry, side), params.contact_modulus(side)
+        total += [hertz(c.rx, c.ry, e_star, q).approach for q in loads]
+    return total
+
+
+def test_the_tabulated_law_reproduces_hertz_between_its_points(gao_case_path):
+    case = ballscrew.load_case(gao_case_path, NUMERICAL | HERTZ_GAP)
+    params = ScrewParameters.from_case(case)
+    law = numerical_contact(params, case.numerics)
+    # one batch per raceway on the grid of the largest load: 64 cells across it,
+    # 64 / 128^(1/3) ≈ 13 at the smallest
+    np.testing.assert_allclose(law.approaches, _hertz_approach(params, law.loads), rtol=2e-3)
+    q = np.geomspace(law.loads[0], law.loads[-1], 50)
+    load, _ = law.load(sum(params.hertz_constants) * q ** (2.0 / 3.0))
+    np.testing.assert_allclose(load, q, rtol=3e-3)  # δ to 2e-3 ⇒ Q to 3e-3
+
+
+def test_in_the_hertz_limit_the_numerical_distribution_is_the_hertz_one(gao_case_path):
+    hertz_case = ballscrew.load_case(gao_case_path, ELASTIC)
+    case = ballscrew.load_case(gao_case_path, NUMERICAL | HERTZ_GAP)
+    reference, balls = ballscrew.ball_loads(hertz_case), ballscrew.ball_loads(case)
+    assert balls.axial_forces[0] - balls.axial_forces[1] == pytest.approx(2000.0, rel=1e-10)
+    np.testing.assert_allclose(balls.loads, reference.loads, rtol=1e-3)
+    assert balls.spread == pytest.approx(reference.spread, rel=1e-4)
+
+
+def test_the_conforming_groove_changes_the_distribution_a_little(gao_case_path):
+    params_case = ballscrew.load_case(gao_case_path, ELASTIC)
+    params = ScrewParameters.from_case(params_case)
+    hertz_run = elastic_distribution(params, params_case.loads)
+    case = ballscrew.load_case(gao_case_path, NUMERICAL)
+    exact = elastic_distribution(params, case.loads, numerics=case.numerics)
+    assert exact.nut_forces[0] - exact.nut_forces[1] == pytest.approx(2000.0, rel=1e-10)
+    change = np.max(np.abs(exact.loads / hertz_run.loads - 1.0))
+    assert 1e-5 < change < 0.05
+    assert exact.stiffness == pytest.approx(hertz_run.stiffness, rel=0.05)
+
+
+def test_the_contact_law_is_a_case_choice(gao_case_path):
+    with pytest.raises(CaseError, match=r"loads\.contact"):
+        ballscrew.load_case(gao_case_path, ELASTIC | {"loads.contact": "dmt"})
