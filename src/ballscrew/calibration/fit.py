@@ -28,8 +28,10 @@ starts from the best run, bounded to the decade either side of the scan's best K
 The ln K column of the Jacobian is a forward difference with a fixed step (default 1e-2,
 i.e. 1 % in K), large enough to step over the numerical noise of a wear model (explicit time
 steps and iterative contact solves: about 3e-5 of the REF wear depth and preload), small enough
-for a truncation error of about 0.5 % of the column; the m column is exact. Model runs are
-cached by K, so a 1-parameter fit takes 8–12 model runs (REF torque, 2 parameters: 8).
+for a truncation error of about 0.5 % of the column, updated by secant steps between (the
+general fitter :func:`ballscrew.calibration.multi.fit_parameters`, which
+:func:`fit_wear_coefficient` calls); the m column is exact. Model runs are cached by K, so a
+1-parameter fit takes 8–12 model runs.
 
 Uncertainty (Gauss–Newton / delta method; e.g. Seber & Wild, *Nonlinear Regression*, 1989,
 §2.1): with J the Jacobian of the residuals at the solution, p parameters and n points,

@@ -10,8 +10,13 @@ is exact and no model run is spent on it. The residuals on the fitted points (re
     r_i(θ) = (m · y_model(N_i; K, φ, h_r) − y_i) / s,
 
 minimised with :func:`scipy.optimize.least_squares` (trust-region reflective) from a start that
-a decade scan in K brackets (as :func:`ballscrew.calibration.fit_wear_coefficient`); the
-columns of K, φ and h_r are forward differences of 1 % (backward at an upper bound).
+a decade scan in K brackets (:func:`_start`). The columns of K, φ and h_r are forward differences
+of 1 % (backward at an upper bound) at the first point and Broyden's (1965) rank-one secant
+updates G += (Δy − G Δθ) Δθᵀ/|Δθ|² at later ones (one model run per iteration instead of one per
+parameter); at the end the differences are taken afresh, and least squares restarts from there
+while a Gauss–Newton step with them would still move a parameter by more than 0.1 σ (Broyden,
+*Math. Comp.* 19, 1965, 577–593). :func:`ballscrew.calibration.fit_wear_coefficient` is this
+fitter on K (and m).
 
 Uncertainty and prediction bands (Gauss–Newton / delta method; Seber & Wild 1989, §2.1, §5.1):
 
