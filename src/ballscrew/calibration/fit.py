@@ -279,20 +279,25 @@ class _Objective:
         return float(np.sqrt(np.mean((m * model - self.data.values) ** 2))), m
 
 
+def _downhill(points: Mapping[float, float], step: float) -> float | None:
+    """The next ln K of a bracketing search: ``step`` beyond the point of least RMS when it is
+    an end of ``points`` (ln K → RMS); None once the least RMS is bracketed."""
+    best = min(points, key=points.__getitem__)
+    if best == min(points):
+        return best - step
+    if best == max(points):
+        return best + step
+    return None
+
+
 def _scan(objective: _Objective, ln_k0: float, max_steps: int) -> tuple[float, list[float]]:
     """Coarse scan one decade apart until the smallest RMS is bracketed; best ln K and log."""
     lo, hi = math.log(_K_MIN), math.log(_K_MAX)
     start = min(max(ln_k0, lo + _LN10), hi - _LN10)
     points = {x: objective.rms_at(x)[0] for x in (start - _LN10, start, start + _LN10)}
     for _ in range(max_steps):
-        best = min(points, key=points.__getitem__)
-        if best == min(points):
-            nxt = best - _LN10
-        elif best == max(points):
-            nxt = best + _LN10
-        else:
-            break
-        if not lo <= nxt <= hi:
+        nxt = _downhill(points, _LN10)
+        if nxt is None or not lo <= nxt <= hi:
             break
         points[nxt] = objective.rms_at(nxt)[0]
     best = min(points, key=points.__getitem__)

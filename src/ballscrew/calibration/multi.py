@@ -46,6 +46,7 @@ from ballscrew.calibration.fit import (
     CalibrationResult,
     WearHistory,
     _check_determined,
+    _downhill,
     _Objective,
     _refine,
     _scan,
@@ -446,17 +447,14 @@ def _line_minimum(
     objective: _Objective, centre: float, step: float = 0.5, max_runs: int = 5
 ) -> tuple[float, float]:
     """(ln K, RMS) of the least residual in ln K near ``centre``: three runs ``step`` apart,
-    extended downhill until the least is bracketed, then quadratic-surrogate steps
+    extended _downhill until the least is bracketed, then quadratic-surrogate steps
     (:func:`ballscrew.calibration.fit._surrogate_minimum`) to 0.02; at most ``max_runs`` runs
     after the first three."""
     rms = {x: objective.rms_at(x)[0] for x in (centre - step, centre, centre + step)}
     for _ in range(max_runs):
-        best = min(rms, key=rms.__getitem__)
-        if best == min(rms):
-            nxt = best - step
-        elif best == max(rms):
-            nxt = best + step
-        else:
+        nxt = _downhill(rms, step)
+        if nxt is None:
+            best = min(rms, key=rms.__getitem__)
             nearest = sorted(rms, key=lambda v: abs(v - best))[:3]
             nxt = _surrogate_minimum(objective, nearest)
             if any(abs(nxt - v) < 0.02 for v in rms):
