@@ -78,11 +78,17 @@ class FitParameter:
     lower: float
     upper: float
     description: str
+    short: str = ""
+    """Its name in a message about its own value (default: the description)."""
 
 
 FIT_PARAMETERS: dict[str, FitParameter] = {
-    "wear_coefficient": FitParameter("wear.coefficient", 1.0e-16, 1.0, "wear coefficient K"),
-    "torque_scale": FitParameter(None, 0.0, math.inf, "drag-torque scale on K_T"),
+    "wear_coefficient": FitParameter(
+        "wear.coefficient", 1.0e-16, 1.0, "wear coefficient K", short="K"
+    ),
+    "torque_scale": FitParameter(
+        None, 0.0, math.inf, "drag-torque scale on K_T", short="torque scale"
+    ),
     "film_factor": FitParameter("wear.film_factor", 1.0e-3, 1.0, "film supply factor φ"),
     "running_in_depth": FitParameter(
         "wear.running_in.depth", 1.0e-9, 1.0e-4, "running-in depth h_r [m]"
@@ -326,7 +332,8 @@ def fit_parameters(
         else:
             values[name] = math.exp(x[i])
             errors[name] = values[name] * math.sqrt(cov[i, i])
-        _check_determined(data.source, FIT_PARAMETERS[name].description, values[name], errors[name])
+        spec = FIT_PARAMETERS[name]
+        _check_determined(data.source, spec.short or spec.description, values[name], errors[name])
     m = multiplier(x)
     final = values_of(x)
     model_rev, model_val = model.run(final)
