@@ -28,8 +28,10 @@ starts from the best run, bounded to the decade either side of the scan's best K
 The ln K column of the Jacobian is a forward difference with a fixed step (default 1e-2,
 i.e. 1 % in K), large enough to step over the numerical noise of a wear model (explicit time
 steps and iterative contact solves: about 3e-5 of the REF wear depth and preload), small enough
-for a truncation error of about 0.5 % of the column; the m column is exact. Model runs are
-cached by K, so a 1-parameter fit takes 8–12 model runs (REF torque, 2 parameters: 8).
+for a truncation error of about 0.5 % of the column, updated by secant steps between (the
+general fitter :func:`ballscrew.calibration.multi.fit_parameters`, which
+:func:`fit_wear_coefficient` calls); the m column is exact. Model runs are cached by K, so a
+1-parameter fit takes 8–12 model runs.
 
 Uncertainty (Gauss–Newton / delta method; e.g. Seber & Wild, *Nonlinear Regression*, 1989,
 §2.1): with J the Jacobian of the residuals at the solution, p parameters and n points,
@@ -55,7 +57,7 @@ from scipy.optimize import least_squares
 
 from ballscrew.analyses.result import Presented
 from ballscrew.calibration import report as calibration_report
-from ballscrew.calibration.measured import MeasuredHistory, check_values
+from ballscrew.calibration.measured import MeasuredHistory
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import BallscrewError, ConvergenceError, InputError
 
@@ -270,26 +272,22 @@ class _Objective:
             return 1.0
         return max(float(model @ self.data.values) / denominator, 1e-12)
 
-    def residuals(self, theta: np.ndarray) -> np.ndarray:
-        model = self.run(theta[0])[0]
-        m = theta[1] if self.fit_scale else 1.0
-        return (m * model - self.data.values) / self.scale
-
-    def jacobian(self, theta: np.ndarray, step: float) -> np.ndarray:
-        """Forward difference in ln K (fixed step), exact column in m."""
-        model = self.run(theta[0])[0]
-        shifted = self.run(theta[0] + step)[0]
-        m = theta[1] if self.fit_scale else 1.0
-        columns = [m * (shifted - model) / step / self.scale]
-        if self.fit_scale:
-            columns.append(model / self.scale)
-        return np.column_stack(columns)
-
     def rms_at(self, ln_k: float) -> tuple[float, float]:
         """(RMS residual in SI units, best m) at K = exp(ln_k)."""
         model = self.run(ln_k)[0]
         m = self.best_multiplier(model)
         return float(np.sqrt(np.mean((m * model - self.data.values) ** 2))), m
+
+
+def _downhill(points: Mapping[float, float], step: float) -> float | None:
+    """The next ln K of a bracketing search: ``step`` beyond the point of least RMS when it is
+    an end of ``points`` (ln K → RMS); None once the least RMS is bracketed."""
+    best = min(points, key=points.__getitem__)
+    if best == min(points):
+        return best - step
+    if best == max(points):
+        return best + step
+    return None
 
 
 def _scan(objective: _Objective, ln_k0: float, max_steps: int) -> tuple[float, list[float]]:
@@ -298,14 +296,8 @@ def _scan(objective: _Objective, ln_k0: float, max_steps: int) -> tuple[float, l
     start = min(max(ln_k0, lo + _LN10), hi - _LN10)
     points = {x: objective.rms_at(x)[0] for x in (start - _LN10, start, start + _LN10)}
     for _ in range(max_steps):
-        best = min(points, key=points.__getitem__)
-        if best == min(points):
-            nxt = best - _LN10
-        elif best == max(points):
-            nxt = best + _LN10
-        else:
-            break
-        if not lo <= nxt <= hi:
+        nxt = _downhill(points, _LN10)
+        if nxt is None or not lo <= nxt <= hi:
             break
         points[nxt] = objective.rms_at(nxt)[0]
     best = min(points, key=points.__getitem__)
@@ -402,6 +394,8 @@ def fit_wear_coefficient(
             the scan, or a Jacobian that does not determine the parameters.
         ConvergenceError: least squares did not converge within ``max_evaluations`` runs.
     """
+    from ballscrew.calibration.multi import fit_parameters  # the general fitter (uses this module)
+
     if fit_torque_scale and data.quantity != "friction_torque":
         raise InputError(
             "--fit-torque-scale", True, f"only with friction_torque data (got {data.quantity})"
@@ -410,74 +404,17 @@ def fit_wear_coefficient(
         raise InputError("wear.coefficient", initial_coefficient, f"a number in ({_K_MIN}, 1)")
     if not (math.isfinite(torque_scale) and torque_scale > 0.0):
         raise InputError("wear.torque_scale", torque_scale, "a number > 0")
-    check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
-    p = 2 if fit_torque_scale else 1
-    n = len(data)
-    if n <= p:
-        raise CalibrationError(
-            f"{data.source}: {n} points cannot determine {p} parameter(s); give at least {p + 1}"
-        )
-    objective = _Objective(simulate, data, fit_torque_scale, max_evaluations)
-    ln_k, scanned = _scan(objective, math.log(initial_coefficient), scan_steps)
-    scan = tuple((math.exp(x), objective.rms_at(x)[0]) for x in scanned)
-    start = _refine(objective, ln_k, scanned, refine_steps)
-    m0 = objective.rms_at(start)[1]
-    x0 = np.array([start, m0] if fit_torque_scale else [start])
-    lower = [ln_k - _LN10] + ([0.0] if fit_torque_scale else [])
-    upper = [ln_k + _LN10] + ([np.inf] if fit_torque_scale else [])
-    solution = solve_least_squares(
-        objective.residuals,
-        x0,
-        lambda theta: objective.jacobian(theta, diff_step),
-        (lower, upper),
-        max_evaluations,
-        "calibration (least squares on ln K)",
-        lambda: objective.best_rms,
-    )
-    theta = solution.x
-    if abs(theta[0] - lower[0]) < 1e-9 or abs(theta[0] - upper[0]) < 1e-9:
-        raise CalibrationError(
-            f"least squares stopped at the edge of the bracket K = {math.exp(lower[0]):.3g}–"
-            f"{math.exp(upper[0]):.3g} found by the scan (the data do not constrain K)"
-        )
-    residuals = objective.residuals(theta)
-    jac = objective.jacobian(theta, diff_step)
-    covariance = _covariance(jac, residuals, n, p, data.source)
-    k = math.exp(theta[0])
-    _check_determined(data.source, "K", k, k * math.sqrt(covariance[0, 0]))
-    if p == 2:
-        _check_determined(data.source, "torque scale", theta[1], math.sqrt(covariance[1, 1]))
-    model_at_data, model_rev, model_val = objective.run(theta[0])
-    m = float(theta[1]) if fit_torque_scale else 1.0
-    fitted = m * model_at_data
-    curve = m * model_val
-    for arr in (fitted, curve, model_rev):
-        arr.setflags(write=False)
-    return CalibrationResult(
-        quantity=data.quantity,
-        unit=data.unit,
-        source=data.source,
-        wear_coefficient=k,
-        standard_error=k * math.sqrt(covariance[0, 0]),
-        torque_scale=torque_scale * m,
-        torque_scale_error=torque_scale * math.sqrt(covariance[1, 1]) if p == 2 else None,
-        correlation=(
-            float(covariance[0, 1] / math.sqrt(covariance[0, 0] * covariance[1, 1]))
-            if p == 2
-            else None
-        ),
-        rms_residual=float(np.sqrt(np.mean((fitted - data.values) ** 2))),
-        n_points=n,
-        parameters=p,
-        evaluations=objective.evaluations,
-        initial_coefficient=float(initial_coefficient),
-        revolutions=data.revolutions,
-        measured=data.values,
-        fitted=fitted,
-        model_revolutions=model_rev,
-        model_values=curve,
-        scan=scan,
-        message=str(solution.message),
+    return fit_parameters(
+        lambda values: simulate(values["wear_coefficient"]),
+        data,
+        ["wear_coefficient"] + (["torque_scale"] if fit_torque_scale else []),
+        {"wear_coefficient": initial_coefficient},
+        torque_scale=torque_scale,
+        max_evaluations=max_evaluations,
+        diff_step=diff_step,
+        scan_steps=scan_steps,
+        refine_steps=refine_steps,
+        label="calibration (least squares on ln K)",
     )
 
 
@@ -523,23 +460,16 @@ def solve_least_squares(
 
 
 def _covariance(
-    jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str, what: str | None = None
+    jac: np.ndarray, residuals: np.ndarray, n: int, p: int, source: str, what: str
 ) -> np.ndarray:
-    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError when J is rank-deficient.
-
-    ``what`` names the fitted parameters in the message (default: K, and the torque scale)."""
+    """RSS/(n − p) · (JᵀJ)⁻¹ via the SVD of J; CalibrationError naming ``what`` (the fitted
+    parameters) when J is rank-deficient."""
     _, singular, vt = np.linalg.svd(jac, full_matrices=False)
     if (
         singular.size < p
         or not np.all(np.isfinite(singular))
         or singular[-1] <= (1e-10 * max(singular[0], 1e-300))
     ):
-        if what is None:
-            what = (
-                "the wear coefficient"
-                if p == 1
-                else "both the wear coefficient and the torque scale"
-            )
         raise CalibrationError(
             f"{source}: the measured history does not determine "
             + what

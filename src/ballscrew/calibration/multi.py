@@ -10,8 +10,13 @@ is exact and no model run is spent on it. The residuals on the fitted points (re
     r_i(θ) = (m · y_model(N_i; K, φ, h_r) − y_i) / s,
 
 minimised with :func:`scipy.optimize.least_squares` (trust-region reflective) from a start that
-a decade scan in K brackets (as :func:`ballscrew.calibration.fit_wear_coefficient`); the
-columns of K, φ and h_r are forward differences of 1 % (backward at an upper bound).
+a decade scan in K brackets (:func:`_start`). The columns of K, φ and h_r are forward differences
+of 1 % (backward at an upper bound) at the first point and Broyden's (1965) rank-one secant
+updates G += (Δy − G Δθ) Δθᵀ/|Δθ|² at later ones (one model run per iteration instead of one per
+parameter); at the end the differences are taken afresh, and least squares restarts from there
+while a Gauss–Newton step with them would still move a parameter by more than 0.1 σ (Broyden,
+*Math. Comp.* 19, 1965, 577–593). :func:`ballscrew.calibration.fit_wear_coefficient` is this
+fitter on K (and m).
 
 Uncertainty and prediction bands (Gauss–Newton / delta method; Seber & Wild 1989, §2.1, §5.1):
 
@@ -31,18 +36,21 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from ballscrew.calibration.diagnostics import residual_diagnostics
 from ballscrew.calibration.fit import (
+    _K_MAX,
+    _K_MIN,
     _LN10,
     CalibrationError,
     CalibrationResult,
     WearHistory,
     _check_determined,
+    _downhill,
     _Objective,
     _refine,
     _scan,
+    _surrogate_minimum,
     covering_history,
     solve_least_squares,
 )
@@ -51,6 +59,10 @@ from ballscrew.calibration.measured import MeasuredHistory, check_values, measur
 from ballscrew.errors import ConvergenceError, InputError
 
 __all__ = ["FIT_PARAMETERS", "CalibrationWarning", "FitParameter", "fit_parameters"]
+
+
+_K = "wear_coefficient"
+_LN_K_MIN, _LN_K_MAX = math.log(_K_MIN), math.log(_K_MAX)
 
 
 class CalibrationWarning(UserWarning):
@@ -66,11 +78,17 @@ class FitParameter:
     lower: float
     upper: float
     description: str
+    short: str = ""
+    """Its name in a message about its own value (default: the description)."""
 
 
 FIT_PARAMETERS: dict[str, FitParameter] = {
-    "wear_coefficient": FitParameter("wear.coefficient", 1.0e-16, 1.0, "wear coefficient K"),
-    "torque_scale": FitParameter(None, 0.0, math.inf, "drag-torque scale on K_T"),
+    "wear_coefficient": FitParameter(
+        "wear.coefficient", 1.0e-16, 1.0, "wear coefficient K", short="K"
+    ),
+    "torque_scale": FitParameter(
+        None, 0.0, math.inf, "drag-torque scale on K_T", short="torque scale"
+    ),
     "film_factor": FitParameter("wear.film_factor", 1.0e-3, 1.0, "film supply factor φ"),
     "running_in_depth": FitParameter(
         "wear.running_in.depth", 1.0e-9, 1.0e-4, "running-in depth h_r [m]"
@@ -103,10 +121,12 @@ class _Model:
         simulate: Callable[[Mapping[str, float]], WearHistory],
         data: MeasuredHistory,
         max_evaluations: int,
+        label: str,
     ) -> None:
         self.simulate = simulate
         self.data = data
         self.max_evaluations = max_evaluations
+        self.label = label
         self.cache: dict[tuple[tuple[str, float], ...], tuple[np.ndarray, np.ndarray]] = {}
 
     def run(self, values: Mapping[str, float]) -> tuple[np.ndarray, np.ndarray]:
@@ -114,13 +134,98 @@ class _Model:
         key = tuple(sorted((k, float(v)) for k, v in values.items()))
         if key not in self.cache:
             if len(self.cache) >= self.max_evaluations:
-                raise ConvergenceError("calibration (least squares)", len(self.cache), math.nan, 0)
+                raise ConvergenceError(self.label, len(self.cache), math.nan, 0)
             self.cache[key] = covering_history(self.simulate(dict(key)), self.data)
         return self.cache[key]
 
     def at(self, values: Mapping[str, float], revolutions: np.ndarray) -> np.ndarray:
         rev, val = self.run(values)
         return np.interp(revolutions, rev, val)
+
+
+_RESTARTS = 3
+"""Most least-squares runs: a run whose end a Gauss–Newton step of the difference Jacobian
+would still move by more than :data:`_MOVE` standard errors is restarted from there."""
+_MOVE = 0.1
+
+
+class _SecantJacobian:
+    """Jacobian of the scaled residuals: forward differences of the model columns at the first
+    point, Broyden's (1965) rank-one secant update at every later one (one model run per
+    iteration instead of one per parameter), the torque-multiplier column exact."""
+
+    def __init__(
+        self,
+        model_at: Callable[[np.ndarray], np.ndarray],
+        diff_step: float,
+        upper: Sequence[float],
+        fit_scale: bool,
+        scale: float,
+    ) -> None:
+        self.model_at = model_at
+        self.diff_step = diff_step
+        self.upper = list(upper)
+        self.fit_scale = fit_scale
+        self.scale = scale
+        self.x: np.ndarray | None = None
+        self.values = np.zeros(0)
+        self.columns = np.zeros((0, 0))
+
+    def steps(self, x: np.ndarray) -> list[float]:
+        """Difference steps in each model parameter (backward at an upper bound)."""
+        h = self.diff_step
+        return [-h if x[i] + h > top else h for i, top in enumerate(self.upper)]
+
+    def difference(self, x: np.ndarray) -> np.ndarray:
+        """The Jacobian at ``x`` by forward differences (p model runs, cached)."""
+        x = np.array(x, dtype=float)
+        here = self.model_at(x)
+        columns = []
+        for i, h in enumerate(self.steps(x)):
+            shifted = x.copy()
+            shifted[i] += h
+            columns.append((self.model_at(shifted) - here) / h)
+        self.x, self.values = x, here
+        self.columns = np.column_stack(columns) if columns else np.zeros((here.size, 0))
+        return self._full(x)
+
+    def __call__(self, x: np.ndarray) -> np.ndarray:
+        if self.x is None:
+            return self.difference(x)
+        x = np.array(x, dtype=float)
+        here = self.model_at(x)
+        dx = (x - self.x)[: len(self.upper)]
+        norm = float(dx @ dx)
+        if norm > 0.0:  # G += (Δy − G Δx) Δxᵀ / |Δx|²
+            self.columns = self.columns + np.outer(
+                here - self.values - self.columns @ dx, dx / norm
+            )
+        self.x, self.values = x, here
+        return self._full(x)
+
+    def _full(self, x: np.ndarray) -> np.ndarray:
+        m = float(x[-1]) if self.fit_scale else 1.0
+        jac = m * self.columns / self.scale
+        return np.column_stack([jac, self.values / self.scale]) if self.fit_scale else jac
+
+
+def _converged(
+    jac: np.ndarray,
+    residuals: np.ndarray,
+    x: np.ndarray,
+    bounds: tuple[Sequence[float], Sequence[float]],
+    n: int,
+) -> bool:
+    """Would a Gauss–Newton step of ``jac`` (kept within the bounds) move every parameter by
+    less than :data:`_MOVE` of its standard error? (True when ``jac`` is rank-deficient: the
+    covariance reports that.)"""
+    step, *_, singular = np.linalg.lstsq(jac, -residuals, rcond=None)
+    if singular.size < x.size or singular[-1] <= 1e-10 * max(singular[0], 1e-300):
+        return True
+    moved = np.clip(x + step, bounds[0], bounds[1]) - x
+    variance = float(residuals @ residuals) / max(n - x.size, 1)
+    sigma = np.sqrt(variance * np.diag(np.linalg.pinv(jac.T @ jac)))
+    return bool(np.all(np.abs(moved) <= _MOVE * sigma))
 
 
 def fit_parameters(
@@ -135,6 +240,7 @@ def fit_parameters(
     diff_step: float = 1.0e-2,
     scan_steps: int = 6,
     refine_steps: int = 6,
+    label: str = "calibration (least squares)",
 ) -> CalibrationResult:
     """Fit the parameters ``fit`` (names of :data:`FIT_PARAMETERS`) to ``data``.
 
@@ -146,7 +252,11 @@ def fit_parameters(
             the model takes); those not fitted stay at it.
         torque_scale: the torque scale the model torques were computed with.
         fit_until: fit the points up to these revolutions, predict the rest (None: fit all).
-        max_evaluations: most model runs.
+        max_evaluations: most model runs; more raises ConvergenceError.
+        diff_step: forward-difference step in the logarithm of each model parameter.
+        scan_steps: most decades the scan in K may extend beyond its first three points.
+        refine_steps: most surrogate steps in K after the scan (one model run each).
+        label: names the solver in a ConvergenceError.
     """
     names = _check_names(fit, data)
     check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
@@ -154,7 +264,7 @@ def fit_parameters(
     p = len(names)
     if n_fit <= p:
         raise CalibrationError(
-            f"{data.source}: {n_fit} fitted points cannot determine {p} parameter(s); give at "
+            f"{data.source}: {n_fit} points cannot determine {p} parameter(s); give at "
             f"least {p + 1}"
         )
     model_names = [n for n in names if n != "torque_scale"]
@@ -163,12 +273,11 @@ def fit_parameters(
     for name in model_names:
         if name not in base:
             raise InputError("fit", name, f"a parameter of the model ({', '.join(base)})")
-    model = _Model(simulate, fitted_data, max_evaluations)
+    model = _Model(simulate, fitted_data, max_evaluations, label)
     y = fitted_data.values
     scale = float(np.max(np.abs(y))) or 1.0
     lower = [math.log(FIT_PARAMETERS[n].lower) for n in model_names]
     upper = [math.log(FIT_PARAMETERS[n].upper) for n in model_names]
-    x0 = [math.log(base[n]) for n in model_names]
     base, scan, k_bracket = _start(
         model, fitted_data, base, model_names, fit_scale, scan_steps, refine_steps
     )
@@ -186,39 +295,26 @@ def fit_parameters(
     def residuals(x: np.ndarray) -> np.ndarray:
         return (multiplier(x) * model.at(values_of(x), fitted_data.revolutions) - y) / scale
 
-    def steps(x: np.ndarray) -> list[float]:
-        return [
-            -diff_step if x[i] + diff_step > upper[i] else diff_step
-            for i in range(len(model_names))
-        ]
-
-    def jacobian(x: np.ndarray) -> np.ndarray:
-        here = model.at(values_of(x), fitted_data.revolutions)
-        columns = []
-        for i, h in enumerate(steps(x)):
-            shifted = np.array(x, dtype=float)
-            shifted[i] += h
-            moved = model.at(values_of(shifted), fitted_data.revolutions)
-            columns.append(multiplier(x) * (moved - here) / h / scale)
-        if fit_scale:
-            columns.append(here / scale)
-        return np.column_stack(columns)
-
+    jacobian = _SecantJacobian(
+        lambda x: model.at(values_of(x), fitted_data.revolutions),
+        diff_step,
+        upper,
+        fit_scale,
+        scale,
+    )
     if fit_scale:
         here = model.at(values_of(np.array(x0)), fitted_data.revolutions)
         m0 = max(float(here @ y) / float(here @ here), 1e-12) if here @ here > 0 else 1.0
         x0, lower, upper = [*x0, m0], [*lower, 0.0], [*upper, np.inf]
-    x0 = [min(max(v, lo), hi) for v, lo, hi in zip(x0, lower, upper, strict=True)]
-    solution = solve_least_squares(
-        residuals,
-        x0,
-        jacobian,
-        (lower, upper),
-        max_evaluations,
-        "calibration (least squares)",
-        lambda: math.nan,
-    )
-    x = solution.x
+    x = np.array([min(max(v, lo), hi) for v, lo, hi in zip(x0, lower, upper, strict=True)])
+    message = ""
+    for _ in range(_RESTARTS):
+        solution = solve_least_squares(
+            residuals, x, jacobian, (lower, upper), max_evaluations, label, lambda: math.nan
+        )
+        x, message = solution.x, str(solution.message)
+        if _converged(jacobian.difference(x), residuals(x), x, (lower, upper), n_fit):
+            break
     if "wear_coefficient" in model_names:
         i = model_names.index("wear_coefficient")
         if min(abs(x[i] - lower[i]), abs(x[i] - upper[i])) < 1e-9:
@@ -228,8 +324,7 @@ def fit_parameters(
                 "do not constrain K)"
             )
     r = residuals(x)
-    jac = jacobian(x)
-    cov = _covariance(jac, r, n_fit, names, data.source)
+    cov = _covariance(jacobian.difference(x), r, n_fit, names, data.source)
     values, errors = {}, {}
     for i, name in enumerate(names):
         if name == "torque_scale":
@@ -237,7 +332,8 @@ def fit_parameters(
         else:
             values[name] = math.exp(x[i])
             errors[name] = values[name] * math.sqrt(cov[i, i])
-        _check_determined(data.source, FIT_PARAMETERS[name].description, values[name], errors[name])
+        spec = FIT_PARAMETERS[name]
+        _check_determined(data.source, spec.short or spec.description, values[name], errors[name])
     m = multiplier(x)
     final = values_of(x)
     model_rev, model_val = model.run(final)
@@ -246,7 +342,7 @@ def fit_parameters(
     rss = float(residual_fit @ residual_fit)
     noise = math.sqrt(rss / (n_fit - p))
     gradient = []
-    for i, h in enumerate(steps(x)):
+    for i, h in enumerate(jacobian.steps(x)):  # the runs of the difference Jacobian
         shifted = np.array(x, dtype=float)
         shifted[i] += h
         gradient.append(m * (model.at(values_of(shifted), model_rev) - model_val) / h)
@@ -280,7 +376,7 @@ def fit_parameters(
         model_revolutions=model_rev,
         model_values=curve,
         scan=scan,
-        message=str(solution.message),
+        message=message,
         values=values,
         errors=errors,
         n_fit=n_fit,
@@ -312,62 +408,69 @@ def _start(
     scan_steps: int,
     refine_steps: int,
 ) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
-    """Starting values: for each parameter other than K in turn, the best of half-decade trial
-    values, K re-fitted at each (first a decade scan and surrogate steps, then, with other
-    parameters, a bounded Brent search in ln K to 0.05, at most 8 runs); the decade scan; and
-    the bracket of ln K (a decade either side of its best)."""
+    """Starting values: K from a decade scan and surrogate steps (:func:`_scan`,
+    :func:`_refine`); then for each other parameter in turn the best of half-decade trial
+    values, K re-fitted at each by :func:`_line_minimum`; the decade scan; and the bracket of
+    ln K (a decade either side of its best)."""
     fit_k = "wear_coefficient" in names
 
-    def best_k(
-        values: dict[str, float], around: float | None = None
-    ) -> tuple[float, float, tuple[tuple[float, float], ...]]:
-        """Best K at ``values`` (m closed-form): from the decade scan, or, ``around`` a known
-        ln K, by a bounded Brent search a decade either side; its RMS; the scan."""
-        objective = _Objective(
+    def objective(values: dict[str, float]) -> _Objective:
+        """The residual in ln K at the other parameters ``values`` (m closed-form)."""
+        return _Objective(
             lambda k: _History(*model.run({**values, "wear_coefficient": k}), data.quantity),
             data,
             fit_scale,
             model.max_evaluations,
         )
-        if not fit_k:
-            ln_k = math.log(values["wear_coefficient"])
-            return values["wear_coefficient"], objective.rms_at(ln_k)[0], ()
-        scan: tuple[tuple[float, float], ...] = ()
-        if around is None:
-            ln_k, scanned = _scan(objective, math.log(values["wear_coefficient"]), scan_steps)
-            best = _refine(objective, ln_k, scanned, refine_steps)
-            scan = tuple((math.exp(v), objective.rms_at(v)[0]) for v in scanned)
-            if len(names) == 1:
-                return math.exp(best), objective.rms_at(best)[0], scan
-        else:
-            ln_k = best = around
-        line = minimize_scalar(  # other parameters make the valley in ln K sharper
-            lambda v: objective.rms_at(v)[0],
-            bounds=(ln_k - _LN10, ln_k + _LN10),
-            method="bounded",
-            options={"xatol": 0.05, "maxiter": 8},
-        )
-        if line.fun < objective.rms_at(best)[0]:
-            best = float(line.x)
-        return math.exp(best), objective.rms_at(best)[0], scan
 
-    k, rms, scan = best_k(base)
-    current = {**base, "wear_coefficient": k}
+    first = objective(base)
+    ln_k = math.log(base["wear_coefficient"])
+    scan: tuple[tuple[float, float], ...] = ()
+    if fit_k:
+        best, scanned = _scan(first, ln_k, scan_steps)
+        ln_k = _refine(first, best, scanned, refine_steps)
+        scan = tuple((math.exp(v), first.rms_at(v)[0]) for v in scanned)
+    current, rms = {**base, "wear_coefficient": math.exp(ln_k)}, first.rms_at(ln_k)[0]
     for name in (n for n in names if n != "wear_coefficient"):
         for trial in _grid(name, current[name])[1:]:
+            values = {**current, name: trial}
             try:
-                k_t, rms_t, _ = best_k(
-                    {**current, name: trial}, math.log(current["wear_coefficient"])
-                )
+                if fit_k:
+                    ln_t, rms_t = _line_minimum(objective(values), math.log(current[_K]))
+                else:
+                    ln_t, rms_t = ln_k, objective(values).rms_at(ln_k)[0]
             except CalibrationError:  # K cannot reach the data at this trial value
                 continue
             if rms_t < rms:
-                current, rms = {**current, name: trial, "wear_coefficient": k_t}, rms_t
+                current, rms = {**values, _K: math.exp(ln_t)}, rms_t
     bracket = None
     if fit_k:
-        ln_k = math.log(current["wear_coefficient"])
+        ln_k = math.log(current[_K])
         bracket = (ln_k - _LN10, ln_k + _LN10)
     return current, scan, bracket
+
+
+def _line_minimum(
+    objective: _Objective, centre: float, step: float = 0.5, max_runs: int = 5
+) -> tuple[float, float]:
+    """(ln K, RMS) of the least residual in ln K near ``centre``: three runs ``step`` apart,
+    extended _downhill until the least is bracketed, then quadratic-surrogate steps
+    (:func:`ballscrew.calibration.fit._surrogate_minimum`) to 0.02; at most ``max_runs`` runs
+    after the first three."""
+    rms = {x: objective.rms_at(x)[0] for x in (centre - step, centre, centre + step)}
+    for _ in range(max_runs):
+        nxt = _downhill(rms, step)
+        if nxt is None:
+            best = min(rms, key=rms.__getitem__)
+            nearest = sorted(rms, key=lambda v: abs(v - best))[:3]
+            nxt = _surrogate_minimum(objective, nearest)
+            if any(abs(nxt - v) < 0.02 for v in rms):
+                break
+        if not _LN_K_MIN <= nxt <= _LN_K_MAX:
+            raise CalibrationError(f"the best K lies beyond {math.exp(nxt):.3g}")
+        rms[nxt] = objective.rms_at(nxt)[0]
+    best = min(rms, key=rms.__getitem__)
+    return best, rms[best]
 
 
 @dataclass(frozen=True)
