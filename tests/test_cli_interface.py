@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
+import errno
 import json
 import re
-import sys
-import types
 from pathlib import Path
 
 import pytest
@@ -14,6 +13,7 @@ from typer.testing import CliRunner
 
 import ballscrew
 from ballscrew.cli import app
+from ballscrew.results import writer
 from quick_cases import QUICK, write_case
 
 GROUP = typer.main.get_command(app)  # the click group of the app
@@ -113,16 +113,14 @@ def test_a_bad_set_is_one_line_naming_the_key(tmp_path, quick_case, setting, mes
 
 @pytest.fixture
 def fake_export(monkeypatch):
-    """``ballscrew.results.export`` replaced by a module recording its calls."""
+    """The exporter of the results writer replaced by one recording its calls."""
     calls: list[tuple[Path, tuple[str, ...]]] = []
-    module = types.ModuleType("ballscrew.results.export")
 
     def export_results(folder, formats):
-        calls.append((folder, tuple(formats)))
+        calls.append((Path(folder), tuple(formats)))
         return []
 
-    module.export_results = export_results  # type: ignore[attr-defined]
-    monkeypatch.setitem(sys.modules, "ballscrew.results.export", module)
+    monkeypatch.setattr(writer, "export_results", export_results)
     return calls
 
 
@@ -169,7 +167,35 @@ def test_a_run_with_set_export_and_a_warning(tmp_path, quick_case, fake_export):
     assert any(w.startswith(expected) for w in summary["warnings"])
     assert expected in (out / "report.html").read_text()
 
-    assert fake_export == [(out.resolve(), ("csv", "xlsx", "mat"))]
+    # exported inside the atomic write: into the scratch folder that then becomes the folder
+    [(folder, formats)] = fake_export
+    assert formats == ("csv", "xlsx", "mat")
+    assert folder.parent == out.resolve().parent and folder.name.startswith(".out.partial-")
+
+
+def test_a_failing_export_writes_nothing_and_keeps_the_previous_folder(
+    tmp_path, quick_case, monkeypatch
+):
+    """An export that fails (here: a full disk) is one line and exit status 2; the folder of
+    the earlier run stays as it was and a new folder is not written at all."""
+    out = tmp_path / "out"
+    assert run("operating-point", quick_case, "-q", "--out", out).exit_code == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+
+    def full_disk(folder, formats):
+        (Path(folder) / "summary.csv").write_text("key,value,unit\n")  # half written
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(writer, "export_results", full_disk)
+    for folder in (out, tmp_path / "new"):
+        result = run("operating-point", quick_case, "--out", folder, "--export", "csv")
+        assert result.exit_code == 2
+        assert result.output.strip().splitlines() == [
+            f"error: cannot write the results {folder.resolve()}: No space left on device"
+        ]
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert not (tmp_path / "new").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([quick_case.name, "out"])
 
 
 def test_quiet_after_the_command_prints_only_the_folder(tmp_path, quick_case):

@@ -18,7 +18,7 @@ from typing import Annotated, TextIO
 import typer
 
 from ballscrew import __version__, commands
-from ballscrew.commands._common import set_verbosity
+from ballscrew.commands._common import QuietOpt, VerboseOpt, set_verbosity
 
 app = typer.Typer(
     name="ballscrew",
@@ -39,12 +39,8 @@ def _version(show: bool) -> None:
 
 @app.callback()
 def main(
-    verbose: Annotated[
-        bool, typer.Option("--verbose", "-v", help="more output: every step of long work")
-    ] = False,
-    quiet: Annotated[
-        bool, typer.Option("--quiet", "-q", help="only errors and the folder")
-    ] = False,
+    verbose: VerboseOpt = False,
+    quiet: QuietOpt = False,
     version: Annotated[
         bool, typer.Option("--version", callback=_version, is_eager=True, help="show version")
     ] = False,

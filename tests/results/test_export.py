@@ -16,7 +16,13 @@ from scipy.io import loadmat
 from ballscrew.errors import InputError
 from ballscrew.results import export_results, write_results
 from ballscrew.results.export import matlab_name
-from ballscrew.results.folder import MARKER_NAME, check_output_folder
+from ballscrew.results.folder import (
+    MARKER_NAME,
+    check_output_folder,
+    claim_output,
+    prepare_sweep_folder,
+)
+from ballscrew.results.sweep_report import write_sweep
 
 RNG = np.random.default_rng(7)
 TIME = np.linspace(0.0, 3600.0, 7)
@@ -167,3 +173,26 @@ def test_matlab_names_are_valid_and_unique():
     names = [matlab_name(n, taken) for n in ["nut1.force", "nut1_force", "2x", "a" * 80]]
     assert names[:3] == ["nut1_force", "nut1_force_2", "x_2x"]
     assert len(names[3]) == 63
+
+
+def test_a_sweep_folder_writes_its_exports_with_the_rest(tmp_path):
+    """A sweep exports within its own write: the files are there and listed in its marker."""
+    data = xr.Dataset(
+        {
+            "R": (("F",), np.array([2.0, 1.5]), {"units": "K/W"}),
+            "error": (("F",), np.array(["", ""])),
+            "failed": (("F",), np.array([False, False])),
+        },
+        coords={"F": ("F", np.array([0.0, 1e3]), {"units": "N"})},
+        attrs={"analysis": "tcr", "case": "demo", "points": 2},
+    )
+    out = tmp_path / "sweep"
+    with claim_output(out, command="sweep"):
+        prepare_sweep_folder(out)
+        write_sweep(data, out, 2, export=["csv"])
+    with (out / "sweep_F.csv").open() as fh:
+        rows = list(csv.reader(fh))
+    assert rows == [["F [N]", "R [K/W]", "error", "failed"], ["0.0", "2.0", "", "False"],
+                    ["1000.0", "1.5", "", "False"]]  # fmt: skip
+    files = json.loads((out / MARKER_NAME).read_text())["files"]
+    assert {"summary.csv", "sweep_F.csv"} <= set(files)

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from ballscrew.results.headlines import format_entry, headline_keys, headline_rows, label_of
+from ballscrew.results.display import readable
+from ballscrew.results.headlines import format_entry, headline_keys, headline_rows
 
 
 @pytest.mark.parametrize(
@@ -26,10 +27,26 @@ def test_summary_entries_read_in_engineering_units(key, entry, text):
     assert format_entry(key, entry) == text
 
 
-def test_labels_leave_out_the_grouping_keys():
-    assert label_of("contacts.screw.numerical.peak_pressure") == "screw peak pressure"
-    assert label_of("nuts.nut1.orbital_speed") == "nut1 orbital speed"
-    assert label_of("ball_load") == "ball load"
+@pytest.mark.parametrize(
+    ("key", "label"),
+    [
+        ("contacts.screw.numerical.peak_pressure", "screw: peak pressure"),
+        ("nuts.nut1.orbital_speed", "nut 1: orbital speed"),
+        ("heat_balance.heat_input", "heat input"),
+        ("drag_torque.ball_model", "drag torque: ball model"),
+        ("recommended.D", "D"),
+        ("ball_load", "ball load"),
+    ],
+)
+def test_labels_leave_out_the_grouping_keys(key, label):
+    assert readable(key) == label
+
+
+def test_headlines_and_plots_spell_a_name_alike():
+    """One spelling of a name on the console, the report, the index page and the plot axes."""
+    summary = {"nuts": {"nut1": {"orbital_speed": {"value": 4.652, "unit": "rad/s"}}}}
+    [(label, _)] = headline_rows(summary, ["nuts.nut1.orbital_speed"])
+    assert label == readable("nut1.orbital_speed") == "nut 1: orbital speed"
 
 
 def test_rows_follow_the_declared_headlines():

@@ -1,9 +1,12 @@
 """Options, console output and error handling shared by every subcommand.
 
 Every command function is decorated with :func:`command`, which adds ``-q/--quiet`` and
-``-v/--verbose``, shows one progress bar (with ETA) for long work, prints the headline numbers
-and the results folder, and turns :class:`~ballscrew.errors.BallscrewError` into one line on
-stderr and exit status 2.
+``-v/--verbose``, shows one progress bar (with ETA) for long work and turns
+:class:`~ballscrew.errors.BallscrewError` into one line on stderr and exit status 2. A command
+that writes a results folder is decorated with :func:`writes_results` instead, which also adds
+``--out``, ``--force``, ``--export`` (and ``--set``) and hands the command an :class:`Output`:
+it writes the folder with its exports in one atomic step and prints the headline numbers and
+the folder.
 """
 
 from __future__ import annotations
@@ -12,15 +15,20 @@ import inspect
 import json
 import logging
 import sys
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
+from dataclasses import dataclass, field
 from functools import wraps
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
 from ballscrew.errors import BallscrewError, InputError
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.result import AnalysisResult
+    from ballscrew.case import Case
 
 CaseArg = Annotated[
     Path,
@@ -50,8 +58,6 @@ SetOpt = Annotated[
         show_default=False,
     ),
 ]
-EXPORT_FORMATS = ("csv", "xlsx", "mat")
-"""Formats ``--export`` accepts (besides the NetCDF and JSON every results folder holds)."""
 ExportOpt = Annotated[
     str | None,
     typer.Option(
@@ -66,6 +72,19 @@ VerboseOpt = Annotated[
     bool, typer.Option("--verbose", "-v", help="more output: every step of long work")
 ]
 QuietOpt = Annotated[bool, typer.Option("--quiet", "-q", help="only errors and the folder")]
+SpeedOpt = Annotated[
+    str | None,
+    typer.Option(
+        help='screw speed, e.g. "1500 rpm" or 157.1 (rad/s); default: the case\'s',
+        metavar="SPEED",
+    ),
+]
+ThermalModelOpt = Annotated[
+    str | None,
+    typer.Option(
+        help="axisymmetric, network or 3d (default: the case's thermal.model)", metavar="NAME"
+    ),
+]
 
 log = logging.getLogger("ballscrew")
 
@@ -97,6 +116,22 @@ def user_errors_exit_2(function: Callable[..., Any]) -> Callable[..., Any]:
     return wrapper
 
 
+def _keyword(name: str, annotation: Any, default: Any) -> inspect.Parameter:
+    return inspect.Parameter(
+        name, inspect.Parameter.KEYWORD_ONLY, default=default, annotation=annotation
+    )
+
+
+def _with_parameters(
+    wrapper: Callable[..., Any], parameters: Sequence[inspect.Parameter]
+) -> Callable[..., Any]:
+    """``wrapper`` showing ``parameters`` to typer (each keyword-only, so any order is valid)."""
+    keyword = [p.replace(kind=inspect.Parameter.KEYWORD_ONLY) for p in parameters]
+    wrapper.__signature__ = inspect.Signature(keyword)  # type: ignore[attr-defined]
+    wrapper.__annotations__ = {p.name: p.annotation for p in keyword}
+    return wrapper
+
+
 def command(function: Callable[..., Any]) -> Callable[..., Any]:
     """A subcommand: ``function`` with ``-q/--quiet`` and ``-v/--verbose`` added, a progress
     bar for long work, and user errors as one line and exit status 2.
@@ -104,15 +139,6 @@ def command(function: Callable[..., Any]) -> Callable[..., Any]:
     The options also work before the command name (``ballscrew -q wear …``).
     """
     signature = inspect.signature(function, eval_str=True)
-    extra = [
-        inspect.Parameter(
-            "verbose", inspect.Parameter.KEYWORD_ONLY, default=False, annotation=VerboseOpt
-        ),
-        inspect.Parameter(
-            "quiet", inspect.Parameter.KEYWORD_ONLY, default=False, annotation=QuietOpt
-        ),
-    ]
-    parameters = [*signature.parameters.values(), *extra]
 
     @user_errors_exit_2
     @wraps(function)
@@ -122,9 +148,96 @@ def command(function: Callable[..., Any]) -> Callable[..., Any]:
         with progress_bar():
             return function(*args, **kwargs)
 
-    wrapper.__signature__ = signature.replace(parameters=parameters)  # type: ignore[attr-defined]
-    wrapper.__annotations__ = {p.name: p.annotation for p in parameters}
-    return wrapper
+    extra = [_keyword("verbose", VerboseOpt, False), _keyword("quiet", QuietOpt, False)]
+    return _with_parameters(wrapper, [*signature.parameters.values(), *extra])
+
+
+@dataclass(frozen=True)
+class Output:
+    """Where and how a command writes its results folder: ``--out``, ``--force``, the
+    ``--export`` formats and the ``--set`` case overrides of the command ``command``."""
+
+    command: str
+    out: Path
+    force: bool = False
+    formats: tuple[str, ...] = ()
+    overrides: Mapping[str, Any] = field(default_factory=dict)
+
+    def load_case(self, case_file: Path) -> Case:
+        """The case of ``case_file`` with the ``--set`` values applied."""
+        from ballscrew.case import load_case
+
+        return load_case(case_file, self.overrides)
+
+    @contextmanager
+    def claim(self, *inputs: Path) -> Iterator[Path]:
+        """Hold the results folder for the run (``ballscrew.results.claim_output``); yields its
+        resolved path. ``inputs``: the files the run reads, which the folder must not hold."""
+        from ballscrew.results import claim_output
+
+        with claim_output(self.out, command=self.command, force=self.force, inputs=inputs) as path:
+            yield path
+
+    def write(
+        self,
+        result: AnalysisResult,
+        case_file: Path | None = None,
+        extra_files: Mapping[str, bytes] | None = None,
+    ) -> None:
+        """Write the results folder of ``result`` with its exports, complete or not at all
+        (``ballscrew.results.write_results``), then print its headlines and the folder."""
+        from ballscrew.results import write_results
+
+        finish(write_results(result, self.out, case_file, extra_files, export=self.formats))
+
+    def analyse(self, case_file: Path, run: Callable[[Case], AnalysisResult]) -> None:
+        """The flow of a command on one case: read it with the ``--set`` values, claim the
+        folder, ``run(case)`` and write the results."""
+        case = self.load_case(case_file)
+        with self.claim(case_file):
+            self.write(run(case), case_file)
+
+
+def writes_results(
+    function: Callable[..., Any] | None = None, *, sets: bool = True
+) -> Callable[..., Any]:
+    """A :func:`command` that writes a results folder: ``function(…, output=Output)``.
+
+    Adds ``--out`` (default ``results/<command>``) after the command's first parameter (its
+    input file) and ``--force``, ``--set`` (unless ``sets`` is false) and ``--export`` after
+    its own options; the ``--export`` and ``--set`` values are checked before any work.
+    """
+    if function is None:
+        return lambda f: writes_results(f, sets=sets)
+    name = function.__name__.replace("_", "-")
+    own = [
+        p
+        for p in inspect.signature(function, eval_str=True).parameters.values()
+        if p.name != "output"
+    ]
+    parameters = [
+        *own[:1],
+        _keyword("out", OutOpt, Path("results") / name),
+        *own[1:],
+        _keyword("force", ForceOpt, False),
+        *([_keyword("set_", SetOpt, None)] if sets else []),
+        _keyword("export", ExportOpt, None),
+    ]
+
+    @wraps(function)
+    def wrapper(
+        *args: Any,
+        out: Path,
+        force: bool = False,
+        set_: list[str] | None = None,
+        export: str | None = None,
+        **kwargs: Any,
+    ) -> Any:
+        formats = export_formats(export)
+        output = Output(name, out, force, formats, parse_sets(set_))
+        return function(*args, output=output, **kwargs)
+
+    return command(_with_parameters(wrapper, parameters))
 
 
 @contextmanager
@@ -184,38 +297,16 @@ def parse_sets(texts: Sequence[str] | None) -> dict[str, Any]:
 
 
 def export_formats(text: str | None) -> tuple[str, ...]:
-    """The formats of ``--export`` (``"csv,xlsx"``), each once; :class:`InputError` for others."""
+    """The formats of ``--export`` (``"csv,xlsx"``), each once, checked by
+    ``ballscrew.results.export.parse_formats``; :class:`InputError` for none or others."""
     if text is None:
         return ()
-    formats = tuple(dict.fromkeys(f.strip().lower() for f in text.split(",") if f.strip()))
-    unknown = [f for f in formats if f not in EXPORT_FORMATS]
-    if unknown or not formats:
-        allowed = f"a comma-separated list of {', '.join(EXPORT_FORMATS)}"
-        raise InputError("--export", text, allowed)
+    from ballscrew.results.export import FORMATS, parse_formats
+
+    formats = tuple(parse_formats(text))
+    if not formats:
+        raise InputError("--export", text, f"a comma-separated list of {', '.join(FORMATS)}")
     return formats
-
-
-def analyse(
-    name: str,
-    case_file: Path,
-    out: Path,
-    options: tuple[bool, list[str] | None, str | None],
-    run: Callable[[Any], Any],
-) -> None:
-    """The flow of a command on one case: read it with the ``--set`` values, ``run(case)``,
-    write the results folder of the result, export it and print its headlines.
-
-    ``options``: the command's ``(--force, --set, --export)``.
-    """
-    from ballscrew.case import load_case
-    from ballscrew.results import claim_output, write_results
-
-    force, sets, export = options
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(sets))
-    with claim_output(out, command=name, force=force, inputs=[case_file]):
-        folder = write_results(run(case), out, case_file)
-        finish(folder, formats)
 
 
 def quantity_option(option: str, text: str | None, kind: str) -> float | None:
@@ -230,16 +321,13 @@ def quantity_option(option: str, text: str | None, kind: str) -> float | None:
         raise InputError(option, text, str(exc)) from None
 
 
-def finish(folder: Path, formats: Sequence[str] = ()) -> None:
-    """After a results folder is written: the exports, the headline numbers and the folder.
+def finish(folder: Path) -> None:
+    """After a results folder is written (with its exports): its headline numbers and the
+    folder.
 
     The headlines are those of ``summary.json`` in engineering units (the index page shows the
     same numbers); with ``--quiet`` only the folder is printed.
     """
-    if formats:
-        from ballscrew.results.export import export_results
-
-        export_results(folder, formats)
     for bar in _BARS:
         bar.stop()  # the work is done: the bar leaves the terminal to the numbers
     if not is_quiet():

@@ -7,18 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import (
-    CaseArg,
-    ExportOpt,
-    ForceOpt,
-    OutOpt,
-    SetOpt,
-    command,
-    export_formats,
-    finish,
-    log,
-    parse_sets,
-)
+from ballscrew.commands._common import CaseArg, Output, log, writes_results
 
 MeasuredOpt = Annotated[
     Path,
@@ -33,40 +22,42 @@ MeasuredOpt = Annotated[
     ),
 ]
 
+FitTorqueScaleOpt = Annotated[
+    bool,
+    typer.Option(
+        "--fit-torque-scale",
+        help="also fit the drag-torque scale (friction_torque data only; the default there)",
+    ),
+]
+FitOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--fit",
+        help="parameters to fit, comma-separated: wear_coefficient, torque_scale, "
+        "film_factor, running_in_depth (default: wear_coefficient, and torque_scale for "
+        "friction_torque data)",
+        show_default=False,
+    ),
+]
+FitUntilOpt = Annotated[
+    float | None,
+    typer.Option(
+        "--fit-until",
+        help="fit the points up to N revolutions and report the prediction error on the rest",
+        show_default=False,
+    ),
+]
 
-@command
+
+@writes_results
 def calibrate(
     case_file: CaseArg,
     measured: MeasuredOpt,
-    out: OutOpt = Path("results/calibrate"),
-    fit_torque_scale: Annotated[
-        bool,
-        typer.Option(
-            "--fit-torque-scale",
-            help="also fit the drag-torque scale (friction_torque data only; the default there)",
-        ),
-    ] = False,
-    fit: Annotated[
-        str | None,
-        typer.Option(
-            "--fit",
-            help="parameters to fit, comma-separated: wear_coefficient, torque_scale, "
-            "film_factor, running_in_depth (default: wear_coefficient, and torque_scale for "
-            "friction_torque data)",
-            show_default=False,
-        ),
-    ] = None,
-    fit_until: Annotated[
-        float | None,
-        typer.Option(
-            "--fit-until",
-            help="fit the points up to N revolutions and report the prediction error on the rest",
-            show_default=False,
-        ),
-    ] = None,
-    force: ForceOpt = False,
-    set_: SetOpt = None,
-    export: ExportOpt = None,
+    fit_torque_scale: FitTorqueScaleOpt = False,
+    fit: FitOpt = None,
+    fit_until: FitUntilOpt = None,
+    *,
+    output: Output,
 ) -> None:
     """Fit the wear model (K, torque scale, …) to a measured history."""
     from dataclasses import replace
@@ -74,12 +65,10 @@ def calibrate(
     from ballscrew.calibration import DEFAULT_FIT, read_measured
     from ballscrew.calibration import calibrate as calibrate_case
     from ballscrew.calibration.report import fit_table
-    from ballscrew.case import load_case
     from ballscrew.errors import InputError
-    from ballscrew.results import claim_output, value, write_results
+    from ballscrew.results import value
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
+    case = output.load_case(case_file)
     names: tuple[str, ...] = DEFAULT_FIT
     if fit is not None:
         names = tuple(n.strip() for n in fit.split(",") if n.strip())
@@ -90,8 +79,7 @@ def calibrate(
         raise InputError(
             "--fit-torque-scale", True, f"only with friction_torque data (got {data.quantity})"
         )
-    inputs = [case_file, measured]
-    with claim_output(out, command="calibrate", force=force, inputs=inputs):
+    with output.claim(case_file, measured):
         log.info("fitting to %d %s points of %s", len(data), data.quantity, data.source)
         result = calibrate_case(case, data, fit=names, fit_until=fit_until)
         log.info(
@@ -118,5 +106,4 @@ def calibrate(
             options["programme_revolutions"] = sum(lv.revolutions for lv in case.wear.programme)
         result = replace(result, case=case, options=options)
         fit_csv = fit_table(result).encode("utf-8")  # the fit table for spreadsheets
-        folder = write_results(result, out, case_file, {"fit.csv": fit_csv})
-        finish(folder, formats)
+        output.write(result, case_file, {"fit.csv": fit_csv})

@@ -2,28 +2,12 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
-from ballscrew.commands._common import (
-    CaseArg,
-    ExportOpt,
-    ForceOpt,
-    OutOpt,
-    SetOpt,
-    analyse,
-    command,
-)
+from ballscrew.commands._common import CaseArg, Output, writes_results
 
 
-@command
-def check(
-    case_file: CaseArg,
-    out: OutOpt = Path("results/check"),
-    force: ForceOpt = False,
-    set_: SetOpt = None,
-    export: ExportOpt = None,
-) -> None:
+@writes_results
+def check(case_file: CaseArg, *, output: Output) -> None:
     """Every design value of the screw with its margin (needs a [design] section)."""
     from ballscrew.analyses.design_check import design_check
 
-    analyse("check", case_file, out, (force, set_, export), design_check)
+    output.analyse(case_file, design_check)

@@ -2,28 +2,12 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
-from ballscrew.commands._common import (
-    CaseArg,
-    ExportOpt,
-    ForceOpt,
-    OutOpt,
-    SetOpt,
-    analyse,
-    command,
-)
+from ballscrew.commands._common import CaseArg, Output, writes_results
 
 
-@command
-def contact(
-    case_file: CaseArg,
-    out: OutOpt = Path("results/contact"),
-    force: ForceOpt = False,
-    set_: SetOpt = None,
-    export: ExportOpt = None,
-) -> None:
+@writes_results
+def contact(case_file: CaseArg, *, output: Output) -> None:
     """Solve the screw-side and nut-side contact of one ball of the loaded nut."""
     from ballscrew.analyses.ball_contact import solve_ball_contacts
 
-    analyse("contact", case_file, out, (force, set_, export), solve_ball_contacts)
+    output.analyse(case_file, solve_ball_contacts)

@@ -2,42 +2,32 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from ballscrew.commands._common import (
     CaseArg,
-    ExportOpt,
-    ForceOpt,
-    OutOpt,
-    SetOpt,
-    analyse,
-    command,
+    Output,
+    SpeedOpt,
     log,
     quantity_option,
+    writes_results,
 )
 
+if TYPE_CHECKING:
+    from ballscrew.analyses.kinematics import KinematicsRun
+    from ballscrew.case import Case
 
-@command
+LevelOpt = Annotated[
+    int | None,
+    typer.Option(help="ball balance level 0, 1 or 2 (default: the case's)", metavar="LEVEL"),
+]
+
+
+@writes_results
 def kinematics(
-    case_file: CaseArg,
-    out: OutOpt = Path("results/kinematics"),
-    force: ForceOpt = False,
-    level: Annotated[
-        int | None,
-        typer.Option(help="ball balance level 0, 1 or 2 (default: the case's)", metavar="LEVEL"),
-    ] = None,
-    speed: Annotated[
-        str | None,
-        typer.Option(
-            help='screw speed, e.g. "3000 rpm" or 314.16 (rad/s); default: the case\'s',
-            metavar="SPEED",
-        ),
-    ] = None,
-    set_: SetOpt = None,
-    export: ExportOpt = None,
+    case_file: CaseArg, level: LevelOpt = None, speed: SpeedOpt = None, *, output: Output
 ) -> None:
     """Ball speeds, spins, loads and contact angles, film, asperity share and drag torque."""
     import warnings
@@ -47,7 +37,7 @@ def kinematics(
 
     omega = quantity_option("--speed", speed, "angular_velocity")
 
-    def run(case: Any) -> Any:
+    def run(case: Case) -> KinematicsRun:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", SpeedLimitWarning)
             result = run_kinematics(case, level=level, speed=omega)
@@ -56,4 +46,4 @@ def kinematics(
                 log.warning("warning: %s", item.message)
         return result
 
-    analyse("kinematics", case_file, out, (force, set_, export), run)
+    output.analyse(case_file, run)

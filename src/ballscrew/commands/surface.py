@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import ExportOpt, ForceOpt, OutOpt, command, export_formats, finish
+from ballscrew.commands._common import Output, quantity_option, writes_results
 
 ProfileArg = Annotated[
     Path,
@@ -18,51 +18,36 @@ ProfileArg = Annotated[
         metavar="PROFILE_FILE",
     ),
 ]
+SpacingOpt = Annotated[
+    str | None,
+    typer.Option(
+        help="sampling interval of a one-column text file, e.g. '0.5 µm'", metavar="LENGTH"
+    ),
+]
+ResolutionOpt = Annotated[
+    str | None,
+    typer.Option(
+        help="instrument lateral resolution if coarser than the spacing", metavar="LENGTH"
+    ),
+]
+GammaOpt = Annotated[float, typer.Option(help="W-M frequency ratio γ", metavar="NUMBER")]
 
 
-def _length(text: str | None, option: str) -> float | None:
-    from ballscrew.errors import InputError
-    from ballscrew.units import to_si
-
-    if text is None:
-        return None
-    try:
-        return to_si(text, "length")
-    except ValueError as exc:
-        raise InputError(option, text, f"a length such as '0.5 µm' ({exc})") from None
-
-
-@command
+@writes_results(sets=False)
 def surface(
     profile_file: ProfileArg,
-    out: OutOpt = Path("results/surface"),
-    spacing: Annotated[
-        str | None,
-        typer.Option(
-            help="sampling interval of a one-column text file, e.g. '0.5 µm'", metavar="LENGTH"
-        ),
-    ] = None,
-    resolution: Annotated[
-        str | None,
-        typer.Option(
-            help="instrument lateral resolution if coarser than the spacing", metavar="LENGTH"
-        ),
-    ] = None,
-    gamma: Annotated[float, typer.Option(help="W-M frequency ratio γ", metavar="NUMBER")] = 1.5,
-    force: ForceOpt = False,
-    export: ExportOpt = None,
+    spacing: SpacingOpt = None,
+    resolution: ResolutionOpt = None,
+    gamma: GammaOpt = 1.5,
+    *,
+    output: Output,
 ) -> None:
     """Fractal dimension D and roughness G by power spectrum and structure function."""
     from ballscrew.analyses.surface import surface_characterisation
-    from ballscrew.results import claim_output, write_results
 
-    formats = export_formats(export)
-    with claim_output(out, command="surface", force=force, inputs=[profile_file]):
+    lateral = quantity_option("--resolution", resolution, "length")
+    with output.claim(profile_file):
         result = surface_characterisation(
-            profile_file,
-            spacing=spacing,
-            resolution=_length(resolution, "--resolution"),
-            gamma=gamma,
+            profile_file, spacing=spacing, resolution=lateral, gamma=gamma
         )
-        folder = write_results(result, out)
-        finish(folder, formats)
+        output.write(result)

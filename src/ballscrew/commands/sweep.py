@@ -7,73 +7,65 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import (
-    ExportOpt,
-    ForceOpt,
-    OutOpt,
-    SetOpt,
-    command,
-    export_formats,
-    finish,
-    parse_sets,
-)
+from ballscrew.commands._common import Output, finish, writes_results
+
+SweepCaseArg = Annotated[
+    Path,
+    typer.Argument(
+        help="case file, or sweep file with a [sweep] table",
+        dir_okay=False,
+        metavar="CASE_FILE",
+    ),
+]
+VaryOpt = Annotated[
+    list[str] | None,
+    typer.Option(
+        help="KEY=START:STOP:NUM or KEY=V1,V2,... with or without units, e.g. "
+        "--vary 'operating.speed=500 rpm:3000 rpm:6' (repeat for a grid)",
+        metavar="KEY=RANGE",
+    ),
+]
+AnalysisOpt = Annotated[
+    str | None,
+    typer.Option(help="analysis run at each point (default: tcr)", metavar="NAME"),
+]
+SchedulerOpt = Annotated[
+    str | None,
+    typer.Option(help="address of a running Dask scheduler (default: local)", metavar="ADDRESS"),
+]
+WorkersOpt = Annotated[int, typer.Option(min=1, help="local cluster workers", metavar="N")]
+RetryFailedOpt = Annotated[
+    bool, typer.Option(help="recompute points that failed in an earlier run")
+]
 
 
-@command
+@writes_results
 def sweep(
-    case_file: Annotated[
-        Path,
-        typer.Argument(
-            help="case file, or sweep file with a [sweep] table",
-            dir_okay=False,
-            metavar="CASE_FILE",
-        ),
-    ],
-    vary: Annotated[
-        list[str] | None,
-        typer.Option(
-            help="KEY=START:STOP:NUM or KEY=V1,V2,... with or without units, e.g. "
-            "--vary 'operating.speed=500 rpm:3000 rpm:6' (repeat for a grid)",
-            metavar="KEY=RANGE",
-        ),
-    ] = None,
-    analysis: Annotated[
-        str | None,
-        typer.Option(help="analysis run at each point (default: tcr)", metavar="NAME"),
-    ] = None,
-    out: OutOpt = Path("results/sweep"),
-    scheduler: Annotated[
-        str | None,
-        typer.Option(
-            help="address of a running Dask scheduler (default: local)", metavar="ADDRESS"
-        ),
-    ] = None,
-    workers: Annotated[int, typer.Option(min=1, help="local cluster workers", metavar="N")] = 2,
-    retry_failed: Annotated[
-        bool, typer.Option(help="recompute points that failed in an earlier run")
-    ] = False,
-    force: ForceOpt = False,
-    set_: SetOpt = None,
-    export: ExportOpt = None,
+    case_file: SweepCaseArg,
+    vary: VaryOpt = None,
+    analysis: AnalysisOpt = None,
+    scheduler: SchedulerOpt = None,
+    workers: WorkersOpt = 2,
+    retry_failed: RetryFailedOpt = False,
+    *,
+    output: Output,
 ) -> None:
     """Run an analysis over a grid of case values on Dask; re-runs skip finished points."""
-    from ballscrew.case import CaseError, load_case, with_overrides
+    from ballscrew.case import CaseError, with_overrides
     from ballscrew.progress import advance
-    from ballscrew.results.folder import claim_output, prepare_sweep_folder
+    from ballscrew.results.folder import prepare_sweep_folder
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
     from ballscrew.sweep.registry import get_analysis
     from ballscrew.sweep.spec import check_sweep_size, is_sweep_file, load_sweep, merge_axes
 
-    formats = export_formats(export)
-    overrides = parse_sets(set_)
     extra = [parse_axis(text) for text in vary or []]
     if is_sweep_file(case_file):
         spec = load_sweep(case_file)
-        case, axes = with_overrides(spec.case, overrides), merge_axes(spec.axes, extra)
+        case, axes = with_overrides(spec.case, output.overrides), merge_axes(spec.axes, extra)
         name = analysis or spec.analysis or "tcr"
     else:
-        case, axes, name = load_case(case_file, overrides), tuple(extra), analysis or "tcr"
+        case, axes, name = output.load_case(case_file), tuple(extra), analysis or "tcr"
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     check_sweep_size(axes)
@@ -82,10 +74,9 @@ def sweep(
     def progress(done: int, total: int) -> None:
         advance("sweep points", done, total)
 
-    with claim_output(out, command="sweep", force=force, inputs=[case_file]) as folder:
+    with output.claim(case_file) as folder:
         prepare_sweep_folder(folder)
         dataset, computed = run_sweep(
             case, axes, function, name, folder, scheduler, workers, progress, retry_failed
         )
-        write_sweep(dataset, folder, computed, case, axes)
-        finish(folder, formats)
+        finish(write_sweep(dataset, folder, computed, case, axes, export=output.formats))

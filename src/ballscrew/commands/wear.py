@@ -7,18 +7,15 @@ from typing import Annotated
 
 import typer
 
-from ballscrew.commands._common import (
-    CaseArg,
-    ExportOpt,
-    ForceOpt,
-    OutOpt,
-    SetOpt,
-    command,
-    export_formats,
-    finish,
-    log,
-    parse_sets,
-)
+from ballscrew.commands._common import CaseArg, Output, log, writes_results
+
+ResumeOpt = Annotated[
+    bool,
+    typer.Option(
+        "--resume/--restart",
+        help="continue a stopped run from its checkpoint beside the results folder",
+    ),
+]
 
 
 def checkpoint_path(out: Path) -> Path:
@@ -27,32 +24,16 @@ def checkpoint_path(out: Path) -> Path:
     return out.parent / f".{out.name}.wear-state.npz"
 
 
-@command
-def wear(
-    case_file: CaseArg,
-    out: OutOpt = Path("results/wear"),
-    resume: Annotated[
-        bool,
-        typer.Option(
-            "--resume/--restart",
-            help="continue a stopped run from its checkpoint beside the results folder",
-        ),
-    ] = True,
-    force: ForceOpt = False,
-    set_: SetOpt = None,
-    export: ExportOpt = None,
-) -> None:
+@writes_results
+def wear(case_file: CaseArg, resume: ResumeOpt = True, *, output: Output) -> None:
     """Wear profile of the screw raceway, preload and drag torque versus revolutions."""
     from ballscrew.analyses.wear import wear_life
-    from ballscrew.case import load_case
     from ballscrew.errors import InputError
-    from ballscrew.results import claim_output, write_results
     from ballscrew.results.folder import writing
 
-    formats = export_formats(export)
-    case = load_case(case_file, parse_sets(set_))
-    with claim_output(out, command="wear", force=force, inputs=[case_file]) as path, writing(path):
-        state = checkpoint_path(out)
+    case = output.load_case(case_file)
+    with output.claim(case_file) as path, writing(path):
+        state = checkpoint_path(output.out)
         if not resume:
             state.unlink(missing_ok=True)
         try:
@@ -65,6 +46,5 @@ def wear(
             life = wear_life(case, checkpoint=state)
         # the final state, for a later run to continue from
         extra = {"state.npz": state.read_bytes()} if state.is_file() else {}
-        folder = write_results(life, out, case_file, extra)
+        output.write(life, case_file, extra)
         state.unlink(missing_ok=True)
-        finish(folder, formats)

@@ -60,20 +60,19 @@ def engineering(value: float, unit: str, key: str = "") -> tuple[float, str]:
 
 
 _NUT = re.compile(r"\bnut(\d+)\b")
+#: Case sections a name may start with; the words leave them out.
+_SECTIONS = {"operating", "numerics", "screw", "surface", "medium", "nuts"}
+#: Summary keys that only group entries; the words leave them out.
+_GROUPS = {"steady", "numerical", "recommended", "heat_balance", "contacts", "nuts", "margins"}
 
 
 def readable(name: str) -> str:
-    """A field name as words: ``nut1.orbital_speed`` → ``nut 1: orbital speed``,
-    ``operating.axial_load`` → ``axial load``, ``F1`` → ``F1``."""
+    """A field name or dotted summary key as words, for tables, plot axes and the console:
+    ``nuts.nut1.orbital_speed`` → ``nut 1: orbital speed``, ``operating.axial_load`` →
+    ``axial load``, ``contacts.screw.numerical.peak_pressure`` → ``screw: peak pressure``,
+    ``F1`` → ``F1``."""
     parts = [p for p in name.split(".") if p]
-    if len(parts) > 1 and parts[0] in (
-        "operating",
-        "numerics",
-        "screw",
-        "surface",
-        "medium",
-        "nuts",
-    ):
+    if len(parts) > 1 and parts[0] in _SECTIONS:
         parts = parts[1:]
-    words = [_NUT.sub(r"nut \1", p.replace("_", " ")) for p in parts]
-    return ": ".join(words)
+    parts = [p for p in parts if p not in _GROUPS] or parts[-1:]
+    return ": ".join(_NUT.sub(r"nut \1", p.replace("_", " ")) for p in parts)

@@ -12,19 +12,10 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from ballscrew.analyses.catalog import ANALYSES
+from ballscrew.results.display import readable
 from ballscrew.units import display_kind, format_number, format_quantity
 
-__all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
-
-#: Summary keys that only group entries; a label leaves them out.
-_GROUPS = {"steady", "numerical", "recommended", "heat_balance", "contacts", "nuts", "margins"}
-
-
-def label_of(dotted: str) -> str:
-    """A readable label of a dotted summary key: ``nuts.nut1.orbital_speed`` → ``nut1 orbital
-    speed``, ``contacts.screw.numerical.peak_pressure`` → ``screw peak pressure``."""
-    parts = [p for p in dotted.split(".") if p not in _GROUPS] or dotted.split(".")[-1:]
-    return " ".join(parts[-2:]).replace("_", " ")
+__all__ = ["format_entry", "headline_keys", "headline_rows"]
 
 
 def format_entry(dotted: str, entry: Any) -> str | None:
@@ -60,7 +51,7 @@ def headline_rows(
     summary: dict[str, Any],
     keys: Sequence[str] = (),
     most: int = 8,
-    label: Callable[[str], str] = label_of,
+    label: Callable[[str], str] = readable,
 ) -> list[tuple[str, str]]:
     """(label, value with unit) of the entries ``keys`` of ``summary`` that are numbers; with
     no keys, of its first top-level numbers. At most ``most`` rows."""

@@ -1,8 +1,9 @@
 """Results folder of ``ballscrew sweep``: sweep.nc, line/map plots and report.html.
 
-A sweep folder is written in place (it holds the point cache ``points/``), not by the generic
-writer, but its summary and report state the same inputs and warnings sections: the base case
-resolved with units, the axes and the analysis; one warning per failed point.
+A sweep folder is written in place (it holds the point cache ``points/``), exports included,
+not by the generic writer, but its summary and report state the same inputs and warnings
+sections: the base case resolved with units, the axes and the analysis; one warning per failed
+point.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from ballscrew.case import Case
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.plotting import legend_outside, line_styles, zero_noise
 from ballscrew.results.display import engineering_array, readable
+from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import (
     SUMMARY_NAME,
     SWEEP_PATTERNS,
@@ -145,16 +147,21 @@ def write_sweep(
     computed: int,
     case: Case | None = None,
     axes: Sequence[SweepAxis] = (),
+    export: Sequence[str] = (),
 ) -> Path:
-    """Write sweep.nc, one plot per result, summary.json and report.html into ``folder``.
+    """Write sweep.nc, one plot per result, summary.json, report.html and the exports
+    ``export`` (:func:`~ballscrew.results.export.export_results`) into ``folder``.
 
     ``case`` is the base case and ``axes`` the swept keys (their inputs in the summary and the
     report). ``folder`` also holds the per-point store (``points/``), so it is written in
     place, each file through a temporary file; a failed write raises :class:`ResultsWriteError`.
     """
     folder = Path(folder)
+    export = parse_formats(export)
     with writing(folder):
         _write_files(ds, folder, computed, sweep_inputs(ds, case, axes))
+        if export:
+            export_results(folder, export)
         write_marker(folder, "sweep", SWEEP_PATTERNS)
     return folder
 
