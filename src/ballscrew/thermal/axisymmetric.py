@@ -10,7 +10,9 @@ coordinates) and M_Γ the bore facet mass matrix; a stroke offset of m cells pai
 DOF with the shaft DOF m·Δz further along, and the time average sums the offsets with their
 weights. Every integrand carries the axisymmetric weight 2πr. Friction heat is a flux on the
 bore (nut side) and on the faced shaft surface (screw side), normalised to the exact watts. A
-cooled nut whose coolant enters above ambient adds the flux h_cool·θ_in on the nut OD.
+cooled nut whose coolant enters above ambient adds the flux h_cool·θ_in on the nut OD. A hollow
+shaft is meshed from its bore radius r_i; its coolant and a table mass are extra unknowns
+(:mod:`~ballscrew.thermal.fe_operator`), the coolant's cells being the shaft's axial cells.
 """
 
 from __future__ import annotations
@@ -36,7 +38,13 @@ from skfem.helpers import dot, grad
 
 from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
-from ballscrew.thermal.fe_assembly import BoreInterface, body_matrices, face_matrices, twin_dofs
+from ballscrew.thermal.fe_assembly import (
+    BoreInterface,
+    body_integrals,
+    body_matrices,
+    face_matrices,
+    twin_dofs,
+)
 from ballscrew.thermal.fe_operator import CoolantChannel, FeOperator, Readouts, fe_discretisation
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
@@ -278,16 +286,13 @@ def build_axisymmetric(
             _coolant_channel(problem, basis, am, facet_basis) if "shaft_bore" in am.facets else None
         ),
     )
-    shaft_elements = np.nonzero(am.body == 0)[0]
-    shaft_basis = Basis(mesh, element, elements=shaft_elements, intorder=intorder)
-    ring_basis = Basis(mesh, element, elements=np.nonzero(am.body == 1)[0], intorder=intorder)
-    ring_volume = np.asarray(asm(surface, ring_basis))
+    shaft_basis, shaft_volume, nut_mean = body_integrals(basis, intorder, am.body, surface)
     readouts = Readouts(
-        elongation=problem.expansion / problem.section_area * asm(surface, shaft_basis),
+        elongation=problem.expansion / problem.section_area * shaft_volume,
         sensors=_sensor_probes(problem, basis, am),
         axis_z=am.z_shaft,
         axis=_axis_probes(problem, basis, am)[1],
-        nut_mean=ring_volume / ring_volume.sum(),
+        nut_mean=nut_mean,
     )
     extra = {
         "mesh": am,

@@ -17,7 +17,7 @@ import numpy as np
 import scipy.sparse as sp
 from numpy.typing import NDArray
 from scipy.spatial import cKDTree
-from skfem import Basis, BilinearForm, FacetBasis, asm
+from skfem import Basis, BilinearForm, FacetBasis, LinearForm, asm
 
 from ballscrew.thermal.problem import ThermalProblem
 
@@ -46,6 +46,20 @@ def body_matrices(
         conductance = conductance + solid.conductivity * asm(conduction, cb)
         capacity = capacity + solid.heat_capacity * asm(mass, cb)
     return conductance, capacity
+
+
+def body_integrals(
+    basis: Basis, intorder: int, body: NDArray[np.int64], measure: LinearForm
+) -> tuple[Basis, NDArray[np.float64], NDArray[np.float64]]:
+    """(shaft basis, ∫_shaft φ_i dV, nut-assembly mean row ∫_nut φ_i dV / V_nut).
+
+    ``measure`` is the model's unit load form (v, or v·2πr in the axisymmetric model).
+    """
+    mesh, element = basis.mesh, basis.elem
+    shaft = Basis(mesh, element, elements=np.nonzero(body == 0)[0], intorder=intorder)
+    ring = Basis(mesh, element, elements=np.nonzero(body == 1)[0], intorder=intorder)
+    volume = np.asarray(asm(measure, ring))
+    return shaft, np.asarray(asm(measure, shaft)), volume / volume.sum()
 
 
 def face_matrices(

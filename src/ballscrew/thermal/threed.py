@@ -61,7 +61,13 @@ from skfem.helpers import dot, grad
 from ballscrew.errors import InputError
 from ballscrew.thermal.axisymmetric import probes
 from ballscrew.thermal.discretisation import Discretisation
-from ballscrew.thermal.fe_assembly import BoreInterface, body_matrices, face_matrices, twin_dofs
+from ballscrew.thermal.fe_assembly import (
+    BoreInterface,
+    body_integrals,
+    body_matrices,
+    face_matrices,
+    twin_dofs,
+)
 from ballscrew.thermal.fe_operator import FeOperator, Readouts, fe_discretisation
 from ballscrew.thermal.mesh3d import Mesh3D, build_mesh3d, circle_angles
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
@@ -310,16 +316,13 @@ def build_threed(
         bearings=tuple(bearings),
         outer=np.asarray(asm(unit, facet_basis("ring_outer"))),
     )
-    shaft_elements = np.nonzero(m3.body == 0)[0]
-    shaft_basis = Basis(mesh, element, elements=shaft_elements, intorder=intorder)
-    ring_basis = Basis(mesh, element, elements=np.nonzero(m3.body == 1)[0], intorder=intorder)
-    ring_volume = np.asarray(asm(unit, ring_basis))
+    shaft_basis, shaft_volume, nut_mean = body_integrals(basis, intorder, m3.body, unit)
     readouts = Readouts(
-        elongation=problem.expansion / m3.section_area * np.asarray(asm(unit, shaft_basis)),
+        elongation=problem.expansion / m3.section_area * shaft_volume,
         sensors=_sensor_probes(problem, basis, m3),
         axis_z=m3.z_shaft,
         axis=_axis_rows(m3, basis.N),
-        nut_mean=ring_volume / ring_volume.sum(),
+        nut_mean=nut_mean,
     )
     extra = {
         "mesh": m3,
