@@ -97,16 +97,16 @@ def test_the_coolant_lowers_the_largest_rise_and_the_elongation(case, cooled):
 
 @pytest.mark.parametrize("extra", [BORE, NUT, TABLE])
 def test_the_axisymmetric_model_agrees_with_the_network(case, extra):
-    """Same case on both models: elongation within 3 %, mean nut and outlet rise within 5 %
-    (the network's radial profiles are assumed, the FE model's computed)."""
+    """Same case on both models: elongation and coolant outlet rise within 1 %, the nut's mean
+    rise within 2 % (the network's radial profiles are assumed, the FE model's computed; found
+    0.35 %, 0.2 % and 1.2 % with the bore coolant 1 K below ambient)."""
     fe, net = solve(case, extra), solve(case, extra, "network")
-    assert fe.elongation == pytest.approx(net.elongation, rel=0.03)
+    assert fe.elongation == pytest.approx(net.elongation, rel=0.01)
     amb = fe.ambient_temperature
-    assert fe.nut_temperature - amb == pytest.approx(net.nut_temperature - amb, rel=0.05)
+    assert fe.nut_temperature - amb == pytest.approx(net.nut_temperature - amb, rel=0.02)
     if extra is BORE:
-        fe_out, _ = _fe_outlet(fe), None
         net_out = net.solution.steady[net.solution.discretisation.extra["coolant"][-1]]
-        assert fe_out == pytest.approx(net_out, rel=0.05)
+        assert _fe_outlet(fe) == pytest.approx(net_out, rel=0.01)
 
 
 def _fe_outlet(result) -> float:
