@@ -8,7 +8,8 @@ scikit-fem 12.0.2) 45.169 °C / 104.68 µm; 1-D network (5 mm) 45.221 °C / 104.
 
 Tables: (1) axisymmetric FE: unknowns, assembly, steady solve, 90-step transient [s] (best of
 ``repeats``); (2) the 1-D network and a 1000-point sweep of it (steady, and steady + 90-step
-transient per point); (3) ``thermal_field`` end to end on examples/gao2019_tcr.toml; (4) the
+transient per point); (3) ``thermal_field`` end to end on examples/gao2019_tcr.toml, each model
+(one FE mesh and assembly for the coupled fixed point and the transient); (4) the
 3-D hexahedral model, balls smeared over the bore and as 30 helical patches.
 
 Usage: python benchmarks/bench_thermal.py [--quick]
@@ -114,7 +115,7 @@ def case_table(quick: bool) -> None:
     path = Path(__file__).resolve().parents[1] / "examples" / "gao2019_tcr.toml"
     case = bs.load_case(path)
     tcr = bs.screw_tcr(case, variant=None)
-    for model in ("network", "axisymmetric"):
+    for model in ("network", "axisymmetric", "3d"):
         r = bs.thermal_field(case, model, tcr=tcr)
         print(
             f"  {model:>12}: {r.unknowns:>6d} unknowns, {r.seconds:6.2f} s "

@@ -114,8 +114,11 @@ def _without_ball_heat(problem: ThermalProblem) -> ThermalProblem:
     return dataclasses.replace(problem, parts=parts)
 
 
-def _segment(case: Case, phase: DutyPhase, model: str) -> tuple[_Segment, Discretisation]:
-    """The step system of one segment, its heat at the steady operating point and its model."""
+def _segment(
+    case: Case, phase: DutyPhase, model: str, reuse: Discretisation | None = None
+) -> tuple[_Segment, Discretisation]:
+    """The step system of one segment, its heat at the steady operating point and its model
+    (``reuse``'s mesh and matrices re-bound to the segment's loads when they fit)."""
     spec = thermal_spec(case)
     base = with_overrides(
         case,
@@ -138,11 +141,14 @@ def _segment(case: Case, phase: DutyPhase, model: str) -> tuple[_Segment, Discre
     problem, *_ = build_problem(with_overrides(base, overrides))
     check_mesh(spec, problem, model)
     options = _mesh_options(spec)
-    disc = build_model(model, problem, options)
+    disc = (reuse.rebound(problem) if reuse is not None else None) or build_model(
+        model, problem, options
+    )
     conductance, load = disc.assemble(disc.grid.weights)
     bearings = load
     if heat > 0.0:
-        cold = build_model(model, _without_ball_heat(problem), options)
+        cold_problem = _without_ball_heat(problem)
+        cold = disc.rebound(cold_problem) or build_model(model, cold_problem, options)
         bearings = cold.assemble(cold.grid.weights)[1]
     return _Segment(conductance, bearings, load - bearings, table), disc
 
@@ -165,7 +171,9 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
     amb = spec.ambient_temperature
     viscosity_at = medium_law(case)
     with recorded_warnings() as messages:
-        built = [_segment(case, phases[k], model) for k in range(len(case.duty))]
+        built: list[tuple[_Segment, Discretisation]] = []
+        for k in range(len(case.duty)):
+            built.append(_segment(case, phases[k], model, built[-1][1] if built else None))
         segments = [b[0] for b in built]
         first = built[0][1]
         check_transient(first, total, dt)

@@ -41,7 +41,7 @@ from ballscrew.errors import ConvergenceError
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LibraryLubricant
-from ballscrew.thermal.discretisation import Discretisation
+from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
 from ballscrew.wear.step import entrainment_speed
 
 __all__ = [
@@ -88,7 +88,8 @@ class OperatingPoint(Presented):
     efficiency: float
     """Driving efficiency (work out / work in) [-]."""
     nut_temperature: float
-    """Mean temperature of the nut at steady state [K]."""
+    """Mean temperature of the nut assembly at steady state [K]: its volume mean on the FE
+    models, the mean of its cells on the network."""
     screw_temperature: float
     """Mean temperature of the screw shaft under the nut [K]."""
     viscosity: float
@@ -101,6 +102,11 @@ class OperatingPoint(Presented):
 
     analysis: ClassVar[str] = "operating-point"
     presentation: ClassVar[ModuleType] = operating_point_report
+
+    @property
+    def max_temperature(self) -> float:
+        """Largest temperature of the steady field [K] (at the balls, above the nut's mean)."""
+        return self.field.max_temperature
 
     @property
     def contact_temperature(self) -> float:
@@ -181,8 +187,8 @@ def heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]
 def contact_readout(disc: Discretisation) -> tuple[FloatArray, Callable[[FloatArray], float]]:
     """(row r, nut) with the screw's mean rise under the nut = r·θ and the nut's rise nut(θ).
 
-    The nut's is the mean over the nut assembly (network model) or, for the FE models, the
-    largest rise of the field (at the balls); the screw's the cross-section mean of the shaft
+    The nut's is the mean over the nut assembly: of its cells' mean rises (network model) or
+    its volume mean (1/V)∫θ dV (FE models); the screw's the cross-section mean of the shaft
     averaged over the nut's length.
     """
     problem = disc.problem
@@ -190,10 +196,8 @@ def contact_readout(disc: Discretisation) -> tuple[FloatArray, Callable[[FloatAr
     under = np.nonzero(distance <= 0.5 * problem.ring_length)[0]
     rows = under if under.size else np.array([int(np.argmin(distance))])
     screw = np.asarray(disc.axis[rows].mean(axis=0)).ravel()
-    ring = disc.extra.get("ring_mean")
-    if ring is None:
-        return screw, lambda theta: float(theta.max())
-    return screw, lambda theta: float(theta[ring].mean())
+    nut = nut_mean_row(disc)
+    return screw, lambda theta: float(nut @ theta)
 
 
 def _nut_and_screw(field: ThermalField) -> tuple[float, float]:
@@ -230,6 +234,7 @@ def operating_point(
     ambient = base.thermal.ambient_temperature if base.thermal is not None else 293.15
     contact = ambient if start_temperature is None else float(start_temperature)
     relaxation, residual, iterations = 1.0, math.inf, 0
+    disc: Discretisation | None = None  # meshed and assembled once, re-bound to every heat
 
     def friction_at(temperature: float) -> FrictionTorque:
         return friction_torque(base, viscosity=law(temperature)[0])
@@ -241,7 +246,14 @@ def operating_point(
                 raise ConvergenceError("coupled operating point", iterations, residual, TOLERANCE)
             iterations += 1
             overrides = heat_overrides(friction.heat, friction.heat_to_screw, omega)
-            field = solve_field(with_overrides(base, overrides), model, transient=False)
+            field = solve_field(
+                with_overrides(base, overrides),
+                model,
+                transient=False,
+                reuse=disc,
+                thermoelastic=False,
+            )
+            disc = field.solution.discretisation
             nut, screw = _nut_and_screw(field)
             new = 0.5 * (nut + screw) - contact  # the fixed point's residual T(T_c) − T_c
             if abs(new) <= TOLERANCE:

@@ -37,6 +37,7 @@ from ballscrew.analyses.thermal_setup import (
 from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
+from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
 from ballscrew.thermal.elongation import thermoelastic_elongation
 from ballscrew.thermal.models import THERMAL_MODELS, MeshOptions, build_model
 from ballscrew.thermal.problem import ThermalProblem
@@ -146,6 +147,13 @@ class ThermalField(Presented):
         return self.ambient_temperature + self.max_temperature_rise
 
     @property
+    def nut_temperature(self) -> float:
+        """Steady mean temperature of the nut assembly [K] (volume mean on the FE models)."""
+        return self.ambient_temperature + float(
+            nut_mean_row(self.solution.discretisation) @ self.solution.steady
+        )
+
+    @property
     def elongation(self) -> float:
         """Steady thermal elongation of the screw shaft ΔL = α∫ΔT̄ dz (Q7) [m]."""
         return self.solution.elongation
@@ -247,7 +255,12 @@ def thermal_field(
     started = _time.perf_counter()
     with recorded_warnings() as messages:
         resolved, coupling, steady = coupled_heat(case, model)
-    field = steady if not transient else solve_field(resolved, model, tcr=tcr)
+    if transient:
+        field = solve_field(resolved, model, tcr=tcr, reuse=steady.solution.discretisation)
+    else:  # the last iteration's field, which skipped the thermo-elastic check
+        field = dataclasses.replace(
+            steady, elongation_thermoelastic=_thermoelastic(case, spec, steady.solution)
+        )
     return dataclasses.replace(
         field,
         case=case,
@@ -273,9 +286,18 @@ def solve_field(
     *,
     tcr: ScrewTCR | None = None,
     transient: bool = True,
+    reuse: Discretisation | None = None,
+    thermoelastic: bool = True,
 ) -> ThermalField:
     """:func:`thermal_field` with the heat the case gives, its drag torque taken as it stands
-    (a resolved ``operating_point`` torque is ``thermal.drag_torque.torque``)."""
+    (a resolved ``operating_point`` torque is ``thermal.drag_torque.torque``).
+
+    ``reuse``: a discretisation of the same screw on ``model`` (another heat, other convection
+    coefficients): its mesh and matrices are bound to this case's loads instead of meshing and
+    assembling again, when :func:`~ballscrew.thermal.problem.same_mesh` and the 3-D model's ball
+    patches allow (the result is the same to rounding). ``thermoelastic=False`` skips the
+    ``thermoelastic_check`` (fixed-point iterations).
+    """
     started = _time.perf_counter()
     spec, model = _checked(case, model, transient)
     with recorded_warnings() as messages:
@@ -283,7 +305,10 @@ def solve_field(
         check_mesh(spec, problem, model)
         helical = model == "3d" and spec.mesh.helical_patches
         patches = ball_patches(case, problem, tcr) if helical else None
-        disc = build_model(model, problem, _mesh_options(spec), patches)
+        disc = _rebound(reuse, model, problem, patches) or build_model(
+            model, problem, _mesh_options(spec), patches
+        )
+        disc.extra["patches"] = patches
         tr = spec.transient
         with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
             solution = simulate(
@@ -294,12 +319,7 @@ def solve_field(
                 spec.stroke.mode,
                 speed,
             )
-        thermoelastic = None
-        if model == "axisymmetric" and spec.thermoelastic_check:
-            screw = case.materials.screw
-            thermoelastic = thermoelastic_elongation(
-                disc, solution.steady, screw.youngs_modulus, screw.poissons_ratio
-            )
+        elastic = _thermoelastic(case, spec, solution) if thermoelastic else None
     return ThermalField(
         case_name=case.name,
         model=model,
@@ -310,11 +330,31 @@ def solve_field(
         interfaces=interfaces,
         feed_speed=speed,
         stroke_mode=spec.stroke.mode,
-        elongation_thermoelastic=thermoelastic,
+        elongation_thermoelastic=elastic,
         seconds=_time.perf_counter() - started,
         case=case,
         warnings=tuple(messages),
     )
+
+
+def _thermoelastic(case: Case, spec: ThermalSpec, solution: Solution) -> float | None:
+    """The thermo-elastic end displacement when the case asks for it (axisymmetric model)."""
+    disc = solution.discretisation
+    if disc.model != "axisymmetric" or not spec.thermoelastic_check:
+        return None
+    screw = case.materials.screw
+    return thermoelastic_elongation(
+        disc, solution.steady, screw.youngs_modulus, screw.poissons_ratio
+    )
+
+
+def _rebound(
+    reuse: Discretisation | None, model: str, problem: ThermalProblem, patches: tuple | None
+) -> Discretisation | None:
+    """``reuse`` bound to ``problem`` when it is a ``model`` mesh of it with the same patches."""
+    if reuse is None or reuse.model != model or reuse.extra.get("patches") != patches:
+        return None
+    return reuse.rebound(problem)
 
 
 def _mesh_options(spec: ThermalSpec) -> MeshOptions:

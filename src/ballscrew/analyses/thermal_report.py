@@ -45,6 +45,7 @@ def summary(result: ThermalField) -> dict[str, Any]:
         "steady": {
             "max_temperature": value(result.max_temperature, "K"),
             "max_temperature_rise": value(result.max_temperature_rise, "K"),
+            "nut_temperature": value(result.nut_temperature, "K"),
             "elongation": value(result.elongation, "m"),
             "elongation_thermoelastic": (
                 None
@@ -512,6 +513,7 @@ def sections(result: ThermalField) -> list[Section]:
     steady = [
         ["max temperature [°C]", _c(result.max_temperature)],
         ["max temperature rise [K]", result.max_temperature_rise],
+        ["nut assembly mean temperature [°C]", _c(result.nut_temperature)],
         ["elongation α∫ΔT dz [µm]", result.elongation * 1e6],
     ]
     if result.elongation_thermoelastic is not None:

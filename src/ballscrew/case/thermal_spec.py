@@ -202,7 +202,7 @@ class MountingSpec(Model):
         quantity(
             "heat_capacity",
             "heat capacity m·c of the table for transients (e.g. 200 kg of cast iron: 1e5 J/K; "
-            "needs table_area and the network model); None = a quasi-steady table",
+            "needs table_area); None = a quasi-steady table",
             gt=0,
             le=1e10,
         )
@@ -234,7 +234,8 @@ class ShaftCoolantSpec(Model):
     """Coolant through an axial bore of the screw (hollow-shaft cooling, Q11), inlet at z = 0.
 
     Off unless ``bore_diameter`` is given. h from the pipe correlations at the flow's Reynolds
-    number (laminar Nu below Re = 2300), or ``coefficient``; only the network model solves it.
+    number (laminar Nu below Re = 2300), or ``coefficient``; the network and axisymmetric models
+    solve it (the 3-D model refuses it).
     """
 
     bore_diameter: quantity("length", "diameter of the coolant bore", gt=0, le=5.0) | None = None

@@ -4,7 +4,8 @@ Heat sources in :mod:`.heat_sources`, convection in :mod:`.convection`, the tabl
 the natural-convection fixed point in :mod:`.boundary`, the problem in
 :mod:`.problem`, the rival discretisations in :mod:`.models` (the 1-D network in
 :mod:`.network`, the 2-D axisymmetric scikit-fem model in :mod:`.axisymmetric` and the 3-D model
-in :mod:`.threed`, imported on use), solves in :mod:`.simulate`, the elongation in
+in :mod:`.threed`, imported on use; their load-independent matrices, built once and re-bound to
+new loads, in :mod:`.fe_operator`), solves in :mod:`.simulate`, the elongation in
 :mod:`.elongation`; :mod:`ballscrew.analyses.thermal` composes them for a case. The thermal
 contact resistance of the balls is :mod:`ballscrew.contact_resistance`.
 """

@@ -10,7 +10,9 @@ coordinates) and M_Γ the bore facet mass matrix; a stroke offset of m cells pai
 DOF with the shaft DOF m·Δz further along, and the time average sums the offsets with their
 weights. Every integrand carries the axisymmetric weight 2πr. Friction heat is a flux on the
 bore (nut side) and on the faced shaft surface (screw side), normalised to the exact watts. A
-cooled nut whose coolant enters above ambient adds the flux h_cool·θ_in on the nut OD.
+cooled nut whose coolant enters above ambient adds the flux h_cool·θ_in on the nut OD. A hollow
+shaft is meshed from its bore radius r_i; its coolant and a table mass are extra unknowns
+(:mod:`~ballscrew.thermal.fe_operator`), the coolant's cells being the shaft's axial cells.
 """
 
 from __future__ import annotations
@@ -38,10 +40,12 @@ from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.fe_assembly import (
     BoreInterface,
-    body_and_convection_matrices,
-    interface_terms,
+    body_integrals,
+    body_matrices,
+    face_matrices,
     twin_dofs,
 )
+from ballscrew.thermal.fe_operator import CoolantChannel, FeOperator, Readouts, fe_discretisation
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
 TWO_PI = 2.0 * math.pi
@@ -85,7 +89,8 @@ class AxisymmetricMesh:
     cells: tuple[NDArray[np.int64], NDArray[np.int64]]
     """Element index of each (z, r) grid cell of shaft and ring (−1: no element)."""
     facets: dict[str, NDArray[np.int64]]
-    """Boundary facets: 'shaft_surface', 'shaft_ends', 'ring_outer', 'ring_ends', 'bore<k>'."""
+    """Boundary facets: 'shaft_surface', 'shaft_ends', 'ring_outer', 'ring_ends', 'bore<k>' and,
+    for a hollow shaft, 'shaft_bore'."""
 
 
 def _radial_lines(a: float, b: float, size: float) -> NDArray[np.float64]:
@@ -95,7 +100,7 @@ def _radial_lines(a: float, b: float, size: float) -> NDArray[np.float64]:
 def build_mesh(problem: ThermalProblem, grid: AxialGrid, size: float) -> AxisymmetricMesh:
     """Structured mesh: shaft on (r_shaft × grid.z), ring on (r_ring × grid.ring_z)."""
     R = problem.shaft_radius
-    r_shaft = _radial_lines(0.0, R, size)
+    r_shaft = _radial_lines(problem.bore_radius, R, size)
     radii = sorted({p.outer_radius for p in problem.parts})
     r_ring = np.unique(
         np.concatenate(
@@ -199,6 +204,8 @@ def _classify(
         "ring_outer": bf[~shaft & along_z & ~at_r],
         "ring_ends": bf[~shaft & ~along_z],
     }
+    if problem.bore_radius > 0.0:
+        facets["shaft_bore"] = bf[shaft & along_z & (np.abs(r_mid - problem.bore_radius) < tol)]
     bore = ~shaft & along_z & at_r
     for k, p in enumerate(problem.parts):
         if p.balls:
@@ -218,23 +225,20 @@ def build_axisymmetric(
     element = ElementQuad2() if order == 2 else ElementQuad1()
     intorder = 2 * order + 2
     basis = Basis(mesh, element, intorder=intorder)
-    n = basis.N
     L = problem.shaft_length
-    conv = problem.convection
 
     def facet_basis(name: str) -> FacetBasis:
         return FacetBasis(mesh, element, facets=am.facets[name], intorder=intorder)
 
-    conductance, capacity = body_and_convection_matrices(
-        basis, intorder, am.body, am.facets, problem, conduction, mass
-    )
+    conductance, capacity = body_matrices(basis, intorder, am.body, problem, conduction, mass)
     fb_surface = facet_basis("shaft_surface")
 
     surface_dofs = basis.get_dofs(facets=am.facets["shaft_surface"]).all()
     tree = cKDTree(basis.doflocs[:, surface_dofs].T)
-    interfaces = []
+    bores: list[BoreInterface | None] = []
     for k, part in enumerate(problem.parts):
         if not part.balls:
+            bores.append(None)
             continue
         fb = facet_basis(f"bore{k}")
         dofs = basis.get_dofs(facets=am.facets[f"bore{k}"]).all()
@@ -242,9 +246,9 @@ def build_axisymmetric(
         b_bore = asm(surface, fb)[dofs]
         area = float(b_bore.sum())  # smeared balls: uniform density 1/A_bore
         pairs = twin_dofs(tree, surface_dofs, basis.doflocs[:, dofs], grid.shifts, grid.dz)
-        interfaces.append((part, BoreInterface(dofs, pairs, m_bore / area, b_bore / area)))
+        bores.append(BoreInterface(dofs, pairs, m_bore / area, b_bore / area))
 
-    bearing_load = np.zeros(n)
+    bearings = []
     for bearing in problem.bearings:
         lo = max(bearing.position - 0.5 * bearing.width, 0.0)
         hi = min(bearing.position + 0.5 * bearing.width, L)
@@ -261,58 +265,71 @@ def build_axisymmetric(
                 bearing.width,
                 f"a band wider than the mesh {size:g} m",
             )
-        bearing_load += bearing.power * g / g.sum()
+        bearings.append(g / g.sum())
 
-    if problem.nut_coolant_flux != 0.0 and am.facets["ring_outer"].size:
-        bearing_load += problem.nut_coolant_flux * asm(surface, facet_basis("ring_outer"))
-
-    def assemble(weights: NDArray[np.float64]) -> tuple[sp.csr_matrix, NDArray[np.float64]]:
+    def surface_film(weights: NDArray[np.float64]) -> sp.csr_matrix:
         @BilinearForm
         def film(u, v, w):
             return (1.0 - grid.coverage(w.x[1], weights)) * u * v * TWO_PI * w.x[0]
 
-        a = conductance + conv.screw * asm(film, fb_surface) if conv.screw > 0 else conductance
-        couplings = [
-            (bore, p.contact_conductance, p.nut_heat, p.screw_heat) for p, bore in interfaces
-        ]
-        jumps, f = interface_terms(n, couplings, weights)
-        f += bearing_load
-        if jumps is not None:
-            a = a + jumps
-        return sp.csr_matrix(a), f
+        return asm(film, fb_surface)
 
-    shaft_elements = np.nonzero(am.body == 0)[0]
-    shaft_basis = Basis(mesh, element, elements=shaft_elements, intorder=intorder)
-    elongation = problem.expansion / problem.shaft_area * asm(surface, shaft_basis)
-    sensors = _sensor_probes(problem, basis, am)
-    axis_z, axis = _axis_probes(problem, basis, am)
-    return Discretisation(
-        model="axisymmetric",
-        problem=problem,
-        grid=grid,
-        capacity=sp.csr_matrix(capacity),
-        assemble=assemble,
-        elongation=np.asarray(elongation),
-        sensors=sensors,
-        axis_z=axis_z,
-        axis=axis,
-        direct_limit=400_000,
-        extra={
-            "mesh": am,
-            "basis": basis,
-            "shaft_basis": shaft_basis,
-            "element": element,
-            "intorder": intorder,
-            "order": order,
-        },
+    operator = FeOperator(
+        conduction=conductance,
+        capacity=capacity,
+        faces=face_matrices(basis, intorder, am.facets, mass),
+        surface_film=surface_film,
+        bores=tuple(bores),
+        bearings=tuple(bearings),
+        outer=np.asarray(asm(surface, facet_basis("ring_outer"))),
+        coolant=(
+            _coolant_channel(problem, basis, am, facet_basis) if "shaft_bore" in am.facets else None
+        ),
     )
+    shaft_basis, shaft_volume, nut_mean = body_integrals(basis, intorder, am.body, surface)
+    readouts = Readouts(
+        elongation=problem.expansion / problem.section_area * shaft_volume,
+        sensors=_sensor_probes(problem, basis, am),
+        axis_z=am.z_shaft,
+        axis=_axis_probes(problem, basis, am)[1],
+        nut_mean=nut_mean,
+    )
+    extra = {
+        "mesh": am,
+        "basis": basis,
+        "shaft_basis": shaft_basis,
+        "element": element,
+        "intorder": intorder,
+        "order": order,
+    }
+    return fe_discretisation("axisymmetric", problem, grid, operator, readouts, 400_000, extra)
+
+
+def _coolant_channel(
+    problem: ThermalProblem, basis: Basis, am: AxisymmetricMesh, facet_basis
+) -> CoolantChannel:
+    """The bore wall ∫uv 2πr dz and its cells B[i, k] = ∫_cell φ_i 2πr_i dz (3-point Gauss,
+    exact for the quadratic edge functions)."""
+    r_i = problem.bore_radius
+    x, w = np.polynomial.legendre.leggauss(3)
+    z = am.z_shaft
+    a, b = z[:-1, None], z[1:, None]
+    zq = (0.5 * (a + b) + 0.5 * (b - a) * x).ravel()
+    wq = (0.5 * (b - a) * w).ravel() * TWO_PI * r_i
+    points = np.array([np.full(zq.size, r_i), zq])
+    rows = probes(basis, points, locate(am, "screw", points))
+    cell_of = np.repeat(np.arange(z.size - 1), x.size)
+    weights = sp.csr_matrix((wq, (np.arange(zq.size), cell_of)), shape=(zq.size, z.size - 1))
+    wall = sp.csr_matrix(asm(mass, facet_basis("shaft_bore")))
+    return CoolantChannel(wall, sp.csr_matrix(rows.T @ weights))
 
 
 def _nudged(problem: ThermalProblem, body: str, r: float, z: float) -> tuple[float, float]:
     """A point strictly inside ``body`` (the bore and shaft surface share coordinates)."""
     R, eps = problem.shaft_radius, 1e-9 * problem.shaft_length
     if body == "screw":
-        return min(r, R - eps), float(np.clip(z, eps, problem.shaft_length - eps))
+        radius = max(min(r, R - eps), problem.bore_radius + eps)
+        return radius, float(np.clip(z, eps, problem.shaft_length - eps))
     start = problem.ring_centre - 0.5 * problem.ring_length
     return max(r, R + eps), float(np.clip(z, start + eps, start + problem.ring_length - eps))
 
@@ -328,11 +345,12 @@ def _sensor_probes(problem: ThermalProblem, basis: Basis, am: AxisymmetricMesh) 
 def _axis_probes(
     problem: ThermalProblem, basis: Basis, am: AxisymmetricMesh
 ) -> tuple[NDArray[np.float64], sp.csr_matrix]:
-    """Rows giving the cross-section mean (2/R²)∫θ r dr at each shaft grid line (Gauss in r)."""
+    """Rows giving the cross-section mean 2/(R² − r_i²)∫θ r dr at each shaft grid line (Gauss
+    in r; r_i = 0 for a solid shaft)."""
     x, w = np.polynomial.legendre.leggauss(3)
     a, b = am.r_shaft[:-1, None], am.r_shaft[1:, None]
     rq = (0.5 * (a + b) + 0.5 * (b - a) * x).ravel()
-    wq = (0.5 * (b - a) * w).ravel() * rq * 2.0 / problem.shaft_radius**2
+    wq = (0.5 * (b - a) * w).ravel() * rq * 2.0 * math.pi / problem.section_area
     z = am.z_shaft
     eps = 1e-9 * problem.shaft_length
     zq = np.clip(z, eps, problem.shaft_length - eps)

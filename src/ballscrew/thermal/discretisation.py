@@ -16,7 +16,7 @@ import numpy as np
 import scipy.sparse as sp
 from numpy.typing import NDArray
 
-from ballscrew.thermal.problem import AxialGrid, ThermalProblem
+from ballscrew.thermal.problem import AxialGrid, ThermalProblem, same_mesh
 
 Assembler = Callable[[NDArray[np.float64]], tuple[sp.csr_matrix, NDArray[np.float64]]]
 
@@ -45,11 +45,33 @@ class Discretisation:
     """Largest size solved by sparse LU (2-D fill is small, so 2-D models raise it)."""
     extra: dict[str, Any] = field(default_factory=dict)
     """Model-specific data for fields and plots (mesh, cells)."""
+    rebind: Callable[[ThermalProblem], Discretisation] | None = None
+    """The same mesh and matrices bound to another problem that
+    :func:`~ballscrew.thermal.problem.same_mesh` accepts (None: the model builds anew)."""
+
+    def rebound(self, problem: ThermalProblem) -> Discretisation | None:
+        """This model's mesh and matrices with the loads and coefficients of ``problem``, or
+        None when its mesh does not fit ``problem`` (or the model cannot re-bind)."""
+        if self.rebind is None or not same_mesh(self.problem, problem):
+            return None
+        return self.rebind(problem)
 
     @property
     def unknowns(self) -> int:
         """Number of unknowns."""
         return int(self.capacity.shape[0])
+
+
+def nut_mean_row(disc: Discretisation) -> NDArray[np.float64]:
+    """Row r with r·θ the mean rise of the nut assembly: its volume mean (1/V)∫θ dV on the FE
+    models (``extra['nut_mean']``), the mean of its cells' mean rises on the network."""
+    row = disc.extra.get("nut_mean")
+    if row is not None:
+        return np.asarray(row)
+    ring = disc.extra["ring_mean"]
+    out = np.zeros(disc.unknowns)
+    out[ring] = 1.0 / len(ring)
+    return out
 
 
 def laplacian(

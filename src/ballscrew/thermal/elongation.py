@@ -92,7 +92,7 @@ def thermoelastic_elongation(
         return (3 * lam + 2 * mu) * alpha * w.theta * (vr + vz + vt) * two_pi * r
 
     k = asm(stiffness, vector)
-    f = asm(thermal_load, vector, theta=scalar.interpolate(theta))
+    f = asm(thermal_load, vector, theta=scalar.interpolate(theta[: scalar.N]))
     shaft_dofs = np.unique(vector.element_dofs)
     tol = 1e-9 * problem.shaft_length
     fixed_z = vector.get_dofs(lambda x: np.abs(x[1]) < tol).all(["u^2"])
@@ -105,6 +105,6 @@ def thermoelastic_elongation(
 
     @LinearForm
     def axial_mean(v, w):
-        return np.asarray(v)[1] * two_pi * w.x[0] / problem.shaft_area
+        return np.asarray(v)[1] * two_pi * w.x[0] / problem.section_area
 
     return float(asm(axial_mean, fb) @ u)

@@ -17,7 +17,7 @@ import numpy as np
 import scipy.sparse as sp
 from numpy.typing import NDArray
 from scipy.spatial import cKDTree
-from skfem import Basis, BilinearForm, FacetBasis, asm
+from skfem import Basis, BilinearForm, FacetBasis, LinearForm, asm
 
 from ballscrew.thermal.problem import ThermalProblem
 
@@ -25,18 +25,15 @@ CONVECTIVE_FACES = ("shaft_ends", "ring_outer", "ring_ends")
 """Faces with a fixed convection coefficient; the screw surface is handled per stroke offset."""
 
 
-def body_and_convection_matrices(
+def body_matrices(
     basis: Basis,
     intorder: int,
     body: NDArray[np.int64],
-    facets: Mapping[str, NDArray[np.int64]],
     problem: ThermalProblem,
     conduction: BilinearForm,
     mass: BilinearForm,
 ) -> tuple[sp.csr_matrix, sp.csr_matrix]:
-    """Conductance (conduction + convection on :data:`CONVECTIVE_FACES`) and capacity matrices.
-
-        K = Σ_bodies λ_b ∫ ∇u·∇v + Σ_faces h_f ∫_f u v ,   C = Σ_bodies ρc_b ∫ u v
+    """Conduction and capacity matrices K = Σ_bodies λ_b ∫ ∇u·∇v, C = Σ_bodies ρc_b ∫ u v.
 
     ``body`` gives each element's body (0 = shaft, 1 = nut assembly); ``conduction`` and ``mass``
     are the model's weak forms (with the 2πr weight in the axisymmetric model).
@@ -48,12 +45,37 @@ def body_and_convection_matrices(
         cb = Basis(mesh, element, elements=np.nonzero(body == b)[0], intorder=intorder)
         conductance = conductance + solid.conductivity * asm(conduction, cb)
         capacity = capacity + solid.heat_capacity * asm(mass, cb)
-    conv = problem.convection
-    for name, h in zip(CONVECTIVE_FACES, (conv.screw_ends, conv.nut, conv.nut_ends), strict=True):
-        if h > 0.0 and facets[name].size:
-            face = FacetBasis(mesh, element, facets=facets[name], intorder=intorder)
-            conductance = conductance + h * asm(mass, face)
     return conductance, capacity
+
+
+def body_integrals(
+    basis: Basis, intorder: int, body: NDArray[np.int64], measure: LinearForm
+) -> tuple[Basis, NDArray[np.float64], NDArray[np.float64]]:
+    """(shaft basis, ∫_shaft φ_i dV, nut-assembly mean row ∫_nut φ_i dV / V_nut).
+
+    ``measure`` is the model's unit load form (v, or v·2πr in the axisymmetric model).
+    """
+    mesh, element = basis.mesh, basis.elem
+    shaft = Basis(mesh, element, elements=np.nonzero(body == 0)[0], intorder=intorder)
+    ring = Basis(mesh, element, elements=np.nonzero(body == 1)[0], intorder=intorder)
+    volume = np.asarray(asm(measure, ring))
+    return shaft, np.asarray(asm(measure, shaft)), volume / volume.sum()
+
+
+def face_matrices(
+    basis: Basis,
+    intorder: int,
+    facets: Mapping[str, NDArray[np.int64]],
+    mass: BilinearForm,
+    names: Sequence[str] = CONVECTIVE_FACES,
+) -> dict[str, sp.csr_matrix]:
+    """Unit film matrices ∫_f u v of the named faces that have facets (h = 1 W/(m² K))."""
+    out = {}
+    for name in names:
+        if facets[name].size:
+            face = FacetBasis(basis.mesh, basis.elem, facets=facets[name], intorder=intorder)
+            out[name] = sp.csr_matrix(asm(mass, face))
+    return out
 
 
 @dataclass(frozen=True)

@@ -92,17 +92,13 @@ def build_model(
     """Discretise ``problem`` with the registered model ``name``.
 
     ``patches``: per ring part, the ball contact patches of the 3-D model (None elsewhere).
-    Only the network models a hollow cooled shaft and a table heat capacity; the 3-D model has
-    no coolant inlet rise either.
+    The 3-D model has no hollow cooled shaft (its O-grid has no bore, and the coolant's upwind
+    advection is not symmetric for its conjugate-gradient solver).
     """
-    unsupported = {
-        "thermal.shaft_coolant": problem.shaft_coolant is not None and name != "network",
-        "thermal.mounting.table_heat_capacity": problem.table is not None and name != "network",
-        "thermal.coolant.inlet_temperature": problem.nut_coolant_flux != 0.0 and name == "3d",
-    }
-    for key, refused in unsupported.items():
-        if refused:
-            raise InputError(
-                key, "set", f'not supported by the {name} model: use model = "network"'
-            )
+    if problem.shaft_coolant is not None and name == "3d":
+        raise InputError(
+            "thermal.shaft_coolant.bore_diameter",
+            2.0 * problem.shaft_coolant.bore_radius,
+            'not supported by the 3d model: use model = "axisymmetric" or "network"',
+        )
     return THERMAL_MODELS[name](problem, mesh, patches)

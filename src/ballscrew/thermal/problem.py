@@ -16,7 +16,7 @@ position of the stroke falls on grid lines.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 import numpy as np
@@ -241,6 +241,43 @@ class ThermalProblem:
     def shaft_area(self) -> float:
         """Cross-section πR² of the shaft [m²]."""
         return math.pi * self.shaft_radius**2
+
+    @property
+    def bore_radius(self) -> float:
+        """Radius r_i of the coolant bore of the shaft [m] (0: a solid shaft)."""
+        return 0.0 if self.shaft_coolant is None else self.shaft_coolant.bore_radius
+
+    @property
+    def section_area(self) -> float:
+        """Steel cross-section π(R² − r_i²) of the shaft [m²]."""
+        return math.pi * (self.shaft_radius**2 - self.bore_radius**2)
+
+
+def same_mesh(a: ThermalProblem, b: ThermalProblem) -> bool:
+    """True when ``a`` and ``b`` differ at most in what an FE model binds after meshing.
+
+    That is heat flows, convection coefficients, contact conductances, the cooled nut's flux,
+    the bore coolant's h, ṁc_p and inlet rise and the table's h_j, G_t and C_t (all linear
+    terms of C θ̇ + A θ = f); geometry, materials, stroke, sensors and the presence of a
+    coolant bore or a table node must agree.
+    """
+    return _meshed(a) == _meshed(b)
+
+
+def _meshed(p: ThermalProblem) -> ThermalProblem:
+    """``p`` with every quantity :func:`same_mesh` ignores set to a fixed value."""
+    cool = p.shaft_coolant
+    return replace(
+        p,
+        parts=tuple(
+            replace(q, contact_conductance=0.0, screw_heat=0.0, nut_heat=0.0) for q in p.parts
+        ),
+        convection=Convection(0.0, 0.0, 0.0, 0.0),
+        bearings=tuple(replace(b, power=0.0) for b in p.bearings),
+        nut_coolant_flux=0.0,
+        shaft_coolant=None if cool is None else ShaftCoolant(cool.bore_radius, 0.0, 1.0),
+        table=None if p.table is None else TableMass(0.0, 0.0, 1.0),
+    )
 
 
 @dataclass(frozen=True)

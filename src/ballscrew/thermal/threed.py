@@ -63,10 +63,12 @@ from ballscrew.thermal.axisymmetric import probes
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.fe_assembly import (
     BoreInterface,
-    body_and_convection_matrices,
-    interface_terms,
+    body_integrals,
+    body_matrices,
+    face_matrices,
     twin_dofs,
 )
+from ballscrew.thermal.fe_operator import FeOperator, Readouts, fe_discretisation
 from ballscrew.thermal.mesh3d import Mesh3D, build_mesh3d, circle_angles
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
@@ -222,26 +224,23 @@ def build_threed(
     element = ElementHex1()
     intorder = 3
     basis = Basis(mesh, element, intorder=intorder)
-    n = basis.N
-    conv = problem.convection
     R = problem.shaft_radius
 
     def facet_basis(name: str, order: int = intorder) -> FacetBasis:
         return FacetBasis(mesh, element, facets=m3.facets[name], intorder=order)
 
-    conductance, capacity = body_and_convection_matrices(
-        basis, intorder, m3.body, m3.facets, problem, conduction, mass
-    )
+    conductance, capacity = body_matrices(basis, intorder, m3.body, problem, conduction, mass)
     fb_surface = facet_basis("shaft_surface")
 
     surface_dofs = basis.get_dofs(facets=m3.facets["shaft_surface"]).all()
     tree = cKDTree(basis.doflocs[:, surface_dofs].T)
     h_circ = 2.0 * math.pi * R / divisions
-    interfaces = []
+    bores: list[BoreInterface | None] = []
     patch_info: list[dict[str, object]] = []
     bounds = grid.part_bounds
     for k, part in enumerate(problem.parts):
         if not part.balls:
+            bores.append(None)
             continue
         # the patch indicator is sampled at the quadrature points: a finer rule on the bore
         fb = facet_basis(f"bore{k}", intorder if patches is None else patch_intorder)
@@ -283,9 +282,9 @@ def build_threed(
         info["dofs"] = dofs
         info["pairs"] = pairs
         patch_info.append(info)
-        interfaces.append((part, BoreInterface(dofs, pairs, m_bore, b_bore)))
+        bores.append(BoreInterface(dofs, pairs, m_bore, b_bore))
 
-    bearing_load = np.zeros(n)
+    bearings = []
     for bearing in problem.bearings:
         lo = max(bearing.position - 0.5 * bearing.width, 0.0)
         hi = min(bearing.position + 0.5 * bearing.width, problem.shaft_length)
@@ -299,50 +298,43 @@ def build_threed(
             raise InputError(
                 f"bearings.{bearing.name}.width", bearing.width, "a band wider than the mesh"
             )
-        bearing_load += bearing.power * g / g.sum()
+        bearings.append(g / g.sum())
 
-    def assemble(weights: NDArray[np.float64]) -> tuple[sp.csr_matrix, NDArray[np.float64]]:
+    def surface_film(weights: NDArray[np.float64]) -> sp.csr_matrix:
         @BilinearForm
         def film(u, v, w):
             return (1.0 - grid.coverage(w.x[2], weights)) * u * v
 
-        a = conductance + conv.screw * asm(film, fb_surface) if conv.screw > 0 else conductance
-        couplings = [
-            (bore, p.contact_conductance, p.nut_heat, p.screw_heat) for p, bore in interfaces
-        ]
-        jumps, f = interface_terms(n, couplings, weights)
-        f += bearing_load
-        if jumps is not None:
-            a = a + jumps
-        return sp.csr_matrix(a), f
+        return asm(film, fb_surface)
 
-    shaft_elements = np.nonzero(m3.body == 0)[0]
-    shaft_basis = Basis(mesh, element, elements=shaft_elements, intorder=intorder)
-    area = m3.section_area
-    elongation = problem.expansion / area * np.asarray(asm(unit, shaft_basis))
-    sensors = _sensor_probes(problem, basis, m3)
-    axis = _axis_rows(m3, n)
-    return Discretisation(
-        model="3d",
-        direct_limit=0,  # AMG-CG: a 3-D LU fills in (19 s against 1.3 s at 35k unknowns)
-        problem=problem,
-        grid=grid,
-        capacity=sp.csr_matrix(capacity),
-        assemble=assemble,
-        elongation=elongation,
-        sensors=sensors,
-        axis_z=m3.z_shaft,
-        axis=axis,
-        extra={
-            "mesh": m3,
-            "basis": basis,
-            "shaft_basis": shaft_basis,
-            "element": element,
-            "intorder": intorder,
-            "interfaces": patch_info,
-            **_profile_nodes(m3),
-        },
+    operator = FeOperator(
+        conduction=conductance,
+        capacity=capacity,
+        faces=face_matrices(basis, intorder, m3.facets, mass),
+        surface_film=surface_film,
+        bores=tuple(bores),
+        bearings=tuple(bearings),
+        outer=np.asarray(asm(unit, facet_basis("ring_outer"))),
     )
+    shaft_basis, shaft_volume, nut_mean = body_integrals(basis, intorder, m3.body, unit)
+    readouts = Readouts(
+        elongation=problem.expansion / m3.section_area * shaft_volume,
+        sensors=_sensor_probes(problem, basis, m3),
+        axis_z=m3.z_shaft,
+        axis=_axis_rows(m3, basis.N),
+        nut_mean=nut_mean,
+    )
+    extra = {
+        "mesh": m3,
+        "basis": basis,
+        "shaft_basis": shaft_basis,
+        "element": element,
+        "intorder": intorder,
+        "interfaces": patch_info,
+        **_profile_nodes(m3),
+    }
+    # direct_limit 0: AMG-CG, a 3-D LU fills in (19 s against 1.3 s at 35k unknowns)
+    return fe_discretisation("3d", problem, grid, operator, readouts, 0, extra)
 
 
 def _profile_nodes(m3: Mesh3D) -> dict[str, NDArray]:
