@@ -8,7 +8,8 @@ equal to the exact linear (aperiodic) convolution (K5) of the half-space.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from concurrent.futures import ThreadPoolExecutor
+from functools import cache, lru_cache
 from types import ModuleType
 from typing import Any
 
@@ -16,7 +17,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
-from ballscrew.backend import fft_threads, padded_rfft
+from ballscrew.backend import MAX_FFT_THREADS, fft_threads, limited_fft_threads, padded_rfft
 from ballscrew.contact._validation import finite_grid
 from ballscrew.contact.influence import love_coefficients
 
@@ -124,12 +125,19 @@ class DCFFTOperator:
 
         CuPy: one batched cuFFT over the stack. NumPy: the planned transform of one grid, grid
         after grid (measured on 2 cores as fast as or faster than scipy's batched transform of the
-        stack at 32 × 128², and each contact's u is then bit-identical to a single solve's).
+        stack at 32 × 128², and each contact's u is then bit-identical to a single solve's), the
+        stack split between :func:`~ballscrew.backend.fft_threads` threads of one FFT thread each
+        (grids of fewer than 512² padded points get one FFT thread, so one core, otherwise).
         """
         xp = self.xp
         if xp is np:
-            for p, u in zip(pressures, out, strict=True):
-                self.apply(p, out=u)
+            threads = min(fft_threads(4 * pressures.size), len(pressures))
+            if threads == 1:
+                for p, u in zip(pressures, out, strict=True):
+                    self.apply(p, out=u)
+                return out
+            chunks = np.array_split(np.arange(len(pressures)), threads)
+            list(_pool().map(lambda rows: self._apply_rows(pressures, out, rows), chunks))
             return out
         m, n = self.shape
         spectrum = xp.fft.rfft2(pressures.astype(self.dtype, copy=False), s=(2 * m, 2 * n))
@@ -137,6 +145,18 @@ class DCFFTOperator:
         xp.multiply(pairs, self._kernel_pairs, out=pairs)
         out[...] = xp.fft.irfft2(spectrum, s=(2 * m, 2 * n), norm="forward")[:, :m, :n]
         return out
+
+    def _apply_rows(self, pressures: Any, out: Any, rows: Any) -> None:
+        """u = K ∗ p of the grids ``rows`` of the stack, one FFT thread (in a pool thread)."""
+        with limited_fft_threads(1):
+            for b in rows:
+                self.apply(pressures[b], out=out[b])
+
+
+@cache
+def _pool() -> ThreadPoolExecutor:
+    """Threads that share out the grids of a stack (FFTW releases the GIL while it runs)."""
+    return ThreadPoolExecutor(MAX_FFT_THREADS, thread_name_prefix="ballscrew-fft")
 
 
 @lru_cache(maxsize=8)
