@@ -31,10 +31,11 @@ from ballscrew.contact.convolution import DCFFTOperator
 
 __all__ = ["COARSEST", "COARSE_TOLERANCE", "MIXED_SWITCH", "BatchIterate", "solve_batch"]
 
-COARSEST = 16
+COARSEST = 32
 """Cells along the shorter axis below which a grid is not coarsened further (GUESS, tuned on the
-64²-512² Hertz problems of the benchmark: 48 → 16 cut their work, fine iterations + coarse
-equivalents, by 8-25 %; the fine-grid iterations stay at 13-15)."""
+64²-512² Hertz problems of the benchmark: 48 → 32 cut their work, fine iterations + coarse
+equivalents, by 8-20 %; the fine-grid iterations stay at 13-15; 16 saves a little more work but
+its tiny grids cost more in per-iteration overhead than they save)."""
 COARSE_TOLERANCE = 1e-3
 """Stop of the coarse solves of the nested start: Σ|Δp|/Σp (GUESS, tuned as :data:`COARSEST`:
 1e-5 → 1e-3 halves the coarse work and leaves the fine-grid iterations unchanged; the coarse
