@@ -16,7 +16,9 @@ Backends, chosen by the array module:
   the estimated cost of planning it with ``FFTW_MEASURE``, the shape is re-planned with
   ``FFTW_MEASURE`` and the faster of the two plans is kept (a ski-rental rule: planning never costs
   much more than the execution already done). Measured on 2 cores, ``FFTW_MEASURE`` gains 0-15 % up
-  to 1024 x 1024 padded and ~25 % at 2048 x 2048, for 0.06-0.5 s of planning.
+  to 1024 x 1024 padded and ~25 % at 2048 x 2048, for 0.06-0.5 s of planning. The planning is held
+  to that estimate by FFTW's time limit: on the shared, loaded machine an unlimited
+  ``FFTW_MEASURE`` of 1024 x 1024 padded took 14-46 s (measured).
 * NumPy without pyFFTW: :mod:`scipy.fft` with the same pruning.
 * CuPy: :mod:`cupy.fft` (cuFFT caches its own plans).
 
@@ -191,7 +193,9 @@ class _FFTWPadded:
 
     def _plan(self, flag: str) -> None:
         m = self.shape[0]
-        kw = {"flags": (flag,), "threads": self._threads}
+        kw: dict[str, Any] = {"flags": (flag,), "threads": self._threads}
+        if flag == "FFTW_MEASURE":  # each of the 4 plans within a quarter of the estimated cost
+            kw["planning_timelimit"] = 0.25 * self._planning_cost_estimate()
         # In-place column transforms: measured up to 2x faster than out-of-place at 2048 x 1025.
         spectrum = self._spectrum
         self._rfft_rows = pyfftw.FFTW(self._rows_in, spectrum[:m], axes=(1,), **kw)
@@ -319,8 +323,11 @@ class _CupyPadded:
 
 _local = threading.local()
 
-CACHED_SHAPES = 8
-"""Transforms kept per thread (plans + buffers: ~66 MB at 1024 x 1024), least recently used out."""
+CACHED_SHAPES = 16
+"""Transforms kept per thread (plans + buffers: ~66 MB at 1024 x 1024), least recently used out.
+
+A nested-grid solve uses one per grid level (5-6), twice over with mixed precision: with fewer
+slots the two hierarchies evicted each other and every solve planned its transforms anew."""
 
 
 def padded_rfft(

@@ -8,6 +8,7 @@ import pytest
 from ballscrew.backend import limited_fft_threads
 from ballscrew.contact import (
     NORMAL_SOLVERS,
+    convolution,
     hertz,
     solve_normal,
     solve_normal_batch,
@@ -112,6 +113,18 @@ def test_batched_contacts_equal_one_at_a_time(precision):
         np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
         assert together.approach == pytest.approx(alone.approach, rel=1e-10)
         assert together.load == pytest.approx(load, rel=1e-10)
+
+
+def test_batch_shared_between_threads_equals_one_at_a_time(monkeypatch):
+    """Two threads for the stack (its grids split between two pool threads of one FFT thread)."""
+    monkeypatch.setattr(convolution, "fft_threads", lambda points=None: 2)
+    gaps, dx, dy, loads = ball_stack(3, n=64)
+    batch = solve_normal_batch(gaps, dx, dy, E_STAR, loads)
+    for gap, load, together in zip(gaps, loads, batch, strict=True):
+        alone = solve_normal(gap, dx, dy, E_STAR, load)
+        assert together.iterations == alone.iterations
+        scale = alone.peak_pressure
+        np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
 
 
 def test_batch_with_warm_starts_and_a_failing_contact():

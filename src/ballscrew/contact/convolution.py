@@ -8,7 +8,8 @@ equal to the exact linear (aperiodic) convolution (K5) of the half-space.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from concurrent.futures import ThreadPoolExecutor
+from functools import cache, lru_cache
 from types import ModuleType
 from typing import Any
 
@@ -16,7 +17,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
-from ballscrew.backend import padded_rfft
+from ballscrew.backend import MAX_FFT_THREADS, fft_threads, limited_fft_threads, padded_rfft
 from ballscrew.contact._validation import finite_grid
 from ballscrew.contact.influence import love_coefficients
 
@@ -62,15 +63,21 @@ class DCFFTOperator:
         self.e_star = float(e_star)
         self.xp = xp
         self.dtype = np.dtype(dtype).type
-        # K̃ is even along both axes (K̃[2n − i] = K̃[i]), so its DFT is real. It is stored twice
-        # per entry to multiply the complex spectrum viewed as (re, im) float pairs (2x faster than
-        # complex-by-real), with the 1/(4 nx ny) of the unnormalised inverse folded in.
-        kernel = wraparound_kernel(nx, ny, dx, dy, e_star)
-        self.self_coefficient = float(kernel[0, 0])
+        # K̃ is even along both axes (K̃[2n − i] = K̃[i]), so its DFT is real: the DCT-I of the
+        # quadrant K̃[0..nx, 0..ny] (a quarter of the points of the padded rfft2), mirrored along
+        # x. It is stored twice per entry to multiply the complex spectrum viewed as (re, im)
+        # float pairs (2x faster than complex-by-real), with the 1/(4 nx ny) of the unnormalised
+        # inverse folded in.
+        quadrant = np.zeros((nx + 1, ny + 1))
+        quadrant[:nx, :ny] = love_coefficients(nx, ny, dx, dy, e_star)
+        self.self_coefficient = float(quadrant[0, 0])
         """K(0, 0): displacement of a cell per unit pressure on itself [m/Pa]."""
-        spectrum = scipy.fft.rfft2(kernel).real
+        spectrum = scipy.fft.dctn(quadrant, type=1, workers=fft_threads(quadrant.size))
         spectrum *= padded_rfft(self.shape, xp, self.dtype).scale
-        self._kernel_pairs = xp.asarray(np.repeat(spectrum, 2, axis=1).astype(self.dtype))
+        pairs = np.empty((2 * nx, ny + 1, 2), dtype=self.dtype)
+        pairs[: nx + 1] = spectrum[:, :, None]
+        pairs[nx + 1 :] = spectrum[nx - 1 : 0 : -1, :, None]
+        self._kernel_pairs = xp.asarray(pairs.reshape(2 * nx, 2 * ny + 2))
 
     @classmethod
     def for_grid(
@@ -118,12 +125,19 @@ class DCFFTOperator:
 
         CuPy: one batched cuFFT over the stack. NumPy: the planned transform of one grid, grid
         after grid (measured on 2 cores as fast as or faster than scipy's batched transform of the
-        stack at 32 × 128², and each contact's u is then bit-identical to a single solve's).
+        stack at 32 × 128², and each contact's u is then bit-identical to a single solve's), the
+        stack split between :func:`~ballscrew.backend.fft_threads` threads of one FFT thread each
+        (grids of fewer than 512² padded points get one FFT thread, so one core, otherwise).
         """
         xp = self.xp
         if xp is np:
-            for p, u in zip(pressures, out, strict=True):
-                self.apply(p, out=u)
+            threads = min(fft_threads(4 * pressures.size), len(pressures))
+            if threads == 1:
+                for p, u in zip(pressures, out, strict=True):
+                    self.apply(p, out=u)
+                return out
+            chunks = np.array_split(np.arange(len(pressures)), threads)
+            list(_pool().map(lambda rows: self._apply_rows(pressures, out, rows), chunks))
             return out
         m, n = self.shape
         spectrum = xp.fft.rfft2(pressures.astype(self.dtype, copy=False), s=(2 * m, 2 * n))
@@ -131,6 +145,18 @@ class DCFFTOperator:
         xp.multiply(pairs, self._kernel_pairs, out=pairs)
         out[...] = xp.fft.irfft2(spectrum, s=(2 * m, 2 * n), norm="forward")[:, :m, :n]
         return out
+
+    def _apply_rows(self, pressures: Any, out: Any, rows: Any) -> None:
+        """u = K ∗ p of the grids ``rows`` of the stack, one FFT thread (in a pool thread)."""
+        with limited_fft_threads(1):
+            for b in rows:
+                self.apply(pressures[b], out=out[b])
+
+
+@cache
+def _pool() -> ThreadPoolExecutor:
+    """Threads that share out the grids of a stack (FFTW releases the GIL while it runs)."""
+    return ThreadPoolExecutor(MAX_FFT_THREADS, thread_name_prefix="ballscrew-fft")
 
 
 @lru_cache(maxsize=8)
