@@ -103,15 +103,16 @@ RIGIDITY_MISSES = {
 """Rows still outside ±25 %: the small-ball, 5 mm-lead nuts and the largest shaft."""
 
 
-@pytest.mark.parametrize("model", HIWIN_MODELS)
-def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
-    row, reference = _catalogue_row(dataset, "hiwin_fdc_rigidity", model)
+def _check_rigidity(validation, base_raw, key: str, model: str, reference: dict[str, Any], *,
+                    row: dict[str, Any], source: str, assumptions: tuple[str, ...],
+                    known_miss: bool) -> None:  # fmt: skip
+    """Record the double nut's rigidity of the case chain against a catalogue row."""
     validation.check(
-        "hiwin_fdc_rigidity_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
+        f"{key}_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
         kind="comparison with a maker's calculation",
         model="nut stiffness, Hertz contacts of every ball with elastic shaft and nut body "
         "(elastic distribution, 2 halves at 0.1 C_a preload)",
-        source=HIWIN_SOURCE,
+        source=source,
         reference=reference,
         quantity=f"axial rigidity of the double nut {model}",
         unit="N/µm",
@@ -120,9 +121,19 @@ def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
         tolerance=0.25,
         relative=True,
         tolerance_basis=RIGIDITY_TOLERANCE,
-        assumptions=RIGIDITY_ASSUMPTIONS,
-        known_miss=model in RIGIDITY_MISSES,
+        assumptions=assumptions,
+        known_miss=known_miss,
     )
+
+
+@pytest.mark.parametrize("model", HIWIN_MODELS)
+def test_hiwin_fdc_nut_rigidity(validation, dataset, base_raw, model) -> None:
+    row, reference = _catalogue_row(dataset, "hiwin_fdc_rigidity", model)
+    _check_rigidity(
+        validation, base_raw, "hiwin_fdc_rigidity", model, reference, row=row,
+        source=HIWIN_SOURCE, assumptions=RIGIDITY_ASSUMPTIONS,
+        known_miss=model in RIGIDITY_MISSES,
+    )  # fmt: skip
 
 
 REXROTH_SOURCE = "Bosch Rexroth R310RU 3301 (2006.02), double nuts FDM-E-S/-C (pp. 108-109)"
@@ -180,23 +191,11 @@ def _models(key: str) -> list[str]:
 def test_rexroth_fdm_nut_rigidity(validation, dataset, base_raw, model) -> None:
     row, reference = _catalogue_row(dataset, "rexroth_fdm_rigidity", model)
     shaft = row | {"root_mm": row["d0_mm"] - 0.71 * row["ball_mm"]}
-    validation.check(
-        "rexroth_fdm_rigidity_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
-        kind="comparison with a maker's calculation",
-        model="nut stiffness, Hertz contacts of every ball with elastic shaft and nut body "
-        "(elastic distribution, 2 halves at 0.1 C preload)",
-        source=REXROTH_SOURCE,
-        reference=reference,
-        quantity=f"axial rigidity R_nu of the double nut {model}",
-        unit="N/µm",
-        measured=row["rigidity_N_per_um"],
-        predicted=_nut_rigidity(base_raw, shaft) * 1e-6,
-        tolerance=0.25,
-        relative=True,
-        tolerance_basis=RIGIDITY_TOLERANCE,
-        assumptions=REXROTH_RIGIDITY_ASSUMPTIONS,
+    _check_rigidity(
+        validation, base_raw, "rexroth_fdm_rigidity", model, reference, row=shaft,
+        source=REXROTH_SOURCE, assumptions=REXROTH_RIGIDITY_ASSUMPTIONS,
         known_miss=model in REXROTH_RIGIDITY_MISSES,
-    )
+    )  # fmt: skip
 
 
 def test_thk_sbn_rigidity(validation, dataset) -> None:
