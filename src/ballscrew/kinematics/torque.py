@@ -57,7 +57,7 @@ class BallDrag:
     rolling_nut: FloatArray
     """EHL rolling force of the B film on the ball [N]."""
     psi: float
-    """Asperity share ψ at A used for the traction."""
+    """JGP asperity share ψ at A (the traction weight of the ``film`` law)."""
     torque: float
     """Screw torque per ball, (E3.7) at fixed nut force [N m]; positive opposes the rotation."""
     dissipation_torque: float
