@@ -11,6 +11,7 @@ from ballscrew.contact_resistance import ELEMENT_MODELS
 from ballscrew.errors import InputError
 from ballscrew.friction import FRICTION_MODELS
 from ballscrew.geometry import GAP_MODELS
+from ballscrew.kinematics import TRACTION_LAWS
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs, preload_drag_torque
 from ballscrew.lubrication import FILM_MODELS, hamrock_dowson
 from ballscrew.registry import Registry
@@ -58,6 +59,7 @@ def test_a_case_field_accepts_exactly_the_registered_names():
         ("thermal.drag_torque.source", DRAG_TORQUE_MODELS),
         ("medium.film_model", FILM_MODELS),
         ("friction.model", FRICTION_MODELS),
+        ("friction.traction", TRACTION_LAWS),
     ],
 )
 def test_case_files_refuse_unknown_model_names_with_the_list(gao_case_path, key, registry):

@@ -84,11 +84,20 @@ PHYSICS_MODEL = (
 )
 
 
-def _physics_torque(case: Case, speed: float) -> float:
+SKF_MODEL = f"{PHYSICS_MODEL[:-1]}; traction law skf)"
+SKF_ASSUMPTIONS = (
+    "traction: SKF sliding weighting φ_bl = exp[−2.6e-8 (n ν)^1.4 d_m] with μ_bl = 0.15, "
+    "μ_EHL = 0.05 (SKF Rolling bearings 2013, mineral oil), n the screw speed and d_m the "
+    "pitch diameter (ASSUMED mapping of the bearing's mean diameter)",
+)
+
+
+def _physics_torque(case: Case, speed: float, traction: str = "film") -> float:
     """The physics friction model's screw torque at ``speed`` without seals, level 2."""
+    friction = {"model": "ball_model", "seals": 0, "traction": traction}
     physics = case.model_copy(
         update={
-            "friction": case.friction.model_copy(update={"model": "ball_model", "seals": 0}),
+            "friction": case.friction.model_copy(update=friction),
             "kinematics": case.kinematics.model_copy(update={"level": 2}),
         }
     )
@@ -125,6 +134,13 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
         "model should do at least as well",
     ),
+    "friction_ball_model_skf": (
+        SKF_MODEL,
+        lambda case: _physics_torque(case, 100.0 * RPM, "skf"),
+        (*BALL_MODEL_ASSUMPTIONS, *PHYSICS_ASSUMPTIONS, *SKF_ASSUMPTIONS),
+        f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
+        "model should do at least as well (the same band as the film law's row)",
+    ),
 }
 
 
@@ -137,6 +153,8 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         pytest.param("ball_model", "down", True, id="ball_model-down"),
         pytest.param("friction_ball_model", "up", True, id="friction_ball_model-up"),
         pytest.param("friction_ball_model", "down", True, id="friction_ball_model-down"),
+        pytest.param("friction_ball_model_skf", "up", True, id="friction_ball_model_skf-up"),
+        pytest.param("friction_ball_model_skf", "down", True, id="friction_ball_model_skf-down"),
     ],
 )
 def test_xjtu_as_new_torque(validation, dataset, base_raw, name, direction, known_miss) -> None:
@@ -185,15 +203,19 @@ def test_thk_driving_torque_example(validation, dataset, base_raw) -> None:
     )
 
 
-def test_thk_preload_torque_example_by_the_physics_model(validation, dataset, base_raw) -> None:
+@pytest.mark.parametrize("traction", ["film", "skf"], ids=["film", "skf"])
+def test_thk_preload_torque_example_by_the_physics_model(
+    validation, dataset, base_raw, traction
+) -> None:
     data = dataset("drag_torque", "thk_preload_torque_example")
     base_raw["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
     base_raw["operating"].update(preload=f"{data['preload_N']} N", axial_load="0 N")
-    torque = _physics_torque(case_from_dict(base_raw), 100.0 * RPM)
+    torque = _physics_torque(case_from_dict(base_raw), 100.0 * RPM, traction)
+    skf = traction == "skf"
     validation.check(
-        "thk_preload_torque_example_physics",
+        "thk_preload_torque_example_physics" + ("_skf" if skf else ""),
         kind="verification",
-        model=PHYSICS_MODEL,
+        model=SKF_MODEL if skf else PHYSICS_MODEL,
         source=THK_SOURCE,
         reference=data,
         quantity="preload drag torque, BNFN4010-5, F_p = 3000 N",
@@ -211,6 +233,7 @@ def test_thk_preload_torque_example_by_the_physics_model(validation, dataset, ba
             "speed 100 rpm (ASSUMED: the usual preload-torque measuring speed)",
             *BALL_MODEL_ASSUMPTIONS[1:3],
             *PHYSICS_ASSUMPTIONS,
+            *(SKF_ASSUMPTIONS if skf else ()),
         ),
         known_miss=True,
     )

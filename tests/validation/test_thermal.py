@@ -9,7 +9,7 @@ import pytest
 import ballscrew
 from ballscrew.case import case_from_dict
 
-from .test_thermal_sources import PHYSICS_ASSUMPTIONS, PHYSICS_MODEL, physics_raw
+from .test_thermal_sources import PHYSICS_ASSUMPTIONS, PHYSICS_MODEL, SKF_ASSUMPTION, physics_raw
 
 SOURCE = "THK General Catalog, A-821"
 
@@ -91,17 +91,21 @@ PHYSICS_HEAT = (
 )
 
 
-@pytest.mark.parametrize("heat", ["catalogue", "physics"])
+@pytest.mark.parametrize("heat", ["catalogue", "physics", "physics_skf"])
 def test_thk_blk3232_shaft_temperature_rise(validation, dataset, base_raw, heat) -> None:
-    """The catalogue preload torque, or the physics friction model's operating point, as heat."""
+    """The catalogue preload torque, or the physics friction model's operating point (film or
+    SKF traction law), as heat."""
     data = dataset("thermal", "thk_blk3232_heat_test")
     raw = _blk3232_raw(base_raw, data)
     subject, record, basis = SUBJECT, "thk_blk3232_shaft_rise_no_seal", CATALOGUE_BASIS
-    if heat == "physics":
-        raw = physics_raw(raw, "polyurea_nlgi2_vg100")
+    if heat != "catalogue":
+        skf = heat == "physics_skf"
+        raw = physics_raw(raw, "polyurea_nlgi2_vg100", "skf" if skf else "film")
         common = tuple(a for a in ASSUMPTIONS if not a.startswith("heat:"))
-        subject = {**SUBJECT, "model": PHYSICS_MODEL, "assumptions": (*common, *PHYSICS_HEAT)}
-        record += "_physics"
+        heat_assumptions = (*PHYSICS_HEAT, *((SKF_ASSUMPTION,) if skf else ()))
+        model = PHYSICS_MODEL + (", traction law skf" if skf else "")
+        subject = {**SUBJECT, "model": model, "assumptions": (*common, *heat_assumptions)}
+        record += "_physics" + ("_skf" if skf else "")
         basis = (
             "the band of the catalogue row (±35 %, the makers' scatter of real preload torques "
             "about their formula): a physical model should do at least as well"
@@ -118,7 +122,7 @@ def test_thk_blk3232_shaft_temperature_rise(validation, dataset, base_raw, heat)
         tolerance=0.35,
         relative=True,
         tolerance_basis=basis,
-        known_miss=heat == "physics",
+        known_miss=heat != "catalogue",
     )
 
 

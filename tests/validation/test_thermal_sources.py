@@ -98,9 +98,17 @@ PHYSICS_ASSUMPTIONS = (
 )
 
 
-def physics_raw(raw: dict[str, Any], lubricant: str) -> dict[str, Any]:
-    """``raw`` with the balls' heat from the physics friction model, greased with ``lubricant``."""
-    raw["friction"] = {"model": "ball_model", "seals": 0}
+SKF_ASSUMPTION = (
+    "traction law skf: SKF sliding weighting φ_bl = exp[−2.6e-8 (n ν)^1.4 d_m], μ_bl = 0.15, "
+    "μ_EHL = 0.05 (SKF Rolling bearings 2013), n the screw speed, ν the base oil's at the "
+    "operating point, d_m the pitch diameter (ASSUMED mapping of the bearing's mean diameter)"
+)
+
+
+def physics_raw(raw: dict[str, Any], lubricant: str, traction: str = "film") -> dict[str, Any]:
+    """``raw`` with the balls' heat from the physics friction model, greased with ``lubricant``,
+    with the traction law ``traction`` of ``[friction]``."""
+    raw["friction"] = {"model": "ball_model", "seals": 0, "traction": traction}
     raw["medium"] = {"name": lubricant, "lubricant": lubricant, "thermal_conductivity": 0.14}
     raw.setdefault("lubrication", {})["supply"] = "grease"
     raw["thermal"]["drag_torque"] = {"source": "operating_point"}
@@ -121,21 +129,26 @@ HIWIN_TOLERANCE = (
 
 
 @pytest.mark.parametrize(
-    ("heat", "known_miss"), [("catalogue", False), ("physics", True)], ids=["catalogue", "physics"]
+    ("heat", "known_miss"),
+    [("catalogue", False), ("physics", True), ("physics_skf", True)],
+    ids=["catalogue", "physics", "physics_skf"],
 )
 def test_hiwin_r40_preload_doubling(validation, dataset, base_raw, heat, known_miss) -> None:
     data = dataset("thermal", "hiwin_r40_preload_doubling")
     low = _hiwin_raw(copy.deepcopy(base_raw), data, data["preload_low_N"])
     high = _hiwin_raw(base_raw, data, data["preload_high_N"])
     model, assumptions = "thermal_field (network)", (*HIWIN_ASSUMPTIONS, *HIWIN_CATALOGUE_HEAT)
-    if heat == "physics":
-        low, high = (physics_raw(r, "lithium_nlgi2_vg100") for r in (low, high))
-        model = PHYSICS_MODEL
+    if heat != "catalogue":
+        skf = heat == "physics_skf"
+        traction = "skf" if skf else "film"
+        low, high = (physics_raw(r, "lithium_nlgi2_vg100", traction) for r in (low, high))
+        model = PHYSICS_MODEL + (", traction law skf" if skf else "")
         assumptions = (
             *HIWIN_ASSUMPTIONS,
             *PHYSICS_ASSUMPTIONS,
             "grease lithium_nlgi2_vg100 (ASSUMED: HIWIN recommends lithium soap grease, "
             "section 4.6; the base-oil grade is a GUESS)",
+            *((SKF_ASSUMPTION,) if skf else ()),
         )
     validation.check(
         f"hiwin_r40_nut_rise_preload_doubled_{heat}",

@@ -54,17 +54,19 @@ def _ball_model(case: Case, viscosity: float | None) -> BallModel:
     """The case's ball model; a given ``viscosity`` (the caller's contact temperature) also
     sets α_p and the film's inlet heating of a named lubricant at that temperature."""
     model = ball_model(case)
-    changes: dict[str, object] = {}
+    state = lubricant_state(case, viscosity)
+    changes: dict[str, object] = {"traction_law": case.friction.traction}
+    if state is not None:
+        changes["lubricant_density"] = state.density
     if viscosity is not None:
         changes["viscosity"] = positive("viscosity", viscosity, "Pa s")
-        state = lubricant_state(case, viscosity)
         if state is not None and case.medium.viscosity is None:
             if case.medium.pressure_viscosity is None:
                 changes["pressure_viscosity"] = state.pressure_viscosity
             changes["film_model"] = film_model(case, state)
     if case.friction.boundary_friction is not None:
         changes["boundary_friction"] = case.friction.boundary_friction
-    return dataclasses.replace(model, **changes) if changes else model
+    return dataclasses.replace(model, **changes)
 
 
 def friction_torque(

@@ -7,6 +7,7 @@ Example::
 
     [friction]
     model = "ball_model"        # or "catalogue" (default)
+    traction = "skf"            # traction law of the ball model: "film" (default) or "skf"
     seals = 2                   # contacting seals / wiper rings of the nut
     seal_force = "5 N"          # friction force of one seal lip [GUESS], at the radius d_m/2
     hysteresis = 0.01           # hysteresis loss fraction α of the Hertz contacts [GUESS]
@@ -28,6 +29,7 @@ from ballscrew.friction.nut_losses import (
     DEFAULT_CIRCUITS,
     DEFAULT_LUBRICANT_FILL,
 )
+from ballscrew.kinematics.traction_laws import TRACTION_LAWS
 
 #: Friction force of one contacting seal lip on the screw [N]: GUESS inside the makers' ranges of
 #: seal resistance of linear-guide blocks (NB: 2–5 N; THK A-372: 2–43 N by size).
@@ -70,6 +72,11 @@ class FrictionSpec(Model):
     boundary_friction: (
         Annotated[float, Field(ge=0.0, le=1.0, description="μ_b of the ball model")] | None
     ) = Field(None, description="boundary friction of the ball model; None = [kinematics] value")
+    traction: model_choice(
+        TRACTION_LAWS,
+        "traction law of the ball model at both contacts: film (JGP share, limiting shear) or "
+        "skf (SKF sliding weighting φ_bl, μ_bl 0.15, μ_EHL 0.05)",
+    ) = "film"
     ball_ball_load_ratio: Annotated[
         float,
         Field(

@@ -44,6 +44,7 @@ from ballscrew.kinematics.balance import BallState, solve_ball
 from ballscrew.kinematics.model import BallModel
 from ballscrew.kinematics.motion import BallMotion, ball_motion
 from ballscrew.kinematics.torque import ball_drag
+from ballscrew.kinematics.traction_laws import traction_weights
 
 __all__ = ["BallLosses", "ball_losses", "film_parameter", "hysteresis_force", "regime"]
 
@@ -136,15 +137,16 @@ def _groove_slip_torque(model: BallModel, state: BallState) -> float:
     a, b = model.hertz_semi_axes("nut", state.load_nut)
     u_e = abs(state.ball_speed)
     sharing = model.sharing(state.load_nut, u_e, "nut")
+    law = traction_weights(model, sharing.psi, state.screw_speed if u_e > 0.0 else 0.0)
     power = differential_slip_power(
         state.load_nut,
         a,
         b,
         model.deformed_radius("nut"),
         rate,
-        psi=sharing.psi,
-        boundary_friction=model.boundary_friction,
-        limiting_shear=model.limiting_shear,
+        psi=law.share,
+        boundary_friction=law.boundary_friction,
+        limiting_shear=law.film_friction,
         film_thickness=sharing.separation,
         viscosity=model.viscosity if u_e > 0.0 else None,
         pressure_viscosity=model.pressure_viscosity,

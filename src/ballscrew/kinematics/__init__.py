@@ -10,6 +10,8 @@ Theory manual ``docs/theory/kinematics.md`` and, for (E9.1), ``docs/theory/loads
 4. :mod:`~ballscrew.kinematics.balance` — Levels 0, 1 (E3.5) and 2 (E3.6) of the ball balance.
 5. :mod:`~ballscrew.kinematics.torque` — drag torque of the ball model (E3.7).
 6. :mod:`~ballscrew.kinematics.limits` — whirling and d·n limits.
+7. :mod:`~ballscrew.kinematics.traction_laws` — rival traction laws of the contacts
+   (:data:`TRACTION_LAWS`: JGP film law, SKF sliding weighting).
 
 The case-level functions (``ball_kinematics``, ``drag_torque``, ``computed_drag_torque``,
 ``run_kinematics``) compose these in :mod:`ballscrew.analyses.kinematics`.
@@ -27,8 +29,15 @@ from ballscrew.kinematics.sliding import (
     sliding_field_closed_form,
 )
 from ballscrew.kinematics.torque import BallDrag, ball_drag
+from ballscrew.kinematics.traction_laws import (
+    TRACTION_LAWS,
+    TractionWeights,
+    skf_sliding_friction,
+    skf_weighting,
+)
 
 __all__ = [
+    "TRACTION_LAWS",
     "BallDrag",
     "BallFrame",
     "BallModel",
@@ -37,6 +46,7 @@ __all__ = [
     "ContactAxes",
     "SlidingField",
     "SpeedLimitWarning",
+    "TractionWeights",
     "ball_drag",
     "ball_frame",
     "ball_motion",
@@ -44,6 +54,8 @@ __all__ = [
     "critical_speed",
     "deformed_radius",
     "groove_root_diameter",
+    "skf_sliding_friction",
+    "skf_weighting",
     "sliding_field",
     "sliding_field_closed_form",
     "solve_ball",

@@ -43,6 +43,7 @@ from ballscrew.kinematics.motion import (
 )
 from ballscrew.kinematics.newton import newton_solve
 from ballscrew.kinematics.traction import ContactTraction, contact_traction, hertz_pressure_grid
+from ballscrew.kinematics.traction_laws import traction_weights
 from ballscrew.loads import ball_load
 from ballscrew.lubrication import LoadSharing
 
@@ -264,17 +265,18 @@ def _level2_forces(model: BallModel, omega: float, s: int, x: FloatArray, dynami
     if q_a > 0:
         a, b = model.hertz_semi_axes("screw", q_a)
         gx, gy, p = hertz_pressure_grid(a, b, q_a, model.traction_cells)
+        law = traction_weights(model, sharing.psi, omega if dynamic else 0.0)
         traction = contact_traction(
             motion,
             gx,
             gy,
             p,
-            psi=sharing.psi,
+            psi=law.share,
             film_thickness=sharing.separation,
             viscosity=model.viscosity if dynamic else None,
             pressure_viscosity=model.pressure_viscosity,
-            boundary_friction=model.boundary_friction,
-            limiting_shear=model.limiting_shear,
+            boundary_friction=law.boundary_friction,
+            limiting_shear=law.film_friction,
             deformed_radius=model.deformed_radius("screw"),
         )
     else:

@@ -49,6 +49,11 @@ class BallModel:
     boundary_friction: float = 0.1
     limiting_shear: float = 0.07
     traction_cells: int = 32
+    traction_law: str = "film"
+    """Registered traction law (``ballscrew.kinematics.traction_laws.TRACTION_LAWS``)."""
+    lubricant_density: float = 870.0
+    """ρ [kg/m³] for the kinematic viscosity ν = η₀/ρ of the ``skf`` traction law (GUESS: a
+    mineral oil near 40 °C, the density the friction model takes without a named lubricant)."""
     film_model: str | FilmModel = "hamrock_dowson"
     """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``), or one bound to
     the supply state (``ballscrew.lubrication.supply``)."""

@@ -26,6 +26,7 @@ from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.model import BallModel
 from ballscrew.kinematics.motion import ball_motion
 from ballscrew.kinematics.traction import ContactTraction, contact_traction, hertz_pressure_grid
+from ballscrew.kinematics.traction_laws import traction_weights
 
 __all__ = ["BallDrag", "ball_drag", "efficiency_drag_torque"]
 
@@ -56,7 +57,7 @@ class BallDrag:
     rolling_nut: FloatArray
     """EHL rolling force of the B film on the ball [N]."""
     psi: float
-    """Asperity share ψ at A used for the traction."""
+    """JGP asperity share ψ at A (the traction weight of the ``film`` law)."""
     torque: float
     """Screw torque per ball, (E3.7) at fixed nut force [N m]; positive opposes the rotation."""
     dissipation_torque: float
@@ -96,17 +97,18 @@ def ball_drag(model: BallModel, state: BallState) -> BallDrag:
         psi = sharing.psi
         a, b = model.hertz_semi_axes("screw", state.load_screw)
         x, y, p = hertz_pressure_grid(a, b, state.load_screw, model.traction_cells)
+        law = traction_weights(model, psi, state.screw_speed if u_e > 0 else 0.0)
         traction = contact_traction(
             motion,
             x,
             y,
             p,
-            psi=psi,
+            psi=law.share,
             film_thickness=sharing.separation,
             viscosity=model.viscosity if u_e > 0 else None,
             pressure_viscosity=model.pressure_viscosity,
-            boundary_friction=model.boundary_friction,
-            limiting_shear=model.limiting_shear,
+            boundary_friction=law.boundary_friction,
+            limiting_shear=law.film_friction,
             deformed_radius=model.deformed_radius("screw"),
         )
         relative = motion.ball_speed - float(motion.screw_velocity(frame.centre) @ frame.t)
