@@ -170,7 +170,24 @@ class PaddedRealFFT(Protocol):
         ...
 
 
-class _FFTWPadded:
+class _Padded:
+    """What every implementation of :class:`PaddedRealFFT` holds: the data shape ``(m, n)``,
+    ``scale = 1/(4 m n)``, the precision and the CPU threads it may use."""
+
+    def __init__(
+        self, shape: tuple[int, int], threads: int = 1, dtype: type[np.floating] = np.float64
+    ) -> None:
+        m, n = shape
+        self.shape = shape
+        self.scale = 1.0 / (4 * m * n)
+        self._threads = threads
+        self._dtype = dtype
+
+    def plan_measured(self) -> None:
+        """Nothing to plan: the library plans on its own."""
+
+
+class _FFTWPadded(_Padded):
     """pyFFTW implementation of :class:`PaddedRealFFT` with pruned zero padding."""
 
     _PLAN_EXECUTIONS = 5
@@ -179,10 +196,8 @@ class _FFTWPadded:
     def __init__(
         self, shape: tuple[int, int], threads: int, dtype: type[np.floating] = np.float64
     ) -> None:
+        super().__init__(shape, threads, dtype)
         m, n = shape
-        self.shape = shape
-        self.scale = 1.0 / (4 * m * n)
-        self._threads = threads
         self._rows_in = pyfftw.zeros_aligned((m, 2 * n), dtype=dtype)
         self._rows_out = pyfftw.empty_aligned((m, 2 * n), dtype=dtype)
         self._spectrum = pyfftw.zeros_aligned((2 * m, n + 1), dtype=np.result_type(dtype, 1j))
@@ -269,43 +284,25 @@ class _FFTWPadded:
         return out
 
 
-class _ScipyPadded:
+class _ScipyPadded(_Padded):
     """:mod:`scipy.fft` implementation of :class:`PaddedRealFFT` with pruned zero padding."""
-
-    def __init__(
-        self, shape: tuple[int, int], threads: int, dtype: type[np.floating] = np.float64
-    ) -> None:
-        m, n = shape
-        self.shape = shape
-        self.scale = 1.0 / (4 * m * n)
-        self._workers = threads
-        self._dtype = dtype
 
     def forward(self, a: np.ndarray) -> np.ndarray:
         m, n = self.shape
         a = np.asarray(a, dtype=self._dtype)
-        rows = scipy.fft.rfft(a, n=2 * n, axis=1, workers=self._workers)
-        return scipy.fft.fft(rows, n=2 * m, axis=0, overwrite_x=True, workers=self._workers)
+        rows = scipy.fft.rfft(a, n=2 * n, axis=1, workers=self._threads)
+        return scipy.fft.fft(rows, n=2 * m, axis=0, overwrite_x=True, workers=self._threads)
 
     def inverse(self, spectrum: np.ndarray, out: np.ndarray) -> np.ndarray:
         m, n = self.shape
-        cols = scipy.fft.ifft(spectrum, axis=0, norm="forward", workers=self._workers)
-        rows = scipy.fft.irfft(cols[:m], n=2 * n, axis=1, norm="forward", workers=self._workers)
+        cols = scipy.fft.ifft(spectrum, axis=0, norm="forward", workers=self._threads)
+        rows = scipy.fft.irfft(cols[:m], n=2 * n, axis=1, norm="forward", workers=self._threads)
         out[...] = rows[:, :n]
         return out
 
-    def plan_measured(self) -> None:
-        """Nothing to plan: the library plans on its own."""
 
-
-class _CupyPadded:
+class _CupyPadded(_Padded):
     """:mod:`cupy.fft` implementation of :class:`PaddedRealFFT` (cuFFT caches the plans)."""
-
-    def __init__(self, shape: tuple[int, int], dtype: type[np.floating] = np.float64) -> None:
-        m, n = shape
-        self.shape = shape
-        self.scale = 1.0 / (4 * m * n)
-        self._dtype = dtype
 
     def forward(self, a: Any) -> Any:
         m, n = self.shape
@@ -316,9 +313,6 @@ class _CupyPadded:
         full = cupy.fft.irfft2(spectrum, s=(2 * m, 2 * n), norm="forward")
         out[...] = full[:m, :n]
         return out
-
-    def plan_measured(self) -> None:
-        """Nothing to plan: the library plans on its own."""
 
 
 _local = threading.local()
@@ -348,7 +342,7 @@ def padded_rfft(
     transform = transforms.get(key)
     if transform is None:
         if xp is not np:
-            transform = _CupyPadded(shape, dtype)
+            transform = _CupyPadded(shape, dtype=dtype)
         elif pyfftw is not None:
             transform = _FFTWPadded(shape, threads, dtype)
         else:

@@ -100,6 +100,15 @@ def _log_sample(x: np.ndarray, count: int = 600) -> np.ndarray:
     return index
 
 
+def _fit_lines(ax: plt.Axes, r: FractalFit, x: np.ndarray, label: str) -> None:
+    """The shaded fit range, the fitted line over the whole of ``x`` (dashed) and over the
+    range (solid)."""
+    ax.axvspan(*r.fit_range, color="C2", alpha=0.12, label="fit range")
+    ax.loglog(x, r.line(x), "--", color="C3", linewidth=1.0, label=f"{label}, extended")
+    fr = np.geomspace(*r.fit_range, 50)
+    ax.loglog(fr, r.line(fr), "-", color="C3", linewidth=1.8, label=label)
+
+
 def psd_plot(fit: SurfaceFit, path: Path) -> Path:
     """Periodogram, log-smoothed spectrum, fitted (F2) line and the shaded fit range."""
     assert fit.psd is not None and fit.spectrum is not None
@@ -109,10 +118,7 @@ def psd_plot(fit: SurfaceFit, path: Path) -> Path:
     idx = _log_sample(f, 2000)
     ax.loglog(f[idx], s[idx], color="0.75", linewidth=0.6, label="periodogram")
     ax.loglog(r.x, r.y, "o", markersize=3, color="C0", label="log-smoothed (bias removed)")
-    ax.axvspan(*r.fit_range, color="C2", alpha=0.12, label="fit range")
-    ax.loglog(f, r.line(f), "--", color="C3", linewidth=1.0, label="fit, extended")
-    fr = np.geomspace(*r.fit_range, 50)
-    ax.loglog(fr, r.line(fr), "-", color="C3", linewidth=1.8, label="fit")
+    _fit_lines(ax, r, f, "fit")
     ax.set_xlabel("frequency ω [cycles/m]")
     ax.set_ylabel("one-sided PSD S(ω) [m³]")
     ax.set_title(f"PSD: D = {r.D:.4f}, G = {r.G:.3g} m, R² = {r.r_squared:.4f}", fontsize=10)
@@ -132,10 +138,7 @@ def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
     idx = _log_sample(lag)
     ax.loglog(lag[idx], sf[idx], color="0.55", linewidth=1.0, label="structure function")
     ax.loglog(r.x, r.y, "o", markersize=3, color="C0", label="band-corrected, smoothed")
-    ax.axvspan(*r.fit_range, color="C2", alpha=0.12, label="fit range")
-    ax.loglog(lag, r.line(lag), "--", color="C3", linewidth=1.0, label="fit (F4), extended")
-    fr = np.geomspace(*r.fit_range, 50)
-    ax.loglog(fr, r.line(fr), "-", color="C3", linewidth=1.8, label="fit (F4)")
+    _fit_lines(ax, r, lag, "fit (F4)")
     if np.isfinite(r.D):
         top = 0.5 / fit.spacing
         keep = lag <= fit.length / 3.5

@@ -78,6 +78,10 @@ HISTORY_FIELD: dict[str, str] = {
 
 _LN10 = math.log(10.0)
 _K_MIN, _K_MAX = 1.0e-16, 1.0  # K is a probability per asperity encounter
+_DIFF_STEP = 1.0e-2
+"""Default forward-difference step in the logarithm of a parameter, for the Jacobian."""
+_SCAN_STEPS = 6
+"""Default for the most decades the scan in K may extend beyond its first three points."""
 
 
 class CalibrationError(BallscrewError, ValueError):
@@ -365,8 +369,8 @@ def fit_wear_coefficient(
     torque_scale: float = 1.0,
     fit_torque_scale: bool = False,
     max_evaluations: int = 40,
-    diff_step: float = 1.0e-2,
-    scan_steps: int = 6,
+    diff_step: float = _DIFF_STEP,
+    scan_steps: int = _SCAN_STEPS,
     refine_steps: int = 2,
 ) -> CalibrationResult:
     """Fit K (and the torque scale) so that ``simulate(K)`` matches the measured history.

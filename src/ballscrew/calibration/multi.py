@@ -39,9 +39,11 @@ import numpy as np
 
 from ballscrew.calibration.diagnostics import residual_diagnostics
 from ballscrew.calibration.fit import (
+    _DIFF_STEP,
     _K_MAX,
     _K_MIN,
     _LN10,
+    _SCAN_STEPS,
     CalibrationError,
     CalibrationResult,
     WearHistory,
@@ -237,8 +239,8 @@ def fit_parameters(
     torque_scale: float = 1.0,
     fit_until: float | None = None,
     max_evaluations: int = 200,
-    diff_step: float = 1.0e-2,
-    scan_steps: int = 6,
+    diff_step: float = _DIFF_STEP,
+    scan_steps: int = _SCAN_STEPS,
     refine_steps: int = 6,
     label: str = "calibration (least squares)",
 ) -> CalibrationResult:

@@ -110,16 +110,7 @@ class BallModel:
         """EHL film carrying the whole load (None without lubricant or motion)."""
         if not self.lubricated or speed == 0.0 or load <= 0.0:
             return None
-        c = self.curvature(contact)
-        return film_function(self.film_model)(
-            c.rx,
-            c.ry,
-            2.0 * self.e_star(contact),
-            self.viscosity,
-            self.pressure_viscosity,
-            abs(speed),
-            load,
-        )
+        return film_function(self.film_model)(*self._ehl_inputs(load, speed, contact))
 
     def sharing(self, load: float, speed: float, contact: Side = "screw") -> LoadSharing:
         """JGP asperity share at A (E6.4); dry (ψ = 1) without lubricant or entrainment."""
@@ -143,8 +134,15 @@ class BallModel:
         """EHL rolling-resistance magnitude F_R (E3.4) [N]; 0 without lubricant or motion."""
         if not self.lubricated or speed == 0.0 or load <= 0.0:
             return 0.0
+        return ehl_rolling_resistance(*self._ehl_inputs(load, speed, contact))
+
+    def _ehl_inputs(
+        self, load: float, speed: float, contact: Side
+    ) -> tuple[float, float, float, float, float, float, float]:
+        """(R_x, R_y, E′ = 2E*, η₀, α_p, u_e = |V|, Q) of contact ``contact``: the inputs of a
+        film model (E6.1) and of the rolling resistance (E3.4)."""
         c = self.curvature(contact)
-        return ehl_rolling_resistance(
+        return (
             c.rx,
             c.ry,
             2.0 * self.e_star(contact),

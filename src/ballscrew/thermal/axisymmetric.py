@@ -40,9 +40,11 @@ from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.fe_assembly import (
     BoreInterface,
+    bearing_loads,
     body_integrals,
     body_matrices,
     face_matrices,
+    surface_film,
     twin_dofs,
 )
 from ballscrew.thermal.fe_operator import CoolantChannel, FeOperator, Readouts, fe_discretisation
@@ -67,6 +69,11 @@ def mass(u, v, w):
 def surface(v, w):
     """v 2πr: its sum is the area; times a flux it is a load."""
     return v * TWO_PI * w.x[0]
+
+
+def _area_weight(integrand: NDArray[np.float64], x: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The integrand times 2πr (:data:`~ballscrew.thermal.fe_assembly.AreaWeight`)."""
+    return integrand * TWO_PI * x[0]
 
 
 @dataclass(frozen=True)
@@ -225,7 +232,6 @@ def build_axisymmetric(
     element = ElementQuad2() if order == 2 else ElementQuad1()
     intorder = 2 * order + 2
     basis = Basis(mesh, element, intorder=intorder)
-    L = problem.shaft_length
 
     def facet_basis(name: str) -> FacetBasis:
         return FacetBasis(mesh, element, facets=am.facets[name], intorder=intorder)
@@ -248,39 +254,13 @@ def build_axisymmetric(
         pairs = twin_dofs(tree, surface_dofs, basis.doflocs[:, dofs], grid.shifts, grid.dz)
         bores.append(BoreInterface(dofs, pairs, m_bore / area, b_bore / area))
 
-    bearings = []
-    for bearing in problem.bearings:
-        lo = max(bearing.position - 0.5 * bearing.width, 0.0)
-        hi = min(bearing.position + 0.5 * bearing.width, L)
-
-        @LinearForm
-        def band(v, w, lo=lo, hi=hi):
-            inside = (w.x[1] >= lo) & (w.x[1] <= hi)
-            return inside * v * TWO_PI * w.x[0]
-
-        g = asm(band, fb_surface)
-        if not g.sum() > 0.0:
-            raise InputError(
-                f"bearings.{bearing.name}.width",
-                bearing.width,
-                f"a band wider than the mesh {size:g} m",
-            )
-        bearings.append(g / g.sum())
-
-    def surface_film(weights: NDArray[np.float64]) -> sp.csr_matrix:
-        @BilinearForm
-        def film(u, v, w):
-            return (1.0 - grid.coverage(w.x[1], weights)) * u * v * TWO_PI * w.x[0]
-
-        return asm(film, fb_surface)
-
     operator = FeOperator(
         conduction=conductance,
         capacity=capacity,
         faces=face_matrices(basis, intorder, am.facets, mass),
-        surface_film=surface_film,
+        surface_film=surface_film(grid, fb_surface, _area_weight),
         bores=tuple(bores),
-        bearings=tuple(bearings),
+        bearings=bearing_loads(problem, fb_surface, _area_weight, size),
         outer=np.asarray(asm(surface, facet_basis("ring_outer"))),
         coolant=(
             _coolant_channel(problem, basis, am, facet_basis) if "shaft_bore" in am.facets else None

@@ -10,7 +10,7 @@ and outer faces. Only their weak forms differ (2πr weighting in the axisymmetri
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -19,10 +19,15 @@ from numpy.typing import NDArray
 from scipy.spatial import cKDTree
 from skfem import Basis, BilinearForm, FacetBasis, LinearForm, asm
 
-from ballscrew.thermal.problem import ThermalProblem
+from ballscrew.errors import InputError
+from ballscrew.thermal.problem import AxialGrid, ThermalProblem
 
 CONVECTIVE_FACES = ("shaft_ends", "ring_outer", "ring_ends")
 """Faces with a fixed convection coefficient; the screw surface is handled per stroke offset."""
+
+AreaWeight = Callable[[NDArray[np.float64], NDArray[np.float64]], NDArray[np.float64]]
+"""(integrand, quadrature points x) → integrand times the model's area weight (2πr in the
+axisymmetric model, 1 in 3-D); the axial coordinate is the last one of x."""
 
 
 def body_matrices(
@@ -76,6 +81,51 @@ def face_matrices(
             face = FacetBasis(basis.mesh, basis.elem, facets=facets[name], intorder=intorder)
             out[name] = sp.csr_matrix(asm(mass, face))
     return out
+
+
+def bearing_loads(
+    problem: ThermalProblem, surface: FacetBasis, weight: AreaWeight, size: float
+) -> tuple[NDArray[np.float64], ...]:
+    """Per bearing: its load vector for 1 W, spread evenly over its band of the shaft surface.
+
+    g_i = ∫_band φ_i dA / ∫_band dA on ``surface`` (the shaft surface's facet basis), the band
+    being the bearing's width clipped to the shaft; ``size`` is the axial element size, which a
+    band must exceed to be seen by the quadrature.
+    """
+    loads = []
+    for bearing in problem.bearings:
+        lo = max(bearing.position - 0.5 * bearing.width, 0.0)
+        hi = min(bearing.position + 0.5 * bearing.width, problem.shaft_length)
+
+        @LinearForm
+        def band(v, w, lo=lo, hi=hi):
+            inside = (w.x[-1] >= lo) & (w.x[-1] <= hi)
+            return weight(inside * v, w.x)
+
+        g = np.asarray(asm(band, surface))
+        if not g.sum() > 0.0:
+            raise InputError(
+                f"bearings.{bearing.name}.width",
+                bearing.width,
+                f"a band wider than the mesh {size:g} m",
+            )
+        loads.append(g / g.sum())
+    return tuple(loads)
+
+
+def surface_film(
+    grid: AxialGrid, surface: FacetBasis, weight: AreaWeight
+) -> Callable[[NDArray[np.float64]], sp.csr_matrix]:
+    """Stroke weights → unit film of the shaft surface outside the nut, ∫(1 − coverage) u v dA."""
+
+    def film(weights: NDArray[np.float64]) -> sp.csr_matrix:
+        @BilinearForm
+        def form(u, v, w):
+            return weight((1.0 - grid.coverage(w.x[-1], weights)) * u * v, w.x)
+
+        return asm(form, surface)
+
+    return film
 
 
 @dataclass(frozen=True)

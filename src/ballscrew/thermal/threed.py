@@ -63,9 +63,11 @@ from ballscrew.thermal.axisymmetric import probes
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.fe_assembly import (
     BoreInterface,
+    bearing_loads,
     body_integrals,
     body_matrices,
     face_matrices,
+    surface_film,
     twin_dofs,
 )
 from ballscrew.thermal.fe_operator import FeOperator, Readouts, fe_discretisation
@@ -101,6 +103,12 @@ def unit(v, w):
 def weighted_load(v, w):
     """c(x) v: a distributed flux c [W/m²]."""
     return w.c * v
+
+
+def _area_weight(integrand: NDArray[np.float64], x: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The integrand as it is, in Cartesian coordinates
+    (:data:`~ballscrew.thermal.fe_assembly.AreaWeight`)."""
+    return integrand
 
 
 @dataclass(frozen=True)
@@ -284,36 +292,13 @@ def build_threed(
         patch_info.append(info)
         bores.append(BoreInterface(dofs, pairs, m_bore, b_bore))
 
-    bearings = []
-    for bearing in problem.bearings:
-        lo = max(bearing.position - 0.5 * bearing.width, 0.0)
-        hi = min(bearing.position + 0.5 * bearing.width, problem.shaft_length)
-
-        @LinearForm
-        def band(v, w, lo=lo, hi=hi):
-            return ((w.x[2] >= lo) & (w.x[2] <= hi)) * v
-
-        g = np.asarray(asm(band, fb_surface))
-        if not g.sum() > 0.0:
-            raise InputError(
-                f"bearings.{bearing.name}.width", bearing.width, "a band wider than the mesh"
-            )
-        bearings.append(g / g.sum())
-
-    def surface_film(weights: NDArray[np.float64]) -> sp.csr_matrix:
-        @BilinearForm
-        def film(u, v, w):
-            return (1.0 - grid.coverage(w.x[2], weights)) * u * v
-
-        return asm(film, fb_surface)
-
     operator = FeOperator(
         conduction=conductance,
         capacity=capacity,
         faces=face_matrices(basis, intorder, m3.facets, mass),
-        surface_film=surface_film,
+        surface_film=surface_film(grid, fb_surface, _area_weight),
         bores=tuple(bores),
-        bearings=tuple(bearings),
+        bearings=bearing_loads(problem, fb_surface, _area_weight, max(size, far_size)),
         outer=np.asarray(asm(unit, facet_basis("ring_outer"))),
     )
     shaft_basis, shaft_volume, nut_mean = body_integrals(basis, intorder, m3.body, unit)
