@@ -128,14 +128,19 @@ class _Model:
         self.max_evaluations = max_evaluations
         self.label = label
         self.cache: dict[tuple[tuple[str, float], ...], tuple[np.ndarray, np.ndarray]] = {}
+        self.best_rms = math.inf
+        """Least RMS of a run minus the data so far (model unscaled) [SI]."""
 
     def run(self, values: Mapping[str, float]) -> tuple[np.ndarray, np.ndarray]:
         """(model revolutions, model values) at ``values``."""
         key = tuple(sorted((k, float(v)) for k, v in values.items()))
         if key not in self.cache:
             if len(self.cache) >= self.max_evaluations:
-                raise ConvergenceError(self.label, len(self.cache), math.nan, 0)
-            self.cache[key] = covering_history(self.simulate(dict(key)), self.data)
+                raise ConvergenceError(self.label, len(self.cache), self.best_rms, 0)
+            rev, val = covering_history(self.simulate(dict(key)), self.data)
+            error = np.interp(self.data.revolutions, rev, val) - self.data.values
+            self.best_rms = min(self.best_rms, float(np.sqrt(np.mean(error**2))))
+            self.cache[key] = rev, val
         return self.cache[key]
 
     def at(self, values: Mapping[str, float], revolutions: np.ndarray) -> np.ndarray:
@@ -310,7 +315,7 @@ def fit_parameters(
     message = ""
     for _ in range(_RESTARTS):
         solution = solve_least_squares(
-            residuals, x, jacobian, (lower, upper), max_evaluations, label, lambda: math.nan
+            residuals, x, jacobian, (lower, upper), max_evaluations, label, lambda: model.best_rms
         )
         x, message = solution.x, str(solution.message)
         if _converged(jacobian.difference(x), residuals(x), x, (lower, upper), n_fit):
