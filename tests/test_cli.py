@@ -85,6 +85,11 @@ BAD_EDITS = [
     ('preload = "1500 N"', 'preload = "-1500 N"', "operating.preload = '-1500 N' is not allowed"),
     ('preload = "1500 N"', 'preload = "0 N"', "a double nut needs a preload > 0 N"),
     ('lead = "10 mm"', 'lead = "10 mm', "TOML syntax error"),
+    (
+        "[numerics]",
+        '[loads]\ncontact = "numerical"\n\n[numerics]',
+        "loads.contact = 'numerical' needs loads.distribution = 'elastic'",
+    ),
 ]
 
 

@@ -16,6 +16,7 @@ from ballscrew.analyses.contact_law import (
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case.loader import CaseError
 from ballscrew.contact import hertz
+from ballscrew.errors import InputError
 from ballscrew.geometry import raceway_curvature
 
 ELASTIC = {"loads.distribution": "elastic", "operating.axial_load": 2000.0}
@@ -74,3 +75,22 @@ def test_the_conforming_groove_changes_the_distribution_a_little(gao_case_path):
 def test_the_contact_law_is_a_case_choice(gao_case_path):
     with pytest.raises(CaseError, match=r"loads\.contact"):
         ballscrew.load_case(gao_case_path, ELASTIC | {"loads.contact": "dmt"})
+
+
+@pytest.mark.parametrize(
+    ("numerics", "field"),
+    [
+        ({"numerics.cells_across": 8}, "numerics.cells_across"),
+        ({"numerics.cells": [6, 6]}, "cells"),
+    ],
+)
+def test_too_coarse_a_grid_for_the_smallest_tabulated_load_is_refused(
+    gao_case_path, numerics, field
+):
+    """The table's loads share the top load's grid: with 8 cells across it the smallest load
+    (Q_top/128) has ~1.6 across and its ball loads are 3.6 % off; refused, naming the field."""
+    case = ballscrew.load_case(gao_case_path, NUMERICAL | numerics)
+    params = ScrewParameters.from_case(case)
+    with pytest.raises(InputError, match=rf"{field} = .*\(8 cells across the smallest") as info:
+        numerical_contact(params, case.numerics)
+    assert len(str(info.value).splitlines()) == 1

@@ -165,3 +165,11 @@ def test_result_is_frozen() -> None:
     with pytest.raises(AttributeError):
         result.wear_coefficient = 1.0  # type: ignore[misc]
     assert math.isclose(result.relative_error, result.standard_error / result.wear_coefficient)
+
+
+def test_evaluation_budget_reports_a_finite_residual() -> None:
+    """The ConvergenceError of a spent budget carries the best RMS so far (N), not NaN."""
+    with pytest.raises(ConvergenceError) as info:
+        fit_wear_coefficient(SyntheticModel(), bench("preload", 1), max_evaluations=5)
+    assert "nan" not in str(info.value)
+    assert math.isfinite(info.value.residual) and info.value.residual > 0.0

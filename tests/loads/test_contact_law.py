@@ -20,6 +20,17 @@ K = 1.2e-7  # Hertz constant of a ball's two contacts [m N^-2/3]
 TABLE = np.geomspace(2.0, 256.0, 7)
 
 
+def test_the_approach_at_a_load_inverts_the_law():
+    """δ(Q) of a power-law table is K Q^(2/3) inside and beyond the table; on a table off the
+    power law it is the inverse of Q(δ) between the points."""
+    law = TabulatedContact.hertz(K, TABLE)
+    for q in (0.1, 2.0, 7.3, 100.0, 256.0, 5000.0):
+        assert law.approach(q) == pytest.approx(K * q ** (2.0 / 3.0), rel=1e-12)
+    bent = TabulatedContact(TABLE, K * TABLE**0.6 * (1.0 + 0.01 * np.log(TABLE)))
+    for q in (3.0, 50.0, 200.0):
+        assert bent.load(bent.approach(q))[0] == pytest.approx(q, rel=1e-12)
+
+
 def test_a_power_law_table_gives_the_power_law_inside_and_beyond_it():
     law = TabulatedContact.hertz(K, TABLE)
     q = np.geomspace(0.05, 2000.0, 101)

@@ -66,3 +66,13 @@ def test_rows_follow_the_declared_headlines():
         ("screw temperature", "29.75 °C"),
     ]
     assert headline_keys("no such analysis") == ()
+
+
+def test_label_of_is_kept_as_readable():
+    """``label_of`` stays a public name of this module: the same words as ``readable``."""
+    from ballscrew.results import headlines
+    from ballscrew.results.headlines import label_of
+
+    assert "label_of" in headlines.__all__
+    for key in ("contacts.screw.numerical.peak_pressure", "nuts.nut1.orbital_speed", "F1"):
+        assert label_of(key) == readable(key)

@@ -10,7 +10,8 @@ F/(Z sinβ cosα), so nearby load cases share one table), with one batched solve
 monotonically (:class:`ballscrew.loads.contact_law.TabulatedContact`). The grid follows the Hertz
 ellipse of Q_top (``numerics.cells_across`` cells across it, or ``numerics.cells``, box
 ``numerics.box_factor``) and is enlarged like a single solve until the pressure of Q_top vanishes
-at its edge; the smallest load then has about cells_across / TABLE_SPAN^(1/3) cells across.
+at its edge; the smallest load then has about cells_across / TABLE_SPAN^(1/3) cells across,
+and a grid leaving it fewer than :data:`MIN_CELLS` is refused (cells_across ≥ 41).
 
 Ball-diameter errors enter the distribution as approach offsets; the law itself is that of the
 nominal ball (a 1 µm larger ball changes the contact curvatures by ~1e-4, neglected).
@@ -28,12 +29,13 @@ from numpy.typing import NDArray
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import NumericsSpec
-from ballscrew.contact import cell_centres, hertz, solve_normal_batch
+from ballscrew.contact import HertzContact, cell_centres, hertz, solve_normal_batch
 from ballscrew.errors import BallscrewError, InputError
 from ballscrew.geometry import ScrewGeometry, gap_function, raceway_curvature
 from ballscrew.loads.contact_law import TabulatedContact
 
 __all__ = [
+    "MIN_CELLS",
     "TABLE_POINTS",
     "TABLE_SPAN",
     "TOP_FACTOR",
@@ -51,6 +53,8 @@ TABLE_SPAN = 128.0
 TOP_FACTOR = 6.0
 """Q_top ≥ this × the nominal ball load: the most loaded ball of an uneven distribution stays
 inside the table (beyond it the end exponent continues the law)."""
+MIN_CELLS = 8
+"""Fewest grid cells across the smallest tabulated load's contact (each axis)."""
 _EDGE = 1e-6
 """Edge pressure over peak pressure from which the grid is enlarged (as a single solve)."""
 _GROWTH, _ENLARGEMENTS = 1.5, 4
@@ -99,6 +103,10 @@ def raceway_approaches(
         nx, ny = numerics.cells
         dx, dy = 2.0 * fx * top.a / nx, 2.0 * fy * top.b / ny
         field, value = "numerics.cells", list(numerics.cells)
+    low = hertz(c.rx, c.ry, e_star, float(loads[0]))
+    across = min(2.0 * low.a / dx, 2.0 * low.b / dy)
+    if across < MIN_CELLS:
+        raise _too_coarse(numerics, low, top, across)
     gap = gap_function(geometry, side, model=numerics.gap_model)
     for _ in range(_ENLARGEMENTS + 1):
         what = f"the {loads.size} × {nx} × {ny} batch of tabulation contacts"
@@ -124,6 +132,27 @@ def raceway_approaches(
     raise BallscrewError(
         f"the {side} contact of the tabulation load {float(loads[-1]):.4g} N still reaches the "
         f"edge of its grid after {_ENLARGEMENTS} enlargements: raise numerics.box_factor"
+    )
+
+
+def _too_coarse(
+    numerics: NumericsSpec, low: HertzContact, top: HertzContact, across: float
+) -> InputError:
+    """The error for a grid with ``across`` < :data:`MIN_CELLS` cells across the smallest
+    tabulated load's contact ``low`` (its δ is off by several % below that)."""
+    scale = MIN_CELLS / across
+    if numerics.cells is None:
+        field, value = "numerics.cells_across", numerics.cells_across
+        need = f"≥ {math.ceil(scale * value)}"
+    else:
+        field, value = "numerics.cells", list(numerics.cells)
+        need = "≥ [{}, {}]".format(*(math.ceil(scale * n) for n in value))
+    return InputError(
+        field,
+        value,
+        f"{need} with loads.contact = 'numerical' ({MIN_CELLS} cells across the smallest "
+        f"tabulated contact, Q = {low.load:.3g} N, on the grid of Q = {top.load:.3g} N; it has "
+        f"{across:.1f})",
     )
 
 

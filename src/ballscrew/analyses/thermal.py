@@ -305,10 +305,11 @@ def solve_field(
         check_mesh(spec, problem, model)
         helical = model == "3d" and spec.mesh.helical_patches
         patches = ball_patches(case, problem, tcr) if helical else None
-        disc = _rebound(reuse, model, problem, patches) or build_model(
-            model, problem, _mesh_options(spec), patches
+        mesh = _mesh_options(spec)
+        disc = _rebound(reuse, model, problem, patches, mesh) or build_model(
+            model, problem, mesh, patches
         )
-        disc.extra["patches"] = patches
+        disc.extra["patches"], disc.extra["mesh_options"] = patches, mesh
         tr = spec.transient
         with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
             solution = simulate(
@@ -349,10 +350,20 @@ def _thermoelastic(case: Case, spec: ThermalSpec, solution: Solution) -> float |
 
 
 def _rebound(
-    reuse: Discretisation | None, model: str, problem: ThermalProblem, patches: tuple | None
+    reuse: Discretisation | None,
+    model: str,
+    problem: ThermalProblem,
+    patches: tuple | None,
+    mesh: MeshOptions,
 ) -> Discretisation | None:
-    """``reuse`` bound to ``problem`` when it is a ``model`` mesh of it with the same patches."""
-    if reuse is None or reuse.model != model or reuse.extra.get("patches") != patches:
+    """``reuse`` bound to ``problem`` when it is a ``model`` mesh of it with the same patches
+    and mesh options."""
+    if (
+        reuse is None
+        or reuse.model != model
+        or reuse.extra.get("patches") != patches
+        or reuse.extra.get("mesh_options") != mesh
+    ):
         return None
     return reuse.rebound(problem)
 

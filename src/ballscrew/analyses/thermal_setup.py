@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from ballscrew.analyses.case_cache import CaseCache
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
@@ -127,18 +128,14 @@ def thermal_spec(case: Case) -> ThermalSpec:
     return case.thermal
 
 
-_TCR_CACHE: dict[str, ScrewTCR] = {}
-_TCR_KEYS = {"screw", "materials", "surface", "medium", "operating", "numerics", "tcr"}
-
-
-def _cached_tcr(case: Case) -> ScrewTCR:
-    """:func:`screw_tcr` of the case's variant, cached on the inputs it depends on."""
-    key = case.model_dump_json(include=_TCR_KEYS)
-    if key not in _TCR_CACHE:
-        if len(_TCR_CACHE) >= 32:
-            _TCR_CACHE.pop(next(iter(_TCR_CACHE)))
-        _TCR_CACHE[key] = screw_tcr(case)
-    return _TCR_CACHE[key]
+_cached_tcr = CaseCache(
+    screw_tcr,
+    32,
+    exclude={"name", "description", "thermal", "wear", "friction", "duty", "duty_repeat"},
+)
+""":func:`screw_tcr` of the case's variant, cached on every section it reads (through
+:class:`ScrewParameters` and the ball loads: also ``loads``, ``design``, ``kinematics``,
+``lubrication``)."""
 
 
 def model_nut_resistances(case: Case, tcr: ScrewTCR, name: str) -> dict[int, float]:

@@ -17,7 +17,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ballscrew.analyses import wear_report
-from ballscrew.analyses.ball_loads import elastic_distribution
+from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.wear_duty import duty_programme, warn_outside_range
@@ -221,14 +221,21 @@ def _ball_classes(
 
 def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
     """c_b per nut: the spacer interference of the elastic distribution at the preload beyond
-    the contacts' C_a F_p^(2/3), over F_p [m/N]; 0 for ``loads.distribution = "uniform"``."""
+    the contacts' approach, over F_p [m/N]; 0 for ``loads.distribution = "uniform"``. The
+    approach is C_a F_p^(2/3) (Hertz) or, for ``loads.contact = "numerical"``, δ(Q)/(sinβ cosα)
+    of the tabulated law at the nut's ball load Q = F_p/(n_b sinβ cosα)."""
     if case.loads.distribution == "uniform":
         return 0.0
     fp = params.preload
-    g = elastic_distribution(
-        params.with_loads(axial_load=0.0), case.loads, errors=False, numerics=case.numerics
-    )
-    return max(g.interference - params.nut_compliance * fp ** (2.0 / 3.0), 0.0) / fp
+    preloaded = params.with_loads(axial_load=0.0)
+    g = elastic_distribution(preloaded, case.loads, errors=False, numerics=case.numerics)
+    law = ball_contact_law(preloaded, case.loads, case.numerics)
+    if law is None:
+        approach = params.nut_compliance * fp ** (2.0 / 3.0)
+    else:
+        projection = params.axial_projection
+        approach = law.approach(fp / (params.balls_per_nut * projection)) / projection
+    return max(g.interference - approach, 0.0) / fp
 
 
 def fingerprint(case: Case, setup: WearSetup) -> str:

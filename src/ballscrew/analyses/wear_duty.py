@@ -16,6 +16,7 @@ import dataclasses
 import math
 import warnings
 
+from ballscrew.analyses.case_cache import CaseCache
 from ballscrew.analyses.duty import moving_fraction
 from ballscrew.analyses.operating_point import operating_point
 from ballscrew.case import Case
@@ -63,20 +64,11 @@ def _segment_level(
     )
 
 
-_CACHE: dict[str, tuple[WearLevel, ...]] = {}
-_CACHE_SIZE = 16
-
-
 def duty_programme(case: Case) -> tuple[WearLevel, ...]:
     """The wear levels of ``case.duty`` (see the module docstring); one operating point per
     distinct (speed, load). The operating points do not depend on ``[wear]``: a calibration's
     runs of one case (only its ``[wear]`` values change) reuse them."""
-    key = case.model_dump_json(exclude={"wear", "name", "description"})
-    if key not in _CACHE:
-        if len(_CACHE) >= _CACHE_SIZE:
-            _CACHE.pop(next(iter(_CACHE)))
-        _CACHE[key] = _duty_programme(case)
-    return _CACHE[key]
+    return _programmes(case)
 
 
 def _duty_programme(case: Case) -> tuple[WearLevel, ...]:
@@ -108,6 +100,9 @@ def _duty_programme(case: Case) -> tuple[WearLevel, ...]:
             segments=tuple(levels),
         ),
     )
+
+
+_programmes = CaseCache(_duty_programme, 16, exclude={"wear", "name", "description"})
 
 
 def calibrated_range(spec: WearSpec) -> CalibratedRange | None:

@@ -14,8 +14,9 @@ a decade scan in K brackets (:func:`_start`). The columns of K, φ and h_r are f
 of 1 % (backward at an upper bound) at the first point and Broyden's (1965) rank-one secant
 updates G += (Δy − G Δθ) Δθᵀ/|Δθ|² at later ones (one model run per iteration instead of one per
 parameter); at the end the differences are taken afresh, and least squares restarts from there
-while a Gauss–Newton step with them would still move a parameter by more than 0.1 σ (Broyden,
-*Math. Comp.* 19, 1965, 577–593). :func:`ballscrew.calibration.fit_wear_coefficient` is this
+while a Gauss–Newton step with them would still move a parameter by more than 0.1 σ (σ at least
+10⁻⁶ max(|θ|, 1); a CalibrationWarning after three runs) (Broyden, *Math. Comp.* 19, 1965,
+577–593). :func:`ballscrew.calibration.fit_wear_coefficient` is this
 fitter on K (and m).
 
 Uncertainty and prediction bands (Gauss–Newton / delta method; Seber & Wild 1989, §2.1, §5.1):
@@ -32,6 +33,7 @@ measurements after ``fit_until``, not seen by the fit. Residual diagnostics:
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
@@ -130,14 +132,19 @@ class _Model:
         self.max_evaluations = max_evaluations
         self.label = label
         self.cache: dict[tuple[tuple[str, float], ...], tuple[np.ndarray, np.ndarray]] = {}
+        self.best_rms = math.inf
+        """Least RMS of a run minus the data so far (model unscaled) [SI]."""
 
     def run(self, values: Mapping[str, float]) -> tuple[np.ndarray, np.ndarray]:
         """(model revolutions, model values) at ``values``."""
         key = tuple(sorted((k, float(v)) for k, v in values.items()))
         if key not in self.cache:
             if len(self.cache) >= self.max_evaluations:
-                raise ConvergenceError(self.label, len(self.cache), math.nan, 0)
-            self.cache[key] = covering_history(self.simulate(dict(key)), self.data)
+                raise ConvergenceError(self.label, len(self.cache), self.best_rms, 0)
+            rev, val = covering_history(self.simulate(dict(key)), self.data)
+            error = np.interp(self.data.revolutions, rev, val) - self.data.values
+            self.best_rms = min(self.best_rms, float(np.sqrt(np.mean(error**2))))
+            self.cache[key] = rev, val
         return self.cache[key]
 
     def at(self, values: Mapping[str, float], revolutions: np.ndarray) -> np.ndarray:
@@ -149,6 +156,9 @@ _RESTARTS = 3
 """Most least-squares runs: a run whose end a Gauss–Newton step of the difference Jacobian
 would still move by more than :data:`_MOVE` standard errors is restarted from there."""
 _MOVE = 0.1
+_SIGMA_FLOOR = 1e-6
+"""Least standard error counted by :func:`_converged`, relative to max(|θ|, 1): on exact data
+σ → 0 and no step would be small enough."""
 
 
 class _SecantJacobian:
@@ -219,14 +229,15 @@ def _converged(
     n: int,
 ) -> bool:
     """Would a Gauss–Newton step of ``jac`` (kept within the bounds) move every parameter by
-    less than :data:`_MOVE` of its standard error? (True when ``jac`` is rank-deficient: the
-    covariance reports that.)"""
+    less than :data:`_MOVE` of its standard error (at least :data:`_SIGMA_FLOOR` max(|θ|, 1))?
+    (True when ``jac`` is rank-deficient: the covariance reports that.)"""
     step, *_, singular = np.linalg.lstsq(jac, -residuals, rcond=None)
     if singular.size < x.size or singular[-1] <= 1e-10 * max(singular[0], 1e-300):
         return True
     moved = np.clip(x + step, bounds[0], bounds[1]) - x
     variance = float(residuals @ residuals) / max(n - x.size, 1)
     sigma = np.sqrt(variance * np.diag(np.linalg.pinv(jac.T @ jac)))
+    sigma = np.maximum(sigma, _SIGMA_FLOOR * np.maximum(np.abs(x), 1.0))
     return bool(np.all(np.abs(moved) <= _MOVE * sigma))
 
 
@@ -312,11 +323,19 @@ def fit_parameters(
     message = ""
     for _ in range(_RESTARTS):
         solution = solve_least_squares(
-            residuals, x, jacobian, (lower, upper), max_evaluations, label, lambda: math.nan
+            residuals, x, jacobian, (lower, upper), max_evaluations, label, lambda: model.best_rms
         )
         x, message = solution.x, str(solution.message)
         if _converged(jacobian.difference(x), residuals(x), x, (lower, upper), n_fit):
             break
+    else:
+        warnings.warn(
+            f"{data.source}: after {_RESTARTS} least-squares runs a Gauss–Newton step would "
+            f"still move the parameters by more than {_MOVE:g} standard error: the fit may "
+            "not be at the minimum (check the data, or fit fewer parameters)",
+            CalibrationWarning,
+            stacklevel=2,
+        )
     if "wear_coefficient" in model_names:
         i = model_names.index("wear_coefficient")
         if min(abs(x[i] - lower[i]), abs(x[i] - upper[i])) < 1e-9:

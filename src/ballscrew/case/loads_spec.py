@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from ballscrew.case.base import Model, quantity
 
@@ -67,3 +67,12 @@ class LoadsSpec(Model):
         description="ball diameter minus nominal [m], per ball or per turn, nut 1 first; "
         "empty = none",
     )
+
+    @model_validator(mode="after")
+    def _numerical_needs_elastic(self) -> LoadsSpec:
+        if self.contact == "numerical" and self.distribution != "elastic":
+            raise ValueError(
+                "contact = 'numerical' needs loads.distribution = 'elastic' (the uniform "
+                "distribution has no contact law)"
+            )
+        return self

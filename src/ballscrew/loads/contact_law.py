@@ -13,11 +13,13 @@ A ball without approach carries nothing: Q = 0 for δ ≤ 0.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.interpolate import PchipInterpolator
+from scipy.optimize import brentq
 
 from ballscrew.errors import InputError
 
@@ -59,6 +61,17 @@ class TabulatedContact:
         """The table of δ = K Q^(2/3) at ``loads`` (a Hertz contact pair, K = K_A + K_B)."""
         q = np.asarray(loads, dtype=float)
         return cls(q, hertz_constant * q ** (2.0 / 3.0))
+
+    def approach(self, load: float) -> float:
+        """δ at the load Q > 0 [m]: the inverse of :meth:`load` (root of the monotone PCHIP in
+        ln δ; the end power laws beyond the table)."""
+        u0, w0, s0, u1, w1, s1 = self._ends
+        w = math.log(load)
+        if w <= w0:
+            return math.exp(u0 + (w - w0) / s0)
+        if w >= w1:
+            return math.exp(u1 + (w - w1) / s1)
+        return math.exp(brentq(lambda u: float(self._curve(u)) - w, u0, u1, xtol=1e-15))
 
     def load(self, approach: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """(Q, dQ/dδ) at the approaches δ [m]: 0 where δ ≤ 0."""

@@ -15,7 +15,10 @@ from ballscrew.analyses.catalog import ANALYSES
 from ballscrew.results.display import readable
 from ballscrew.units import display_kind, format_number, format_quantity
 
-__all__ = ["format_entry", "headline_keys", "headline_rows"]
+__all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
+
+label_of = readable
+"""A dotted summary key in words: an alias of :func:`ballscrew.results.display.readable`."""
 
 
 def format_entry(dotted: str, entry: Any) -> str | None:
