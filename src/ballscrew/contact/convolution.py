@@ -144,15 +144,15 @@ class DCFFTStack:
     :meth:`apply_batch` transforms grid b with operator b, so every u equals a single solve's.
     """
 
-    def __init__(self, operators: Sequence[DCFFTOperator]) -> None:
+    def __init__(self, operators: Sequence[DCFFTOperator], kernel_pairs: Any = None) -> None:
         self.operators = tuple(operators)
         first = self.operators[0]
         self.shape, self.xp, self.dtype = first.shape, first.xp, first.dtype
         self.self_coefficient = np.array([op.self_coefficient for op in self.operators])
         """(B,) K(0, 0) of each contact [m/Pa]."""
-        self._kernel_pairs = (  # CuPy: (B, 2nx, 2ny + 2), one batched multiply
-            None if self.xp is np else self.xp.stack([op._kernel_pairs for op in self.operators])
-        )
+        if kernel_pairs is None and self.xp is not np:
+            kernel_pairs = self.xp.stack([op._kernel_pairs for op in self.operators])
+        self._kernel_pairs = kernel_pairs  # CuPy: (B, 2nx, 2ny + 2), one batched multiply
 
     @classmethod
     def for_grids(
@@ -174,7 +174,9 @@ class DCFFTStack:
 
     def take(self, rows: Any) -> DCFFTStack:
         """The stack of the contacts ``rows`` (indices or a boolean mask)."""
-        return DCFFTStack([self.operators[i] for i in np.arange(len(self.operators))[rows]])
+        rows = np.arange(len(self.operators))[rows]
+        pairs = None if self._kernel_pairs is None else self._kernel_pairs[self.xp.asarray(rows)]
+        return DCFFTStack([self.operators[i] for i in rows], pairs)
 
     def apply_batch(self, pressures: Any, out: Any) -> Any:
         """u_b = K_b ∗ p_b of each grid of the (B, nx, ny) stack, written to ``out``."""
