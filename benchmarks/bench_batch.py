@@ -7,7 +7,11 @@
    per contact, and the contact solves alone.
 2. The non-Hertzian distribution's contact law (``loads.contact = "numerical"``): the 7 tabulation
    loads of each raceway of the 40 × 10 example on one 84 × 84 grid, one
-   ``solve_normal_batch`` call per raceway against one ``solve_normal`` call per load.
+   ``solve_normal_batch`` call per raceway against one ``solve_normal`` call per load, and both
+   raceways in one call (each on its own cells) against one call per raceway.
+3. TCR: the four raceway contacts of the 40 × 10 example under an axial load (two sides × two
+   nuts, each on the cells of its own Hertz ellipse, 64 cells across), one
+   ``solve_raceway_contacts`` call against one ``solve_raceway_contact`` call per contact.
 
 Runs alternate (single, batched) and the median of the repeats is printed with the speed-up.
 
@@ -27,6 +31,8 @@ import numpy as np
 
 import ballscrew
 from ballscrew.analyses import contact_law
+from ballscrew.analyses.ball_contact import solve_raceway_contact, solve_raceway_contacts
+from ballscrew.analyses.ball_loads import chain_ball_loads
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.wear import wear_setup
 from ballscrew.contact import solve_normal, solve_normal_batch
@@ -90,7 +96,7 @@ def _wear_rows(repeats: int) -> list[tuple[str, float, float]]:
     return rows
 
 
-def _law_row(repeats: int) -> tuple[str, float, float]:
+def _law_rows(repeats: int) -> list[tuple[str, float, float]]:
     overrides = {"screw.balls_per_nut": 90, "operating.axial_load": 2000.0}
     case = ballscrew.load_case(EXAMPLES / "gao2019_tcr.toml", overrides)
     params = ScrewParameters.from_case(case)
@@ -111,8 +117,37 @@ def _law_row(repeats: int) -> tuple[str, float, float]:
             for k in range(loads.size)
         ]
 
+    def together() -> object:
+        return contact_law.raceways_approaches(geometry, dict(sides), loads, spec)
+
     # one load at a time on its own (smaller) Hertz grid: the cost of solving the table unbatched
     text = f"numerical contact law: 2 raceways × {loads.size} loads"
+    return [
+        (f"{text}, one call per raceway", *_pair(single, batched, repeats)),
+        (f"{text}: both in one call against one per raceway", *_pair(batched, together, repeats)),
+    ]
+
+
+def _tcr_row(repeats: int) -> tuple[str, float, float]:
+    case = ballscrew.load_case(EXAMPLES / "gao2019_tcr.toml", {"operating.axial_load": 1500.0})
+    params = ScrewParameters.from_case(case)
+    chain = chain_ball_loads(case, params)
+    contacts = [
+        (side, used.ball_load, params.contact_modulus(side), nut.flank)
+        for nut, used in zip(params.nuts, chain, strict=True)
+        for side in ("screw", "nut")
+    ]
+
+    def single() -> object:
+        return [
+            solve_raceway_contact(params.geometry, side, q, e_star, case.numerics, flank)
+            for side, q, e_star, flank in contacts
+        ]
+
+    def batched() -> object:
+        return solve_raceway_contacts(params.geometry, contacts, case.numerics)
+
+    text = "TCR: 2 sides × 2 nuts, each on its own cells, 90 × 90"
     return (text, *_pair(single, batched, repeats))
 
 
@@ -122,7 +157,7 @@ def main() -> None:
     args = parser.parse_args()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        rows = [*_wear_rows(args.repeats), _law_row(args.repeats)]
+        rows = [*_wear_rows(args.repeats), *_law_rows(args.repeats), _tcr_row(args.repeats)]
     print("| Work | one at a time | batched | speed-up |")
     print("|---|---|---|---|")
     for label, single, batched in rows:

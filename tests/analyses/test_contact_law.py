@@ -94,3 +94,25 @@ def test_too_coarse_a_grid_for_the_smallest_tabulated_load_is_refused(
     with pytest.raises(InputError, match=rf"{field} = .*\(8 cells across the smallest") as info:
         numerical_contact(params, case.numerics)
     assert len(str(info.value).splitlines()) == 1
+
+
+def test_both_raceways_in_one_call_equal_each_alone(gao_case_path, monkeypatch):
+    """The table of both raceways from one batched solve (each raceway on its own cells and E*)
+    equals each raceway's table solved alone (one shared grid) to 1e-10."""
+    from ballscrew.analyses import contact_law
+
+    case = ballscrew.load_case(gao_case_path, NUMERICAL | {"numerics.cells_across": 48})
+    params = ScrewParameters.from_case(case)
+    e_stars = {side: params.contact_modulus(side) for side in ("screw", "nut")}
+    loads = table_loads(300.0)
+    calls, original = [], contact_law.solve_normal_batch
+    monkeypatch.setattr(
+        contact_law,
+        "solve_normal_batch",
+        lambda h, *a, **k: calls.append(len(h)) or original(h, *a, **k),
+    )
+    both = contact_law.raceways_approaches(params.geometry, e_stars, loads, case.numerics)
+    assert calls == [2 * TABLE_POINTS]
+    for side, e_star in e_stars.items():
+        alone = contact_law.raceway_approaches(params.geometry, side, e_star, loads, case.numerics)
+        np.testing.assert_allclose(both[side], alone, rtol=1e-10)

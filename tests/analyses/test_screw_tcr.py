@@ -214,3 +214,36 @@ def test_patch_models_have_no_cell_size_and_converge_with_the_grid(gao_case_path
     assert coarse["V2/patch"] == pytest.approx(fine["V2/patch"], rel=1e-12)
     grid = [r2(**{"numerics.cells_across": n})["V2/patch"] for n in (24, 48)]
     assert grid[1] == pytest.approx(grid[0], rel=0.05)
+
+
+def test_the_four_contacts_solved_together_equal_the_single_solves(gao_case_path, monkeypatch):
+    """Under an axial load both nuts carry different ball loads: four distinct contacts (two
+    sides × two nuts), each on its own Hertz-sized cells, solved in one batched call; each
+    equals its own single solve (solve_raceway_contact) to 1e-10, with the same iterations."""
+    from ballscrew.analyses import screw_tcr as chain
+    from ballscrew.analyses.ball_contact import solve_raceway_contact
+    from ballscrew.analyses.parameters import ScrewParameters
+    from ballscrew.contact import batch
+
+    calls, original = [], batch.solve_batch
+    monkeypatch.setattr(
+        batch, "solve_batch", lambda h, *a, **k: calls.append(len(h)) or original(h, *a, **k)
+    )
+    case = load_case(gao_case_path, {"operating.axial_load": "1500 N", "numerics.cells_across": 32})
+    result = chain.screw_tcr(case)
+    params = ScrewParameters.from_case(case)
+    assert len({n.ball_load for n in result.nuts}) == 2
+    assert calls == [4]  # one call for all four
+    for nut, spec in zip(result.nuts, params.nuts, strict=True):
+        for side in ("screw", "nut"):
+            together = getattr(nut, side).contact.solution
+            alone = solve_raceway_contact(
+                params.geometry, side, nut.ball_load, params.contact_modulus(side),
+                case.numerics, spec.flank,
+            ).solution  # fmt: skip
+            assert together.iterations == alone.iterations
+            assert (together.dx, together.dy) == (alone.dx, alone.dy)
+            np.testing.assert_allclose(
+                together.pressure, alone.pressure, rtol=0, atol=1e-10 * alone.peak_pressure
+            )
+            assert together.approach == pytest.approx(alone.approach, rel=1e-10)

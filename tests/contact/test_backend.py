@@ -133,3 +133,27 @@ def test_batched_solver_runs_on_cupy_arrays():
         np.testing.assert_allclose(
             cupy.asnumpy(gpu.pressure), cpu.pressure, atol=1e-6 * reference.p0
         )
+
+
+def test_batched_solver_with_per_contact_cells_runs_on_cupy_arrays():
+    """Per-contact dx, dy and E* on the GPU (a stack of kernel spectra) give the NumPy answer
+    (skipped, no CuPy)."""
+    cupy = pytest.importorskip("cupy")
+
+    e_stars = np.array([113.19e9, 150e9, 90e9])
+    loads = np.array([100.0, 80.0, 120.0])
+    radii = [(10e-3, 10e-3), (5e-3, 20e-3), (4e-3, 30e-3)]
+    gaps, dx, dy = [], [], []
+    for (rx, ry), e_star, load in zip(radii, e_stars, loads, strict=True):
+        reference = hertz(rx, ry, e_star, load)
+        dx.append(3 * reference.a / 64)
+        dy.append(3 * reference.b / 64)
+        x, y = cell_centres(64, dx[-1])[:, None], cell_centres(64, dy[-1])[None, :]
+        gaps.append(x**2 / (2 * rx) + y**2 / (2 * ry))
+    on_cpu = solve_normal_batch(np.stack(gaps), dx, dy, e_stars, loads)
+    on_gpu = solve_normal_batch(cupy.asarray(np.stack(gaps)), dx, dy, e_stars, loads)
+    for gpu, cpu in zip(on_gpu, on_cpu, strict=True):
+        assert backend.array_module(gpu.pressure) is cupy
+        np.testing.assert_allclose(
+            cupy.asnumpy(gpu.pressure), cpu.pressure, atol=1e-9 * cpu.peak_pressure
+        )

@@ -3,7 +3,13 @@
 import numpy as np
 import pytest
 
-from ballscrew.contact import GridContactResult, hertz, solve_contact
+from ballscrew.contact import (
+    ContactRequest,
+    GridContactResult,
+    hertz,
+    solve_contact,
+    solve_contacts,
+)
 from ballscrew.errors import BallscrewError, InputError
 
 E_STAR = 113.19e9
@@ -92,3 +98,32 @@ def test_invalid_arguments(arguments, field):
 def test_bad_gap_function_results(gap_function):
     with pytest.raises(InputError, match="gap_function"):
         solve_contact(gap_function, RX, RY, E_STAR, LOAD, cells_across=8)
+
+
+def test_many_contacts_solved_together_equal_one_at_a_time():
+    """Five contacts (own radii, so own cells, own E* and load) solved together in one call; the
+    two with gaps flatter than their estimate are cut by the box and enlarged (solved again in
+    later rounds, on their larger grids). Each equals :func:`solve_contact` of that contact."""
+    requests = [
+        ContactRequest(ellipsoid, RX, RY, E_STAR, LOAD),
+        ContactRequest(lambda x, y: x**2 / 8e-3 + y**2 / 30e-3, 4e-3, 15e-3, 0.9 * E_STAR, 300.0),
+        ContactRequest(lambda x, y: 0.25 * ellipsoid(x, y), RX, RY, E_STAR, LOAD),
+        ContactRequest(lambda x, y: (x**2 + y**2) / 20e-3, 10e-3, 10e-3, 1.2 * E_STAR, 50.0),
+        ContactRequest(lambda x, y: 0.3 * ellipsoid(x, y), RX, RY, 1.1 * E_STAR, 0.8 * LOAD),
+    ]
+    together = solve_contacts(requests, cells_across=24)
+    assert [r.enlargements for r in together] == [0, 0, 1, 0, 1]
+    assert together[2].pressure.shape == together[4].pressure.shape  # batched again in round 2
+    for request, result in zip(requests, together, strict=True):
+        alone = solve_contact(
+            request.gap_function, request.rx, request.ry, request.e_star, request.load,
+            cells_across=24,
+        )  # fmt: skip
+        assert result.solution.iterations == alone.solution.iterations
+        np.testing.assert_array_equal(result.x, alone.x)
+        np.testing.assert_array_equal(result.y, alone.y)
+        scale = alone.solution.peak_pressure
+        np.testing.assert_allclose(result.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
+        assert result.approach == pytest.approx(alone.approach, rel=1e-10)
+    with pytest.raises(BallscrewError, match="after 0 enlargements"):
+        solve_contacts(requests, cells_across=24, max_enlargements=0)

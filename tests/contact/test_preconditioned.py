@@ -142,6 +142,62 @@ def test_batch_with_warm_starts_and_a_failing_contact():
     assert not any(r.converged for r in partial)
 
 
+def own_cells_stack(n=64):
+    """Four contacts on n × n grids, each sized from its own Hertz ellipse (its own dx, dy and
+    aspect ratio dx/dy) and with its own E*: the raceway contacts of a screw."""
+    radii = [(5e-3, 20e-3), (3.6e-3, 40e-3), (10e-3, 10e-3), (4e-3, 25e-3)]
+    moduli, loads = [E_STAR, 1.3 * E_STAR, 0.8 * E_STAR, E_STAR], [200.0, 120.0, 80.0, 200.0]
+    gaps, dx, dy = [], [], []
+    for (rx, ry), e_star, load in zip(radii, moduli, loads, strict=True):
+        reference = hertz(rx, ry, e_star, load)
+        dx.append(2.6 * reference.a / (0.5 * n))
+        dy.append(2.6 * reference.b / (0.5 * n))
+        x, y = cell_centres(n, dx[-1])[:, None], cell_centres(n, dy[-1])[None, :]
+        gaps.append(x**2 / (2 * rx) + y**2 / (2 * ry) + 1e-8 * np.sin(x / (3 * dx[-1])) ** 2)
+    return np.stack(gaps), np.array(dx), np.array(dy), np.array(moduli), np.array(loads)
+
+
+@pytest.mark.parametrize("nested", [True, False])
+def test_contacts_with_their_own_cells_and_moduli_equal_one_at_a_time(monkeypatch, nested):
+    """Per-contact dx, dy (four aspect ratios) and E*: each contact its own kernel; the stack
+    also split between two threads."""
+    monkeypatch.setattr(convolution, "fft_threads", lambda points=None: 2)
+    gaps, dx, dy, moduli, loads = own_cells_stack()
+    assert len(set(np.round(dx / dy, 6))) == 4
+    batch = solve_normal_batch(gaps, dx, dy, moduli, loads, nested=nested)
+    assert len({r.iterations for r in batch}) > 1  # own stops: contacts leave the stack
+    for b, together in enumerate(batch):
+        alone = solve_normal(gaps[b], dx[b], dy[b], moduli[b], loads[b], nested=nested)
+        assert together.converged and together.iterations == alone.iterations
+        assert (together.dx, together.dy) == (dx[b], dy[b])
+        scale = alone.peak_pressure
+        np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
+        assert together.approach == pytest.approx(alone.approach, rel=1e-10)
+        assert together.load == pytest.approx(loads[b], rel=1e-10)
+
+
+def test_contacts_with_their_own_cells_warm_started_and_in_mixed_precision():
+    gaps, dx, dy, moduli, loads = own_cells_stack(48)
+    cold = solve_normal_batch(gaps, dx, dy, moduli, loads)
+    initial = np.stack([r.pressure for r in cold]) * 1.1
+    warm = solve_normal_batch(gaps, dx, dy, moduli, loads, initial=initial, precision="mixed")
+    for b, together in enumerate(warm):
+        alone = solve_normal(
+            gaps[b], dx[b], dy[b], moduli[b], loads[b], initial=initial[b], precision="mixed"
+        )
+        assert together.iterations == alone.iterations
+        scale = alone.peak_pressure
+        np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
+
+
+def test_per_contact_cells_that_are_all_equal_take_the_shared_path():
+    gaps, dx, dy, loads = ball_stack(3, n=48)
+    shared = solve_normal_batch(gaps, dx, dy, E_STAR, loads)
+    spelled = solve_normal_batch(gaps, [dx] * 3, np.full(3, dy), [E_STAR] * 3, loads)
+    for a, b in zip(shared, spelled, strict=True):
+        assert np.array_equal(a.pressure, b.pressure) and a.iterations == b.iterations
+
+
 @pytest.mark.parametrize(
     ("field", "kwargs"),
     [
@@ -149,6 +205,8 @@ def test_batch_with_warm_starts_and_a_failing_contact():
         ("loads", {"loads": [1.0, 2.0, 3.0]}), ("loads", {"loads": [1.0, -2.0]}),
         ("precision", {"precision": "half"}), ("initial", {"initial": np.ones((2, 4, 5))}),
         ("initial", {"initial": -np.ones((2, 4, 4))}), ("tol", {"tol": 0.0}),
+        ("dx", {"dx": [1e-6, 1e-6, 1e-6]}), ("dy", {"dy": [1e-6, 0.0]}),
+        ("e_star", {"e_star": [E_STAR, np.nan]}), ("dx", {"dx": -1e-6}),
     ],
 )  # fmt: skip
 def test_batch_input_errors_name_the_argument(field, kwargs):

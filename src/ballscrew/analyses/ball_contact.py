@@ -7,6 +7,7 @@ Hamrock–Brewe solutions alongside for comparison (theory manual: *Geometry*, *
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from types import ModuleType
 from typing import Any, ClassVar
@@ -19,7 +20,8 @@ from ballscrew.analyses.contact_law import outside_ball
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case, NumericsSpec
-from ballscrew.contact import hamrock_brewe, hertz, solve_contact
+from ballscrew.contact import ContactRequest, hamrock_brewe, hertz, solve_contacts
+from ballscrew.contact.grid import GapFunction
 from ballscrew.contact.hertz import HertzContact
 from ballscrew.errors import InputError
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
@@ -107,48 +109,76 @@ def solve_raceway_contact(
     pressure vanishes at its edge); the gap itself is exact or quadratic per
     ``numerics.gap_model``.
     """
-    curvature = raceway_curvature(geometry, side)
-    rx, ry = curvature.rx, curvature.ry
-    try:
-        outcome = solve_contact(
+    return solve_raceway_contacts(geometry, [(side, load, e_star, flank)], numerics)[0]
+
+
+def solve_raceway_contacts(
+    geometry: ScrewGeometry,
+    contacts: Sequence[tuple[Side, float, float, int]],
+    numerics: NumericsSpec,
+) -> tuple[RacewayContact, ...]:
+    """:func:`solve_raceway_contact` of each (side, load Q [N], E* [Pa], flank) of ``contacts``.
+
+    Those whose grids have equal cell counts (each follows its own Hertz ellipse) are solved in
+    one batched call (:func:`ballscrew.contact.solve_contacts`).
+    """
+    requests, curvatures = [], []
+    for side, load, e_star, flank in contacts:
+        curvatures.append(curvature := raceway_curvature(geometry, side))
+        gap = _inside_ball(
             gap_function(geometry, side, flank=flank, model=numerics.gap_model),
-            rx,
-            ry,
-            e_star,
-            load,
-            cells_across=numerics.cells_across,
-            box_factor=numerics.box_factor,
-            tol=numerics.tolerance,
-            cells=numerics.cells,
-            max_iterations=numerics.max_iterations,
+            geometry, side, load,
+        )  # fmt: skip
+        requests.append(ContactRequest(gap, curvature.rx, curvature.ry, e_star, load))
+    outcomes = solve_contacts(
+        requests,
+        cells_across=numerics.cells_across,
+        box_factor=numerics.box_factor,
+        tol=numerics.tolerance,
+        cells=numerics.cells,
+        max_iterations=numerics.max_iterations,
+    )
+    return tuple(
+        RacewayContact(
+            side=side,
+            load=load,
+            e_star=e_star,
+            curvature=c,
+            hertz=hertz(c.rx, c.ry, e_star, load),
+            hamrock_brewe=hamrock_brewe(c.rx, c.ry, e_star, load),
+            x=np.asarray(outcome.x),
+            y=np.asarray(outcome.y),
+            gap=np.asarray(outcome.gap),
+            solution=outcome.solution,
         )
-    except InputError as exc:
-        raise outside_ball(exc, geometry, side, load) from None
-    return RacewayContact(
-        side=side,
-        load=load,
-        e_star=e_star,
-        curvature=curvature,
-        hertz=hertz(rx, ry, e_star, load),
-        hamrock_brewe=hamrock_brewe(rx, ry, e_star, load),
-        x=np.asarray(outcome.x),
-        y=np.asarray(outcome.y),
-        gap=np.asarray(outcome.gap),
-        solution=outcome.solution,
+        for (side, load, e_star, _), c, outcome in zip(contacts, curvatures, outcomes, strict=True)
     )
 
 
+def _inside_ball(gap: GapFunction, geometry: ScrewGeometry, side: Side, load: float) -> GapFunction:
+    """``gap`` whose "outside the ball" error names the case's ball (:func:`outside_ball`)."""
+
+    def checked(x: np.ndarray, y: np.ndarray) -> Any:
+        try:
+            return gap(x, y)
+        except InputError as exc:
+            raise outside_ball(exc, geometry, side, load) from None
+
+    return checked
+
+
 def solve_ball_contacts(case: Case) -> BallContacts:
-    """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads."""
+    """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads (one
+    batched solve where both grids have the same cell counts)."""
     params = ScrewParameters.from_case(case)
     nut = chain_ball_loads(case, params)[0]
     with recorded_warnings() as messages:
-        contacts = {
-            side: solve_raceway_contact(
-                params.geometry, side, nut.ball_load, params.contact_modulus(side), case.numerics
-            )
-            for side in SIDES
-        }
+        solved = solve_raceway_contacts(
+            params.geometry,
+            [(side, nut.ball_load, params.contact_modulus(side), 1) for side in SIDES],
+            case.numerics,
+        )
+        contacts = dict(zip(SIDES, solved, strict=True))
     return BallContacts(
         case,
         params.geometry,

@@ -5,11 +5,12 @@ contact solver on the case's raceway gap (the exact conforming groove with ``num
 "exact"``) instead of Hertz. All balls share the groove geometry, so δ is tabulated at
 :data:`TABLE_POINTS` loads, geometrically spaced over a span of :data:`TABLE_SPAN` up to the
 tabulation top Q_top (the power of two at or above :data:`TOP_FACTOR` × the nominal ball load
-F/(Z sinβ cosα), so nearby load cases share one table), with one batched solve per raceway
-(:func:`ballscrew.contact.solve_normal_batch`) on the grid of the largest load, and interpolated
-monotonically (:class:`ballscrew.loads.contact_law.TabulatedContact`). The grid follows the Hertz
-ellipse of Q_top (``numerics.cells_across`` cells across it, or ``numerics.cells``, box
-``numerics.box_factor``) and is enlarged like a single solve until the pressure of Q_top vanishes
+F/(Z sinβ cosα), so nearby load cases share one table), with one batched solve for both raceways
+(:func:`ballscrew.contact.solve_normal_batch`, each raceway on the cells of its own largest load),
+and interpolated monotonically (:class:`ballscrew.loads.contact_law.TabulatedContact`). The grid
+follows the Hertz ellipse of Q_top (``numerics.cells_across`` cells across it, or
+``numerics.cells``, box ``numerics.box_factor``) and is enlarged like a single solve until the
+pressure of Q_top vanishes
 at its edge; the smallest load then has about cells_across / TABLE_SPAN^(1/3) cells across,
 and a grid leaving it fewer than :data:`MIN_CELLS` is refused (cells_across ≥ 41).
 
@@ -20,7 +21,9 @@ nominal ball (a 1 µm larger ball changes the contact curvatures by ~1e-4, negle
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 import scipy.fft
@@ -43,6 +46,7 @@ __all__ = [
     "numerical_contact",
     "outside_ball",
     "raceway_approaches",
+    "raceways_approaches",
     "table_loads",
 ]
 
@@ -91,46 +95,110 @@ def raceway_approaches(
     (sized as :func:`ballscrew.contact.solve_contact` sizes it), enlarged while the largest
     contact carries pressure on the grid's edge.
     """
+    return raceways_approaches(geometry, {side: e_star}, loads, numerics)[side]
+
+
+@dataclass
+class _Table:
+    """The tabulation grid of one raceway: its gap function, cells and cell counts."""
+
+    gap: Any
+    dx: float
+    dy: float
+    nx: int
+    ny: int
+
+
+def _table_grid(
+    geometry: ScrewGeometry,
+    side: Side,
+    e_star: float,
+    loads: NDArray[np.float64],
+    numerics: NumericsSpec,
+) -> _Table:
+    """The grid of the largest of ``loads`` [N] on the ``side`` raceway (as solve_contact's);
+    refused when it leaves fewer than :data:`MIN_CELLS` cells across the smallest load."""
     c = raceway_curvature(geometry, side)
-    top = hertz(c.rx, c.ry, e_star, float(loads[-1]))
+    estimate = hertz(c.rx, c.ry, e_star, float(loads[-1]))
     fx, fy = (numerics.box_factor,) * 2 if np.isscalar(numerics.box_factor) else numerics.box_factor
     if numerics.cells is None:
         n = numerics.cells_across
-        dx, dy = 2.0 * top.a / n, 2.0 * top.b / n
+        dx, dy = 2.0 * estimate.a / n, 2.0 * estimate.b / n
         nx, ny = (scipy.fft.next_fast_len(math.ceil(f * n), real=True) for f in (fx, fy))
-        field, value = "numerics.cells_across", numerics.cells_across
     else:
         nx, ny = numerics.cells
-        dx, dy = 2.0 * fx * top.a / nx, 2.0 * fy * top.b / ny
-        field, value = "numerics.cells", list(numerics.cells)
+        dx, dy = 2.0 * fx * estimate.a / nx, 2.0 * fy * estimate.b / ny
     low = hertz(c.rx, c.ry, e_star, float(loads[0]))
     across = min(2.0 * low.a / dx, 2.0 * low.b / dy)
     if across < MIN_CELLS:
-        raise _too_coarse(numerics, low, top, across)
-    gap = gap_function(geometry, side, model=numerics.gap_model)
+        raise _too_coarse(numerics, low, estimate, across)
+    return _Table(gap_function(geometry, side, model=numerics.gap_model), dx, dy, nx, ny)
+
+
+def raceways_approaches(
+    geometry: ScrewGeometry,
+    e_stars: dict[Side, float],
+    loads: NDArray[np.float64],
+    numerics: NumericsSpec,
+) -> dict[Side, NDArray[np.float64]]:
+    """:func:`raceway_approaches` of each raceway of ``e_stars`` (side → E* [Pa]).
+
+    The raceways whose grids have equal cell counts (each follows the Hertz ellipse of its own
+    largest load) are solved in one :func:`~ballscrew.contact.solve_normal_batch` call, each
+    with its own cells and E*; a raceway whose largest contact reaches the grid's edge is
+    enlarged and solved again in the next round.
+    """
+    top = float(loads[-1])
+    grids = {side: _table_grid(geometry, side, e, loads, numerics) for side, e in e_stars.items()}
+    field, value = (
+        ("numerics.cells_across", numerics.cells_across)
+        if numerics.cells is None
+        else ("numerics.cells", list(numerics.cells))
+    )
+    approaches: dict[Side, NDArray[np.float64]] = {}
     for _ in range(_ENLARGEMENTS + 1):
-        what = f"the {loads.size} × {nx} × {ny} batch of tabulation contacts"
-        check_memory(field, value, loads.size * contact_grid_bytes(nx, ny), what)
-        x, y = cell_centres(nx, dx), cell_centres(ny, dy)
-        try:
-            h = np.broadcast_to(np.asarray(gap(x[:, None], y[None, :]), dtype=float), (nx, ny))
-        except InputError as exc:
-            raise outside_ball(exc, geometry, side, float(loads[-1])) from None
-        stack = np.broadcast_to(h, (loads.size, nx, ny)).copy()
-        results = solve_normal_batch(
-            stack, dx, dy, e_star, loads, numerics.tolerance,
-            max_iterations=numerics.max_iterations,
-        )  # fmt: skip
-        p = np.asarray(results[-1].pressure)
-        peak = float(p.max())
-        x_edge = max(float(p[0].max()), float(p[-1].max())) > _EDGE * peak
-        y_edge = max(float(p[:, 0].max()), float(p[:, -1].max())) > _EDGE * peak
-        if not (x_edge or y_edge):
-            return np.array([r.approach for r in results])
-        nx = scipy.fft.next_fast_len(math.ceil(_GROWTH * nx), real=True) if x_edge else nx
-        ny = scipy.fft.next_fast_len(math.ceil(_GROWTH * ny), real=True) if y_edge else ny
+        rounds: dict[tuple[int, int], list[Side]] = {}
+        for side in grids.keys() - approaches.keys():
+            rounds.setdefault((grids[side].nx, grids[side].ny), []).append(side)
+        for (nx, ny), sides in rounds.items():
+            sides.sort(key=SIDES.index)
+            size = len(sides) * loads.size
+            what = f"the {size} × {nx} × {ny} batch of tabulation contacts"
+            check_memory(field, value, size * contact_grid_bytes(nx, ny), what)
+            gaps = []
+            for side in sides:
+                g = grids[side]
+                x, y = cell_centres(nx, g.dx), cell_centres(ny, g.dy)
+                try:
+                    h = np.asarray(g.gap(x[:, None], y[None, :]), dtype=float)
+                except InputError as exc:
+                    raise outside_ball(exc, geometry, side, top) from None
+                gaps.append(np.broadcast_to(h, (loads.size, nx, ny)))
+            results = solve_normal_batch(
+                np.concatenate(gaps),
+                np.repeat([grids[side].dx for side in sides], loads.size),
+                np.repeat([grids[side].dy for side in sides], loads.size),
+                np.repeat([e_stars[side] for side in sides], loads.size),
+                np.tile(loads, len(sides)), numerics.tolerance,
+                max_iterations=numerics.max_iterations,
+            )  # fmt: skip
+            for k, side in enumerate(sides):
+                mine = results[k * loads.size : (k + 1) * loads.size]
+                p = np.asarray(mine[-1].pressure)
+                peak = float(p.max())
+                x_edge = max(float(p[0].max()), float(p[-1].max())) > _EDGE * peak
+                y_edge = max(float(p[:, 0].max()), float(p[:, -1].max())) > _EDGE * peak
+                if not (x_edge or y_edge):
+                    approaches[side] = np.array([r.approach for r in mine])
+                    continue
+                g = grids[side]
+                g.nx = scipy.fft.next_fast_len(math.ceil(_GROWTH * nx), real=True) if x_edge else nx
+                g.ny = scipy.fft.next_fast_len(math.ceil(_GROWTH * ny), real=True) if y_edge else ny
+        if len(approaches) == len(grids):
+            return approaches
+    side = next(side for side in SIDES if side in grids.keys() - approaches.keys())
     raise BallscrewError(
-        f"the {side} contact of the tabulation load {float(loads[-1]):.4g} N still reaches the "
+        f"the {side} contact of the tabulation load {top:.4g} N still reaches the "
         f"edge of its grid after {_ENLARGEMENTS} enlargements: raise numerics.box_factor"
     )
 
@@ -162,11 +230,8 @@ def _table(
 ) -> TabulatedContact:
     spec = NumericsSpec.model_validate_json(numerics)
     loads = table_loads(top / TOP_FACTOR)
-    approach = sum(
-        raceway_approaches(geometry, side, e, loads, spec)
-        for side, e in zip(SIDES, e_stars, strict=True)
-    )
-    return TabulatedContact(loads, np.asarray(approach))
+    both = raceways_approaches(geometry, dict(zip(SIDES, e_stars, strict=True)), loads, spec)
+    return TabulatedContact(loads, both["screw"] + both["nut"])
 
 
 def clear_cache() -> None:

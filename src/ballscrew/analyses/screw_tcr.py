@@ -17,7 +17,7 @@ from types import ModuleType
 from typing import ClassVar
 
 from ballscrew.analyses import tcr_report
-from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contact
+from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contacts
 from ballscrew.analyses.ball_loads import chain_ball_loads
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
@@ -179,7 +179,8 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     ``[tcr] variant``. With ``[operating] coupled = true`` the medium between the asperities is
     the named lubricant at the contact temperature of the coupled operating point.
     Contacts of equal side and ball load are solved once (both nuts share
-    them at zero axial load).
+    them at zero axial load); the distinct contacts (both sides of both nuts) are solved in one
+    batched call where their grids have equal cell counts.
     """
     case_with(case, "screw", "operating", "surface", "materials", "medium", "numerics", "tcr")
     if case.operating.coupled:  # the medium's conductivity at the operating temperature
@@ -190,13 +191,21 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     params = ScrewParameters.from_case(case)
     geometry = params.geometry
     models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}
-    solved: dict[tuple[Side, float], RacewayTCR] = {}
-
-    def raceway(side: Side, load: float, flank: int) -> RacewayTCR:
-        if (side, load) not in solved:
-            contact = solve_raceway_contact(
-                geometry, side, load, params.contact_modulus(side), case.numerics, flank
-            )
+    chain = chain_ball_loads(case, params)
+    loaded = [(nut, used) for nut, used in zip(params.nuts, chain, strict=True) if used.force > 0.0]
+    keys: dict[tuple[Side, float], int] = {}  # (side, Q) → flank: the distinct contacts
+    for nut, used in loaded:
+        for side in SIDES:
+            keys.setdefault((side, used.ball_load), nut.flank)
+    nuts = []
+    with recorded_warnings() as messages:
+        contacts = solve_raceway_contacts(
+            geometry,
+            [(side, q, params.contact_modulus(side), flank) for (side, q), flank in keys.items()],
+            case.numerics,
+        )
+        solved: dict[tuple[Side, float], RacewayTCR] = {}
+        for (side, load), contact in zip(keys, contacts, strict=True):
             sol = contact.solution
             with as_case_fields(tcr_fields(side)):
                 tcr = contact_tcr(
@@ -209,16 +218,9 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
                     partial_cells=case.tcr.partial_cells,
                 )
             solved[side, load] = RacewayTCR(contact, tcr)
-        return solved[side, load]
-
-    nuts = []
-    chain = chain_ball_loads(case, params)
-    with recorded_warnings() as messages:
-        for nut, used in zip(params.nuts, chain, strict=True):
-            if not used.force > 0.0:
-                continue  # a lifted-off nut carries nothing
-            screw_side = raceway("screw", used.ball_load, nut.flank)
-            nut_side = raceway("nut", used.ball_load, nut.flank)
+        for nut, used in loaded:  # a lifted-off nut carries nothing
+            screw_side = solved["screw", used.ball_load]
+            nut_side = solved["nut", used.ball_load]
             approach = screw_side.contact.solution.approach + nut_side.contact.solution.approach
             nuts.append(
                 NutTCR(

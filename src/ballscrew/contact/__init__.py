@@ -9,7 +9,8 @@
    is chosen from :data:`NORMAL_SOLVERS` (``method``): the preconditioned, nested-grid CG
    (``"pcg"``, after Vollebregt 2014) or the plain Polonsky & Keer CG (``"pk"``).
 3. :func:`solve_contact`: sizes the grid from the Hertz estimate, warm-starts from the Hertz
-   pressure and enlarges the box until the pressure vanishes on its edge.
+   pressure and enlarges the box until the pressure vanishes on its edge; :func:`solve_contacts`
+   does it for many contacts, those on grids of equal cell counts in one batched call.
 """
 
 from ballscrew.contact.batch import solve_normal_batch
@@ -17,9 +18,11 @@ from ballscrew.contact.convolution import DCFFTOperator, direct_convolution, wra
 from ballscrew.contact.grid import (
     DEFAULT_BOX_FACTOR,
     DEFAULT_CELLS_ACROSS,
+    ContactRequest,
     GridContactResult,
     cell_centres,
     solve_contact,
+    solve_contacts,
 )
 from ballscrew.contact.hertz import HertzContact, hamrock_brewe, hertz
 from ballscrew.contact.influence import love_coefficient, love_coefficients
@@ -40,6 +43,7 @@ __all__ = [
     "DEFAULT_METHOD",
     "DEFAULT_TOLERANCE",
     "NORMAL_SOLVERS",
+    "ContactRequest",
     "ContactResult",
     "DCFFTOperator",
     "GridContactResult",
@@ -51,6 +55,7 @@ __all__ = [
     "love_coefficient",
     "love_coefficients",
     "solve_contact",
+    "solve_contacts",
     "solve_normal",
     "solve_normal_batch",
     "solve_normal_displacement",

@@ -3,13 +3,14 @@
 Theory manual ``docs/theory/contact.md``, grid sizing: rectangular cells follow the elliptical patch
 (the same number of cells across it along both axes), the box half-widths are a multiple of the
 Hertz semi-axes, and the solution is only accepted when the pressure vanishes on the outer ring of
-cells.
+cells. Several contacts (:func:`solve_contacts`) are solved together, one batched call per round for
+all those whose grids have the same cell counts, each with its own cells and modulus.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -19,6 +20,7 @@ from numpy.typing import NDArray
 
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.contact._validation import finite_grid, integer_at_least, positive
+from ballscrew.contact.batch import solve_normal_batch
 from ballscrew.contact.hertz import HertzContact, hertz
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
@@ -28,7 +30,7 @@ from ballscrew.contact.polonsky_keer import (
 from ballscrew.contact.result import ContactResult
 from ballscrew.errors import BallscrewError, InputError
 
-__all__ = ["GridContactResult", "cell_centres", "solve_contact"]
+__all__ = ["ContactRequest", "GridContactResult", "cell_centres", "solve_contact", "solve_contacts"]
 
 GapFunction = Callable[[NDArray[np.float64], NDArray[np.float64]], Any]
 
@@ -101,6 +103,35 @@ def _sample(gap_function: GapFunction, x: NDArray[np.float64], y: NDArray[np.flo
     return finite_grid("gap_function", gap, np)
 
 
+@dataclass(frozen=True)
+class ContactRequest:
+    """One contact of :func:`solve_contacts`: the arguments of :func:`solve_contact` that differ."""
+
+    gap_function: GapFunction
+    """h(x, y) [m] of the cell centres, broadcasting as (nx, 1) against (1, ny)."""
+    rx: float
+    """Relative radius along x of the Hertz estimate [m]."""
+    ry: float
+    """Relative radius along y [m]."""
+    e_star: float
+    """Composite modulus E* [Pa] (K1)."""
+    load: float
+    """Normal load W [N]."""
+
+
+@dataclass
+class _Grid:
+    """A contact's grid while :func:`solve_contacts` sizes it."""
+
+    request: ContactRequest
+    estimate: HertzContact
+    dx: float
+    dy: float
+    nx: int
+    ny: int
+    enlargement: int = 0
+
+
 def solve_contact(
     gap_function: GapFunction,
     rx: float,
@@ -137,46 +168,134 @@ def solve_contact(
     ``e_star`` [Pa] composite modulus (K1), ``load`` [N], ``tol`` and ``max_iterations`` as in
     :func:`solve_normal` (non-convergence raises :class:`~ballscrew.errors.ConvergenceError`).
     """
-    estimate = hertz(rx, ry, e_star, load)
-    if not callable(gap_function):
-        raise InputError("gap_function", gap_function, "a function h(x, y) of the gap in m")
+    return solve_contacts(
+        [ContactRequest(gap_function, rx, ry, e_star, load)],
+        cells_across, box_factor, tol, max_enlargements, cells=cells,
+        max_iterations=max_iterations, edge_tolerance=edge_tolerance, warm_start=warm_start,
+    )[0]  # fmt: skip
+
+
+def solve_contacts(
+    requests: Sequence[ContactRequest],
+    cells_across: int = DEFAULT_CELLS_ACROSS,
+    box_factor: float | tuple[float, float] = DEFAULT_BOX_FACTOR,
+    tol: float = DEFAULT_TOLERANCE,
+    max_enlargements: int = 4,
+    *,
+    cells: tuple[int, int] | None = None,
+    max_iterations: int = DEFAULT_MAX_ITERATIONS,
+    edge_tolerance: float = 1e-6,
+    warm_start: bool = True,
+) -> tuple[GridContactResult, ...]:
+    """:func:`solve_contact` of each request, the grids of equal cell counts solved in one call.
+
+    Each contact's grid is sized from its own Hertz ellipse (so its own dx, dy) and enlarged on its
+    own; in every round the contacts whose grids have the same nx × ny are solved together by
+    :func:`~ballscrew.contact.solve_normal_batch` with their own cells and E* (one contact alone
+    by :func:`solve_normal`). Each result equals that of :func:`solve_contact` to the solver's
+    round-off (1e-10 relative). Returns the results in the order of ``requests``.
+    """
+    grids = []
+    for request in requests:
+        estimate = hertz(request.rx, request.ry, request.e_star, request.load)
+        if not callable(request.gap_function):
+            raise InputError(
+                "gap_function", request.gap_function, "a function h(x, y) of the gap in m"
+            )
+        grids.append(_Grid(request, estimate, 0.0, 0.0, 0, 0))
     cells_across = integer_at_least("cells_across", cells_across, 2)
     max_enlargements = integer_at_least("max_enlargements", max_enlargements, 0)
     fx, fy = (box_factor, box_factor) if np.isscalar(box_factor) else box_factor
     fx, fy = positive("box_factor", fx), positive("box_factor", fy)
     edge_tolerance = positive("edge_tolerance", edge_tolerance)
-    if cells is None:
-        dx, dy = 2.0 * estimate.a / cells_across, 2.0 * estimate.b / cells_across
-        nx, ny = _cells(fx * cells_across), _cells(fy * cells_across)
-    else:
-        nx, ny = (integer_at_least("cells", n, 2) for n in cells)
-        dx, dy = 2.0 * fx * estimate.a / nx, 2.0 * fy * estimate.b / ny
+    for grid in grids:
+        a, b = grid.estimate.a, grid.estimate.b
+        if cells is None:
+            grid.dx, grid.dy = 2.0 * a / cells_across, 2.0 * b / cells_across
+            grid.nx, grid.ny = _cells(fx * cells_across), _cells(fy * cells_across)
+        else:
+            grid.nx, grid.ny = (integer_at_least("cells", n, 2) for n in cells)
+            grid.dx, grid.dy = 2.0 * fx * a / grid.nx, 2.0 * fy * b / grid.ny
     field, value = (
         ("numerics.cells", list(cells))
         if cells is not None
         else ("numerics.cells_across", cells_across)
     )
-    for enlargement in range(max_enlargements + 1):
-        what = f"the {nx} × {ny} contact grid" + (
-            f" (enlargement {enlargement})" if enlargement else ""
-        )
-        check_memory(field, value, contact_grid_bytes(nx, ny), what)
-        x, y = cell_centres(nx, dx), cell_centres(ny, dy)
-        gap = _sample(gap_function, x, y)
-        initial = estimate.pressure(x[:, None], y[None, :]) if warm_start else None
-        solution = solve_normal(
-            gap, dx, dy, e_star, load, tol, initial=initial, max_iterations=max_iterations
-        )
-        x_edge, y_edge = _edge_ratios(solution.pressure)
-        if max(x_edge, y_edge) <= edge_tolerance:
-            return GridContactResult(
-                x, y, gap, estimate, solution, enlargement, max(x_edge, y_edge)
+    results: dict[int, GridContactResult] = {}
+    while len(results) < len(grids):
+        rounds: dict[tuple[int, int], list[int]] = {}
+        for k, grid in enumerate(grids):
+            if k not in results:
+                rounds.setdefault((grid.nx, grid.ny), []).append(k)
+        for (nx, ny), members in rounds.items():
+            enlargements = sorted({grids[k].enlargement for k in members if grids[k].enlargement})
+            what = f"the {nx} × {ny} contact grid" + (
+                f" (enlargement {', '.join(map(str, enlargements))})" if enlargements else ""
             )
-        nx = _cells(GROWTH * nx) if x_edge > edge_tolerance else nx
-        ny = _cells(GROWTH * ny) if y_edge > edge_tolerance else ny
-    raise BallscrewError(
+            if len(members) > 1:
+                what = f"{len(members)} contacts on {what.removeprefix('the ')}s"
+            check_memory(field, value, len(members) * contact_grid_bytes(nx, ny), what)
+            _solve_round([grids[k] for k in members], results, members, tol, max_iterations,
+                         warm_start)  # fmt: skip
+            for k in members:
+                grid = grids[k]
+                x_edge, y_edge = _edge_ratios(results[k].solution.pressure)
+                if max(x_edge, y_edge) <= edge_tolerance:
+                    continue
+                if grid.enlargement == max_enlargements:
+                    raise _unfitted(grid, results[k], max_enlargements, edge_tolerance)
+                del results[k]
+                grid.enlargement += 1
+                grid.nx = _cells(GROWTH * nx) if x_edge > edge_tolerance else nx
+                grid.ny = _cells(GROWTH * ny) if y_edge > edge_tolerance else ny
+    return tuple(results[k] for k in range(len(grids)))
+
+
+def _solve_round(
+    grids: list[_Grid],
+    results: dict[int, GridContactResult],
+    keys: list[int],
+    tol: float,
+    max_iterations: int,
+    warm_start: bool,
+) -> None:
+    """Solve the contacts ``grids`` (all of one nx × ny) on their current grids into ``results``."""
+    xs = [cell_centres(g.nx, g.dx) for g in grids]
+    ys = [cell_centres(g.ny, g.dy) for g in grids]
+    gaps = [_sample(g.request.gap_function, x, y) for g, x, y in zip(grids, xs, ys, strict=True)]
+    initial = [
+        g.estimate.pressure(x[:, None], y[None, :]) if warm_start else None
+        for g, x, y in zip(grids, xs, ys, strict=True)
+    ]
+    if len(grids) == 1:
+        g = grids[0]
+        solutions: tuple[ContactResult, ...] = (
+            solve_normal(
+                gaps[0], g.dx, g.dy, g.request.e_star, g.request.load, tol,
+                initial=initial[0], max_iterations=max_iterations,
+            ),
+        )  # fmt: skip
+    else:
+        solutions = solve_normal_batch(
+            np.stack(gaps),
+            [g.dx for g in grids], [g.dy for g in grids], [g.request.e_star for g in grids],
+            [g.request.load for g in grids], tol, max_iterations=max_iterations,
+            initial=np.stack(initial) if warm_start else None,
+        )  # fmt: skip
+    for k, g, x, y, gap, solution in zip(keys, grids, xs, ys, gaps, solutions, strict=True):
+        edge = max(_edge_ratios(solution.pressure))
+        results[k] = GridContactResult(x, y, gap, g.estimate, solution, g.enlargement, edge)
+
+
+def _unfitted(
+    grid: _Grid, result: GridContactResult, max_enlargements: int, edge_tolerance: float
+) -> BallscrewError:
+    """The error of a contact patch that still reaches the edge after the last enlargement."""
+    x, y = result.x, result.y
+    return BallscrewError(
         f"the contact patch still reaches the edge of the grid after {max_enlargements} "
-        f"enlargements (box ±{x[-1] + dx / 2:.3e} m × ±{y[-1] + dy / 2:.3e} m, edge pressure "
-        f"{max(x_edge, y_edge):.2e} × peak > {edge_tolerance:.0e}): the gap is far from the Hertz "
-        f"estimate for rx = {rx!r} m, ry = {ry!r} m; raise box_factor or max_enlargements"
+        f"enlargements (box ±{x[-1] + grid.dx / 2:.3e} m × ±{y[-1] + grid.dy / 2:.3e} m, edge "
+        f"pressure {result.edge_pressure:.2e} × peak > {edge_tolerance:.0e}): the gap is far from "
+        f"the Hertz estimate for rx = {grid.request.rx!r} m, ry = {grid.request.ry!r} m; raise "
+        "box_factor or max_enlargements"
     )

@@ -13,8 +13,10 @@ The constrained CG of Polonsky & Keer (1999) with two additions (``docs/theory/c
    each to :data:`COARSE_TOLERANCE`, and the pressure is interpolated bilinearly to the next grid
    as its initial guess.
 
-Every array carries a leading batch axis: B contacts on the same grid (one operator), each with its
-own gap and load, step length, conjugacy and stop. A contact that has converged leaves the batch.
+Every array carries a leading batch axis: B contacts on grids of the same cell counts, each with its
+own gap and load, step length, conjugacy and stop, and either one operator for all (shared dx, dy,
+E*) or one per contact (:class:`~ballscrew.contact.convolution.DCFFTStack`, with a stack of
+preconditioner symbols). A contact that has converged leaves the batch.
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ import numpy as np
 import scipy.fft
 
 from ballscrew.backend import array_module, fft_threads
-from ballscrew.contact.convolution import DCFFTOperator
+from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 
 __all__ = ["COARSEST", "COARSE_TOLERANCE", "MIXED_SWITCH", "BatchIterate", "solve_batch"]
 
@@ -95,6 +97,26 @@ class SpectralPreconditioner:
             z = xp.fft.irfft2(xp.fft.rfft2(g) * self._symbol[dtype], s=shape, norm="forward")
         return z.astype(np.float64, copy=False)
 
+    def take(self, rows: Any) -> SpectralPreconditioner:
+        """The preconditioner of the grids ``rows`` of a stack: this one (shared by all)."""
+        return self
+
+
+class PreconditionerStack(SpectralPreconditioner):
+    """One :class:`SpectralPreconditioner` symbol per contact of the stack (own dx, dy, E*)."""
+
+    def __init__(self, parts: list[SpectralPreconditioner]) -> None:
+        self.parts = parts
+        self.shape, self.xp = parts[0].shape, parts[0].xp
+        self._symbol = {
+            dtype: self.xp.stack([part._symbol[dtype] for part in parts])
+            for dtype in (np.float64, np.float32)
+        }
+
+    def take(self, rows: Any) -> PreconditionerStack:
+        """The stack of the contacts ``rows`` (indices or a boolean mask)."""
+        return PreconditionerStack([self.parts[i] for i in np.arange(len(self.parts))[rows]])
+
 
 def _sums(a: Any) -> Any:
     """Σ over each grid of a (B, nx, ny) stack, shape (B,)."""
@@ -114,7 +136,7 @@ def _col(v: Any) -> Any:
 def _pcg(
     h: Any,
     p: Any,
-    operator: DCFFTOperator,
+    operator: DCFFTOperator | DCFFTStack,
     preconditioner: SpectralPreconditioner,
     tol: float,
     max_iterations: int,
@@ -146,7 +168,7 @@ def _pcg(
     r, q, s, c, p_old = (xp.empty_like(pw) for _ in range(5))
     rho_old = np.ones(batch)
     conjugate = np.zeros(batch, dtype=bool)
-    lone_step = 1.0 / operator.self_coefficient
+    lone_step = _per_contact(1.0 / operator.self_coefficient, xp)
     for iteration in range(1, max_iterations + 1):
         xp.add(u, hw, out=q)
         xp.greater(pw, 0.0, out=c)
@@ -203,7 +225,7 @@ def _pcg(
         exact = np.flatnonzero((clipped | readmitted) & ~stopped)
         if exact.size:  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
             rows = xp.asarray(exact)
-            u[rows] = operator.apply_batch(pw[rows], xp.empty_like(pw[rows]))
+            u[rows] = operator.take(exact).apply_batch(pw[rows], xp.empty_like(pw[rows]))
         residual[work], iterations[work] = res, iteration
         if stopped.any():
             p[xp.asarray(work[stopped])] = pw[xp.asarray(stopped)]
@@ -216,9 +238,16 @@ def _pcg(
             r, q, s, c, p_old = r[rows], q[rows], s[rows], c[rows], p_old[rows]
             work, rho_old, conjugate = work[keep], rho_old[keep], conjugate[keep]
             totw = None if totw is None else totw[keep]
+            operator, preconditioner = operator.take(keep), preconditioner.take(keep)
+            lone_step = _per_contact(1.0 / operator.self_coefficient, xp)
     else:
         p[xp.asarray(work)] = pw
     return p, iterations, residual, done
+
+
+def _per_contact(value: Any, xp: ModuleType) -> Any:
+    """A scalar as it is, a (B,) vector of one value per contact as a (B, 1, 1) column."""
+    return value if np.ndim(value) == 0 else _col(xp.asarray(value))
 
 
 def _host(a: Any) -> np.ndarray:
@@ -247,7 +276,7 @@ def _refine_axis(p: Any, axis: int) -> Any:
 
 
 def _nested_start(
-    h: Any, dx: float, dy: float, e_star: float, total: Any, max_iterations: int, dtype: type
+    h: Any, dx: Any, dy: Any, e_star: Any, total: Any, max_iterations: int, dtype: type
 ) -> tuple[Any, Any]:
     """Initial pressures for the (B, nx, ny) stack from the coarser grids, and their work."""
     xp = array_module(h)
@@ -266,9 +295,9 @@ def _nested_start(
 
 def solve_batch(
     h: Any,
-    dx: float,
-    dy: float,
-    e_star: float,
+    dx: Any,
+    dy: Any,
+    e_star: Any,
     total: Any | None,
     tol: float,
     max_iterations: int,
@@ -276,7 +305,7 @@ def solve_batch(
     initial: Any = None,
     nested: bool = True,
     dtype: type[np.floating] = np.float64,
-    operator: DCFFTOperator | None = None,
+    operator: DCFFTOperator | DCFFTStack | None = None,
 ) -> BatchIterate:
     """Preconditioned CG on the (B, nx, ny) gaps ``h`` (checked by the caller).
 
@@ -286,6 +315,8 @@ def solve_batch(
     the FFTs (float32: iterate to :data:`MIXED_SWITCH` in float32, then to ``tol`` in float64 if
     ``tol`` is below it; the coarse grids of a nested start stay in float32).
     ``operator``: the float64 DC-FFT operator of the grid (default: the cached one).
+    ``dx``, ``dy`` [m] and ``e_star`` [Pa] are scalars shared by all contacts or (B,) arrays, one
+    per contact (then each contact has its own operator and preconditioner symbol).
     """
     xp = array_module(h)
     nx, ny = h.shape[1:]
@@ -301,14 +332,14 @@ def solve_batch(
     preconditioner = _preconditioner((nx, ny), dx, dy, e_star, xp)
     iterations = np.zeros(h.shape[0], dtype=int)
     if dtype is np.float32:
-        single = DCFFTOperator.for_grid((nx, ny), dx, dy, e_star, xp, np.float32)
+        single = _operator((nx, ny), dx, dy, e_star, xp, np.float32)
         p, iterations, residual, converged = _pcg(
             h, p, single, preconditioner, max(tol, MIXED_SWITCH), max_iterations, total
         )
         if tol >= MIXED_SWITCH:  # the float32 iterations met the stop (Σ|Δp| taken in float64)
             return BatchIterate(p, iterations, coarse_work, residual, converged)
     if operator is None:
-        operator = DCFFTOperator.for_grid((nx, ny), dx, dy, e_star, xp)
+        operator = _operator((nx, ny), dx, dy, e_star, xp, np.float64)
     p, more, residual, converged = _pcg(
         h, p, operator, preconditioner, tol, max(max_iterations - int(iterations.max()), 1), total
     )
@@ -318,10 +349,24 @@ def solve_batch(
 _PRECONDITIONERS: dict[tuple[Any, ...], SpectralPreconditioner] = {}
 
 
+def _operator(
+    shape: tuple[int, int], dx: Any, dy: Any, e_star: Any, xp: ModuleType, dtype: type
+) -> DCFFTOperator | DCFFTStack:
+    """The cached DC-FFT operator of the grid, or the stack of them for per-contact cells."""
+    if np.ndim(dx) == 0:
+        return DCFFTOperator.for_grid(shape, dx, dy, e_star, xp, dtype)
+    return DCFFTStack.for_grids(shape, dx, dy, e_star, xp, dtype)
+
+
 def _preconditioner(
-    shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType
+    shape: tuple[int, int], dx: Any, dy: Any, e_star: Any, xp: ModuleType
 ) -> SpectralPreconditioner:
-    """The preconditioner of this grid from a small cache (the last 8 grids)."""
+    """The preconditioner of this grid from a small cache (the last 8 grids), or the stack of
+    them for per-contact cells."""
+    if np.ndim(dx) != 0:
+        return PreconditionerStack(
+            [_preconditioner(shape, *cell, xp) for cell in zip(dx, dy, e_star, strict=True)]
+        )
     key = (shape, dx, dy, e_star, xp.__name__)
     if key not in _PRECONDITIONERS:
         if len(_PRECONDITIONERS) >= 8:
