@@ -8,7 +8,8 @@ import math
 import pytest
 
 import ballscrew
-from ballscrew.analyses.friction import _ball_model, friction_torque
+from ballscrew.analyses.friction import friction_torque
+from ballscrew.analyses.kinematics import ball_model
 from ballscrew.case import CaseError
 from ballscrew.friction.groove_slip import differential_slip_power, heathcote_power
 from ballscrew.kinematics.balance import solve_ball
@@ -98,7 +99,7 @@ def test_skf_law_raises_the_torque_in_mixed_and_lowers_it_in_full_film(physics_c
 
 
 def test_skf_law_acts_in_the_level_2_balance_and_keeps_its_energy_balance(physics_case):
-    model = _ball_model(_law(physics_case, "skf"), None)
+    model = ball_model(_law(physics_case, "skf"), None)
     film = dataclasses.replace(model, traction_law="film")
     omega = 100.0 * RPM
     states = [solve_ball(m, omega, 1500.0, 1, 2) for m in (film, model)]
@@ -112,7 +113,7 @@ def test_skf_law_acts_in_the_level_2_balance_and_keeps_its_energy_balance(physic
 def test_skf_cell_shear_is_mu_sl_p_where_the_film_is_at_its_cap(physics_case):
     """Grid integral of the Heathcote slip with the SKF weights and a saturated film equals the
     closed form (F3b) with μ = μ_sl: the SKF weighting of μ_bl and μ_EHL, cell by cell."""
-    model = _ball_model(_law(physics_case, "skf"), None)
+    model = ball_model(_law(physics_case, "skf"), None)
     omega = 100.0 * RPM
     weights = traction_weights(model, 0.3, omega)
     nu = model.viscosity / model.lubricant_density

@@ -8,11 +8,10 @@ inlet viscosity (the viscosity at the operating temperature is passed by the cal
 
 from __future__ import annotations
 
-import dataclasses
 from functools import partial
 
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
-from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
+from ballscrew.analyses.parameters import ScrewParameters, lubricant_state
 from ballscrew.case import Case
 from ballscrew.friction import (
     FrictionInputs,
@@ -21,8 +20,7 @@ from ballscrew.friction import (
     ball_losses,
     nut_friction_torque,
 )
-from ballscrew.kinematics.model import BallModel
-from ballscrew.validation import nonnegative, positive
+from ballscrew.validation import nonnegative
 
 __all__ = ["friction_torque", "nut_loss_parameters", "seal_torque"]
 
@@ -50,25 +48,6 @@ def nut_loss_parameters(case: Case, viscosity: float | None = None) -> NutLossPa
     )
 
 
-def _ball_model(case: Case, viscosity: float | None) -> BallModel:
-    """The case's ball model; a given ``viscosity`` (the caller's contact temperature) also
-    sets α_p and the film's inlet heating of a named lubricant at that temperature."""
-    model = ball_model(case)
-    state = lubricant_state(case, viscosity)
-    changes: dict[str, object] = {"traction_law": case.friction.traction}
-    if state is not None:
-        changes["lubricant_density"] = state.density
-    if viscosity is not None:
-        changes["viscosity"] = positive("viscosity", viscosity, "Pa s")
-        if state is not None and case.medium.viscosity is None:
-            if case.medium.pressure_viscosity is None:
-                changes["pressure_viscosity"] = state.pressure_viscosity
-            changes["film_model"] = film_model(case, state)
-    if case.friction.boundary_friction is not None:
-        changes["boundary_friction"] = case.friction.boundary_friction
-    return dataclasses.replace(model, **changes)
-
-
 def friction_torque(
     case: Case,
     speed: float | None = None,
@@ -94,7 +73,7 @@ def friction_torque(
     geometry = params.geometry
     losses = None
     if spec.model == "ball_model":
-        model = _ball_model(case, viscosity)
+        model = ball_model(case, viscosity)
         level = _level(case, None)
         nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).nuts)
         losses = partial(

@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses import kinematics_report
 from ballscrew.analyses.ball_contact import solve_raceway_contact
-from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
 from ballscrew.errors import InputError
@@ -48,7 +48,7 @@ from ballscrew.kinematics.sliding import SlidingField, sliding_field, sliding_fi
 from ballscrew.kinematics.torque import BallDrag, ball_drag
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication import AsperitySurface, LoadSharing, asperity_pressure
-from ballscrew.validation import case_with
+from ballscrew.validation import case_with, positive
 
 __all__ = [
     "ContactFields",
@@ -270,8 +270,16 @@ def speed_sweep(
     return SpeedSweep(omegas, lvl, *cols, catalogue_torque=drag_torque(case))
 
 
-def ball_model(case: Case) -> BallModel:
-    """The :class:`BallModel` of a validated case."""
+def ball_model(case: Case, viscosity: float | None = None) -> BallModel:
+    """The :class:`BallModel` of a validated case, the one of every analysis that solves balls.
+
+    ``[kinematics]`` gives the surface, μ_b, Λ_L and the traction grid; ``[friction]`` the
+    traction law (``friction.traction``) and, when set, μ_b (``friction.boundary_friction``); a
+    named lubricant its density at ``[lubrication] temperature`` (870 kg/m³ without one). A
+    given ``viscosity`` [Pa s] (a caller's contact temperature) replaces η and, for a named
+    lubricant without ``[medium]`` viscosity, also sets α_p, the density and the film's inlet
+    heating at the temperature where the lubricant has that viscosity.
+    """
     params = ScrewParameters.from_case(case)
     spec = case.kinematics
     e_star = params.contact_modulus("screw")
@@ -282,7 +290,8 @@ def ball_model(case: Case) -> BallModel:
         hardness=params.screw.hardness,
         cell_area=spec.micro_contact_size**2,
     )
-    return BallModel(
+    state = lubricant_state(case, viscosity)
+    model = BallModel(
         geometry=params.geometry,
         balls=params.balls_per_nut,
         ball_density=params.ball.density,
@@ -292,10 +301,25 @@ def ball_model(case: Case) -> BallModel:
         viscosity=params.lubrication.viscosity,
         pressure_viscosity=params.lubrication.pressure_viscosity,
         film_model=params.lubrication.film_model,
-        boundary_friction=spec.boundary_friction,
+        boundary_friction=(
+            spec.boundary_friction
+            if case.friction.boundary_friction is None
+            else case.friction.boundary_friction
+        ),
         limiting_shear=spec.limiting_shear,
         traction_cells=spec.traction_cells,
+        traction_law=case.friction.traction,
     )
+    changes: dict[str, object] = {}
+    if state is not None:
+        changes["lubricant_density"] = state.density
+    if viscosity is not None:
+        changes["viscosity"] = positive("viscosity", viscosity, "Pa s")
+        if state is not None and case.medium.viscosity is None:
+            if case.medium.pressure_viscosity is None:
+                changes["pressure_viscosity"] = state.pressure_viscosity
+            changes["film_model"] = film_model(case, state)
+    return dataclasses.replace(model, **changes)
 
 
 def speed_limit_messages(case: Case, speed: float) -> list[str]:

@@ -1,0 +1,62 @@
+"""``friction.traction`` reaches every entry point that solves balls: the kinematics analysis,
+the ball-model drag torque (thermal heat) and the friction analysis agree for one case."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import ballscrew
+from ballscrew.analyses.friction import friction_torque
+from ballscrew.analyses.kinematics import ball_kinematics, computed_drag_torque
+
+RPM = 2.0 * math.pi / 60.0
+MIXED = 300.0 * RPM  # wear reference screw: Λ in the mixed regime under both laws
+
+
+def _case(path, law: str, level: int):
+    return ballscrew.load_case(
+        path,
+        {
+            "friction.model": "ball_model",
+            "friction.traction": law,
+            "operating.axial_load": 0.0,
+            "kinematics.level": level,
+        },
+    )
+
+
+def test_default_numbers_are_unchanged(gao_case_path, wear_case_path):
+    # the film law's numbers before the traction law reached the kinematics (commit 4399cba)
+    gao = ballscrew.load_case(gao_case_path)
+    state = ball_kinematics(gao)
+    assert state.ball_speed == pytest.approx(0.9333272113362386, rel=1e-9)
+    assert state.spin_screw == pytest.approx(73.81469929037536, rel=1e-9)
+    assert computed_drag_torque(gao) == pytest.approx(0.1186656857617516, rel=1e-9)
+    wear = _case(wear_case_path, "film", 2)
+    assert computed_drag_torque(wear, 100.0 * RPM) == pytest.approx(0.11368954621573293, rel=1e-9)
+    state = ball_kinematics(wear, 100.0 * RPM)
+    assert state.ball_speed == pytest.approx(0.094970444065324, rel=1e-9)
+    assert state.spin_screw == pytest.approx(12.735562231188782, rel=1e-9)
+
+
+@pytest.mark.parametrize("level", [1, 2])
+def test_kinematics_and_friction_give_one_torque_under_skf(wear_case_path, level):
+    torques = {}
+    for law in ("film", "skf"):
+        case = _case(wear_case_path, law, level)
+        friction = friction_torque(case, speed=MIXED)
+        assert friction.regime == "mixed"
+        # sliding at A and EHL rolling at A and B: the dissipation of the ball-model drag
+        balls = friction.parts["sliding"] + friction.parts["ehl_rolling"]
+        torques[law] = computed_drag_torque(case, MIXED)
+        assert torques[law] == pytest.approx(balls, rel=1e-9)
+    # SKF μ_sl ≈ 0.1 against the film law's lower mixed-regime coefficient
+    assert torques["skf"] > 1.03 * torques["film"]
+
+
+def test_skf_law_moves_the_level_2_ball(wear_case_path):
+    film, skf = (ball_kinematics(_case(wear_case_path, law, 2), MIXED) for law in ("film", "skf"))
+    assert skf.traction_screw.power_loss > 1.03 * film.traction_screw.power_loss
+    assert skf.spin_screw != pytest.approx(film.spin_screw, rel=1e-6)
