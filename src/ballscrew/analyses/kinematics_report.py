@@ -99,7 +99,12 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
             "drag_torque_model_vs_preload": {"value": run.preload_model, "unit": "N*m"},
         },
         "options": {
-            "boundary_friction": case.kinematics.boundary_friction,
+            "traction": case.friction.traction,
+            "boundary_friction": (
+                case.kinematics.boundary_friction
+                if case.friction.boundary_friction is None
+                else case.friction.boundary_friction
+            ),
             "limiting_shear": case.kinematics.limiting_shear,
             "micro_contact_size": value(case.kinematics.micro_contact_size, "m"),
             "surface": {"D": case.surface.D, "Ds": case.surface.D + 1.0},

@@ -57,7 +57,8 @@ class BallDrag:
     rolling_nut: FloatArray
     """EHL rolling force of the B film on the ball [N]."""
     psi: float
-    """JGP asperity share ψ at A (the traction weight of the ``film`` law)."""
+    """JGP asperity load share ψ at A (the traction weight of the ``film`` law only; a film
+    property, reported under every law)."""
     torque: float
     """Screw torque per ball, (E3.7) at fixed nut force [N m]; positive opposes the rotation."""
     dissipation_torque: float
