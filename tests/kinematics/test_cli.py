@@ -69,6 +69,7 @@ def test_writes_a_complete_results_folder(tmp_path, wear_case_path):
         torque["ball_model"]["value"] * 10 * math.pi / 3, rel=1e-9
     )
     assert len(summary["curves"]["load_screw"]["value"]) == 4
+    assert summary["options"]["traction"] == "film"
     with xr.open_dataset(out / "fields.nc", engine="h5netcdf") as fields:
         for name in ("pressure", "sliding_x", "sliding_y", "sliding_speed", "asperity_pressure"):
             assert fields[name].dims == ("x", "y")
