@@ -139,3 +139,15 @@ def test_check_command_bad_input_exit_2(tmp_path: Path) -> None:
     result = CliRunner().invoke(app, ["check", str(case_file), "--out", str(tmp_path / "o")])
     assert result.exit_code == 2 and "design.mounting" in result.output
     assert not (tmp_path / "o").exists()
+
+
+def test_fixed_fixed_shaft_stiffness_uses_the_span() -> None:
+    """Fixed–fixed: nut_distance is measured from one bearing and the span stays the length
+    (1.3 m); at mid-span both mountings' formulas meet, 4 A E/l = 2 · A E/(l/2)."""
+
+    def shaft(**over: object) -> float:
+        return design_check(case_from_dict(raw_case(**over))).shaft_stiffness
+
+    mid = shaft(mounting="fixed-fixed")
+    assert shaft(mounting="fixed-fixed", nut_distance="0.65 m") == pytest.approx(mid)
+    assert shaft(mounting="fixed-free", nut_distance="0.65 m") == pytest.approx(mid / 2)

@@ -64,6 +64,19 @@ def test_shaft_stiffness_fixed_fixed_is_four_times() -> None:
     assert design.shaft_axial_stiffness(0.03, 1.0, 2e11, "fixed-fixed") == pytest.approx(4 * one)
 
 
+def test_shaft_stiffness_fixed_fixed_off_centre() -> None:
+    """Fixed–fixed: the two shaft parts in parallel, A E l/(a (l − a)); the old code gave
+    4 A E/a (3× too stiff at a = l/4)."""
+    bar = math.pi * 0.03**2 / 4 * 2e11
+    k = design.shaft_axial_stiffness(0.03, 1.0, 2e11, "fixed-fixed", 0.25)
+    assert k == pytest.approx(bar / 0.25 + bar / 0.75)
+    assert design.shaft_axial_stiffness(0.03, 1.0, 2e11, "fixed-free", 0.25) == pytest.approx(
+        bar / 0.25
+    )
+    with pytest.raises(InputError, match="nut_distance"):
+        design.shaft_axial_stiffness(0.03, 1.0, 2e11, "fixed-fixed", 1.0)
+
+
 def test_series_and_pretension() -> None:
     assert design.series_stiffness(2e8, 2e8) == pytest.approx(1e8)
     force = design.thermal_pretension(0.03, 2e11, 12e-6, 3.0)

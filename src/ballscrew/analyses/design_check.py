@@ -339,7 +339,7 @@ def design_check(case: Case) -> DesignCheck:
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
     nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
     shaft_k = design.shaft_axial_stiffness(
-        root, spec.nut_distance or length, screw.youngs_modulus, spec.mounting
+        root, length, screw.youngs_modulus, spec.mounting, spec.nut_distance
     )
     axial_k = design.series_stiffness(nut_k, shaft_k)
     catalogue_k = None

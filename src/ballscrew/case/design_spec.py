@@ -70,7 +70,10 @@ class DesignSpec(Model):
     )
     nut_distance: (
         quantity(
-            "length", "fixed bearing to nut (shaft stiffness); None = the length", gt=0, le=100.0
+            "length",
+            "fixed bearing to nut (shaft stiffness); None = the length (fixed-fixed: half)",
+            gt=0,
+            le=100.0,
         )
         | None
     ) = None

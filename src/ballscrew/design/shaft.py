@@ -12,8 +12,8 @@ A = π d_r²/4. The makers publish the same two beam formulas with their constan
   15.1, 21.9; A-696 eq. 8), HIWIN ω = 2.71·10⁸ f_n d_r/l² rpm (f_n = 0.147, 0.446, 0.692, 1;
   F 3.27);
 * permissible tension/compression σ_perm A with σ_perm = 147 MPa (THK A-694 eq. 7);
-* axial stiffness A E/l with one end fixed, 4 A E/l with both (nut in the middle, the minimum;
-  THK A-708 eqs. 32–33, HIWIN §3.7.7);
+* axial stiffness A E/a with one end fixed (a: bearing to nut), A E l/(a (l − a)) with both
+  (minimum 4 A E/l, nut in the middle; THK A-708 eqs. 32–33, HIWIN §3.7.7, Rexroth p. 105);
 * free thermal elongation α ΔT l, and the pretension E A α ΔT that takes it up.
 """
 
@@ -151,17 +151,29 @@ def permissible_tension(root_diameter: float, stress: float = PERMISSIBLE_STRESS
 
 
 def shaft_axial_stiffness(
-    root_diameter: float, length: float, youngs_modulus: float, mounting: str
+    root_diameter: float,
+    length: float,
+    youngs_modulus: float,
+    mounting: str,
+    nut_distance: float | None = None,
 ) -> float:
-    """Axial stiffness of the shaft between the fixed bearing and the nut, N/m.
+    """Axial stiffness of the shaft between the fixed bearing(s) and the nut, N/m.
 
-    A E/l with one fixed end; 4 A E/l for fixed–fixed (the nut at mid-span, the minimum).
+    One fixed end: A E/a with a = ``nut_distance`` (default ``length``). Fixed–fixed: the two
+    shaft parts in parallel, A E l/(a (l − a)) with l = ``length`` the bearing span and a
+    (default l/2) one bearing to the nut; the minimum 4 A E/l at mid-span (THK A-708 eqs.
+    32–33; Bosch Rexroth R310RU 3301, 2006, p. 105 eqs. 17–19).
     """
     d = positive("root_diameter", root_diameter, "m")
     l_s = positive("length", length, "m")
     e = positive("youngs_modulus", youngs_modulus, "Pa")
-    factor = 4.0 if _mounting(mounting) == "fixed-fixed" else 1.0
-    return factor * math.pi * d**2 / 4.0 * e / l_s
+    bar = math.pi * d**2 / 4.0 * e
+    if _mounting(mounting) != "fixed-fixed":
+        return bar / (l_s if nut_distance is None else positive("nut_distance", nut_distance, "m"))
+    a = 0.5 * l_s if nut_distance is None else positive("nut_distance", nut_distance, "m")
+    if a >= l_s:
+        raise InputError("nut_distance", a, f"< the bearing span {l_s} m for fixed-fixed")
+    return bar * l_s / (a * (l_s - a))
 
 
 def thermal_elongation(length: float, expansion: float, temperature_rise: float) -> float:
