@@ -32,3 +32,18 @@ def test_jacobi_and_amg_steps_meet_the_same_tolerance(monkeypatch):
     fallback = factorize(m, rtol=1e-8, direct_limit=0, jacobi_first=True)
     for b, x in zip(loads, exact, strict=True):
         assert np.linalg.norm(fallback(b) - x) <= 1e-6 * np.linalg.norm(x)
+
+
+def test_a_non_symmetric_matrix_is_factorised_not_given_to_cg():
+    """A coolant's upwind transport makes the matrix non-symmetric: CG would converge to a wrong
+    answer (or not at all), so it is factorised however large it is."""
+    m = _step_matrix(20, 0.05).tolil()
+    n = m.shape[0]
+    flow = 0.8  # upwind coupling of each unknown to the one before it
+    for i in range(1, n):
+        m[i, i] += flow
+        m[i, i - 1] -= flow
+    m = m.tocsr()
+    b = np.random.default_rng(5).random(n)
+    x = factorize(m, rtol=1e-10, direct_limit=0, jacobi_first=True)(b)
+    assert np.linalg.norm(m @ x - b) <= 1e-10 * np.linalg.norm(b)

@@ -222,7 +222,7 @@ def _pool() -> ThreadPoolExecutor:
     return ThreadPoolExecutor(MAX_FFT_THREADS, thread_name_prefix="ballscrew-fft")
 
 
-@lru_cache(maxsize=8)
+@lru_cache(maxsize=16)
 def _cached_operator(
     shape: tuple[int, int],
     dx: float,

@@ -114,8 +114,13 @@ class PreconditionerStack(SpectralPreconditioner):
         }
 
     def take(self, rows: Any) -> PreconditionerStack:
-        """The stack of the contacts ``rows`` (indices or a boolean mask)."""
-        return PreconditionerStack([self.parts[i] for i in np.arange(len(self.parts))[rows]])
+        """The stack of the contacts ``rows`` (indices or a boolean mask): slices of the symbols,
+        not a new stack."""
+        taken = object.__new__(PreconditionerStack)
+        taken.parts = [self.parts[i] for i in np.arange(len(self.parts))[rows]]
+        taken.shape, taken.xp = self.shape, self.xp
+        taken._symbol = {dtype: symbol[rows] for dtype, symbol in self._symbol.items()}
+        return taken
 
 
 def _sums(a: Any) -> Any:
@@ -347,6 +352,8 @@ def solve_batch(
 
 
 _PRECONDITIONERS: dict[tuple[Any, ...], SpectralPreconditioner] = {}
+_CACHED = 16
+"""Preconditioners kept (as the operators: nested levels × both precisions × a few cells)."""
 
 
 def _operator(
@@ -369,7 +376,7 @@ def _preconditioner(
         )
     key = (shape, dx, dy, e_star, xp.__name__)
     if key not in _PRECONDITIONERS:
-        if len(_PRECONDITIONERS) >= 8:
+        if len(_PRECONDITIONERS) >= _CACHED:
             _PRECONDITIONERS.pop(next(iter(_PRECONDITIONERS)))
         _PRECONDITIONERS[key] = SpectralPreconditioner(shape, dx, dy, e_star, xp)
     return _PRECONDITIONERS[key]

@@ -64,8 +64,7 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     n += coolant.size
     table_node = n
     n += table is not None
-    r_in = 0.0 if cool is None else cool.bore_radius
-    area_s = np.pi * (R**2 - r_in**2)
+    r_in, area_s = problem.bore_radius, problem.section_area
     area_r = np.pi * (ro**2 - R**2)
 
     ii: list[NDArray[np.int64]] = []

@@ -203,7 +203,7 @@ class ThermalProblem:
     def _check_sensor(self, s: Sensor) -> None:
         R, tol = self.shaft_radius, 1e-9 * self.shaft_length
         if s.body == "screw":
-            bore = 0.0 if self.shaft_coolant is None else self.shaft_coolant.bore_radius
+            bore = self.bore_radius
             if not (bore <= s.r <= R + tol and -tol <= s.z <= self.shaft_length + tol):
                 raise InputError(
                     f"sensors.{s.name}",

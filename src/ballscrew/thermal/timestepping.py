@@ -38,9 +38,10 @@ def factorize(
     direct_limit: int = DIRECT_LIMIT,
     jacobi_first: bool = False,
 ) -> Solve:
-    """A solver for ``matrix`` (symmetric positive definite): LU once, or AMG-CG when larger
-    than ``direct_limit`` unknowns. The AMG path raises :class:`ConvergenceError` when CG
-    misses ``rtol``.
+    """A solver for ``matrix``: LU once, or AMG-CG when it is symmetric (positive definite) and
+    larger than ``direct_limit`` unknowns; a non-symmetric matrix (a coolant's upwind transport)
+    is always factorised, CG being only for symmetric ones. The AMG path raises
+    :class:`ConvergenceError` when CG misses ``rtol``.
 
     ``jacobi_first``: the matrix is a time step's C/Δt + A, whose condition number
     1 + Δt·λ_max(C⁻¹A) (over 1 + Δt·λ_min) stays moderate at the model's steps, so CG with the
@@ -50,7 +51,7 @@ def factorize(
     for this and every later solve. The stop is the same: ‖b − Ax‖ ≤ rtol‖b‖.
     """
     matrix = sp.csc_matrix(matrix)
-    if matrix.shape[0] <= direct_limit:
+    if matrix.shape[0] <= direct_limit or not _symmetric(matrix):
         lu = splu(matrix)
         return lu.solve
     import pyamg
@@ -145,3 +146,9 @@ def implicit_euler(
         heat_out += time_step * loss
         observe(n, theta, loss)
     return theta, heat_in, heat_out
+
+
+def _symmetric(matrix: sp.spmatrix) -> bool:
+    """Whether ``matrix`` equals its transpose to round-off (1e-12 of its largest entry)."""
+    scale = abs(matrix).max()
+    return not scale or abs(matrix - matrix.T).max() <= 1e-12 * scale
