@@ -11,7 +11,7 @@ from __future__ import annotations
 from functools import partial
 
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
-from ballscrew.analyses.parameters import ScrewParameters, lubricant_state
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
 from ballscrew.friction import (
     FrictionInputs,
@@ -33,17 +33,14 @@ def seal_torque(case: Case) -> float:
     return spec.seal_force * 0.5 * case.screw.pitch_diameter
 
 
-def nut_loss_parameters(case: Case, viscosity: float | None = None) -> NutLossParameters:
-    """Ball–ball, drag and ball-return parameters of ``[friction]`` and the lubricant density
-    (of the named lubricant at the temperature of ``viscosity`` [Pa s], see
-    :func:`~ballscrew.analyses.parameters.lubricant_state`; 870 kg/m³ without one)."""
+def nut_loss_parameters(case: Case) -> NutLossParameters:
+    """Ball–ball, drag and ball-return parameters of ``[friction]`` (the lubricant's density is
+    the ball model's, see :func:`~ballscrew.analyses.kinematics.ball_model`)."""
     spec = case.friction
-    state = lubricant_state(case, viscosity)
     return NutLossParameters(
         ball_ball_load_ratio=spec.ball_ball_load_ratio,
         ball_ball_friction=spec.ball_ball_friction,
         lubricant_fill=spec.lubricant_fill,
-        lubricant_density=state.density if state is not None else 870.0,
         circuits=spec.circuits,
     )
 
@@ -82,7 +79,7 @@ def friction_torque(
             nuts=nuts,
             level=level,
             hysteresis=spec.hysteresis,
-            nut=nut_loss_parameters(case, viscosity),
+            nut=nut_loss_parameters(case),
         )
     inputs = FrictionInputs(
         lead=geometry.lead,

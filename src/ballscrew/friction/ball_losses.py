@@ -178,7 +178,7 @@ def _one_ball(
         power = drag_power(
             state.ball_speed,
             model.geometry.ball_diameter,
-            nut.lubricant_density,
+            model.lubricant_density,
             model.viscosity,
             nut.lubricant_fill,
         )

@@ -69,8 +69,6 @@ class NutLossParameters:
     """μ_bb."""
     lubricant_fill: float = DEFAULT_LUBRICANT_FILL
     """X, volume fraction of lubricant in the nut."""
-    lubricant_density: float = 870.0
-    """ρ of the lubricant [kg/m³] (the composer passes the lubricant's)."""
     circuits: int = DEFAULT_CIRCUITS
     """Ball circuits per nut."""
 
