@@ -11,7 +11,7 @@ from ballscrew import design
 from ballscrew.contact.elastic import composite_modulus
 from ballscrew.contact.hertz import hertz
 from ballscrew.errors import InputError
-from ballscrew.geometry import ScrewGeometry, raceway_curvature
+from ballscrew.geometry import RacewayCurvature, ScrewGeometry, raceway_curvature
 
 E_STAR = composite_modulus(206e9, 0.3, 206e9, 0.3)
 
@@ -52,3 +52,42 @@ def test_ball_count_of_a_circuit() -> None:
     assert design.circuit_ball_count(0.040, 0.00635, 0.010, 2.5) == math.floor(2.5 * per_turn) - 1
     with pytest.raises(InputError, match=r"^turns = 0\.05"):
         design.circuit_ball_count(0.040, 0.00635, 0.010, 0.05)
+
+
+def test_palmgren_rating_leaves_a_permanent_deformation_of_1e_4_ball_diameters() -> None:
+    """Palmgren in its own units: δ_s = 1.3e-7 Q² (Σρ_I)(Σρ_II)/D_w [mm, N, 1/mm] = 1e-4 D_w at
+    the more deformed (screw) contact, whatever E*."""
+    g, balls = geometry(), 90
+    c0a = design.static_load_rating(g, balls, (E_STAR, E_STAR), model="palmgren")
+    ball_load = c0a / (balls * math.sin(g.contact_angle) * math.cos(g.lead_angle))
+    d_mm = g.ball_diameter * 1e3
+    deformations = []
+    for side in ("screw", "nut"):
+        c = raceway_curvature(g, side)
+        deformations.append(1.3e-7 * ball_load**2 * (c.h_xx * 1e-3) * (c.h_yy * 1e-3) / d_mm)
+    assert max(deformations) == pytest.approx(1e-4 * d_mm, rel=1e-9)
+    assert deformations[0] > deformations[1]
+    softer = design.static_load_rating(g, balls, (0.5 * E_STAR, E_STAR), model="palmgren")
+    assert softer == c0a
+
+
+def test_palmgren_limit_is_near_the_iso_76_pressure_at_a_bearing_inner_ring() -> None:
+    """At the geometry ISO 76 was set for (inner ring, f = 0.52, γ = 0.2) Palmgren's 1e-4 D_w
+    falls at a Hertz peak pressure a few per cent below 4200 MPa; at a screw groove (f = 0.53,
+    γ ≈ 0.1) about 4000 MPa, so C_0a is 12–19 % lower."""
+    d_w, gamma, f = 0.010, 0.2, 0.52
+    k_x = 2.0 / d_w * gamma / (1.0 - gamma)
+    inner = RacewayCurvature("screw", k_x, 2.0 / d_w + k_x, 2.0 / d_w - 1.0 / (f * d_w), 0.0)
+    load = design.STATIC_RATING_MODELS["palmgren"](inner, d_w, E_STAR, 4.2e9)
+    assert 3.9e9 < hertz(inner.rx, inner.ry, E_STAR, load).p0 < 4.2e9
+    g = geometry()
+    ratio = design.static_load_rating(g, 90, (E_STAR,) * 2, model="palmgren") / (
+        design.static_load_rating(g, 90, (E_STAR,) * 2)
+    )
+    assert 0.80 < ratio < 0.90
+
+
+def test_static_rating_models_are_a_registry() -> None:
+    assert design.STATIC_RATING_MODELS.names == ("iso76", "palmgren")
+    with pytest.raises(InputError, match=r"^design\.static_rating_model = 'hertz'"):
+        design.static_load_rating(geometry(), 90, (E_STAR, E_STAR), model="hertz")

@@ -2,7 +2,8 @@
 buckling limits, stiffness of the nut, the shaft and the drive, thermal pretension.
 
 Plain functions of SI numbers; no case. The load ratings C_a and C_0a are catalogue inputs, or
-computed from the geometry (:mod:`ballscrew.design.ratings`, Lundberg–Palmgren and ISO 76).
+computed from the geometry (:mod:`ballscrew.design.ratings`, Lundberg–Palmgren, and ISO 76 or
+Palmgren's permanent deformation).
 """
 
 from ballscrew.design.life import (
@@ -25,6 +26,7 @@ from ballscrew.design.rating_factors import (
 from ballscrew.design.ratings import (
     MAX_PRELOAD_SHARE,
     STATIC_CONTACT_PRESSURE,
+    STATIC_RATING_MODELS,
     balls_per_turn,
     circuit_ball_count,
     dynamic_load_rating,
@@ -62,6 +64,7 @@ __all__ = [
     "RELIABILITY_FACTORS",
     "SPEED_SAFETY",
     "STATIC_CONTACT_PRESSURE",
+    "STATIC_RATING_MODELS",
     "accuracy_factor",
     "balls_per_turn",
     "buckling_load",
