@@ -16,7 +16,7 @@ from ballscrew import design
 from ballscrew.analyses.design_check import design_check, load_spectrum
 from ballscrew.case import case_from_dict
 from ballscrew.cli import app
-from ballscrew.errors import InputError
+from ballscrew.errors import BallscrewError, InputError
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
 DESIGN = {
@@ -105,6 +105,24 @@ def test_missing_ratings_are_computed_and_said_so() -> None:
     assert summary["rating_life"]["value"] > 0
     rows = dict(result.report()[1].tables[0].rows)
     assert any("computed from the geometry" in label for label in rows)
+
+
+@pytest.mark.filterwarnings("ignore::UserWarning")
+def test_static_rating_model_of_the_case_picks_the_rival_limit() -> None:
+    """``[design] static_rating_model`` chooses the C_0a limit; a name not registered is refused
+    naming the field and the known models."""
+    raw = raw_case()
+    del raw["design"]["static_load_rating"]
+    c0a = {}
+    for name in ("iso76", "palmgren"):
+        raw["design"]["static_rating_model"] = name
+        c0a[name] = design_check(case_from_dict(raw)).static_load_rating
+    assert 0.75 < c0a["palmgren"] / c0a["iso76"] < 0.92
+    raw["design"]["static_rating_model"] = "hertz"
+    with pytest.raises(
+        BallscrewError, match=r"design\.static_rating_model = 'hertz' .*iso76, palmgren"
+    ):
+        case_from_dict(raw)
 
 
 def test_given_ratings_are_not_marked_computed() -> None:

@@ -217,7 +217,7 @@ def rating_factor(case: Case, params: ScrewParameters) -> float:
 
 def load_ratings(case: Case, params: ScrewParameters) -> tuple[float, float, tuple[str, ...]]:
     """(C_a, C_0a, names of those computed): ``[design]``'s values, else from the geometry
-    times :func:`rating_factor`.
+    times :func:`rating_factor` (C_0a by ``[design] static_rating_model``).
 
     A maker's ratings are taken as printed (they hold for the hardness and class of his product).
     """
@@ -227,7 +227,10 @@ def load_ratings(case: Case, params: ScrewParameters) -> tuple[float, float, tup
     factor = rating_factor(case, params) if None in given else 1.0
     ca = given[0] or factor * design.dynamic_load_rating(params.geometry, balls)
     c0a = given[1] or factor * design.static_load_rating(
-        params.geometry, balls, (params.contact_modulus("screw"), params.contact_modulus("nut"))
+        params.geometry,
+        balls,
+        (params.contact_modulus("screw"), params.contact_modulus("nut")),
+        model=spec.static_rating_model if spec else "iso76",
     )
     names = ("dynamic_load_rating", "static_load_rating")
     return ca, c0a, tuple(n for n, g in zip(names, given, strict=True) if g is None)

@@ -5,6 +5,7 @@ Example (THK BNFN4010-5 on a 1.3 m shaft)::
     [design]
     dynamic_load_rating = "52.7 kN"   # C_a from the maker's table (else from the geometry)
     static_load_rating = "141.1 kN"   # C_0a from the maker's table (else from the geometry)
+    static_rating_model = "iso76"     # C_0a from the geometry: 4200 MPa, or "palmgren"
     accuracy_grade = 5                # C5 / P5: f_ac = 1 (0.9 for class 7, 0.7 for class 10)
     mounting = "fixed-supported"
     unsupported_length = "1.3 m"      # between the bearings (buckling and whirling)
@@ -23,8 +24,9 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from ballscrew.case.base import Model, quantity
+from ballscrew.case.base import Model, model_choice, quantity
 from ballscrew.design.life import RELIABILITY_FACTORS
+from ballscrew.design.ratings import STATIC_RATING_MODELS
 
 __all__ = ["DesignSpec"]
 
@@ -52,6 +54,11 @@ class DesignSpec(Model):
         )
         | None
     ) = None
+    static_rating_model: model_choice(
+        STATIC_RATING_MODELS,
+        "limit of C_0a from the geometry: 'iso76' Hertz 4200 MPa, 'palmgren' permanent "
+        "deformation 1e-4 D_w",
+    ) = "iso76"
     accuracy_grade: Literal[0, 1, 2, 3, 4, 5, 7, 10] = Field(
         5,
         description="accuracy class (ISO 3408 / JIS C or P grade number): f_ac of C_0a",
