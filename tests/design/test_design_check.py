@@ -113,11 +113,14 @@ def test_static_rating_model_of_the_case_picks_the_rival_limit() -> None:
     naming the field and the known models."""
     raw = raw_case()
     del raw["design"]["static_load_rating"]
-    c0a = {}
+    c0a, said = {}, {}
     for name in ("iso76", "palmgren"):
         raw["design"]["static_rating_model"] = name
-        c0a[name] = design_check(case_from_dict(raw)).static_load_rating
+        result = design_check(case_from_dict(raw))
+        c0a[name] = result.static_load_rating
+        said[name] = " ".join(w for w in result.warnings if "static_load_rating" in w)
     assert 0.75 < c0a["palmgren"] / c0a["iso76"] < 0.92
+    assert "4200 MPa" in said["iso76"] and "Palmgren's formula" in said["palmgren"]
     raw["design"]["static_rating_model"] = "hertz"
     with pytest.raises(
         BallscrewError, match=r"design\.static_rating_model = 'hertz' .*iso76, palmgren"

@@ -306,11 +306,19 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     return tuple(out)
 
 
-def _warn(margins: tuple[Margin, ...], values: dict, computed: tuple[str, ...]) -> None:
+def _warn(
+    margins: tuple[Margin, ...], values: dict, computed: tuple[str, ...], spec: DesignSpec
+) -> None:
+    methods = {
+        "dynamic_load_rating": "Lundberg-Palmgren",
+        "static_load_rating": design.STATIC_RATING_MODELS.entry(
+            spec.static_rating_model
+        ).description,
+    }
     for name in computed:
         warnings.warn(
             f"design.{name} not given: {values[name] * 1e-3:.4g} kN computed from the geometry "
-            "(Lundberg-Palmgren / ISO 76 pressure limit); give the maker's value when known",
+            f"({methods[name]}); give the maker's value when known",
             DesignWarning,
             stacklevel=3,
         )
@@ -384,7 +392,7 @@ def design_check(case: Case) -> DesignCheck:
     }
     margins = _margins(values, spec, case)
     with recorded_warnings() as messages:
-        _warn(margins, values, computed)
+        _warn(margins, values, computed, spec)
     return DesignCheck(
         case=case,
         margins=margins,
