@@ -65,7 +65,8 @@ PERMANENT_DEFORMATION_SHARE = 1e-4
 
 PALMGREN_DEFORMATION_CONSTANT = 1.3e-19
 """Palmgren's δ_s = k Q² (Σρ_I)(Σρ_II)/D_w in SI [m⁴/N²] (1.3·10⁻⁷ in mm and N; Harris &
-Kotzalas 2006)."""
+Kotzalas 2006). UNVERIFIED: recalled, not read from the book here; it puts the limit of a bearing
+inner-ring contact at p_0 ≈ 4050 MPa, near ISO 76's 4200 MPa."""
 
 MAX_PRELOAD_SHARE: dict[int, float] = {1: 0.05, 2: 0.10}
 """Largest preload / C_a by nut count (HIWIN §3.6.2; THK A-687: 0.1 C_a)."""
