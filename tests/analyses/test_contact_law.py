@@ -100,14 +100,15 @@ def test_both_raceways_in_one_call_equal_each_alone(gao_case_path, monkeypatch):
     """The table of both raceways from one batched solve (each raceway on its own cells and E*)
     equals each raceway's table solved alone (one shared grid) to 1e-10."""
     from ballscrew.analyses import contact_law
+    from ballscrew.contact import grid
 
     case = ballscrew.load_case(gao_case_path, NUMERICAL | {"numerics.cells_across": 48})
     params = ScrewParameters.from_case(case)
     e_stars = {side: params.contact_modulus(side) for side in ("screw", "nut")}
     loads = table_loads(300.0)
-    calls, original = [], contact_law.solve_normal_batch
+    calls, original = [], grid.solve_normal_batch
     monkeypatch.setattr(
-        contact_law,
+        grid,
         "solve_normal_batch",
         lambda h, *a, **k: calls.append(len(h)) or original(h, *a, **k),
     )
