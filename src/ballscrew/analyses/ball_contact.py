@@ -157,8 +157,8 @@ def solve_ball_contacts(case: Case) -> BallContacts:
     """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads (one
     batched solve where both grids have the same cell counts)."""
     params = ScrewParameters.from_case(case)
-    nut = chain_ball_loads(case, params)[0]
     with recorded_warnings() as messages:
+        nut = chain_ball_loads(case, params)[0]
         solved = solve_raceway_contacts(
             params.geometry,
             [(side, nut.ball_load, params.contact_modulus(side), 1) for side in SIDES],

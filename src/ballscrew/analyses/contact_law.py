@@ -21,6 +21,7 @@ nominal ball (a 1 µm larger ball changes the contact curvatures by ~1e-4, negle
 from __future__ import annotations
 
 import math
+import warnings
 from functools import lru_cache
 from typing import Any
 
@@ -34,12 +35,14 @@ from ballscrew.contact.grid import GapFunction
 from ballscrew.errors import InputError
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
 from ballscrew.loads.contact_law import TabulatedContact
+from ballscrew.units import format_quantity
 
 __all__ = [
     "MIN_CELLS",
     "TABLE_POINTS",
     "TABLE_SPAN",
     "TOP_FACTOR",
+    "ContactLawWarning",
     "clear_cache",
     "inside_ball",
     "numerical_contact",
@@ -47,6 +50,7 @@ __all__ = [
     "raceway_approaches",
     "raceways_approaches",
     "table_loads",
+    "warn_above_table",
 ]
 
 TABLE_POINTS = 7
@@ -54,10 +58,30 @@ TABLE_POINTS = 7
 TABLE_SPAN = 128.0
 """Largest over smallest tabulation load."""
 TOP_FACTOR = 6.0
-"""Q_top ≥ this × the nominal ball load: the most loaded ball of an uneven distribution stays
-inside the table (beyond it the end exponent continues the law)."""
+"""GUESS: Q_top ≥ this × the nominal ball load, so that the most loaded ball of an uneven
+distribution stays inside the table; beyond it the end exponent continues the law and
+:func:`warn_above_table` says so."""
 MIN_CELLS = 8
 """Fewest grid cells across the smallest tabulated load's contact (each axis)."""
+
+
+class ContactLawWarning(UserWarning):
+    """A ball load beyond the tabulated contact law: its approach is extrapolated."""
+
+
+def warn_above_table(law: TabulatedContact, largest: float) -> None:
+    """Warn (:class:`ContactLawWarning`) when the largest ball load ``largest`` [N] is above the
+    table's top: there δ(Q) is the power law of the table's end exponent, whose error grows as
+    the true log-slope moves away from it (theory manual, *Loads*)."""
+    if largest > law.top:
+        warnings.warn(
+            f"the largest ball load, {format_quantity(largest, 'force')}, is above the top of "
+            f"the tabulated contact law ({format_quantity(law.top, 'force')}, at least "
+            f"{TOP_FACTOR:g} × the nominal ball load): its approach is extrapolated as δ ∝ Q^n "
+            f"with the table's end exponent n = {law.exponents[1]:.3f}",
+            ContactLawWarning,
+            stacklevel=3,
+        )
 
 
 def outside_ball(exc: InputError, geometry: ScrewGeometry, side: Side, load: float) -> InputError:
@@ -201,7 +225,8 @@ def numerical_contact(params: ScrewParameters, numerics: NumericsSpec) -> Tabula
     """Q(δ) of a ball's screw and nut contacts in series from the contact solver (cached).
 
     The nominal ball load is that of the case's nut forces (the larger of F_p and F_a for a
-    double nut, F_p + F_a for one nut, over Z sinβ cosα).
+    double nut, F_p + F_a for one nut, over Z sinβ cosα). A distribution whose balls go above
+    the table's top calls :func:`warn_above_table`.
     """
     fp, fa = params.preload, params.axial_load
     force = max(fp, fa) if params.nut_count == 2 else fp + fa
