@@ -67,8 +67,9 @@ def test_the_extrapolation_error_is_bounded_by_the_change_of_the_log_slope(ratio
     """Beyond the table δ_ext = δ_end (Q/Q_end)^n_end. With the log-slope n(Q) rising
     monotonically, ln δ is convex in ln Q and its end tangent lies below it on both sides:
     ln(δ/δ_ext) = |∫ (n − n_end) d ln Q| lies between 0 and |n(Q) − n_end| ln r (r = Q/Q_end
-    above, Q_end/Q below the table), up to the 1e-3 error of n_end. The bound is several times below the error of the Hertz exponent 2/3 or of the
-    other end's exponent, so an extrapolation with either fails here."""
+    above, Q_end/Q below the table), up to the 1e-3 error of n_end. The bound is less than half
+    the error of the other end's exponent (and, above the table, of the Hertz 2/3), so an
+    extrapolation with a wrong exponent fails here."""
     law = TabulatedContact(TABLE, _layered(TABLE)[0])
     for end, q in ((TABLE[-1], TABLE[-1] * ratio), (TABLE[0], TABLE[0] / ratio)):
         exact, n_q = _layered(q)
