@@ -126,8 +126,9 @@ def test_both_raceways_in_one_call_equal_each_alone(gao_case_path, monkeypatch):
 
 def test_a_ball_above_the_table_is_named_in_the_results_warnings(gao_case_path):
     """A 20 µm larger first ball carries ~910 N, above the table's top (512 N, the power of two
-    above 6 × the nominal 53 N): the contact analysis's warnings name both loads and the
-    exponent that continues the law. Without it the balls stay in the table, and no warning."""
+    above 6 × the nominal 53 N): the warnings of the contact and TCR analyses name both loads
+    and the exponent that continues the law. Without it the balls stay in the table: no
+    warning."""
     case = ballscrew.load_case(gao_case_path, NUMERICAL)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -144,3 +145,5 @@ def test_a_ball_above_the_table_is_named_in_the_results_warnings(gao_case_path):
     assert f"largest ball load, {format_quantity(result.ball_load, 'force')}," in message
     assert "(512 N, at least 6 × the nominal ball load)" in message
     assert "end exponent n = 0.6" in message  # the groove's law near Hertz, n ≈ 2/3
+    with pytest.warns(ContactLawWarning):
+        assert message in ballscrew.screw_tcr(case).warnings
