@@ -2,14 +2,18 @@
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
 import ballscrew
-from ballscrew.analyses.ball_loads import elastic_distribution
+from ballscrew.analyses.ball_contact import solve_ball_contacts
+from ballscrew.analyses.ball_loads import elastic_distribution, nut_model
 from ballscrew.analyses.contact_law import (
     TABLE_POINTS,
     TABLE_SPAN,
+    ContactLawWarning,
     numerical_contact,
     table_loads,
 )
@@ -18,6 +22,7 @@ from ballscrew.case.loader import CaseError
 from ballscrew.contact import hertz
 from ballscrew.errors import InputError
 from ballscrew.geometry import raceway_curvature
+from ballscrew.units import format_quantity
 
 ELASTIC = {"loads.distribution": "elastic", "operating.axial_load": 2000.0}
 NUMERICAL = ELASTIC | {"loads.contact": "numerical"}
@@ -100,14 +105,15 @@ def test_both_raceways_in_one_call_equal_each_alone(gao_case_path, monkeypatch):
     """The table of both raceways from one batched solve (each raceway on its own cells and E*)
     equals each raceway's table solved alone (one shared grid) to 1e-10."""
     from ballscrew.analyses import contact_law
+    from ballscrew.contact import grid
 
     case = ballscrew.load_case(gao_case_path, NUMERICAL | {"numerics.cells_across": 48})
     params = ScrewParameters.from_case(case)
     e_stars = {side: params.contact_modulus(side) for side in ("screw", "nut")}
     loads = table_loads(300.0)
-    calls, original = [], contact_law.solve_normal_batch
+    calls, original = [], grid.solve_normal_batch
     monkeypatch.setattr(
-        contact_law,
+        grid,
         "solve_normal_batch",
         lambda h, *a, **k: calls.append(len(h)) or original(h, *a, **k),
     )
@@ -116,3 +122,28 @@ def test_both_raceways_in_one_call_equal_each_alone(gao_case_path, monkeypatch):
     for side, e_star in e_stars.items():
         alone = contact_law.raceway_approaches(params.geometry, side, e_star, loads, case.numerics)
         np.testing.assert_allclose(both[side], alone, rtol=1e-10)
+
+
+def test_a_ball_above_the_table_is_named_in_the_results_warnings(gao_case_path):
+    """A 20 µm larger first ball carries ~910 N, above the table's top (512 N, the power of two
+    above 6 × the nominal 53 N): the warnings of the contact and TCR analyses name both loads
+    and the exponent that continues the law. Without it the balls stay in the table: no
+    warning."""
+    case = ballscrew.load_case(gao_case_path, NUMERICAL)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        inside = ballscrew.ball_loads(case)
+    assert inside.max_load < 512.0
+    assert not [w for w in caught if issubclass(w.category, ContactLawWarning)]
+    balls = nut_model(ScrewParameters.from_case(case), case.loads)[0].z.size
+    error = [20e-6] + [0.0] * (balls - 1)
+    case = ballscrew.load_case(gao_case_path, NUMERICAL | {"loads.ball_diameter_error": error})
+    with pytest.warns(ContactLawWarning):
+        result = solve_ball_contacts(case)
+    assert result.ball_load > 512.0
+    (message,) = [w for w in result.warnings if "tabulated contact law" in w]
+    assert f"largest ball load, {format_quantity(result.ball_load, 'force')}," in message
+    assert "(512 N, at least 6 × the nominal ball load)" in message
+    assert "end exponent n = 0.6" in message  # the groove's law near Hertz, n ≈ 2/3
+    with pytest.warns(ContactLawWarning):
+        assert message in ballscrew.screw_tcr(case).warnings

@@ -39,6 +39,54 @@ def test_a_power_law_table_gives_the_power_law_inside_and_beyond_it():
     np.testing.assert_allclose(slope, 1.5 * q ** (1.0 / 3.0) / K, rtol=1e-10)
 
 
+QS = 256.0
+"""Load [N] at which the layer's compliance equals the Hertz approach (the table's top)."""
+C_LAYER = K * QS ** (-1.0 / 3.0)
+
+
+def _layered(q):
+    """δ = K Q^(2/3) + c Q (Hertz in series with a linear compliant layer) and its log-slope
+    n = d ln δ / d ln Q = (2/3 K Q^(2/3) + c Q) / δ, rising from 2/3 to 1 (0.72 → 0.83 over the
+    table)."""
+    hertz, layer = K * q ** (2.0 / 3.0), C_LAYER * q
+    return hertz + layer, (2.0 / 3.0 * hertz + layer) / (hertz + layer)
+
+
+def test_the_law_continues_with_the_end_exponents_of_a_non_power_law():
+    """The table of a Hertz contact on a compliant layer: its end exponents are the law's
+    log-slopes at the table's ends (to 1e-3), not the Hertz 2/3 nor each other's."""
+    law = TabulatedContact(TABLE, _layered(TABLE)[0])
+    low, high = law.exponents
+    assert low == pytest.approx(_layered(TABLE[0])[1], abs=1e-3)  # 0.722
+    assert high == pytest.approx(_layered(TABLE[-1])[1], abs=1e-3)  # 0.833
+    assert law.top == TABLE[-1]
+
+
+@pytest.mark.parametrize("ratio", [1.5, 2.0, 4.0, 6.0])
+def test_the_extrapolation_error_is_bounded_by_the_change_of_the_log_slope(ratio):
+    """Beyond the table δ_ext = δ_end (Q/Q_end)^n_end. With the log-slope n(Q) rising
+    monotonically, ln δ is convex in ln Q and its end tangent lies below it on both sides:
+    ln(δ/δ_ext) = |∫ (n − n_end) d ln Q| lies between 0 and |n(Q) − n_end| ln r (r = Q/Q_end
+    above, Q_end/Q below the table), up to the 1e-3 error of n_end. The bound is less than half
+    the error of the other end's exponent (and, above the table, of the Hertz 2/3), so an
+    extrapolation with a wrong exponent fails here."""
+    law = TabulatedContact(TABLE, _layered(TABLE)[0])
+    for end, q in ((TABLE[-1], TABLE[-1] * ratio), (TABLE[0], TABLE[0] / ratio)):
+        exact, n_q = _layered(q)
+        d_end, n_end = _layered(end)
+        bound = (abs(n_q - n_end) + 1e-3) * math.log(ratio)
+        error = math.log(exact / law.approach(q))
+        assert abs(error) <= bound
+        assert error >= -1e-3 * math.log(ratio)  # the tangent lies below
+        q_back, slope = law.load(law.approach(q))
+        assert q_back[()] == pytest.approx(q, rel=1e-12)
+        exponent = law.exponents[1] if q > end else law.exponents[0]
+        assert slope[()] == pytest.approx(q / (exponent * law.approach(q)), rel=1e-12)
+        wrongs = (2.0 / 3.0, law.exponents[0]) if q > end else (law.exponents[1],)
+        for wrong in wrongs:
+            assert abs(math.log(exact / (d_end * (q / end) ** wrong))) > 2.0 * bound
+
+
 def test_no_approach_carries_nothing_and_the_law_rises():
     law = TabulatedContact(TABLE, 1e-6 * np.array([1.0, 1.7, 2.6, 3.4, 4.1, 4.7, 5.2]))
     load, slope = law.load(np.array([-1e-6, 0.0]))

@@ -16,14 +16,12 @@ import numpy as np
 
 from ballscrew.analyses import contact_report
 from ballscrew.analyses.ball_loads import chain_ball_loads
-from ballscrew.analyses.contact_law import outside_ball
+from ballscrew.analyses.contact_law import inside_ball
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case, NumericsSpec
 from ballscrew.contact import ContactRequest, hamrock_brewe, hertz, solve_contacts
-from ballscrew.contact.grid import GapFunction
 from ballscrew.contact.hertz import HertzContact
-from ballscrew.errors import InputError
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
 
 
@@ -125,7 +123,7 @@ def solve_raceway_contacts(
     requests, curvatures = [], []
     for side, load, e_star, flank in contacts:
         curvatures.append(curvature := raceway_curvature(geometry, side))
-        gap = _inside_ball(
+        gap = inside_ball(
             gap_function(geometry, side, flank=flank, model=numerics.gap_model),
             geometry, side, load,
         )  # fmt: skip
@@ -155,24 +153,12 @@ def solve_raceway_contacts(
     )
 
 
-def _inside_ball(gap: GapFunction, geometry: ScrewGeometry, side: Side, load: float) -> GapFunction:
-    """``gap`` whose "outside the ball" error names the case's ball (:func:`outside_ball`)."""
-
-    def checked(x: np.ndarray, y: np.ndarray) -> Any:
-        try:
-            return gap(x, y)
-        except InputError as exc:
-            raise outside_ball(exc, geometry, side, load) from None
-
-    return checked
-
-
 def solve_ball_contacts(case: Case) -> BallContacts:
     """Screw-side and nut-side contact of a ball of the loaded nut under the case's loads (one
     batched solve where both grids have the same cell counts)."""
     params = ScrewParameters.from_case(case)
-    nut = chain_ball_loads(case, params)[0]
     with recorded_warnings() as messages:
+        nut = chain_ball_loads(case, params)[0]
         solved = solve_raceway_contacts(
             params.geometry,
             [(side, nut.ball_load, params.contact_modulus(side), 1) for side in SIDES],

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ballscrew.analyses.contact_law import numerical_contact
+from ballscrew.analyses.contact_law import numerical_contact, warn_above_table
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case, NumericsSpec
 from ballscrew.case.loads_spec import LoadsSpec
@@ -136,13 +136,15 @@ def elastic_distribution(
     """The elastic distribution of the case's screw at ``axial_load`` (None: the case's).
 
     ``spec.contact = "numerical"`` tabulates the contact law with ``numerics`` (None: the
-    defaults of ``[numerics]``) once per screw and load range (cached).
+    defaults of ``[numerics]``) once per screw and load range (cached), and warns
+    (:class:`~ballscrew.analyses.contact_law.ContactLawWarning`) when a ball's load is above the
+    table.
     """
     layout, bodies = nut_model(params, spec, root_diameter)
     g = params.geometry
     contact = ball_contact_law(params, spec, numerics)
     with as_case_fields(_FIELDS):
-        return solve_distribution(
+        dist = solve_distribution(
             layout,
             sum(params.hertz_constants),
             g.contact_angle,
@@ -155,6 +157,9 @@ def elastic_distribution(
             interference=interference,
             contact=contact,
         )
+    if contact is not None:
+        warn_above_table(contact, float(dist.loads.max()))
+    return dist
 
 
 def _root(case: Case) -> float | None:

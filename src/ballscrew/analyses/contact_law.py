@@ -6,13 +6,13 @@ contact solver on the case's raceway gap (the exact conforming groove with ``num
 :data:`TABLE_POINTS` loads, geometrically spaced over a span of :data:`TABLE_SPAN` up to the
 tabulation top Q_top (the power of two at or above :data:`TOP_FACTOR` × the nominal ball load
 F/(Z sinβ cosα), so nearby load cases share one table), with one batched solve for both raceways
-(:func:`ballscrew.contact.solve_normal_batch`, each raceway on the cells of its own largest load),
-and interpolated monotonically (:class:`ballscrew.loads.contact_law.TabulatedContact`). The grid
-follows the Hertz ellipse of Q_top (``numerics.cells_across`` cells across it, or
-``numerics.cells``, box ``numerics.box_factor``) and is enlarged like a single solve until the
-pressure of Q_top vanishes
-at its edge; the smallest load then has about cells_across / TABLE_SPAN^(1/3) cells across,
-and a grid leaving it fewer than :data:`MIN_CELLS` is refused (cells_across ≥ 41).
+(:func:`ballscrew.contact.solve_contacts`, each raceway one request at Q_top with the other loads
+as its ``extra_loads``, on the cells of its own Q_top), and interpolated monotonically
+(:class:`ballscrew.loads.contact_law.TabulatedContact`). The grid follows the Hertz ellipse of
+Q_top (``numerics.cells_across`` cells across it, or ``numerics.cells``, box
+``numerics.box_factor``) and is enlarged like a single solve until the pressure vanishes at its
+edge; the smallest load then has about cells_across / TABLE_SPAN^(1/3) cells across, and a grid
+leaving it fewer than :data:`MIN_CELLS` is refused (cells_across ≥ 41).
 
 Ball-diameter errors enter the distribution as approach offsets; the law itself is that of the
 nominal ball (a 1 µm larger ball changes the contact curvatures by ~1e-4, neglected).
@@ -21,33 +21,36 @@ nominal ball (a 1 µm larger ball changes the contact curvatures by ~1e-4, negle
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+import warnings
 from functools import lru_cache
 from typing import Any
 
 import numpy as np
-import scipy.fft
 from numpy.typing import NDArray
 
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
-from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import NumericsSpec
-from ballscrew.contact import HertzContact, cell_centres, hertz, solve_normal_batch
-from ballscrew.errors import BallscrewError, InputError
-from ballscrew.geometry import ScrewGeometry, gap_function, raceway_curvature
+from ballscrew.contact import ContactRequest, HertzContact, grid_cells, hertz, solve_contacts
+from ballscrew.contact.grid import GapFunction
+from ballscrew.errors import InputError
+from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
 from ballscrew.loads.contact_law import TabulatedContact
+from ballscrew.units import format_quantity
 
 __all__ = [
     "MIN_CELLS",
     "TABLE_POINTS",
     "TABLE_SPAN",
     "TOP_FACTOR",
+    "ContactLawWarning",
     "clear_cache",
+    "inside_ball",
     "numerical_contact",
     "outside_ball",
     "raceway_approaches",
     "raceways_approaches",
     "table_loads",
+    "warn_above_table",
 ]
 
 TABLE_POINTS = 7
@@ -55,13 +58,30 @@ TABLE_POINTS = 7
 TABLE_SPAN = 128.0
 """Largest over smallest tabulation load."""
 TOP_FACTOR = 6.0
-"""Q_top ≥ this × the nominal ball load: the most loaded ball of an uneven distribution stays
-inside the table (beyond it the end exponent continues the law)."""
+"""GUESS: Q_top ≥ this × the nominal ball load, so that the most loaded ball of an uneven
+distribution stays inside the table; beyond it the end exponent continues the law and
+:func:`warn_above_table` says so."""
 MIN_CELLS = 8
 """Fewest grid cells across the smallest tabulated load's contact (each axis)."""
-_EDGE = 1e-6
-"""Edge pressure over peak pressure from which the grid is enlarged (as a single solve)."""
-_GROWTH, _ENLARGEMENTS = 1.5, 4
+
+
+class ContactLawWarning(UserWarning):
+    """A ball load beyond the tabulated contact law: its approach is extrapolated."""
+
+
+def warn_above_table(law: TabulatedContact, largest: float) -> None:
+    """Warn (:class:`ContactLawWarning`) when the largest ball load ``largest`` [N] is above the
+    table's top: there δ(Q) is the power law of the table's end exponent, whose error grows as
+    the true log-slope moves away from it (theory manual, *Loads*)."""
+    if largest > law.top:
+        warnings.warn(
+            f"the largest ball load, {format_quantity(largest, 'force')}, is above the top of "
+            f"the tabulated contact law ({format_quantity(law.top, 'force')}, at least "
+            f"{TOP_FACTOR:g} × the nominal ball load): its approach is extrapolated as δ ∝ Q^n "
+            f"with the table's end exponent n = {law.exponents[1]:.3f}",
+            ContactLawWarning,
+            stacklevel=3,
+        )
 
 
 def outside_ball(exc: InputError, geometry: ScrewGeometry, side: Side, load: float) -> InputError:
@@ -91,48 +111,22 @@ def raceway_approaches(
 ) -> NDArray[np.float64]:
     """Approach δ(Q_k) of the ball against the ``side`` raceway at each of ``loads`` [m].
 
-    One :func:`~ballscrew.contact.solve_normal_batch` call on the grid of the largest load
-    (sized as :func:`ballscrew.contact.solve_contact` sizes it), enlarged while the largest
-    contact carries pressure on the grid's edge.
+    All loads on the grid of the largest (sized, and enlarged while its contact carries pressure
+    on the grid's edge, as :func:`ballscrew.contact.solve_contact` does), in one batched call.
     """
     return raceways_approaches(geometry, {side: e_star}, loads, numerics)[side]
 
 
-@dataclass
-class _Table:
-    """The tabulation grid of one raceway: its gap function, cells and cell counts."""
+def inside_ball(gap: GapFunction, geometry: ScrewGeometry, side: Side, load: float) -> GapFunction:
+    """``gap`` whose "outside the ball" error names the case's ball (:func:`outside_ball`)."""
 
-    gap: Any
-    dx: float
-    dy: float
-    nx: int
-    ny: int
+    def checked(x: NDArray[np.float64], y: NDArray[np.float64]) -> Any:
+        try:
+            return gap(x, y)
+        except InputError as exc:
+            raise outside_ball(exc, geometry, side, load) from None
 
-
-def _table_grid(
-    geometry: ScrewGeometry,
-    side: Side,
-    e_star: float,
-    loads: NDArray[np.float64],
-    numerics: NumericsSpec,
-) -> _Table:
-    """The grid of the largest of ``loads`` [N] on the ``side`` raceway (as solve_contact's);
-    refused when it leaves fewer than :data:`MIN_CELLS` cells across the smallest load."""
-    c = raceway_curvature(geometry, side)
-    estimate = hertz(c.rx, c.ry, e_star, float(loads[-1]))
-    fx, fy = (numerics.box_factor,) * 2 if np.isscalar(numerics.box_factor) else numerics.box_factor
-    if numerics.cells is None:
-        n = numerics.cells_across
-        dx, dy = 2.0 * estimate.a / n, 2.0 * estimate.b / n
-        nx, ny = (scipy.fft.next_fast_len(math.ceil(f * n), real=True) for f in (fx, fy))
-    else:
-        nx, ny = numerics.cells
-        dx, dy = 2.0 * fx * estimate.a / nx, 2.0 * fy * estimate.b / ny
-    low = hertz(c.rx, c.ry, e_star, float(loads[0]))
-    across = min(2.0 * low.a / dx, 2.0 * low.b / dy)
-    if across < MIN_CELLS:
-        raise _too_coarse(numerics, low, estimate, across)
-    return _Table(gap_function(geometry, side, model=numerics.gap_model), dx, dy, nx, ny)
+    return checked
 
 
 def raceways_approaches(
@@ -143,64 +137,52 @@ def raceways_approaches(
 ) -> dict[Side, NDArray[np.float64]]:
     """:func:`raceway_approaches` of each raceway of ``e_stars`` (side → E* [Pa]).
 
-    The raceways whose grids have equal cell counts (each follows the Hertz ellipse of its own
-    largest load) are solved in one :func:`~ballscrew.contact.solve_normal_batch` call, each
-    with its own cells and E*; a raceway whose largest contact reaches the grid's edge is
-    enlarged and solved again in the next round.
+    One :func:`~ballscrew.contact.solve_contacts` call: each raceway is one request at the
+    largest load with the others as its extra loads (all on the grid of the largest); raceways
+    whose grids have equal cell counts are solved in one batched call, each with its own cells
+    and E*. A grid leaving fewer than :data:`MIN_CELLS` cells across the smallest load's Hertz
+    contact is refused before any solve.
     """
-    top = float(loads[-1])
-    grids = {side: _table_grid(geometry, side, e, loads, numerics) for side, e in e_stars.items()}
-    field, value = (
-        ("numerics.cells_across", numerics.cells_across)
-        if numerics.cells is None
-        else ("numerics.cells", list(numerics.cells))
-    )
-    approaches: dict[Side, NDArray[np.float64]] = {}
-    for _ in range(_ENLARGEMENTS + 1):
-        rounds: dict[tuple[int, int], list[Side]] = {}
-        for side in grids.keys() - approaches.keys():
-            rounds.setdefault((grids[side].nx, grids[side].ny), []).append(side)
-        for (nx, ny), sides in rounds.items():
-            sides.sort(key=SIDES.index)
-            size = len(sides) * loads.size
-            what = f"the {size} × {nx} × {ny} batch of tabulation contacts"
-            check_memory(field, value, size * contact_grid_bytes(nx, ny), what)
-            gaps = []
-            for side in sides:
-                g = grids[side]
-                x, y = cell_centres(nx, g.dx), cell_centres(ny, g.dy)
-                try:
-                    h = np.asarray(g.gap(x[:, None], y[None, :]), dtype=float)
-                except InputError as exc:
-                    raise outside_ball(exc, geometry, side, top) from None
-                gaps.append(np.broadcast_to(h, (loads.size, nx, ny)))
-            results = solve_normal_batch(
-                np.concatenate(gaps),
-                np.repeat([grids[side].dx for side in sides], loads.size),
-                np.repeat([grids[side].dy for side in sides], loads.size),
-                np.repeat([e_stars[side] for side in sides], loads.size),
-                np.tile(loads, len(sides)), numerics.tolerance,
-                max_iterations=numerics.max_iterations,
-            )  # fmt: skip
-            for k, side in enumerate(sides):
-                mine = results[k * loads.size : (k + 1) * loads.size]
-                p = np.asarray(mine[-1].pressure)
-                peak = float(p.max())
-                x_edge = max(float(p[0].max()), float(p[-1].max())) > _EDGE * peak
-                y_edge = max(float(p[:, 0].max()), float(p[:, -1].max())) > _EDGE * peak
-                if not (x_edge or y_edge):
-                    approaches[side] = np.array([r.approach for r in mine])
-                    continue
-                g = grids[side]
-                g.nx = scipy.fft.next_fast_len(math.ceil(_GROWTH * nx), real=True) if x_edge else nx
-                g.ny = scipy.fft.next_fast_len(math.ceil(_GROWTH * ny), real=True) if y_edge else ny
-        if len(approaches) == len(grids):
-            return approaches
-    side = next(side for side in SIDES if side in grids.keys() - approaches.keys())
-    raise BallscrewError(
-        f"the {side} contact of the tabulation load {top:.4g} N still reaches the "
-        f"edge of its grid after {_ENLARGEMENTS} enlargements: raise numerics.box_factor"
-    )
+    loads = np.asarray(loads, dtype=float)
+    top = int(np.argmax(loads))
+    others = np.delete(np.arange(loads.size), top)
+    sides = sorted(e_stars, key=SIDES.index)
+    requests = []
+    for side in sides:
+        c = raceway_curvature(geometry, side)
+        _check_cells(c, e_stars[side], loads, numerics)
+        gap = gap_function(geometry, side, model=numerics.gap_model)
+        requests.append(
+            ContactRequest(
+                inside_ball(gap, geometry, side, float(loads[top])),
+                c.rx, c.ry, e_stars[side], float(loads[top]),
+                tuple(float(q) for q in loads[others]),
+            )
+        )  # fmt: skip
+    solved = solve_contacts(
+        requests, numerics.cells_across, numerics.box_factor, numerics.tolerance,
+        cells=numerics.cells, max_iterations=numerics.max_iterations,
+    )  # fmt: skip
+    approaches = {}
+    for side, result in zip(sides, solved, strict=True):
+        delta = np.empty(loads.size)
+        delta[top] = result.approach
+        delta[others] = [s.approach for s in result.extra]
+        approaches[side] = delta
+    return approaches
+
+
+def _check_cells(
+    c: RacewayCurvature, e_star: float, loads: NDArray[np.float64], numerics: NumericsSpec
+) -> None:
+    """Refuse a grid of the largest of ``loads`` [N] (:func:`ballscrew.contact.grid_cells`)
+    that leaves fewer than :data:`MIN_CELLS` cells across the smallest load's contact."""
+    estimate = hertz(c.rx, c.ry, e_star, float(loads.max()))
+    dx, dy, _, _ = grid_cells(estimate, numerics.cells_across, numerics.box_factor, numerics.cells)
+    low = hertz(c.rx, c.ry, e_star, float(loads.min()))
+    across = min(2.0 * low.a / dx, 2.0 * low.b / dy)
+    if across < MIN_CELLS:
+        raise _too_coarse(numerics, low, estimate, across)
 
 
 def _too_coarse(
@@ -243,7 +225,8 @@ def numerical_contact(params: ScrewParameters, numerics: NumericsSpec) -> Tabula
     """Q(δ) of a ball's screw and nut contacts in series from the contact solver (cached).
 
     The nominal ball load is that of the case's nut forces (the larger of F_p and F_a for a
-    double nut, F_p + F_a for one nut, over Z sinβ cosα).
+    double nut, F_p + F_a for one nut, over Z sinβ cosα). A distribution whose balls go above
+    the table's top calls :func:`warn_above_table`.
     """
     fp, fa = params.preload, params.axial_load
     force = max(fp, fa) if params.nut_count == 2 else fp + fa

@@ -191,7 +191,8 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     params = ScrewParameters.from_case(case)
     geometry = params.geometry
     models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}
-    chain = chain_ball_loads(case, params)
+    with recorded_warnings() as early:  # the distribution's (a ball above the contact-law table)
+        chain = chain_ball_loads(case, params)
     loaded = [(nut, used) for nut, used in zip(params.nuts, chain, strict=True) if used.force > 0.0]
     keys: dict[tuple[Side, float], int] = {}  # (side, Q) → flank: the distinct contacts
     for nut, used in loaded:
@@ -243,7 +244,7 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         nut_forces=(chain[0].force, chain[1].force if len(chain) > 1 else 0.0),
         nuts=tuple(nuts),
         case=case,
-        warnings=tuple(messages),
+        warnings=tuple(dict.fromkeys((*early, *messages))),
         models=compared,
         uncertainty=spread,
     )

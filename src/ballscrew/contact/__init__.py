@@ -10,7 +10,8 @@
    (``"pcg"``, after Vollebregt 2014) or the plain Polonsky & Keer CG (``"pk"``).
 3. :func:`solve_contact`: sizes the grid from the Hertz estimate, warm-starts from the Hertz
    pressure and enlarges the box until the pressure vanishes on its edge; :func:`solve_contacts`
-   does it for many contacts, those on grids of equal cell counts in one batched call.
+   does it for many contacts, those on grids of equal cell counts in one batched call, each
+   contact at its load and at further (smaller) loads on the same grid if asked.
 """
 
 from ballscrew.contact.batch import solve_normal_batch
@@ -21,6 +22,7 @@ from ballscrew.contact.grid import (
     ContactRequest,
     GridContactResult,
     cell_centres,
+    grid_cells,
     solve_contact,
     solve_contacts,
 )
@@ -50,6 +52,7 @@ __all__ = [
     "HertzContact",
     "cell_centres",
     "direct_convolution",
+    "grid_cells",
     "hamrock_brewe",
     "hertz",
     "love_coefficient",

@@ -4,14 +4,15 @@ Theory manual ``docs/theory/contact.md``, grid sizing: rectangular cells follow 
 (the same number of cells across it along both axes), the box half-widths are a multiple of the
 Hertz semi-axes, and the solution is only accepted when the pressure vanishes on the outer ring of
 cells. Several contacts (:func:`solve_contacts`) are solved together, one batched call per round for
-all those whose grids have the same cell counts, each with its own cells and modulus.
+all those whose grids have the same cell counts, each with its own cells and modulus; a contact may
+ask for further loads on the grid of its largest one (a load–approach table).
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -25,12 +26,20 @@ from ballscrew.contact.hertz import HertzContact, hertz
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
+    SOLVER,
     solve_normal,
 )
 from ballscrew.contact.result import ContactResult
-from ballscrew.errors import BallscrewError, InputError
+from ballscrew.errors import BallscrewError, ConvergenceError, InputError
 
-__all__ = ["ContactRequest", "GridContactResult", "cell_centres", "solve_contact", "solve_contacts"]
+__all__ = [
+    "ContactRequest",
+    "GridContactResult",
+    "cell_centres",
+    "grid_cells",
+    "solve_contact",
+    "solve_contacts",
+]
 
 GapFunction = Callable[[NDArray[np.float64], NDArray[np.float64]], Any]
 
@@ -60,6 +69,8 @@ class GridContactResult:
     """How many times the box was enlarged."""
     edge_pressure: float
     """Largest pressure on the outer ring of cells over the peak pressure [-]."""
+    extra: tuple[ContactResult, ...] = ()
+    """Solutions at the request's ``extra_loads`` on the same grid, in their order."""
 
     @property
     def pressure(self) -> Any:
@@ -103,6 +114,33 @@ def _sample(gap_function: GapFunction, x: NDArray[np.float64], y: NDArray[np.flo
     return finite_grid("gap_function", gap, np)
 
 
+def grid_cells(
+    estimate: HertzContact,
+    cells_across: int = DEFAULT_CELLS_ACROSS,
+    box_factor: float | tuple[float, float] = DEFAULT_BOX_FACTOR,
+    cells: tuple[int, int] | None = None,
+) -> tuple[float, float, int, int]:
+    """(dx, dy, nx, ny) of the first grid of :func:`solve_contact` for the Hertz ellipse
+    ``estimate``: dx = 2a/``cells_across``, dy = 2b/``cells_across`` and at least
+    ``box_factor`` × (a, b) each side rounded up to fast FFT sizes; or, with ``cells = (nx,
+    ny)``, exactly nx × ny cells over ±f_x·a × ±f_y·b."""
+    fx, fy = (box_factor, box_factor) if np.isscalar(box_factor) else box_factor
+    fx, fy = positive("box_factor", fx), positive("box_factor", fy)
+    a, b = estimate.a, estimate.b
+    if cells is None:
+        n = integer_at_least("cells_across", cells_across, 2)
+        return 2.0 * a / n, 2.0 * b / n, _cells(fx * n), _cells(fy * n)
+    nx, ny = (integer_at_least("cells", n, 2) for n in cells)
+    return 2.0 * fx * a / nx, 2.0 * fy * b / ny, nx, ny
+
+
+def _extra_load(load: float, top: float) -> float:
+    """An extra load of a request, checked to lie in (0, top] [N]."""
+    if not (isinstance(load, int | float) and 0.0 < load <= top):
+        raise InputError("extra_loads", load, f"a load in (0, {top!r}] N (the request's load)")
+    return float(load)
+
+
 @dataclass(frozen=True)
 class ContactRequest:
     """One contact of :func:`solve_contacts`: the arguments of :func:`solve_contact` that differ."""
@@ -116,7 +154,10 @@ class ContactRequest:
     e_star: float
     """Composite modulus E* [Pa] (K1)."""
     load: float
-    """Normal load W [N]."""
+    """Normal load W [N]; the grid is sized and enlarged for it."""
+    extra_loads: tuple[float, ...] = ()
+    """Further loads [N], each in (0, ``load``], solved on the grid of ``load`` in the same
+    batched call (:attr:`GridContactResult.extra`): the points of a load–approach law."""
 
 
 @dataclass
@@ -125,6 +166,7 @@ class _Grid:
 
     request: ContactRequest
     estimate: HertzContact
+    extra: tuple[HertzContact, ...]
     dx: float
     dy: float
     nx: int
@@ -190,11 +232,17 @@ def solve_contacts(
     """:func:`solve_contact` of each request, the grids of equal cell counts solved in one call.
 
     Each contact's grid is sized from its own Hertz ellipse (so its own dx, dy) and enlarged on its
-    own; in every round the contacts whose grids have the same nx × ny are solved together by
+    own (:func:`grid_cells`; its ``extra_loads`` share it and are checked at its edge too); in every
+    round the contacts whose grids have the same nx × ny are solved together by
     :func:`~ballscrew.contact.solve_normal_batch` with their own cells and E* (one contact alone
     by :func:`solve_normal`). Each result equals that of :func:`solve_contact` to the solver's
-    round-off (1e-10 relative). Returns the results in the order of ``requests``.
+    round-off (1e-10 relative). Returns the results in the order of ``requests``. A contact
+    that does not converge raises :class:`~ballscrew.errors.ConvergenceError` naming its index in
+    ``requests`` (and its extra load).
     """
+    cells_across = integer_at_least("cells_across", cells_across, 2)
+    max_enlargements = integer_at_least("max_enlargements", max_enlargements, 0)
+    edge_tolerance = positive("edge_tolerance", edge_tolerance)
     grids = []
     for request in requests:
         estimate = hertz(request.rx, request.ry, request.e_star, request.load)
@@ -202,20 +250,12 @@ def solve_contacts(
             raise InputError(
                 "gap_function", request.gap_function, "a function h(x, y) of the gap in m"
             )
-        grids.append(_Grid(request, estimate, 0.0, 0.0, 0, 0))
-    cells_across = integer_at_least("cells_across", cells_across, 2)
-    max_enlargements = integer_at_least("max_enlargements", max_enlargements, 0)
-    fx, fy = (box_factor, box_factor) if np.isscalar(box_factor) else box_factor
-    fx, fy = positive("box_factor", fx), positive("box_factor", fy)
-    edge_tolerance = positive("edge_tolerance", edge_tolerance)
-    for grid in grids:
-        a, b = grid.estimate.a, grid.estimate.b
-        if cells is None:
-            grid.dx, grid.dy = 2.0 * a / cells_across, 2.0 * b / cells_across
-            grid.nx, grid.ny = _cells(fx * cells_across), _cells(fy * cells_across)
-        else:
-            grid.nx, grid.ny = (integer_at_least("cells", n, 2) for n in cells)
-            grid.dx, grid.dy = 2.0 * fx * a / grid.nx, 2.0 * fy * b / grid.ny
+        extra = tuple(
+            hertz(request.rx, request.ry, request.e_star, _extra_load(load, request.load))
+            for load in request.extra_loads
+        )
+        cells_of = grid_cells(estimate, cells_across, box_factor, cells)
+        grids.append(_Grid(request, estimate, extra, *cells_of))
     field, value = (
         ("numerics.cells", list(cells))
         if cells is not None
@@ -232,14 +272,15 @@ def solve_contacts(
             what = f"the {nx} × {ny} contact grid" + (
                 f" (enlargement {', '.join(map(str, enlargements))})" if enlargements else ""
             )
-            if len(members) > 1:
-                what = f"{len(members)} contacts on {what.removeprefix('the ')}s"
-            check_memory(field, value, len(members) * contact_grid_bytes(nx, ny), what)
+            count = sum(1 + len(grids[k].extra) for k in members)
+            if count > 1:
+                what = f"{count} contacts on {what.removeprefix('the ')}s"
+            check_memory(field, value, count * contact_grid_bytes(nx, ny), what)
             _solve_round([grids[k] for k in members], results, members, tol, max_iterations,
-                         warm_start)  # fmt: skip
+                         warm_start, len(grids) > 1)  # fmt: skip
             for k in members:
                 grid = grids[k]
-                x_edge, y_edge = _edge_ratios(results[k].solution.pressure)
+                x_edge, y_edge = _edges(results[k])
                 if max(x_edge, y_edge) <= edge_tolerance:
                     continue
                 if grid.enlargement == max_enlargements:
@@ -258,33 +299,58 @@ def _solve_round(
     tol: float,
     max_iterations: int,
     warm_start: bool,
+    named: bool,
 ) -> None:
-    """Solve the contacts ``grids`` (all of one nx × ny) on their current grids into ``results``."""
+    """Solve the contacts ``grids`` (all of one nx × ny, each at its load and extra loads) on
+    their current grids into ``results[keys[i]]``; an unconverged one raises
+    :class:`~ballscrew.errors.ConvergenceError` naming its key (``named``: the caller's index)."""
     xs = [cell_centres(g.nx, g.dx) for g in grids]
     ys = [cell_centres(g.ny, g.dy) for g in grids]
     gaps = [_sample(g.request.gap_function, x, y) for g, x, y in zip(grids, xs, ys, strict=True)]
-    initial = [
-        g.estimate.pressure(x[:, None], y[None, :]) if warm_start else None
-        for g, x, y in zip(grids, xs, ys, strict=True)
-    ]
-    if len(grids) == 1:
+    # one entry per (contact, load): the request's load first, then its extra loads
+    owner = [i for i, g in enumerate(grids) for _ in range(1 + len(g.extra))]
+    estimates = [e for g in grids for e in (g.estimate, *g.extra)]
+    initial = (
+        [e.pressure(xs[i][:, None], ys[i][None, :]) for i, e in zip(owner, estimates, strict=True)]
+        if warm_start
+        else None
+    )
+    if len(owner) == 1:
         g = grids[0]
         solutions: tuple[ContactResult, ...] = (
             solve_normal(
                 gaps[0], g.dx, g.dy, g.request.e_star, g.request.load, tol,
-                initial=initial[0], max_iterations=max_iterations,
+                initial=None if initial is None else initial[0], max_iterations=max_iterations,
+                raise_on_failure=False,
             ),
         )  # fmt: skip
     else:
         solutions = solve_normal_batch(
-            np.stack(gaps),
-            [g.dx for g in grids], [g.dy for g in grids], [g.request.e_star for g in grids],
-            [g.request.load for g in grids], tol, max_iterations=max_iterations,
-            initial=np.stack(initial) if warm_start else None,
+            np.stack([gaps[i] for i in owner]),
+            [grids[i].dx for i in owner], [grids[i].dy for i in owner],
+            [grids[i].request.e_star for i in owner], [e.load for e in estimates], tol,
+            max_iterations=max_iterations,
+            initial=None if initial is None else np.stack(initial), raise_on_failure=False,
         )  # fmt: skip
-    for k, g, x, y, gap, solution in zip(keys, grids, xs, ys, gaps, solutions, strict=True):
-        edge = max(_edge_ratios(solution.pressure))
-        results[k] = GridContactResult(x, y, gap, g.estimate, solution, g.enlargement, edge)
+    for i, estimate, solution in zip(owner, estimates, solutions, strict=True):
+        if not solution.converged:
+            where = [f"contact {keys[i]} of the batch"] if named else []
+            if estimate is not grids[i].estimate:
+                where.append(f"extra load {estimate.load:.4g} N")
+            solver = f"{SOLVER} ({', '.join(where)})" if where else SOLVER
+            raise ConvergenceError(solver, solution.iterations, solution.residual, tol)
+    start = 0
+    for k, g, x, y, gap in zip(keys, grids, xs, ys, gaps, strict=True):
+        mine = solutions[start : start + 1 + len(g.extra)]
+        start += len(mine)
+        result = GridContactResult(x, y, gap, g.estimate, mine[0], g.enlargement, 0.0, mine[1:])
+        results[k] = replace(result, edge_pressure=max(_edges(result)))
+
+
+def _edges(result: GridContactResult) -> tuple[float, float]:
+    """Largest x-edge and y-edge pressure ratios of a result's solutions, its extra loads' too."""
+    ratios = [_edge_ratios(s.pressure) for s in (result.solution, *result.extra)]
+    return max(r[0] for r in ratios), max(r[1] for r in ratios)
 
 
 def _unfitted(

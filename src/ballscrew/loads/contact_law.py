@@ -8,6 +8,10 @@ contact solve per raceway) and interpolated monotonically: a PCHIP (Fritsch & Ca
 of ln Q against ln δ, so a power law δ = c Q^n is reproduced exactly and the interpolant keeps
 the table's monotony. Beyond the table the end tangents in log-log continue it (a power law with
 the end exponent; below the smallest load the contact is small and nearly Hertzian, n → 2/3).
+The error of that continuation grows with the change of the log-slope n(Q) = d ln δ / d ln Q
+beyond the table: ln(δ/δ_ext) = ∫ (n − n_end) d ln Q, at most |n(Q) − n_end| · |ln(Q/Q_end)|
+where n varies monotonically (a conforming groove or a compliant layer stiffens or softens the
+law gradually); a caller whose loads leave the table should say so (:attr:`TabulatedContact.top`).
 A ball without approach carries nothing: Q = 0 for δ ≤ 0.
 """
 
@@ -55,6 +59,18 @@ class TabulatedContact:
         ends = (u[0], w[0], float(slope(u[0])), u[-1], w[-1], float(slope(u[-1])))
         object.__setattr__(self, "_curve", curve)
         object.__setattr__(self, "_ends", ends)
+
+    @property
+    def top(self) -> float:
+        """The largest tabulated load [N]; above it the law is extrapolated."""
+        return float(self.loads[-1])
+
+    @property
+    def exponents(self) -> tuple[float, float]:
+        """(n_low, n_high): the exponents n of δ ∝ Q^n that continue the law below and above the
+        table (the PCHIP's end log-slopes, 1/(d ln Q / d ln δ)) [-]."""
+        _, _, s0, _, _, s1 = self._ends
+        return 1.0 / s0, 1.0 / s1
 
     @classmethod
     def hertz(cls, hertz_constant: float, loads: ArrayLike) -> TabulatedContact:
