@@ -147,3 +147,5 @@ def test_a_ball_above_the_table_is_named_in_the_results_warnings(gao_case_path):
     assert "end exponent n = 0.6" in message  # the groove's law near Hertz, n ≈ 2/3
     with pytest.warns(ContactLawWarning):
         assert message in ballscrew.screw_tcr(case).warnings
+    with pytest.warns(ContactLawWarning):
+        assert message in ballscrew.design_check(case).warnings

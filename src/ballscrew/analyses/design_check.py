@@ -348,7 +348,8 @@ def design_check(case: Case) -> DesignCheck:
     running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
-    nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
+    with recorded_warnings() as distribution_messages:
+        nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
     shaft_k = design.shaft_axial_stiffness(
         root, length, screw.youngs_modulus, spec.mounting, spec.nut_distance
     )
@@ -396,7 +397,7 @@ def design_check(case: Case) -> DesignCheck:
     return DesignCheck(
         case=case,
         margins=margins,
-        warnings=tuple(messages),
+        warnings=(*distribution_messages, *messages),
         computed_ratings=computed,
         **values,
     )
