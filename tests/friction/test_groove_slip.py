@@ -113,7 +113,7 @@ def test_groove_slip_is_a_part_of_the_torque_and_heats_the_nut(wear_case_path, m
     assert 0.0 < r.parts["groove_slip"] < 0.1 * r.parts["sliding"]
     assert r.total == pytest.approx(sum(r.parts.values()))
     module = importlib.import_module("ballscrew.friction.ball_losses")
-    monkeypatch.setattr(module, "_groove_slip_torque", lambda model, state: 0.0)
+    monkeypatch.setattr(module, "_groove_slip_torque", lambda *_: 0.0)
     without = friction_torque(case, speed=omega)
     assert without.parts["groove_slip"] == 0.0
     gained = r.heat_to_nut - without.heat_to_nut
