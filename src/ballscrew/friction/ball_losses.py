@@ -176,8 +176,9 @@ def _contact_losses(
     unit: BallMotion,
     semi_nut: tuple[float, float],
     nut: NutLossParameters,
-) -> tuple[float, ...]:
-    """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball."""
+) -> tuple[tuple[float, ...], float]:
+    """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball and the
+    separation h at A [m]."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
@@ -201,7 +202,7 @@ def _contact_losses(
         _ball_ball_torque(model, state, unit, nut),
         viscous,
         _groove_slip_torque(model, state, unit, semi_nut),
-    )
+    ), drag.separation
 
 
 def _recirculation_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
@@ -244,8 +245,11 @@ def ball_losses(
     loads = np.array([(state.load_screw, state.load_nut) for state in states])
     along, across = _semi_axes(model, loads)
     sums = np.zeros(6)
+    separations = []
     for state, unit, a, b in zip(states, units, along[:, 1], across[:, 1], strict=True):
-        sums += _contact_losses(model, state, unit, (float(a), float(b)), nut)
+        torques, separation = _contact_losses(model, state, unit, (float(a), float(b)), nut)
+        sums += torques
+        separations.append(separation)
     sliding, rolling_a, rolling_b, balls, drag, groove = model.balls * sums
     # hysteresis of every ball at A and B in one batch, at its rolling speed per ω_s, |V|/ω_s
     ratio = np.array([abs(unit.ball_speed / unit.screw_speed) for unit in units])
@@ -255,10 +259,8 @@ def ball_losses(
     )
     returns = sum(_recirculation_torque(model, state, nut) for state in states)
     film = 0.0
-    first = states[0]
-    if nuts[0][0] > 0.0 and model.lubricated and first.ball_speed != 0.0:
-        sharing = first.sharing or model.sharing(first.load_screw, abs(first.ball_speed))
-        film = film_parameter(sharing.separation, model.surface.rms_height)
+    if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
+        film = film_parameter(separations[0], model.surface.rms_height)
     return BallLosses(
         sliding=float(sliding),
         groove_slip=float(groove),
