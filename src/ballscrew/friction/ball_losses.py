@@ -129,7 +129,8 @@ def _unit_motion(model: BallModel, state: BallState) -> BallMotion:
 
 def _semi_axes(model: BallModel, loads: FloatArray) -> tuple[FloatArray, FloatArray]:
     """Hertz semi-axes along and across the rolling direction [m] of the contacts A, B (columns)
-    of the balls (rows) at the loads ``loads``: a, b ∝ Q^(1/3) from the unit-load solution."""
+    of the balls (rows; one per loaded nut, its Z balls share its state) at ``loads``:
+    a, b ∝ Q^(1/3) from the unit-load solution."""
     unit = np.array([model.hertz_semi_axes(contact, 1.0) for contact in SIDES])
     scale = np.maximum(loads, 0.0) ** (1.0 / 3.0)
     return scale * unit[:, 0], scale * unit[:, 1]
@@ -149,7 +150,7 @@ def _groove_slip_torque(
     model: BallModel, state: BallState, unit: BallMotion, semi_axes: tuple[float, float]
 ) -> float:
     """Screw torque of the differential slip at B of one ball (P_H/ω_s; dry at ω_s = 0), at the
-    rolling rate about the axis across the groove, (Ω − 0)·Y_B (the nut is at rest)."""
+    rolling rate about the axis across the groove, ω_r = Ω·Y_B (the nut is at rest)."""
     rate = heathcote_rate(unit.angular_velocity, unit.nut_contact)
     u_e = abs(state.ball_speed)
     sharing = model.sharing(state.load_nut, u_e, "nut")
@@ -240,7 +241,8 @@ def ball_losses(
     states = [solve_ball(model, speed, force, flank, level) for force, flank in nuts if force > 0.0]
     if not states:
         return BallLosses(0.0, 0.0, 0.0, 0.0, 0.0)
-    # once per ball: its motion per unit screw speed and the Hertz semi-axes at A and B
+    # once per ball (the Z balls of a nut share one state): its motion per unit screw speed and
+    # the Hertz semi-axes at A and B
     units = [_unit_motion(model, state) for state in states]
     loads = np.array([(state.load_screw, state.load_nut) for state in states])
     along, across = _semi_axes(model, loads)
