@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 import ballscrew
 from ballscrew.analyses.friction import friction_torque
@@ -19,9 +20,84 @@ from ballscrew.friction.groove_slip import (
     HEATHCOTE_ROLLING_LINE,
     differential_slip_power,
     heathcote_power,
+    heathcote_rate,
 )
 from ballscrew.kinematics.balance import solve_ball
+from ballscrew.kinematics.frames import ContactAxes
 from ballscrew.kinematics.motion import ball_motion
+
+# a ball in a straight groove (X along the groove, Y across it in the contact plane, Z the normal
+# into the ball), the frame turned arbitrarily in space so that no component is read off by index
+_TURN = np.linalg.qr(np.array([[0.3, -1.2, 0.5], [0.9, 0.4, -0.7], [0.2, 0.8, 1.1]]))[0]
+GROOVE = ContactAxes(origin=np.zeros(3), x=_TURN[:, 0], y=_TURN[:, 1], z=_TURN[:, 2])
+R_B, R_D, B_SEMI, LOAD, MU = 2.4e-3, 2.35e-3, 1.5e-4, 30.0, 0.1
+LATERAL = np.linspace(-B_SEMI, B_SEMI, 40_001)
+"""y across the contact [m]; the contact surface is the circle of radius R_d through the
+contact centre, its centre R_d and the ball centre r_b along Z."""
+
+
+def _surface(y: np.ndarray) -> np.ndarray:
+    """Local (x = 0, y, z) of the deformed contact surface across the groove (exact circle)."""
+    z = R_D - np.sqrt(R_D * R_D - y * y)
+    return np.stack([np.zeros_like(y), y, z], axis=-1)
+
+
+def _ball_surface_velocity(omega_local: np.ndarray, centre_speed: float) -> np.ndarray:
+    """v = V X + ω × (P − C) of the ball material on the contact surface, local components."""
+    centre = np.array([0.0, 0.0, R_B])
+    return np.array([centre_speed, 0.0, 0.0]) + np.cross(omega_local, _surface(LATERAL) - centre)
+
+
+def _integral(f: np.ndarray) -> float:
+    return float(np.sum(f[1:] + f[:-1]) * 0.5 * (LATERAL[1] - LATERAL[0]))
+
+
+def test_rolling_about_the_axis_across_the_groove_gives_heathcote_slip_by_hand():
+    """Ball rolling at Ω about the axis across the groove (Y): the surface point at y is
+    R(y) = r_b − z(y) from that axis, so it slides along the groove at Ω (ρ − R(y)) for the
+    rolling radius ρ = V/Ω; ρ puts the forward and backward friction in balance (traction μ p,
+    Hertz line load q(y) = (3Q/4b)(1 − y²/b²)) and P = μ ∫ q |Δv| dy. Nothing here uses the
+    closed form's rolling line or coefficient."""
+    omega = 40.0
+    q = 3.0 * LOAD / (4.0 * B_SEMI) * (1.0 - (LATERAL / B_SEMI) ** 2)
+
+    def slip(rho: float) -> np.ndarray:
+        return _ball_surface_velocity(np.array([0.0, omega, 0.0]), omega * rho)[:, 0]
+
+    radius = R_B - _surface(LATERAL)[:, 2]
+    assert slip(R_B) == pytest.approx(omega * (R_B - radius), abs=1e-12)  # Ω(ρ − R(y))
+    rho = brentq(lambda r: _integral(q * np.sign(slip(r))), R_B - 0.01 * R_B, R_B, xtol=1e-14)
+    lines = LATERAL[np.flatnonzero(np.diff(np.sign(slip(rho))))]
+    assert np.abs(lines) / B_SEMI == pytest.approx(0.3473, abs=1e-3)  # two rolling lines ±c
+    by_hand = MU * _integral(q * np.abs(slip(rho)))
+    rate = heathcote_rate(omega * GROOVE.y, GROOVE)
+    assert rate == pytest.approx(omega, rel=1e-12)
+    # the closed form takes the parabola y²/2R_d for the circle: (b/2R_d)² = 0.1 % apart
+    assert heathcote_power(LOAD, B_SEMI, R_D, rate, MU) == pytest.approx(by_hand, rel=3e-3)
+    grid = differential_slip_power(
+        LOAD, 0.2 * B_SEMI, B_SEMI, R_D, rate, psi=1.0, boundary_friction=MU,
+        limiting_shear=0.07, cells=64,
+    )  # fmt: skip
+    assert grid == pytest.approx(by_hand, rel=5e-3)
+
+
+def test_turning_about_the_groove_direction_or_the_normal_is_no_heathcote_slip():
+    """A ball turning about the groove direction X (its centre held in the groove) slides
+    sideways over the whole contact at about Ω r_b, one sign everywhere: no rolling lines, a
+    gross slide, not Heathcote slip. Spin about Z slides linearly in the position. Only the
+    turning about Y drives the differential slip; the old rate |ω × Z| took X's part as well."""
+    omega = 40.0
+    velocity = _ball_surface_velocity(np.array([omega, 0.0, 0.0]), 0.0)
+    slope = LATERAL / np.sqrt(R_D * R_D - LATERAL**2)
+    tangent = np.stack([np.zeros_like(LATERAL), np.ones_like(LATERAL), slope], axis=-1)
+    across = np.sum(velocity * tangent, axis=-1) / np.linalg.norm(tangent, axis=-1)
+    assert np.all(across > 0.0)  # no line of rolling inside the contact
+    assert across == pytest.approx(omega * R_B, rel=1e-3)
+    assert heathcote_rate(omega * GROOVE.x, GROOVE) == pytest.approx(0.0, abs=1e-12)
+    assert heathcote_rate(omega * GROOVE.z, GROOVE) == pytest.approx(0.0, abs=1e-12)
+    mixed = 30.0 * GROOVE.y + 40.0 * GROOVE.x + 5.0 * GROOVE.z
+    assert heathcote_rate(mixed, GROOVE) == pytest.approx(30.0, rel=1e-12)
+    assert heathcote_rate(mixed, GROOVE) < 0.7 * np.linalg.norm(np.cross(mixed, GROOVE.z))
 
 
 def test_rolling_lines_halve_the_line_load_and_the_coefficient_is_johnsons_0_08():
@@ -85,8 +161,10 @@ def test_ball_model_counts_the_slip_at_the_nut_contact(wear_case_path):
         unit = ball_motion(
             model.geometry, 1.0, flank, angle_screw=state.angle_screw, angle_nut=state.angle_nut
         )
-        rate = float(np.linalg.norm(np.cross(unit.angular_velocity, unit.nut_contact.z)))
-        _, b = model.hertz_semi_axes("nut", state.load_nut)
+        # the ball rolls on the nut at rest, its centre at V, r_b from B: ω_r = V/r_b
+        rate = abs(unit.ball_speed) / model.geometry.ball_radius
+        a, b = model.hertz_semi_axes("nut", state.load_nut)
+        assert b > 2.0 * a  # Y_B, across the groove, is the major axis
         expected += model.balls * heathcote_power(
             state.load_nut, b, model.deformed_radius("nut"), rate, model.boundary_friction
         )
@@ -113,7 +191,7 @@ def test_groove_slip_is_a_part_of_the_torque_and_heats_the_nut(wear_case_path, m
     assert 0.0 < r.parts["groove_slip"] < 0.1 * r.parts["sliding"]
     assert r.total == pytest.approx(sum(r.parts.values()))
     module = importlib.import_module("ballscrew.friction.ball_losses")
-    monkeypatch.setattr(module, "_groove_slip_torque", lambda model, state: 0.0)
+    monkeypatch.setattr(module, "_groove_slip_torque", lambda *_: 0.0)
     without = friction_torque(case, speed=omega)
     assert without.parts["groove_slip"] == 0.0
     gained = r.heat_to_nut - without.heat_to_nut

@@ -8,17 +8,20 @@ import pytest
 
 import ballscrew
 from ballscrew.analyses.friction import friction_torque, seal_torque
-from ballscrew.analyses.kinematics import computed_drag_torque
+from ballscrew.analyses.kinematics import ball_model, computed_drag_torque
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import CaseError
 from ballscrew.errors import InputError
 from ballscrew.friction import (
     FRICTION_MODELS,
     BallLosses,
     FrictionInputs,
+    ball_losses,
     hysteresis_force,
     nut_friction_torque,
     regime,
 )
+from ballscrew.kinematics.balance import solve_ball
 from ballscrew.loads import preload_drag_torque
 
 LEAD, LAMBDA = 0.01, math.atan(0.01 / (math.pi * 0.04))
@@ -164,3 +167,22 @@ def test_ball_parts_are_the_kinematics_drag_plus_hysteresis(wear_case_path):
     assert r.parts["sliding"] + r.parts["ehl_rolling"] == pytest.approx(drag, rel=1e-12)
     assert 0.0 < r.parts["hysteresis"] < 0.1 * drag
     assert 0.0 < r.heat_to_screw < 0.5 * r.heat
+
+
+@pytest.mark.parametrize("level", [0, 2])
+def test_film_parameter_is_the_screw_contacts_separation_over_the_roughness(ball_case, level):
+    """Λ is h/σ of the JGP sharing at A of the first loaded nut, at the state's load and rolling
+    speed (the nut contact B has another load and film and must not be read)."""
+    model = ball_model(ball_case)
+    force, flank = next(
+        (n.force, n.flank)
+        for n in ScrewParameters.from_case(ball_case).with_loads(axial_load=0.0).nuts
+        if n.force > 0.0
+    )
+    state = solve_ball(model, 100.0, force, flank, level)
+    sharing = model.sharing(state.load_screw, abs(state.ball_speed))
+    expected = sharing.separation / model.surface.rms_height
+    losses = ball_losses(model, 100.0, ((force, flank),), level=level)
+    assert losses.film_parameter == pytest.approx(expected, rel=1e-9)
+    nut_side = model.sharing(state.load_nut, abs(state.ball_speed), "nut").separation
+    assert nut_side / model.surface.rms_height != pytest.approx(expected, rel=1e-3)

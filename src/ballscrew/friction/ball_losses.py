@@ -32,14 +32,16 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
-from ballscrew.friction.groove_slip import differential_slip_power
+from ballscrew.friction.groove_slip import differential_slip_power, heathcote_rate
 from ballscrew.friction.nut_losses import (
     NutLossParameters,
     ball_ball_power,
     drag_power,
     recirculation_power,
 )
+from ballscrew.geometry.screw import SIDES
 from ballscrew.kinematics.balance import BallState, solve_ball
 from ballscrew.kinematics.model import BallModel
 from ballscrew.kinematics.motion import BallMotion, ball_motion
@@ -47,6 +49,8 @@ from ballscrew.kinematics.torque import ball_drag
 from ballscrew.kinematics.traction_laws import traction_weights
 
 __all__ = ["BallLosses", "ball_losses", "film_parameter", "hysteresis_force", "regime"]
+
+FloatArray = NDArray[np.float64]
 
 #: Hysteresis loss fraction α of hardened bearing steel in elastic rolling: GUESS of order 1 %
 #: (Tabor 1955 and Johnson 1985 §9.2 report small fractions for hard metals; not read here).
@@ -56,11 +60,14 @@ DEFAULT_HYSTERESIS = 0.01
 SCREW_SHARE_AT_A = 0.5
 
 
-def hysteresis_force(load: float, semi_axis: float, radius: float, fraction: float) -> float:
-    """Rolling resistance of elastic hysteresis, F_h = α (3/16) Q a/R [N] (Johnson 1985 §9.2)."""
-    if load <= 0.0:
-        return 0.0
-    return fraction * 3.0 / 16.0 * load * semi_axis / radius
+def hysteresis_force(
+    load: ArrayLike, semi_axis: ArrayLike, radius: ArrayLike, fraction: float
+) -> float | FloatArray:
+    """Rolling resistance of elastic hysteresis, F_h = α (3/16) Q a/R [N] (Johnson 1985 §9.2);
+    0 where Q ≤ 0. Arrays broadcast (one value per ball and contact)."""
+    q = np.asarray(load, dtype=float)
+    force = fraction * 3.0 / 16.0 * np.maximum(q, 0.0) * np.asarray(semi_axis) / radius
+    return float(force) if force.ndim == 0 else force
 
 
 def film_parameter(film_thickness: float, rms_height: float) -> float:
@@ -120,28 +127,37 @@ def _unit_motion(model: BallModel, state: BallState) -> BallMotion:
     )
 
 
-def _ball_ball_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
+def _semi_axes(model: BallModel, loads: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Hertz semi-axes along and across the rolling direction [m] of the contacts A, B (columns)
+    of the balls (rows; one per loaded nut, its Z balls share its state) at ``loads``:
+    a, b ∝ Q^(1/3) from the unit-load solution."""
+    unit = np.array([model.hertz_semi_axes(contact, 1.0) for contact in SIDES])
+    scale = np.maximum(loads, 0.0) ** (1.0 / 3.0)
+    return scale * unit[:, 0], scale * unit[:, 1]
+
+
+def _ball_ball_torque(
+    model: BallModel, state: BallState, unit: BallMotion, nut: NutLossParameters
+) -> float:
     """Screw torque of the friction of one ball against its leading neighbour (P_bb/ω_s)."""
-    motion = _unit_motion(model, state)
-    omega = motion.screw_speed
     r_b = model.geometry.ball_radius
-    surface = r_b * float(np.linalg.norm(np.cross(motion.angular_velocity, model.frame.t)))
+    surface = r_b * float(np.linalg.norm(np.cross(unit.angular_velocity, model.frame.t)))
     force = nut.ball_ball_load_ratio * state.load_screw
-    return ball_ball_power(force, nut.ball_ball_friction, surface) / omega
+    return ball_ball_power(force, nut.ball_ball_friction, surface) / unit.screw_speed
 
 
-def _groove_slip_torque(model: BallModel, state: BallState) -> float:
-    """Screw torque of the differential slip at B of one ball (P_H/ω_s; dry at ω_s = 0)."""
-    motion = _unit_motion(model, state)
-    rate = float(np.linalg.norm(np.cross(motion.angular_velocity, motion.nut_contact.z)))
-    a, b = model.hertz_semi_axes("nut", state.load_nut)
+def _groove_slip_torque(
+    model: BallModel, state: BallState, unit: BallMotion, semi_axes: tuple[float, float]
+) -> float:
+    """Screw torque of the differential slip at B of one ball (P_H/ω_s; dry at ω_s = 0), at the
+    rolling rate about the axis across the groove, ω_r = Ω·Y_B (the nut is at rest)."""
+    rate = heathcote_rate(unit.angular_velocity, unit.nut_contact)
     u_e = abs(state.ball_speed)
     sharing = model.sharing(state.load_nut, u_e, "nut")
     law = traction_weights(model, sharing.psi, state.screw_speed if u_e > 0.0 else 0.0)
     power = differential_slip_power(
         state.load_nut,
-        a,
-        b,
+        *semi_axes,
         model.deformed_radius("nut"),
         rate,
         psi=law.share,
@@ -152,27 +168,24 @@ def _groove_slip_torque(model: BallModel, state: BallState) -> float:
         pressure_viscosity=model.pressure_viscosity,
         cells=model.traction_cells,
     )
-    return power / motion.screw_speed
+    return power / unit.screw_speed
 
 
-def _one_ball(
-    model: BallModel, state: BallState, fraction: float, nut: NutLossParameters
-) -> tuple[float, ...]:
-    """(sliding, rolling A, rolling B, hysteresis A, hysteresis B, ball–ball, drag, slip at B)
-    torques of one ball."""
+def _contact_losses(
+    model: BallModel,
+    state: BallState,
+    unit: BallMotion,
+    semi_nut: tuple[float, float],
+    nut: NutLossParameters,
+) -> tuple[tuple[float, ...], float]:
+    """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball and the
+    separation h at A [m]."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
     rolling = drag.dissipation_torque - sliding
     # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
     rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
-    unit = _unit_motion(model, state)
-    ratio = abs(unit.ball_speed / unit.screw_speed)  # |V|/ω_s, the rolling speed per ω_s
-    hysteresis = []
-    for contact, load in (("screw", state.load_screw), ("nut", state.load_nut)):
-        a, _ = model.hertz_semi_axes(contact, load)
-        force = hysteresis_force(load, a, model.curvature(contact).rx, fraction)
-        hysteresis.append(force * ratio)
     viscous = 0.0
     if model.lubricated and state.screw_speed != 0.0:
         power = drag_power(
@@ -183,18 +196,14 @@ def _one_ball(
             nut.lubricant_fill,
         )
         viscous = power / state.screw_speed
-    balls = _ball_ball_torque(model, state, nut)
-    groove = _groove_slip_torque(model, state)
     return (
         sliding,
         rolling - rolling_b,
         rolling_b,
-        hysteresis[0],
-        hysteresis[1],
-        balls,
+        _ball_ball_torque(model, state, unit, nut),
         viscous,
-        groove,
-    )
+        _groove_slip_torque(model, state, unit, semi_nut),
+    ), drag.separation
 
 
 def _recirculation_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
@@ -229,28 +238,39 @@ def ball_losses(
     :class:`~ballscrew.friction.nut_losses.NutLossParameters`).
     """
     nut = NutLossParameters() if nut is None else nut
-    sums = [0.0] * 8
-    returns = 0.0
+    states = [solve_ball(model, speed, force, flank, level) for force, flank in nuts if force > 0.0]
+    if not states:
+        return BallLosses(0.0, 0.0, 0.0, 0.0, 0.0)
+    # once per ball (the Z balls of a nut share one state): its motion per unit screw speed and
+    # the Hertz semi-axes at A and B
+    units = [_unit_motion(model, state) for state in states]
+    loads = np.array([(state.load_screw, state.load_nut) for state in states])
+    along, across = _semi_axes(model, loads)
+    sums = np.zeros(6)
+    separations = []
+    for state, unit, a, b in zip(states, units, along[:, 1], across[:, 1], strict=True):
+        torques, separation = _contact_losses(model, state, unit, (float(a), float(b)), nut)
+        sums += torques
+        separations.append(separation)
+    sliding, rolling_a, rolling_b, balls, drag, groove = model.balls * sums
+    # hysteresis of every ball at A and B in one batch, at its rolling speed per ω_s, |V|/ω_s
+    ratio = np.array([abs(unit.ball_speed / unit.screw_speed) for unit in units])
+    radii = np.array([model.curvature(contact).rx for contact in SIDES])
+    hyst_a, hyst_b = model.balls * np.sum(
+        hysteresis_force(loads, along, radii, hysteresis) * ratio[:, None], axis=0
+    )
+    returns = sum(_recirculation_torque(model, state, nut) for state in states)
     film = 0.0
-    for index, (force, flank) in enumerate(nuts):
-        if force <= 0.0:
-            continue
-        state = solve_ball(model, speed, force, flank, level)
-        for k, value in enumerate(_one_ball(model, state, hysteresis, nut)):
-            sums[k] += model.balls * float(value)
-        returns += _recirculation_torque(model, state, nut)
-        if index == 0 and model.lubricated and state.ball_speed != 0.0:
-            sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
-            film = film_parameter(sharing.separation, model.surface.rms_height)
-    sliding, rolling_a, rolling_b, hyst_a, hyst_b, balls, drag, groove = sums
+    if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
+        film = film_parameter(separations[0], model.surface.rms_height)
     return BallLosses(
-        sliding=sliding,
-        groove_slip=groove,
-        ehl_rolling=rolling_a + rolling_b,
-        hysteresis=hyst_a + hyst_b,
-        ball_ball=balls,
-        drag=drag,
-        recirculation=returns,
-        screw_share=SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a),
+        sliding=float(sliding),
+        groove_slip=float(groove),
+        ehl_rolling=float(rolling_a + rolling_b),
+        hysteresis=float(hyst_a + hyst_b),
+        ball_ball=float(balls),
+        drag=float(drag),
+        recirculation=float(returns),
+        screw_share=float(SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a)),
         film_parameter=film,
     )

@@ -1,10 +1,11 @@
 """Differential (Heathcote) slip of a ball rolling in a conforming groove.
 
 The contact surface of a ball in a groove of conformity f = r_g/d_w is curved across the
-rolling direction with the radius R_d = 2 r_g r_b/(r_g + r_b). A ball turning at the rate ω
-about an axis in the contact plane has its surface at the lateral offset y a distance
-y²/(2R_d) closer to that axis than the centre line, so the surfaces can roll without slip on
-two lines y = ±c only; between them the ball slides forward, outside them backward, at
+rolling direction with the radius R_d = 2 r_g r_b/(r_g + r_b). A ball turning relative to the
+raceway at the rate ω = ω·Y about the axis Y across the rolling direction (in the contact
+plane, along the major axis; :func:`heathcote_rate`) has its surface at the lateral offset y a
+distance y²/(2R_d) closer to that axis than the centre line, so the surfaces can roll without
+slip on two lines y = ±c only; between them the ball slides forward, outside them backward, at
 
     Δv(y) = ω (y² − c²)/(2 R_d)                                   (Heathcote 1921)
 
@@ -27,7 +28,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 
+from ballscrew.kinematics.frames import ContactAxes
 from ballscrew.kinematics.traction import hertz_pressure_grid, shear_stress
 
 __all__ = [
@@ -35,6 +38,7 @@ __all__ = [
     "HEATHCOTE_ROLLING_LINE",
     "differential_slip_power",
     "heathcote_power",
+    "heathcote_rate",
 ]
 
 #: u_c = c/b of the two rolling lines under full slip, root of u³ − 3u + 1 = 0 in (0, 1).
@@ -54,6 +58,19 @@ def _coefficient(uc: float) -> float:
 HEATHCOTE_COEFFICIENT = _coefficient(HEATHCOTE_ROLLING_LINE)
 
 
+def heathcote_rate(relative_angular_velocity: ArrayLike, axes: ContactAxes) -> float:
+    """ω_r = ω·Y [rad/s], the rolling rate that drives the differential slip of a contact.
+
+    ``relative_angular_velocity`` ω is the ball's angular velocity relative to the raceway;
+    ``axes`` the contact frame (X rolling direction, Y across it in the contact plane, the
+    major axis of a conforming groove's contact, Z the normal). Only the turning about Y moves
+    the ball surface at the lateral offset y by a distance y²/(2R_d) nearer the turning axis
+    (Johnson 1985, ch. 8); ω·Z is spin (slip linear in the position) and ω·X a sideways slide
+    ω·X r_b of the whole contact (theory manual, *Friction*, rolling rate of (F3b)).
+    """
+    return float(np.asarray(relative_angular_velocity, dtype=float) @ axes.y)
+
+
 def heathcote_power(
     load: float, semi_across: float, deformed_radius: float, rolling_rate: float, friction: float
 ) -> float:
@@ -61,7 +78,8 @@ def heathcote_power(
 
     ``load`` Q [N]; ``semi_across`` b, the Hertz semi-axis across the rolling direction [m];
     ``deformed_radius`` R_d [m]; ``rolling_rate`` ω, the ball's angular velocity relative to
-    the raceway about an axis in the contact plane [rad/s]; ``friction`` μ.
+    the raceway about the axis across the rolling direction (:func:`heathcote_rate`) [rad/s];
+    ``friction`` μ.
     """
     if load <= 0.0:
         return 0.0

@@ -65,6 +65,8 @@ class BallDrag:
     """Dissipated power per ball over ω_s (sliding at A, rolling resistance at A and B) [N m].
 
     Equal to ``torque`` when the balance includes the traction (Level 2)."""
+    separation: float = 0.0
+    """Mean separation h of the surfaces at A under the JGP load sharing [m] (0 dry)."""
 
 
 def ball_drag(model: BallModel, state: BallState) -> BallDrag:
@@ -92,10 +94,11 @@ def ball_drag(model: BallModel, state: BallState) -> BallDrag:
     if state.traction_screw is not None:
         traction = state.traction_screw
         psi = state.sharing.psi if state.sharing is not None else 1.0
+        separation = state.sharing.separation if state.sharing is not None else 0.0
         rolling_screw, rolling_nut = state.rolling_resistance_screw, state.rolling_resistance_nut
     else:
         sharing = model.sharing(state.load_screw, u_e)
-        psi = sharing.psi
+        psi, separation = sharing.psi, sharing.separation
         a, b = model.hertz_semi_axes("screw", state.load_screw)
         x, y, p = hertz_pressure_grid(a, b, state.load_screw, model.traction_cells)
         law = traction_weights(model, psi, state.screw_speed if u_e > 0 else 0.0)
@@ -125,4 +128,6 @@ def ball_drag(model: BallModel, state: BallState) -> BallDrag:
         + float(rolling_screw @ (v_screw_a - v_centre))
         - float(rolling_nut @ v_centre)
     )
-    return BallDrag(traction, rolling_screw, rolling_nut, psi, torque, dissipated / omega)
+    return BallDrag(
+        traction, rolling_screw, rolling_nut, psi, torque, dissipated / omega, separation
+    )
