@@ -51,22 +51,18 @@ from collections.abc import Callable
 from ballscrew.calibration.measured import MeasuredHistory
 from ballscrew.calibration.multi import fit_parameters
 from ballscrew.calibration.result import (
-    HISTORY_FIELD,
     CalibrationError,
     CalibrationResult,
     WearHistory,
-    covering_history,
     model_values,
 )
 from ballscrew.calibration.search import DIFF_STEP, K_MAX, K_MIN, SCAN_STEPS
 from ballscrew.errors import InputError
 
 __all__ = [
-    "HISTORY_FIELD",
     "CalibrationError",
     "CalibrationResult",
     "WearHistory",
-    "covering_history",
     "fit_wear_coefficient",
     "model_values",
 ]
