@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from ballscrew.analyses.wear import wear_setup
+from ballscrew.budget import BudgetError
 from ballscrew.case import Case
 from ballscrew.contact import solve_normal
 from ballscrew.wear import step
@@ -106,3 +107,16 @@ def test_worn_and_unworn_contacts_in_one_call(coarse_case: Case, calls: list[int
             atol=1e-10 * alone.depth_per_revolution.max(),
         )
     assert outs[0].pressure.max() < outs[1].pressure.max()  # the worn groove conforms
+
+
+def test_a_step_beyond_the_memory_budget_is_refused(
+    coarse_case: Case, calls: list[int], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The batch's memory is checked before the solve: 40 contacts of 12 × 48 cells need about
+    6.6 MB, more than a 1 MB budget."""
+    setup = wear_setup(coarse_case)
+    monkeypatch.setenv("BALLSCREW_MEMORY_BUDGET", "1 MB")
+    zero = np.zeros(setup.y.size)
+    with pytest.raises(BudgetError, match=r"wear\.grid.*40 contacts of a wear step"):
+        step_rates(setup, [StepContact(1, 1000.0, SPEED, zero)] * 40)
+    assert calls == []

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
@@ -97,8 +98,16 @@ def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[Flank
     gaps) share the fixed grid, dx, dy and E* and differ in gap and load, so their pressures
     come from one :func:`~ballscrew.contact.solve_normal_batch` call (batched FFTs; each result
     equals its own single solve). A batch takes a warm start for all its contacts or for none:
-    contacts with and without one are two calls.
+    contacts with and without one are two calls. The batch's memory is checked against the
+    budget first (``wear.grid``).
     """
+    nx, ny = setup.x.size, setup.y.size
+    check_memory(
+        "wear.grid",
+        [nx, ny],
+        len(contacts) * contact_grid_bytes(nx, ny),
+        f"{len(contacts)} contacts of a wear step on the {nx} × {ny} grid",
+    )
     loads = [c.load_ratio * setup.ball_load(c.nut_force) for c in contacts]
     gaps = [worn_gap(setup.nominal_gap[c.flank], c.depth) for c in contacts]
     solved: dict[int, ContactResult] = {}
