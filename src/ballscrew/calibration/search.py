@@ -5,9 +5,9 @@ steps in ln K, and the least-squares solve with its covariance.
 values is simulated once, counted, and every later request is answered from the memo.
 :class:`KLine` views those runs as a function of ln K at fixed other parameters (the torque
 multiplier m in closed form), for the decade scan (:func:`scan`), the quadratic-surrogate steps
-(:func:`refine`, :func:`line_minimum`) and the start of :func:`ballscrew.calibration.multi.
-fit_parameters`. Method and sources: :mod:`ballscrew.calibration.fit` and
-:mod:`ballscrew.calibration.multi`.
+(:func:`refine`, :func:`line_minimum`) and the start of
+:func:`ballscrew.calibration.multi.fit_parameters`. Method and sources:
+:mod:`ballscrew.calibration.fit` and :mod:`ballscrew.calibration.multi`.
 """
 
 from __future__ import annotations
