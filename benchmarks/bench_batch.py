@@ -3,8 +3,9 @@
 1. Wear: the contacts of one flank in a step (two nuts × three ball-load classes) on the fixed
    32 × 128 grid of examples/wear_step_stress.toml, from a cold start and warm-started: the whole
    step of the flank (contacts, film, sliding, wear rates) batched
-   (``ballscrew.wear.step.flank_rates``) against one ``flank_rate`` call (one ``solve_normal``)
-   per contact, and the contact solves alone.
+   (``ballscrew.wear.step.flank_rates``) against one ``flank_rate`` call (a batch of one)
+   per contact, and the contact solves alone; and both flanks of a warm step on a worn groove,
+   one ``flank_rates`` call per flank against one ``step_rates`` call for all twelve contacts.
 2. The non-Hertzian distribution's contact law (``loads.contact = "numerical"``): the 7 tabulation
    loads of each raceway of the 40 × 10 example on one 84 × 84 grid, one
    ``solve_normal_batch`` call per raceway against one ``solve_normal`` call per load, and both
@@ -37,8 +38,8 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.wear import wear_setup
 from ballscrew.contact import solve_normal, solve_normal_batch
 from ballscrew.wear.profile import worn_gap
-from ballscrew.wear.setup import nut_force_pair
-from ballscrew.wear.step import flank_rate, flank_rates
+from ballscrew.wear.setup import FLANKS, nut_force_pair
+from ballscrew.wear.step import StepContact, flank_rate, flank_rates, step_rates
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 RATIOS = (0.8, 1.0, 1.2)
@@ -93,7 +94,33 @@ def _wear_rows(repeats: int) -> list[tuple[str, float, float]]:
         where = f"{len(loads)} contacts of a flank, {gap.shape[0]} × {gap.shape[1]}, {label}"
         rows.append((f"wear step: {where}", *_pair(step, step_batched, repeats)))
         rows.append((f"their contact solves: {where}", *_pair(solves, solves_batched, repeats)))
-    return rows
+    return [*rows, _step_row(setup, contacts, speed, repeats)]
+
+
+def _step_row(setup, contacts, speed: float, repeats: int) -> tuple[str, float, float]:
+    """Both flanks of a warm-started step on a worn groove: one ``flank_rates`` call per flank
+    against one ``step_rates`` call for all the step's contacts."""
+    depth = 1e-7 * np.exp(-((setup.y / (0.3 * setup.y.max())) ** 2))
+    cold = [None] * len(contacts)
+    starts = {
+        s: [c.pressure for c in flank_rates(setup, s, contacts, speed, depth, cold)] for s in FLANKS
+    }
+
+    def per_flank() -> object:
+        return [flank_rates(setup, s, contacts, speed, depth, starts[s]) for s in FLANKS]
+
+    def one_call() -> object:
+        return step_rates(
+            setup,
+            [
+                StepContact(s, f, speed, depth, p, load_ratio=r)
+                for s in FLANKS
+                for (f, r), p in zip(contacts, starts[s], strict=True)
+            ],
+        )
+
+    where = f"both flanks, {2 * len(contacts)} contacts, worn, warm"
+    return (f"wear step per flank / one call: {where}", *_pair(per_flank, one_call, repeats))
 
 
 def _law_rows(repeats: int) -> list[tuple[str, float, float]]:

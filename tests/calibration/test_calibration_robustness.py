@@ -11,7 +11,7 @@ import pytest
 from typer.testing import CliRunner
 
 import ballscrew.calibration
-from ballscrew.calibration import CalibrationError, fit_wear_coefficient, measured_history
+from ballscrew.calibration import CalibrationError, fit_wear_coefficient, measured_history, search
 from ballscrew.calibration import fit as fit_module
 from ballscrew.calibration.measured import MAX_POINTS, read_measured
 from ballscrew.cli import app
@@ -98,9 +98,9 @@ def test_undetermined_fit_refused():
 
 
 def test_check_determined():
-    fit_module._check_determined("x", "K", 1e-4, 0.9e-4)
+    search.check_determined("x", "K", 1e-4, 0.9e-4)
     with pytest.raises(CalibrationError, match=r"1.3e-05 ± 7.4e\+25"):
-        fit_module._check_determined("x", "K", 1.3e-5, 7.4e25)
+        search.check_determined("x", "K", 1.3e-5, 7.4e25)
 
 
 def test_model_beyond_the_work_limit_is_a_calibration_error(monkeypatch):

@@ -17,11 +17,7 @@ report it together with them.
 
 from ballscrew.calibration.api import DEFAULT_FIT, as_measured, calibrate, calibrated_case
 from ballscrew.calibration.diagnostics import ResidualDiagnostics, residual_diagnostics
-from ballscrew.calibration.fit import (
-    CalibrationError,
-    CalibrationResult,
-    fit_wear_coefficient,
-)
+from ballscrew.calibration.fit import fit_wear_coefficient
 from ballscrew.calibration.measured import (
     QUANTITIES,
     MeasuredHistory,
@@ -29,6 +25,7 @@ from ballscrew.calibration.measured import (
     read_measured,
 )
 from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
+from ballscrew.calibration.result import CalibrationError, CalibrationResult
 
 __all__ = [
     "DEFAULT_FIT",

@@ -14,10 +14,10 @@ import numpy as np
 
 from ballscrew.analyses.result import recorded_warnings
 from ballscrew.budget import BudgetError
-from ballscrew.calibration.fit import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.calibration.measured import QUANTITIES, MeasuredHistory, measured_history
 from ballscrew.calibration.measured import read_measured as read_file
 from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
+from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.errors import InputError
 
 __all__ = ["DEFAULT_FIT", "as_measured", "calibrate", "calibrated_case", "schedule_programme"]

@@ -40,33 +40,27 @@ from dataclasses import dataclass
 import numpy as np
 
 from ballscrew.calibration.diagnostics import residual_diagnostics
-from ballscrew.calibration.fit import (
-    _DIFF_STEP,
-    _K_MAX,
-    _K_MIN,
-    _LN10,
-    _SCAN_STEPS,
-    CalibrationError,
-    CalibrationResult,
-    WearHistory,
-    _check_determined,
-    _downhill,
-    _Objective,
-    _refine,
-    _scan,
-    _surrogate_minimum,
-    covering_history,
+from ballscrew.calibration.measured import MeasuredHistory, check_values, measured_history
+from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
+from ballscrew.calibration.search import (
+    DIFF_STEP,
+    LN10,
+    SCAN_STEPS,
+    KLine,
+    ModelRuns,
+    check_determined,
+    covariance,
+    line_minimum,
+    refine,
+    scan,
     solve_least_squares,
 )
-from ballscrew.calibration.fit import _covariance as _fit_covariance
-from ballscrew.calibration.measured import MeasuredHistory, check_values, measured_history
-from ballscrew.errors import ConvergenceError, InputError
+from ballscrew.errors import InputError
 
 __all__ = ["FIT_PARAMETERS", "CalibrationWarning", "FitParameter", "fit_parameters"]
 
 
 _K = "wear_coefficient"
-_LN_K_MIN, _LN_K_MAX = math.log(_K_MIN), math.log(_K_MAX)
 
 
 class CalibrationWarning(UserWarning):
@@ -115,41 +109,6 @@ def _split(data: MeasuredHistory, fit_until: float | None) -> tuple[MeasuredHist
         data.revolutions[:n], data.values[:n], data.quantity, data.source, min_points=1
     )
     return part, n
-
-
-class _Model:
-    """Model runs cached by the values of the model parameters."""
-
-    def __init__(
-        self,
-        simulate: Callable[[Mapping[str, float]], WearHistory],
-        data: MeasuredHistory,
-        max_evaluations: int,
-        label: str,
-    ) -> None:
-        self.simulate = simulate
-        self.data = data
-        self.max_evaluations = max_evaluations
-        self.label = label
-        self.cache: dict[tuple[tuple[str, float], ...], tuple[np.ndarray, np.ndarray]] = {}
-        self.best_rms = math.inf
-        """Least RMS of a run minus the data so far (model unscaled) [SI]."""
-
-    def run(self, values: Mapping[str, float]) -> tuple[np.ndarray, np.ndarray]:
-        """(model revolutions, model values) at ``values``."""
-        key = tuple(sorted((k, float(v)) for k, v in values.items()))
-        if key not in self.cache:
-            if len(self.cache) >= self.max_evaluations:
-                raise ConvergenceError(self.label, len(self.cache), self.best_rms, 0)
-            rev, val = covering_history(self.simulate(dict(key)), self.data)
-            error = np.interp(self.data.revolutions, rev, val) - self.data.values
-            self.best_rms = min(self.best_rms, float(np.sqrt(np.mean(error**2))))
-            self.cache[key] = rev, val
-        return self.cache[key]
-
-    def at(self, values: Mapping[str, float], revolutions: np.ndarray) -> np.ndarray:
-        rev, val = self.run(values)
-        return np.interp(revolutions, rev, val)
 
 
 _RESTARTS = 3
@@ -250,8 +209,8 @@ def fit_parameters(
     torque_scale: float = 1.0,
     fit_until: float | None = None,
     max_evaluations: int = 200,
-    diff_step: float = _DIFF_STEP,
-    scan_steps: int = _SCAN_STEPS,
+    diff_step: float = DIFF_STEP,
+    scan_steps: int = SCAN_STEPS,
     refine_steps: int = 6,
     label: str = "calibration (least squares)",
 ) -> CalibrationResult:
@@ -286,14 +245,12 @@ def fit_parameters(
     for name in model_names:
         if name not in base:
             raise InputError("fit", name, f"a parameter of the model ({', '.join(base)})")
-    model = _Model(simulate, fitted_data, max_evaluations, label)
+    model = ModelRuns(simulate, fitted_data, max_evaluations, label)
     y = fitted_data.values
     scale = float(np.max(np.abs(y))) or 1.0
     lower = [math.log(FIT_PARAMETERS[n].lower) for n in model_names]
     upper = [math.log(FIT_PARAMETERS[n].upper) for n in model_names]
-    base, scan, k_bracket = _start(
-        model, fitted_data, base, model_names, fit_scale, scan_steps, refine_steps
-    )
+    base, scanned, k_bracket = _start(model, base, model_names, fit_scale, scan_steps, refine_steps)
     x0 = [math.log(base[n]) for n in model_names]
     if k_bracket is not None:
         i = model_names.index("wear_coefficient")
@@ -354,7 +311,7 @@ def fit_parameters(
             values[name] = math.exp(x[i])
             errors[name] = values[name] * math.sqrt(cov[i, i])
         spec = FIT_PARAMETERS[name]
-        _check_determined(data.source, spec.short or spec.description, values[name], errors[name])
+        check_determined(data.source, spec.short or spec.description, values[name], errors[name])
     m = multiplier(x)
     final = values_of(x)
     model_rev, model_val = model.run(final)
@@ -389,14 +346,14 @@ def fit_parameters(
         rms_residual=math.sqrt(rss / n_fit),
         n_points=n_fit,
         parameters=p,
-        evaluations=len(model.cache),
+        evaluations=model.evaluations,
         initial_coefficient=float(start.get("wear_coefficient", math.nan)),
         revolutions=data.revolutions,
         measured=data.values,
         fitted=fitted_all,
         model_revolutions=model_rev,
         model_values=curve,
-        scan=scan,
+        scan=scanned,
         message=message,
         values=values,
         errors=errors,
@@ -421,45 +378,36 @@ def _grid(name: str, value: float, points: int = 3) -> list[float]:
 
 
 def _start(
-    model: _Model,
-    data: MeasuredHistory,
+    model: ModelRuns,
     base: dict[str, float],
     names: list[str],
     fit_scale: bool,
     scan_steps: int,
     refine_steps: int,
 ) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
-    """Starting values: K from a decade scan and surrogate steps (:func:`_scan`,
-    :func:`_refine`); then for each other parameter in turn the best of half-decade trial
-    values, K re-fitted at each by :func:`_line_minimum`; the decade scan; and the bracket of
-    ln K (a decade either side of its best)."""
+    """Starting values: K from a decade scan and surrogate steps (:func:`.search.scan`,
+    :func:`.search.refine`); then for each other parameter in turn the best of half-decade
+    trial values, K re-fitted at each by :func:`.search.line_minimum`; the decade scan; and the
+    bracket of ln K (a decade either side of its best). Every run is one of ``model``'s."""
     fit_k = "wear_coefficient" in names
-
-    def objective(values: dict[str, float]) -> _Objective:
-        """The residual in ln K at the other parameters ``values`` (m closed-form)."""
-        return _Objective(
-            lambda k: _History(*model.run({**values, "wear_coefficient": k}), data.quantity),
-            data,
-            fit_scale,
-            model.max_evaluations,
-        )
-
-    first = objective(base)
+    first = KLine(model, base, fit_scale)
     ln_k = math.log(base["wear_coefficient"])
-    scan: tuple[tuple[float, float], ...] = ()
+    scanned_rms: tuple[tuple[float, float], ...] = ()
     if fit_k:
-        best, scanned = _scan(first, ln_k, scan_steps)
-        ln_k = _refine(first, best, scanned, refine_steps)
-        scan = tuple((math.exp(v), first.rms_at(v)[0]) for v in scanned)
+        best, scanned = scan(first, ln_k, scan_steps)
+        ln_k = refine(first, best, scanned, refine_steps)
+        scanned_rms = tuple((math.exp(v), first.rms_at(v)[0]) for v in scanned)
     current, rms = {**base, "wear_coefficient": math.exp(ln_k)}, first.rms_at(ln_k)[0]
     for name in (n for n in names if n != "wear_coefficient"):
         for trial in _grid(name, current[name])[1:]:
             values = {**current, name: trial}
             try:
                 if fit_k:
-                    ln_t, rms_t = _line_minimum(objective(values), math.log(current[_K]))
+                    ln_t, rms_t = line_minimum(
+                        KLine(model, values, fit_scale), math.log(current[_K])
+                    )
                 else:
-                    ln_t, rms_t = ln_k, objective(values).rms_at(ln_k)[0]
+                    ln_t, rms_t = ln_k, KLine(model, values, fit_scale).rms_at(ln_k)[0]
             except CalibrationError:  # K cannot reach the data at this trial value
                 continue
             if rms_t < rms:
@@ -467,45 +415,8 @@ def _start(
     bracket = None
     if fit_k:
         ln_k = math.log(current[_K])
-        bracket = (ln_k - _LN10, ln_k + _LN10)
-    return current, scan, bracket
-
-
-def _line_minimum(
-    objective: _Objective, centre: float, step: float = 0.5, max_runs: int = 5
-) -> tuple[float, float]:
-    """(ln K, RMS) of the least residual in ln K near ``centre``: three runs ``step`` apart,
-    extended _downhill until the least is bracketed, then quadratic-surrogate steps
-    (:func:`ballscrew.calibration.fit._surrogate_minimum`) to 0.02; at most ``max_runs`` runs
-    after the first three."""
-    rms = {x: objective.rms_at(x)[0] for x in (centre - step, centre, centre + step)}
-    for _ in range(max_runs):
-        nxt = _downhill(rms, step)
-        if nxt is None:
-            best = min(rms, key=rms.__getitem__)
-            nearest = sorted(rms, key=lambda v: abs(v - best))[:3]
-            nxt = _surrogate_minimum(objective, nearest)
-            if any(abs(nxt - v) < 0.02 for v in rms):
-                break
-        if not _LN_K_MIN <= nxt <= _LN_K_MAX:
-            raise CalibrationError(f"the best K lies beyond {math.exp(nxt):.3g}")
-        rms[nxt] = objective.rms_at(nxt)[0]
-    best = min(rms, key=rms.__getitem__)
-    return best, rms[best]
-
-
-@dataclass(frozen=True)
-class _History:
-    """A model history reduced to the measured quantity (for the scan in K)."""
-
-    revolutions: np.ndarray
-    values: np.ndarray
-    quantity: str
-
-    def __getattr__(self, name: str) -> np.ndarray:
-        if name in ("friction_torque", "preload", "max_wear_depth"):
-            return vars(self)["values"]
-        raise AttributeError(name)
+        bracket = (ln_k - LN10, ln_k + LN10)
+    return current, scanned_rms, bracket
 
 
 def _check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
@@ -531,7 +442,7 @@ def _covariance(
 ) -> np.ndarray:
     """RSS/(n − p) · (JᵀJ)⁻¹; CalibrationError naming the parameters when J is rank-deficient."""
     what = " and ".join(FIT_PARAMETERS[n].description for n in names)
-    return _fit_covariance(jac, residuals, n, len(names), source, what + " together")
+    return covariance(jac, residuals, n, len(names), source, what + " together")
 
 
 def _correlation(cov: np.ndarray, names: list[str]) -> float | None:

@@ -17,7 +17,7 @@ from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import plain
 
 if TYPE_CHECKING:
-    from ballscrew.calibration.fit import CalibrationResult
+    from ballscrew.calibration.result import CalibrationResult
 
 __all__ = ["figures", "fit_dataset", "fit_table", "sections", "summary"]
 

@@ -40,7 +40,7 @@ from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_c
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, FloatArray, WearSetup, nut_force_pair
-from ballscrew.wear.step import flank_rate, flank_rates
+from ballscrew.wear.step import StepContact, step_rates
 from ballscrew.wear.strips import reciprocating_rate
 
 __all__ = ["check_wear_work", "integrate_wear"]
@@ -151,15 +151,16 @@ def _step_rates(setup: WearSetup, state: _State, preload: float, level: WearLeve
 
     A duty-cycle level's rate is the revolution-weighted mean of its segments' rates; a nut's
     rate is the ball-share-weighted mean over its load classes, ḣ = Σ_k w_k ḣ(r_k Q̄) (every ball
-    passes every raceway point; :mod:`.load_classes`). The contacts of a flank (both nuts, all
-    classes) share the worn gap and are solved in one batch (:func:`.step.flank_rates`).
+    passes every raceway point; :mod:`.load_classes`). Every contact of the step (both flanks,
+    both nuts, all classes and segments) is solved in one batch (:func:`.step.step_rates`).
     """
-    rates = np.zeros_like(state.depth)
-    for index, (share, part) in enumerate(level.parts()):
+    nuts: dict[tuple[int, int], list[FloatArray | None]] = {}  # (part, flank): ḣ of each nut
+    entries: list[tuple[list[FloatArray | None], int, str, float]] = []
+    contacts: list[StepContact] = []
+    for index, (_, part) in enumerate(level.parts()):
         forces = nut_force_pair(preload, part.axial_load)
         for k, flank in enumerate(FLANKS):
-            # every loaded nut and load class of this flank: one batched contact solve
-            entries = []
+            sums = nuts[index, k] = [np.zeros(setup.y.size) if f > 0.0 else None for f in forces]
             for nut, force in enumerate(forces, start=1):
                 if force <= 0.0:
                     continue
@@ -169,26 +170,23 @@ def _step_rates(setup: WearSetup, state: _State, preload: float, level: WearLeve
                     zip(classes.ratios, classes.weights, strict=True)
                 ):
                     if ratio > 0.0:  # lifted-off balls wear nothing
-                        entries.append((nut, key + (f"_c{c}" if c else ""), force, ratio, weight))
-            outs = flank_rates(
-                setup,
-                flank,
-                [(force, ratio) for _, _, force, ratio, _ in entries],
-                part.speed,
-                state.depth[k],
-                [state.warm.get(name) for _, name, _, _, _ in entries],
-                part,
-            )
-            parts: list[FloatArray | None] = [
-                np.zeros(setup.y.size) if force > 0.0 else None for force in forces
-            ]
-            for (nut, name, _, _, weight), out in zip(entries, outs, strict=True):
-                state.warm[name] = out.pressure
-                state.solves += 1
-                state.initial_psi.setdefault(name, out.psi)
-                parts[nut - 1] += weight * out.depth_per_revolution
-            loaded = parts[0] if parts[0] is not None else np.zeros(setup.y.size)
-            rates[k] += share * reciprocating_rate(loaded, parts[1])
+                        name = key + (f"_c{c}" if c else "")
+                        entries.append((sums, nut, name, weight))
+                        contacts.append(
+                            StepContact(
+                                flank, force, part.speed, state.depth[k], state.warm.get(name),
+                                part, ratio,
+                            )
+                        )  # fmt: skip
+    for (sums, nut, name, weight), out in zip(entries, step_rates(setup, contacts), strict=True):
+        state.warm[name] = out.pressure
+        state.solves += 1
+        state.initial_psi.setdefault(name, out.psi)
+        sums[nut - 1] += weight * out.depth_per_revolution
+    rates = np.zeros_like(state.depth)
+    for (index, k), (first, second) in nuts.items():
+        loaded = first if first is not None else np.zeros(setup.y.size)
+        rates[k] += level.parts()[index][0] * reciprocating_rate(loaded, second)
     return rates
 
 
@@ -243,10 +241,13 @@ def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> Wea
         last = spec.programme[-1].parts()[-1][1]
         f1 = nut_force_pair(float(r["preload"][-1]), last.axial_load)[0]
         if f1 > 0.0:
-            worn = flank_rate(
-                setup, 1, f1, last.speed, state.depth[0], state.warm.get("+1_1"), last
+            worn, unworn = step_rates(
+                setup,
+                [
+                    StepContact(1, f1, last.speed, state.depth[0], state.warm.get("+1_1"), last),
+                    StepContact(1, f1, last.speed, np.zeros_like(setup.y), level=last),
+                ],
             )
-            unworn = flank_rate(setup, 1, f1, last.speed, np.zeros_like(setup.y), level=last)
             solves += 2
             extras["ellipse_major_axis"] = _extent(worn.pressure, setup.dy)
             extras["ellipse_major_axis_unworn"] = _extent(unworn.pressure, setup.dy)

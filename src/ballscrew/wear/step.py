@@ -1,8 +1,9 @@
 """One contact of a wear step: pressure, asperity share, sliding and the wear-depth rate.
 
-The contacts of one flank within a step (the nuts and the ball-load classes of each) share the
-worn gap and the fixed grid and differ only in load: :func:`flank_rates` solves them together
-(:func:`ballscrew.contact.solve_normal_batch`; each result equals its own single solve).
+All contacts of a wear step (both flanks, both nuts, the ball-load classes of each, the segments
+of a duty cycle) share the fixed grid and differ only in gap and load: :func:`step_rates` solves
+them in one :func:`ballscrew.contact.solve_normal_batch` call (each result equals its own single
+solve); :func:`flank_rate` and :func:`flank_rates` are one flank's contacts of it.
 """
 
 from __future__ import annotations
@@ -14,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ballscrew.contact import ContactResult, solve_normal, solve_normal_batch
+from ballscrew.budget import check_memory, contact_grid_bytes
+from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.lubrication import share_load
@@ -24,7 +26,15 @@ from ballscrew.wear.rates import cell_wear_rate
 from ballscrew.wear.setup import FloatArray, WearSetup
 from ballscrew.wear.strips import depth_per_revolution, raceway_depth_rate, strip_wear_speed
 
-__all__ = ["FlankRate", "GridEdgeWarning", "entrainment_speed", "flank_rate", "flank_rates"]
+__all__ = [
+    "FlankRate",
+    "GridEdgeWarning",
+    "StepContact",
+    "entrainment_speed",
+    "flank_rate",
+    "flank_rates",
+    "step_rates",
+]
 
 
 class GridEdgeWarning(UserWarning):
@@ -61,6 +71,68 @@ def entrainment_speed(geometry: ScrewGeometry, screw_speed: float) -> float:
     )
 
 
+@dataclass(frozen=True)
+class StepContact:
+    """One ball contact of a wear step: which flank, worn how far, under which nut force."""
+
+    flank: int
+    """Screw flank s = ±1."""
+    nut_force: float
+    """Nut force F [N]; the ball carries ``load_ratio`` Q(F) (E1.6)."""
+    speed: float
+    """Screw speed ω_s [rad/s]."""
+    depth: FloatArray
+    """Worn depth h(y) of the flank [m]."""
+    initial: FloatArray | None = None
+    """Warm-start pressure [Pa] or None (the solver's nested-grid start)."""
+    level: WearLevel | None = None
+    """Programme level (lubricant state, stroke); None: the run's own."""
+    load_ratio: float = 1.0
+    """Ball load over the nut's mean ball load (a load class; 1: uniform)."""
+
+
+def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[FlankRate, ...]:
+    """:class:`FlankRate` of every contact of a wear step, all solved in one batch.
+
+    The contacts (both flanks, both nuts, the load classes, the duty segments, worn or unworn
+    gaps) share the fixed grid, dx, dy and E* and differ in gap and load, so their pressures
+    come from one :func:`~ballscrew.contact.solve_normal_batch` call (batched FFTs; each result
+    equals its own single solve). A batch takes a warm start for all its contacts or for none:
+    contacts with and without one are two calls. The batch's memory is checked against the
+    budget first (``wear.grid``).
+    """
+    nx, ny = setup.x.size, setup.y.size
+    check_memory(
+        "wear.grid",
+        [nx, ny],
+        len(contacts) * contact_grid_bytes(nx, ny),
+        f"{len(contacts)} contacts of a wear step on the {nx} × {ny} grid",
+    )
+    loads = [c.load_ratio * setup.ball_load(c.nut_force) for c in contacts]
+    gaps = [worn_gap(setup.nominal_gap[c.flank], c.depth) for c in contacts]
+    solved: dict[int, ContactResult] = {}
+    for warm in (True, False):
+        group = [i for i, c in enumerate(contacts) if (c.initial is not None) == warm]
+        if not group:
+            continue
+        starts = [contacts[i].initial for i in group] if warm else None
+        results = solve_normal_batch(
+            np.stack([gaps[i] for i in group]),
+            setup.dx,
+            setup.dy,
+            setup.e_star,
+            np.array([loads[i] for i in group]),
+            setup.tolerance,
+            max_iterations=setup.max_iterations,
+            initial=None if starts is None else np.stack(starts),
+        )
+        solved.update(zip(group, results, strict=True))
+    return tuple(
+        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level)
+        for i, (c, q) in enumerate(zip(contacts, loads, strict=True))
+    )
+
+
 def flank_rate(
     setup: WearSetup,
     flank: int,
@@ -76,48 +148,10 @@ def flank_rate(
     ``level`` gives the lubricant state and stroke of the running programme level (None: the
     run's own); the surface is that after the flank's largest worn depth (running-in). Every ball
     carries ``load_ratio`` times the nut's mean ball load (a load class of the elastic
-    distribution; 1: the uniform distribution).
+    distribution; 1: the uniform distribution). One contact of :func:`step_rates`.
     """
-    q = load_ratio * setup.ball_load(nut_force)
-    gap = worn_gap(setup.nominal_gap[flank], depth)
-    sol = solve_normal(
-        gap,
-        setup.dx,
-        setup.dy,
-        setup.e_star,
-        q,
-        setup.tolerance,
-        max_iterations=setup.max_iterations,
-        initial=initial,
-    )
-    return _rate(setup, flank, q, sol, screw_speed, depth, level)
-
-
-def _solve_together(
-    setup: WearSetup, gap: FloatArray, loads: list[float], initial: list[FloatArray | None]
-) -> list[ContactResult]:
-    """The contacts of ``loads`` on one gap: one batched solve for those with a warm start and
-    one for those without (a batch takes a start for all or none)."""
-    out: list[ContactResult | None] = [None] * len(loads)
-    for warm in (True, False):
-        group = [i for i, p in enumerate(initial) if (p is not None) == warm]
-        if not group:
-            continue
-        stack = np.broadcast_to(gap, (len(group), *gap.shape)).copy()
-        starts = np.stack([initial[i] for i in group]) if warm else None
-        solved = solve_normal_batch(
-            stack,
-            setup.dx,
-            setup.dy,
-            setup.e_star,
-            np.array([loads[i] for i in group]),
-            setup.tolerance,
-            max_iterations=setup.max_iterations,
-            initial=starts,
-        )
-        for i, sol in zip(group, solved, strict=True):
-            out[i] = sol
-    return [sol for sol in out if sol is not None]
+    contact = StepContact(flank, nut_force, screw_speed, depth, initial, level, load_ratio)
+    return step_rates(setup, [contact])[0]
 
 
 def flank_rates(
@@ -129,14 +163,14 @@ def flank_rates(
     initial: Sequence[FloatArray | None],
     level: WearLevel | None = None,
 ) -> tuple[FlankRate, ...]:
-    """:func:`flank_rate` of several (nut force, load ratio) ``contacts`` of one flank, their
-    contacts solved together (batched FFTs); ``initial`` gives each one's warm start or None."""
-    loads = [ratio * setup.ball_load(force) for force, ratio in contacts]
-    gap = worn_gap(setup.nominal_gap[flank], depth)
-    solved = _solve_together(setup, gap, loads, list(initial))
-    return tuple(
-        _rate(setup, flank, q, sol, screw_speed, depth, level)
-        for q, sol in zip(loads, solved, strict=True)
+    """:func:`flank_rate` of several (nut force, load ratio) ``contacts`` of one flank, solved
+    together by :func:`step_rates`; ``initial`` gives each one's warm start or None."""
+    return step_rates(
+        setup,
+        [
+            StepContact(flank, force, screw_speed, depth, start, level, ratio)
+            for (force, ratio), start in zip(contacts, initial, strict=True)
+        ],
     )
 
 
