@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import ballscrew
+from ballscrew.analyses import thermal
 from ballscrew.analyses.operating_point import coupled_heat
 from ballscrew.analyses.thermal import solve_field, thermal_field
 
@@ -48,7 +49,8 @@ def test_the_transient_does_not_solve_the_operating_points_steady_state_again(
     coarse_case, monkeypatch
 ):
     """The thermal field's transient re-solved the steady FE field the coupled operating point
-    had just solved (one more FE solve with the transient than without)."""
+    had just solved (one more FE solve with the transient than without) and rebuilt its
+    problem; with a given TCR equal to the case's it takes that steady field too."""
     simulate = importlib.import_module("ballscrew.thermal.simulate")
     sizes: list[int] = []
     solve = simulate.solve_steady
@@ -58,13 +60,26 @@ def test_the_transient_does_not_solve_the_operating_points_steady_state_again(
         return solve(a, f, limit)
 
     monkeypatch.setattr(simulate, "solve_steady", counted)
+    builds: list[int] = []
+    build = thermal.build_problem
+
+    def built(*args, **kwargs):
+        builds.append(1)
+        return build(*args, **kwargs)
+
+    monkeypatch.setattr(thermal, "build_problem", built)
     steady_only = thermal_field(coarse_case, "axisymmetric", transient=False)
     fe_size = steady_only.unknowns
-    without = sizes.count(fe_size)
+    solves, problems = sizes.count(fe_size), len(builds)
     sizes.clear()
+    builds.clear()
     with_transient = thermal_field(coarse_case, "axisymmetric")
     assert with_transient.solution.transient is not None
-    assert sizes.count(fe_size) == without
+    assert (sizes.count(fe_size), len(builds)) == (solves, problems)
+    sizes.clear()
+    given = thermal_field(coarse_case, "axisymmetric", tcr=ballscrew.screw_tcr(coarse_case))
+    assert sizes.count(fe_size) == solves
+    assert np.array_equal(given.solution.steady, with_transient.solution.steady)
 
 
 @pytest.mark.parametrize("model", ["network", "axisymmetric"])

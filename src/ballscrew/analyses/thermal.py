@@ -22,6 +22,9 @@ from dataclasses import dataclass
 from types import ModuleType
 from typing import ClassVar
 
+import numpy as np
+from numpy.typing import NDArray
+
 from ballscrew.analyses import thermal_report
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.screw_tcr import ScrewTCR
@@ -255,11 +258,20 @@ def thermal_field(
     started = _time.perf_counter()
     with recorded_warnings() as messages:
         resolved, coupling, steady = coupled_heat(case, model)
-    if transient:
+    if transient and tcr is not None:  # the point was solved with the case's own TCR
         field = solve_field(resolved, model, tcr=tcr, steady=steady.solution)
-    else:  # the last iteration's field, which skipped the thermo-elastic check
+    else:  # the last iteration solved the resolved case: its inputs, mesh and steady field
+        with recorded_warnings() as marched:
+            solution = steady.solution
+            if transient:
+                disc = solution.discretisation
+                solution = _simulate(disc, spec, True, steady.feed_speed, solution.steady)
+            elastic = _thermoelastic(case, spec, solution)  # the iterations skipped it
         field = dataclasses.replace(
-            steady, elongation_thermoelastic=_thermoelastic(case, spec, steady.solution)
+            steady,
+            solution=solution,
+            elongation_thermoelastic=elastic,
+            warnings=(*steady.warnings, *marched),
         )
     return dataclasses.replace(
         field,
@@ -320,17 +332,7 @@ def solve_field(
                 model, problem, mesh, patches
             )
         disc.extra["patches"], disc.extra["mesh_options"] = patches, mesh
-        tr = spec.transient
-        with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
-            solution = simulate(
-                disc,
-                tr.duration if transient else None,
-                tr.time_step,
-                tr.snapshots,
-                spec.stroke.mode,
-                speed,
-                steady=None if known is None else known.steady,
-            )
+        solution = _simulate(disc, spec, transient, speed, None if known is None else known.steady)
         elastic = _thermoelastic(case, spec, solution) if thermoelastic else None
     return ThermalField(
         case_name=case.name,
@@ -347,6 +349,28 @@ def solve_field(
         case=case,
         warnings=tuple(messages),
     )
+
+
+def _simulate(
+    disc: Discretisation,
+    spec: ThermalSpec,
+    transient: bool,
+    speed: float,
+    steady: NDArray[np.float64] | None = None,
+) -> Solution:
+    """:func:`~ballscrew.thermal.simulate.simulate` of ``disc`` with the case's transient and
+    stroke settings (``steady``: its steady field, already solved)."""
+    tr = spec.transient
+    with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
+        return simulate(
+            disc,
+            tr.duration if transient else None,
+            tr.time_step,
+            tr.snapshots,
+            spec.stroke.mode,
+            speed,
+            steady=steady,
+        )
 
 
 def _thermoelastic(case: Case, spec: ThermalSpec, solution: Solution) -> float | None:
