@@ -10,11 +10,22 @@ import pytest
 from typer.testing import CliRunner
 
 import ballscrew as bs
+from ballscrew.analyses.thermal_cooling import bore_coefficient, bore_flow, shaft_coolant
+from ballscrew.analyses.thermal_setup import thermal_spec
 from ballscrew.case import with_overrides
 from ballscrew.cli import app
 from ballscrew.errors import InputError
 from ballscrew.thermal import build_network, simulate
-from ballscrew.thermal.coolant import FLUIDS, BoreFlow, bore_nusselt, bore_outlet_rise
+from ballscrew.thermal.coolant import (
+    FLUIDS,
+    LAMINAR_LIMIT,
+    NU_LAMINAR,
+    TURBULENT_LIMIT,
+    BoreFlow,
+    ShaftCoolant,
+    bore_nusselt,
+    bore_outlet_rise,
+)
 from ballscrew.thermal.models import MeshOptions, build_model
 from ballscrew.thermal.problem import Sensor, TableMass
 from ballscrew.thermal.simulate import time_to_fraction
@@ -192,3 +203,45 @@ def test_bad_coolant_input_is_one_line_and_exit_2(tmp_path):
     assert "thermal.shaft_coolant.fluid" in result.output and "Traceback" not in result.output
     assert len(result.output.strip().splitlines()) == 1
     assert not out.exists()
+
+
+def test_coolant_errors_name_the_case_field_its_value_and_range():
+    """The bore was named a diameter but given its radius, ṁc_p [W/K] was named a flow rate."""
+    with pytest.raises(InputError) as error:
+        ShaftCoolant(-0.004, 800.0, 30.0)
+    assert str(error.value).startswith("thermal.shaft_coolant.bore_diameter = -0.008 ")
+    assert str(error.value).endswith("> 0 m")
+    with pytest.raises(InputError) as error:
+        ShaftCoolant(0.004, 800.0, 0.0)
+    message = str(error.value)
+    assert message.startswith("shaft_coolant.capacity_rate = 0.0 is not allowed: ")
+    assert "> 0 W/K" in message and "thermal.shaft_coolant.flow_rate" in message
+    water = FLUIDS["water"]
+    with pytest.raises(InputError) as error:
+        BoreFlow(0.012, -1e-5, water)
+    assert str(error.value) == (
+        "thermal.shaft_coolant.flow_rate = -1e-05 is not allowed: a finite number > 0 m³/s"
+    )
+    with pytest.raises(InputError, match=r"^thermal.shaft_coolant.bore_diameter = 0.0 "):
+        BoreFlow(0.0, 1e-5, water)
+
+
+@pytest.mark.parametrize(
+    ("flow_rate", "regime"),
+    [(0.05 / 60e3, "laminar Nu = 4.36"), (1.3 / 60e3, "blend"), (20 / 60e3, "Gnielinski")],
+)
+def test_the_bore_coefficient_names_the_regime_it_computed(flow_rate, regime):
+    """The label follows bore_nusselt's regimes (Re ≤ LAMINAR_LIMIT laminar, a blend below
+    TURBULENT_LIMIT); it called the blend "Gnielinski"."""
+    overrides = {
+        "thermal.shaft_coolant.bore_diameter": "12 mm",
+        "thermal.shaft_coolant.flow_rate": flow_rate,
+    }
+    spec = thermal_spec(bs.load_case(EXAMPLE, overrides))
+    h, label = bore_coefficient(spec)
+    flow = bore_flow(spec)
+    assert regime in label and f"Re = {flow.reynolds:.4g}" in label
+    laminar = NU_LAMINAR["flux"] * flow.fluid.conductivity / flow.diameter
+    assert (h == pytest.approx(laminar)) == (flow.reynolds <= LAMINAR_LIMIT)
+    assert (regime == "blend") == (LAMINAR_LIMIT < flow.reynolds < TURBULENT_LIMIT)
+    assert shaft_coolant(spec).coefficient == h

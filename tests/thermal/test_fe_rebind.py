@@ -9,12 +9,14 @@ import numpy as np
 import pytest
 
 import ballscrew
+from ballscrew.analyses import thermal_setup
 from ballscrew.analyses.operating_point import heat_overrides
 from ballscrew.analyses.thermal import solve_field, thermal_field
 from ballscrew.case import with_overrides
 from ballscrew.thermal import axisymmetric, threed
 from ballscrew.thermal.axisymmetric import build_axisymmetric
 from ballscrew.thermal.coolant import ShaftCoolant
+from ballscrew.thermal.network import build_network
 from ballscrew.thermal.problem import (
     BandHeat,
     Convection,
@@ -150,3 +152,41 @@ def test_the_3d_coupled_solve_builds_once(monkeypatch):
     builds = _counted(monkeypatch, threed, "build_threed")
     field = thermal_field(case, "3d")
     assert len(builds) == 1 and field.solution.transient is not None
+
+
+def test_the_network_rebinds_loads_and_coefficients_as_a_fresh_build():
+    """The network, too, binds other heats, coefficients, coolant and table values to the
+    conduction it built once (it had no rebind: every fixed-point iteration rebuilt it)."""
+    extras = {
+        "table": TableMass(50.0, 5.0, 2e4),
+        "shaft_coolant": ShaftCoolant(0.006, 800.0, 30.0, 0.0),
+    }
+    first = build_network(replace(small(**extras), stroke=0.05), 0.005)
+    other = small(
+        heat=55.0,
+        h=7.0,
+        table=TableMass(80.0, 12.0, 5e4),
+        nut_coolant_flux=-40.0,
+        shaft_coolant=ShaftCoolant(0.006, 1500.0, 12.0, -2.0),
+    )
+    other = replace(other, stroke=0.05, parts=(replace(other.parts[0], contact_conductance=250.0),))
+    rebound = first.rebound(other)
+    assert rebound is not None
+    fresh = build_network(other, 0.005)
+    for mode in ("averaged", "resolved"):
+        a = simulate(rebound, 3600.0, 600.0, stroke_mode=mode, feed_speed=0.01)
+        b = simulate(fresh, 3600.0, 600.0, stroke_mode=mode, feed_speed=0.01)
+        _close(a.steady, b.steady, 1e-12)
+        _close(a.transient.elongation, b.transient.elongation, 1e-12)
+        assert a.heat_balance_error < 1e-9 and a.transient.heat_balance_error < 1e-9
+    assert first.rebound(replace(other, stroke=0.0)) is None
+
+
+def test_the_natural_convection_fixed_point_builds_its_network_once(monkeypatch):
+    """The surface rises iterate on one network whose coefficients are re-bound (four builds
+    of the example's network per problem before)."""
+    case = ballscrew.load_case(EXAMPLE, {"thermal.drag_torque.source": "catalogue"})
+    builds = _counted(monkeypatch, thermal_setup, "build_network")
+    _, _, convection, _, _ = thermal_setup.build_problem(case, None)
+    assert "iterated" in next(c.correlation for c in convection if c.surface == "nut")
+    assert len(builds) == 1

@@ -22,6 +22,9 @@ from dataclasses import dataclass
 from types import ModuleType
 from typing import ClassVar
 
+import numpy as np
+from numpy.typing import NDArray
+
 from ballscrew.analyses import thermal_report
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.screw_tcr import ScrewTCR
@@ -255,11 +258,20 @@ def thermal_field(
     started = _time.perf_counter()
     with recorded_warnings() as messages:
         resolved, coupling, steady = coupled_heat(case, model)
-    if transient:
-        field = solve_field(resolved, model, tcr=tcr, reuse=steady.solution.discretisation)
-    else:  # the last iteration's field, which skipped the thermo-elastic check
+    if transient and tcr is not None:  # the point was solved with the case's own TCR
+        field = solve_field(resolved, model, tcr=tcr, steady=steady.solution)
+    else:  # the last iteration solved the resolved case: its inputs, mesh and steady field
+        with recorded_warnings() as marched:
+            solution = steady.solution
+            if transient:
+                disc = solution.discretisation
+                solution = _simulate(disc, spec, True, steady.feed_speed, solution.steady)
+            elastic = _thermoelastic(case, spec, solution)  # the iterations skipped it
         field = dataclasses.replace(
-            steady, elongation_thermoelastic=_thermoelastic(case, spec, steady.solution)
+            steady,
+            solution=solution,
+            elongation_thermoelastic=elastic,
+            warnings=(*steady.warnings, *marched),
         )
     return dataclasses.replace(
         field,
@@ -288,6 +300,7 @@ def solve_field(
     transient: bool = True,
     reuse: Discretisation | None = None,
     thermoelastic: bool = True,
+    steady: Solution | None = None,
 ) -> ThermalField:
     """:func:`thermal_field` with the heat the case gives, its drag torque taken as it stands
     (a resolved ``operating_point`` torque is ``thermal.drag_torque.torque``).
@@ -296,7 +309,10 @@ def solve_field(
     coefficients): its mesh and matrices are bound to this case's loads instead of meshing and
     assembling again, when :func:`~ballscrew.thermal.problem.same_mesh` and the 3-D model's ball
     patches allow (the result is the same to rounding). ``thermoelastic=False`` skips the
-    ``thermoelastic_check`` (fixed-point iterations).
+    ``thermoelastic_check`` (fixed-point iterations). ``steady``: a steady solution on
+    ``model`` (the coupled operating point's last field): when it solved this very problem, its
+    discretisation and steady field are taken as they are and only the transient is solved;
+    otherwise its discretisation is a ``reuse``.
     """
     started = _time.perf_counter()
     spec, model = _checked(case, model, transient)
@@ -306,20 +322,17 @@ def solve_field(
         helical = model == "3d" and spec.mesh.helical_patches
         patches = ball_patches(case, problem, tcr) if helical else None
         mesh = _mesh_options(spec)
-        disc = _rebound(reuse, model, problem, patches, mesh) or build_model(
-            model, problem, mesh, patches
-        )
-        disc.extra["patches"], disc.extra["mesh_options"] = patches, mesh
-        tr = spec.transient
-        with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
-            solution = simulate(
-                disc,
-                tr.duration if transient else None,
-                tr.time_step,
-                tr.snapshots,
-                spec.stroke.mode,
-                speed,
+        known = _solved(steady, model, problem, patches, mesh)
+        if known is not None:
+            disc = known.discretisation
+        else:
+            if reuse is None and steady is not None:
+                reuse = steady.discretisation
+            disc = _rebound(reuse, model, problem, patches, mesh) or build_model(
+                model, problem, mesh, patches
             )
+        disc.extra["patches"], disc.extra["mesh_options"] = patches, mesh
+        solution = _simulate(disc, spec, transient, speed, None if known is None else known.steady)
         elastic = _thermoelastic(case, spec, solution) if thermoelastic else None
     return ThermalField(
         case_name=case.name,
@@ -338,6 +351,28 @@ def solve_field(
     )
 
 
+def _simulate(
+    disc: Discretisation,
+    spec: ThermalSpec,
+    transient: bool,
+    speed: float,
+    steady: NDArray[np.float64] | None = None,
+) -> Solution:
+    """:func:`~ballscrew.thermal.simulate.simulate` of ``disc`` with the case's transient and
+    stroke settings (``steady``: its steady field, already solved)."""
+    tr = spec.transient
+    with blas_single_thread():  # triangular solves and vector products (see thermal_duty)
+        return simulate(
+            disc,
+            tr.duration if transient else None,
+            tr.time_step,
+            tr.snapshots,
+            spec.stroke.mode,
+            speed,
+            steady=steady,
+        )
+
+
 def _thermoelastic(case: Case, spec: ThermalSpec, solution: Solution) -> float | None:
     """The thermo-elastic end displacement when the case asks for it (axisymmetric model)."""
     disc = solution.discretisation
@@ -346,6 +381,16 @@ def _thermoelastic(case: Case, spec: ThermalSpec, solution: Solution) -> float |
     screw = case.materials.screw
     return thermoelastic_elongation(
         disc, solution.steady, screw.youngs_modulus, screw.poissons_ratio
+    )
+
+
+def _fits(disc: Discretisation, model: str, patches: tuple | None, mesh: MeshOptions) -> bool:
+    """Whether ``disc`` is a ``model`` mesh with these ball patches and mesh options."""
+    extra = disc.extra
+    return (
+        disc.model == model
+        and extra.get("patches") == patches
+        and extra.get("mesh_options") == mesh
     )
 
 
@@ -358,14 +403,22 @@ def _rebound(
 ) -> Discretisation | None:
     """``reuse`` bound to ``problem`` when it is a ``model`` mesh of it with the same patches
     and mesh options."""
-    if (
-        reuse is None
-        or reuse.model != model
-        or reuse.extra.get("patches") != patches
-        or reuse.extra.get("mesh_options") != mesh
-    ):
+    if reuse is None or not _fits(reuse, model, patches, mesh):
         return None
     return reuse.rebound(problem)
+
+
+def _solved(
+    steady: Solution | None,
+    model: str,
+    problem: ThermalProblem,
+    patches: tuple | None,
+    mesh: MeshOptions,
+) -> Solution | None:
+    """``steady`` when it is the steady state of ``problem`` on this ``model`` mesh."""
+    if steady is None or not _fits(steady.discretisation, model, patches, mesh):
+        return None
+    return steady if steady.discretisation.problem == problem else None
 
 
 def _mesh_options(spec: ThermalSpec) -> MeshOptions:

@@ -9,7 +9,15 @@ from __future__ import annotations
 
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.thermal.boundary import mounting_coefficient
-from ballscrew.thermal.coolant import BoreFlow, Fluid, ShaftCoolant, fluid
+from ballscrew.thermal.coolant import (
+    LAMINAR_LIMIT,
+    NU_LAMINAR,
+    TURBULENT_LIMIT,
+    BoreFlow,
+    Fluid,
+    ShaftCoolant,
+    fluid,
+)
 from ballscrew.thermal.problem import TableMass
 
 
@@ -29,23 +37,33 @@ def bore_flow(spec: ThermalSpec) -> BoreFlow | None:
 def bore_coefficient(spec: ThermalSpec) -> tuple[float, str] | None:
     """h of the shaft bore [W/(m² K)] and how it was found; None for a solid shaft."""
     flow = bore_flow(spec)
-    if flow is None:
-        return None
+    return None if flow is None else _coefficient(spec, flow)
+
+
+def _coefficient(spec: ThermalSpec, flow: BoreFlow) -> tuple[float, str]:
+    """h of the bore ``flow`` [W/(m² K)] and how it was found (the case's override, else the
+    regime of :func:`~ballscrew.thermal.coolant.bore_nusselt` at its Reynolds number)."""
     sc = spec.shaft_coolant
     if sc.coefficient is not None:
         return float(sc.coefficient), "override"
     name = "Gnielinski" if sc.correlation == "gnielinski" else "Dittus–Boelter"
-    regime = "laminar Nu = 4.36" if flow.reynolds <= 2300 else name
-    return flow.coefficient(sc.correlation), f"{regime}, Re = {flow.reynolds:.4g} (Q11)"
+    re = flow.reynolds
+    if re <= LAMINAR_LIMIT:
+        regime = f"laminar Nu = {NU_LAMINAR['flux']:g}"
+    elif re < TURBULENT_LIMIT:
+        regime = f"laminar–{name} blend"
+    else:
+        regime = name
+    return flow.coefficient(sc.correlation), f"{regime}, Re = {re:.4g} (Q11)"
 
 
 def shaft_coolant(spec: ThermalSpec) -> ShaftCoolant | None:
     """The :class:`ShaftCoolant` of the case (h from the correlation unless given)."""
-    flow, found = bore_flow(spec), bore_coefficient(spec)
-    if flow is None or found is None:
+    flow = bore_flow(spec)
+    if flow is None:
         return None
+    h, _ = _coefficient(spec, flow)
     sc = spec.shaft_coolant
-    h = found[0]
     inlet = spec.ambient_temperature if sc.inlet_temperature is None else sc.inlet_temperature
     return ShaftCoolant(
         0.5 * flow.diameter, h, flow.capacity_rate, inlet - spec.ambient_temperature

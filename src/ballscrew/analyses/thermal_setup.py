@@ -434,19 +434,22 @@ def _cooled(
     """``problem`` with its coefficients; natural convection at the computed surface rises.
 
     The fixed point runs on the network model (milliseconds; its surface rises agree with the
-    FE models' to about 1 %), started from ``convection.temperature_difference``.
+    FE models' to about 1 %), started from ``convection.temperature_difference``; the network
+    is built once and every iteration re-binds its coefficients.
     """
     cs = spec.convection
     start = (cs.temperature_difference, cs.temperature_difference)
     if _iterated(spec):
         check_mesh(spec, problem, "network")
         probes = _nut_probes(problem)
+        probed = replace(problem, sensors=probes)
+        network = build_network(probed, spec.mesh.network_cell)
 
         def update(rises: tuple[float, ...]) -> tuple[float, float]:
             conv, _ = _coefficients(spec, surfaces, *rises)
-            trial = replace(problem, convection=conv, sensors=probes)
-            solution = simulate(build_network(trial, spec.mesh.network_cell), None)
-            return _surface_rises(solution, probes)
+            trial = replace(probed, convection=conv)
+            disc = network.rebound(trial) or build_network(trial, spec.mesh.network_cell)
+            return _surface_rises(simulate(disc, None), probes)
 
         start, _ = fixed_point(update, start, cs.tolerance, cs.max_iterations)
     conv, coefficients = _coefficients(spec, surfaces, *start)

@@ -109,6 +109,10 @@ class BoreFlow:
     """Volumetric flow V̇ [m³/s]."""
     fluid: Fluid
 
+    def __post_init__(self) -> None:
+        positive("thermal.shaft_coolant.bore_diameter", self.diameter, "m")
+        positive("thermal.shaft_coolant.flow_rate", self.flow_rate, "m³/s")
+
     @property
     def velocity(self) -> float:
         """Mean velocity u = 4V̇/(π d_i²) [m/s]."""
@@ -148,9 +152,11 @@ class ShaftCoolant:
     """Inlet temperature − ambient θ_in [K]."""
 
     def __post_init__(self) -> None:
-        positive("thermal.shaft_coolant.bore_diameter", self.bore_radius, "m")
+        positive("thermal.shaft_coolant.bore_diameter", 2.0 * self.bore_radius, "m")
         nonnegative("thermal.shaft_coolant.coefficient", self.coefficient, "W/(m² K)")
-        positive("thermal.shaft_coolant.flow_rate", self.capacity_rate, "W/K")
+        # ṁ c_p has no case field of its own: the case sets it by its flow rate
+        rate = "W/K (ṁ c_p = ρ V̇ c_p of thermal.shaft_coolant.flow_rate)"
+        positive("shaft_coolant.capacity_rate", self.capacity_rate, rate)
 
 
 def bore_outlet_rise(

@@ -74,6 +74,20 @@ def nut_mean_row(disc: Discretisation) -> NDArray[np.float64]:
     return out
 
 
+Entries = tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.float64]]
+"""(rows, columns, values) of sparse matrix entries; repeated positions add up."""
+
+
+def links(i: NDArray[np.int64], j: NDArray[np.int64], g: NDArray[np.float64]) -> Entries:
+    """Entries of the conductance matrix of resistors g between nodes i and j [W/K]."""
+    i, j, g = np.asarray(i), np.asarray(j), np.asarray(g, dtype=float)
+    return (
+        np.concatenate([i, j, i, j]),
+        np.concatenate([i, j, j, i]),
+        np.concatenate([g, g, -g, -g]),
+    )
+
+
 def laplacian(
     n: int,
     i: NDArray[np.int64],
@@ -82,10 +96,7 @@ def laplacian(
     ground: NDArray[np.float64] | None = None,
 ) -> sp.csr_matrix:
     """Conductance matrix of resistors g between nodes i and j, plus g_0 to ambient [W/K]."""
-    i, j, g = np.asarray(i), np.asarray(j), np.asarray(g, dtype=float)
-    rows = np.concatenate([i, j, i, j])
-    cols = np.concatenate([i, j, j, i])
-    vals = np.concatenate([g, g, -g, -g])
+    rows, cols, vals = links(i, j, g)
     a = sp.coo_matrix((vals, (rows, cols)), shape=(n, n)).tocsr()
     if ground is not None:
         a = a + sp.diags(np.asarray(ground, dtype=float))

@@ -22,12 +22,14 @@ Steady and transient solves take milliseconds (a few hundred unknowns).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 from numpy.typing import NDArray
 
-from ballscrew.thermal.discretisation import Discretisation, band_overlap, laplacian
+from ballscrew.thermal.discretisation import Discretisation, Entries, band_overlap, links
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
 
@@ -42,12 +44,82 @@ def annulus_split(inner: float, outer: float) -> tuple[float, float]:
     return to_mean, total - to_mean
 
 
+@dataclass(frozen=True)
+class _Layout:
+    """Nodes and geometry of a network, fixed by the mesh (:func:`same_mesh`)."""
+
+    grid: AxialGrid
+    n: int
+    mean_s: NDArray[np.int64]
+    surf_s: NDArray[np.int64]
+    mean_r: NDArray[np.int64]
+    bore_r: NDArray[np.int64]
+    od_r: NDArray[np.int64]
+    coolant: NDArray[np.int64]
+    table_node: int
+    part: NDArray[np.int64]
+    """Part of the nut assembly of every ring cell."""
+    ro: NDArray[np.float64]
+    """Outer radius of every ring cell [m]."""
+    zc: NDArray[np.float64]
+    """Shaft cell centres [m]."""
+    conduction: Entries
+    """The conduction of shaft and nut, which no coefficient of the problem changes [W/K]."""
+    bearing_bands: tuple[NDArray[np.float64], ...]
+    """Per bearing: the share of its heat entering each shaft cell [-]."""
+
+
 def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
-    """The axial network of ``problem`` with cells of at most ``cell`` [m]."""
+    """The axial network of ``problem`` with cells of at most ``cell`` [m].
+
+    The conduction of shaft and nut is assembled once; the ``rebind`` of the result binds
+    other heats, convection and contact coefficients, coolant and table values (those
+    :func:`~ballscrew.thermal.problem.same_mesh` ignores) to it.
+    """
+    layout = _layout(problem, cell)
+    n, ns = layout.n, layout.zc.size
+    grid, mean_s, surf_s = layout.grid, layout.mean_s, layout.surf_s
+    elongation = problem.expansion * np.concatenate([np.diff(grid.z), np.zeros(n - ns)])
+    nodes = (mean_s, surf_s, layout.bore_r, layout.od_r)
+    sensors = _sensor_rows(problem, grid, layout.zc, layout.ro, nodes, n)
+    axis = sp.csr_matrix((np.ones(ns), (np.arange(ns), mean_s)), shape=(ns, n))
+    extra = {
+        "shaft_mean": mean_s,
+        "shaft_surface": surf_s,
+        "ring_mean": layout.mean_r,
+        "ring_bore": layout.bore_r,
+        "ring_outer": layout.od_r,
+        "ring_z": 0.5 * (grid.ring_z[1:] + grid.ring_z[:-1]),
+        "ring_outer_radius": layout.ro,
+        "coolant": layout.coolant,
+        "table": layout.table_node if problem.table is not None else None,
+    }
+
+    def discretise(p: ThermalProblem) -> Discretisation:
+        capacity, assemble = _bind(layout, p)
+        return Discretisation(
+            model="network",
+            problem=p,
+            grid=grid,
+            capacity=capacity,
+            assemble=assemble,
+            elongation=elongation,
+            sensors=sensors,
+            axis_z=layout.zc,
+            axis=axis,
+            direct_limit=10**9,
+            extra=dict(extra),
+            rebind=discretise,
+        )
+
+    return discretise(problem)
+
+
+def _layout(problem: ThermalProblem, cell: float) -> _Layout:
+    """Nodes, geometry and the conduction matrix of the network of ``problem``."""
     grid = axial_grid(problem, cell)
     R, L = problem.shaft_radius, problem.shaft_length
     ks, kr = problem.shaft.conductivity, problem.ring.conductivity
-    conv = problem.convection
     z = grid.z
     dzs = np.diff(z)
     ns = dzs.size
@@ -59,45 +131,96 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     mean_r, bore_r, od_r = 2 * ns + np.arange(nr), 2 * ns + nr + np.arange(nr), 2 * ns + 2 * nr
     od_r = od_r + np.arange(nr)
     n = 2 * ns + 3 * nr
-    cool, table = problem.shaft_coolant, problem.table
-    coolant = n + np.arange(ns if cool is not None else 0)
+    coolant = n + np.arange(ns if problem.shaft_coolant is not None else 0)
     n += coolant.size
     table_node = n
-    n += table is not None
-    r_in, area_s = problem.bore_radius, problem.section_area
+    n += problem.table is not None
+    area_s = problem.section_area
     area_r = np.pi * (ro**2 - R**2)
 
+    zc = 0.5 * (z[1:] + z[:-1])
+    ii = [mean_s[:-1]]
+    jj = [mean_s[1:]]
+    gg = [ks * area_s / np.diff(zc)]
+    if problem.shaft_coolant is None:
+        gg.append(8.0 * np.pi * ks * dzs)
+    else:
+        _, to_surface = annulus_split(problem.bore_radius, R)
+        gg.append(2.0 * np.pi * ks * dzs / to_surface)
+    ii.append(mean_s)
+    jj.append(surf_s)
+    half_r = 0.5 * dz / (kr * area_r)
+    split = np.array([annulus_split(R, r) for r in ro])
+    ii += [mean_r[:-1], bore_r, mean_r]
+    jj += [mean_r[1:], mean_r, od_r]
+    gg += [
+        1.0 / (half_r[:-1] + half_r[1:]),
+        2.0 * np.pi * kr * dz / split[:, 0],
+        2.0 * np.pi * kr * dz / split[:, 1],
+    ]
+    conduction = links(np.concatenate(ii), np.concatenate(jj), np.concatenate(gg))
+    bands = []
+    for b in problem.bearings:
+        overlap = band_overlap(z, b.position, b.width, L)
+        bands.append(overlap / overlap.sum())
+    return _Layout(
+        grid,
+        n,
+        mean_s,
+        surf_s,
+        mean_r,
+        bore_r,
+        od_r,
+        coolant,
+        table_node,
+        part,
+        ro,
+        zc,
+        conduction,
+        tuple(bands),
+    )
+
+
+def _bind(
+    layout: _Layout, problem: ThermalProblem
+) -> tuple[
+    sp.csr_matrix, Callable[[NDArray[np.float64]], tuple[sp.csr_matrix, NDArray[np.float64]]]
+]:
+    """(capacity C, weights → (A, f)) of ``problem``'s coefficients and heats on ``layout``."""
+    grid, n, ro, part = layout.grid, layout.n, layout.ro, layout.part
+    mean_s, surf_s, mean_r, bore_r, od_r = (
+        layout.mean_s,
+        layout.surf_s,
+        layout.mean_r,
+        layout.bore_r,
+        layout.od_r,
+    )
+    coolant, table_node = layout.coolant, layout.table_node
+    R = problem.shaft_radius
+    ks, kr = problem.shaft.conductivity, problem.ring.conductivity
+    conv = problem.convection
+    dzs = np.diff(grid.z)
+    ns, nr, dz = dzs.size, grid.ring_cells, grid.dz
+    area_s = problem.section_area
+    area_r = np.pi * (ro**2 - R**2)
+    cool, table = problem.shaft_coolant, problem.table
+    ground = np.zeros(n)
     ii: list[NDArray[np.int64]] = []
     jj: list[NDArray[np.int64]] = []
     gg: list[NDArray[np.float64]] = []
-    ground = np.zeros(n)
-
-    def link(i: NDArray[np.int64], j: NDArray[np.int64], g: NDArray[np.float64]) -> None:
-        ii.append(np.asarray(i))
-        jj.append(np.asarray(j))
-        gg.append(np.broadcast_to(np.asarray(g, dtype=float), np.shape(i)).copy())
-
-    zc = 0.5 * (z[1:] + z[:-1])
-    link(mean_s[:-1], mean_s[1:], ks * area_s / np.diff(zc))
-    if cool is None:
-        link(mean_s, surf_s, 8.0 * np.pi * ks * dzs)
-    else:
-        to_bore, to_surface = annulus_split(r_in, R)
-        link(mean_s, surf_s, 2.0 * np.pi * ks * dzs / to_surface)
-        wall = 1.0 / (to_bore / (2.0 * np.pi * ks) + 1.0 / (cool.coefficient * 2.0 * np.pi * r_in))
-        link(mean_s, coolant, wall * dzs)
 
     def end_face(h: float, area: float, half: float, k: float) -> float:
         return 0.0 if h <= 0.0 else 1.0 / (1.0 / (h * area) + half / (k * area))
 
+    if cool is not None:
+        r_in = problem.bore_radius
+        to_bore, _ = annulus_split(r_in, R)
+        wall = 1.0 / (to_bore / (2.0 * np.pi * ks) + 1.0 / (cool.coefficient * 2.0 * np.pi * r_in))
+        ii.append(mean_s)
+        jj.append(coolant)
+        gg.append(wall * dzs)
     ground[mean_s[0]] += end_face(conv.screw_ends, area_s, 0.5 * dzs[0], ks)
     ground[mean_s[-1]] += end_face(conv.screw_ends, area_s, 0.5 * dzs[-1], ks)
-
-    half_r = 0.5 * dz / (kr * area_r)
-    link(mean_r[:-1], mean_r[1:], 1.0 / (half_r[:-1] + half_r[1:]))
-    split = np.array([annulus_split(R, r) for r in ro])
-    link(bore_r, mean_r, 2.0 * np.pi * kr * dz / split[:, 0])
-    link(mean_r, od_r, 2.0 * np.pi * kr * dz / split[:, 1])
     ground[od_r] += conv.nut * 2.0 * np.pi * ro * dz
     ground[mean_r[0]] += end_face(conv.nut_ends, area_r[0], 0.5 * dz, kr)
     ground[mean_r[-1]] += end_face(conv.nut_ends, area_r[-1], 0.5 * dz, kr)
@@ -109,19 +232,22 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     fixed_load = np.zeros(n)
     fixed_load[od_r] += problem.nut_coolant_flux * 2.0 * np.pi * ro * dz
     if table is not None:
-        link(od_r, np.full(nr, table_node), table.joint_coefficient * 2.0 * np.pi * ro * dz)
+        ii.append(od_r)
+        jj.append(np.full(nr, table_node))
+        gg.append(table.joint_coefficient * 2.0 * np.pi * ro * dz)
         ground[table_node] += table.conductance
-    static = laplacian(n, np.concatenate(ii), np.concatenate(jj), np.concatenate(gg), ground)
+    nodes = np.arange(n)
+    static = [layout.conduction, (nodes, nodes, ground)]
+    if ii:
+        static.append(links(np.concatenate(ii), np.concatenate(jj), np.concatenate(gg)))
     if cool is not None:
         w = cool.capacity_rate
-        advection = sp.coo_matrix(
-            (
-                np.r_[np.full(ns, w), np.full(ns - 1, -w)],
-                (np.r_[coolant, coolant[1:]], np.r_[coolant, coolant[:-1]]),
-            ),
-            shape=(n, n),
+        upwind = (
+            np.r_[coolant, coolant[1:]],
+            np.r_[coolant, coolant[:-1]],
+            np.r_[np.full(ns, w), np.full(ns - 1, -w)],
         )
-        static = sp.csr_matrix(static + advection)
+        static.append(upwind)
         fixed_load[coolant[0]] += w * cool.inlet_rise
 
     capacity = sp.diags(
@@ -142,59 +268,31 @@ def build_network(problem: ThermalProblem, cell: float) -> Discretisation:
     q_nut = np.array([problem.parts[p].nut_heat for p in part]) / cells_per_part
     surf_area = 2.0 * np.pi * R * dzs
     bearing_heat = np.zeros(ns)
-    for b in problem.bearings:
-        overlap = band_overlap(z, b.position, b.width, L)
-        bearing_heat += b.power * overlap / overlap.sum()
+    for b, band in zip(problem.bearings, layout.bearing_bands, strict=True):
+        bearing_heat += b.power * band
     has_contact = g_contact > 0.0
 
     def assemble(weights: NDArray[np.float64]) -> tuple[sp.csr_matrix, NDArray[np.float64]]:
-        cover = grid.coverage(zc, weights)
-        a = static + sp.diags(
-            np.concatenate(
-                [np.zeros(ns), conv.screw * surf_area * (1.0 - cover), np.zeros(n - 2 * ns)]
-            )
-        )
+        film = conv.screw * surf_area * (1.0 - grid.coverage(layout.zc, weights))
+        entries = [*static, (surf_s, surf_s, film)]
         f = fixed_load.copy()
         f[bore_r] += q_nut
         f[surf_s] += bearing_heat
-        active = np.nonzero(weights)[0]
-        rows, cols, vals = [], [], []
-        for k in active:
+        for k in np.nonzero(weights)[0]:
             facing = surf_s[grid.first + grid.shifts[k] + np.arange(nr)]
-            rows.append(bore_r[has_contact])
-            cols.append(facing[has_contact])
-            vals.append(weights[k] * g_contact[has_contact])
+            entries.append(
+                links(bore_r[has_contact], facing[has_contact], weights[k] * g_contact[has_contact])
+            )
             np.add.at(f, facing, weights[k] * q_screw)
-        if rows:
-            a = a + laplacian(n, np.concatenate(rows), np.concatenate(cols), np.concatenate(vals))
-        return sp.csr_matrix(a), f
+        return _matrix(n, entries), f
 
-    elongation = problem.expansion * np.concatenate([dzs, np.zeros(n - ns)])
-    sensors = _sensor_rows(problem, grid, zc, ro, (mean_s, surf_s, bore_r, od_r), n)
-    axis = sp.csr_matrix((np.ones(ns), (np.arange(ns), mean_s)), shape=(ns, n))
-    return Discretisation(
-        model="network",
-        problem=problem,
-        grid=grid,
-        capacity=capacity,
-        assemble=assemble,
-        elongation=elongation,
-        sensors=sensors,
-        axis_z=zc,
-        axis=axis,
-        direct_limit=10**9,
-        extra={
-            "shaft_mean": mean_s,
-            "shaft_surface": surf_s,
-            "ring_mean": mean_r,
-            "ring_bore": bore_r,
-            "ring_outer": od_r,
-            "ring_z": 0.5 * (grid.ring_z[1:] + grid.ring_z[:-1]),
-            "ring_outer_radius": ro,
-            "coolant": coolant,
-            "table": table_node if table is not None else None,
-        },
-    )
+    return capacity, assemble
+
+
+def _matrix(n: int, entries: list[Entries]) -> sp.csr_matrix:
+    """The n × n matrix of all ``entries`` (repeated positions add up), built at once."""
+    rows, cols, vals = (np.concatenate(part) for part in zip(*entries, strict=True))
+    return sp.csr_matrix((vals, (rows, cols)), shape=(n, n))
 
 
 def _interpolation(centres: NDArray[np.float64], zq: float) -> tuple[list[int], list[float]]:

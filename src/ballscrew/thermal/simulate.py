@@ -127,8 +127,13 @@ def simulate(
     snapshots: int = 10,
     stroke_mode: str = "averaged",
     feed_speed: float = 0.0,
+    steady: NDArray[np.float64] | None = None,
 ) -> Solution:
-    """Steady state and, unless ``duration`` is None, the transient of ``disc``."""
+    """Steady state and, unless ``duration`` is None, the transient of ``disc``.
+
+    ``steady``: the steady rise of ``disc`` already solved (a coupled operating point's last
+    field): taken as it is instead of solving A θ = f again (a full AMG solve on the 3-D model).
+    """
     if stroke_mode not in ("averaged", "resolved"):
         raise InputError("stroke.mode", stroke_mode, "'averaged' or 'resolved'")
     seconds: dict[str, float] = {}
@@ -139,7 +144,8 @@ def simulate(
     seconds["assembly"] = _time.perf_counter() - t0
     t0 = _time.perf_counter()
     a, f = averaged
-    steady = solve_steady(a, f, disc.direct_limit)
+    if steady is None:
+        steady = solve_steady(a, f, disc.direct_limit)
     loss = float(np.asarray(a.sum(axis=0)).ravel() @ steady)
     seconds["steady"] = _time.perf_counter() - t0
     advance("thermal steady state", 1, 1)
