@@ -61,6 +61,8 @@ class BatchIterate:
     """(B,) final Σ|p − p_old| / Σp."""
     converged: Any
     """(B,) whether the residual reached the tolerance."""
+    displacement: Any = None
+    """(B, nx, ny) u = K ∗ p of the final pressures [m], when the solve computed it exactly."""
 
 
 class SpectralPreconditioner:
@@ -101,6 +103,24 @@ class SpectralPreconditioner:
         """The preconditioner of the grids ``rows`` of a stack: this one (shared by all)."""
         return self
 
+    def window(self, shape: tuple[int, int], dtype: type[np.floating]) -> DCFFTOperator:
+        """z = M ∗ g on a window of ``shape`` cells of the grid, for g that vanishes outside it.
+
+        The periodic kernel m = F⁻¹[M̂] is even, so on the window z is the linear convolution of
+        g with the table m[|i|, |j|], i < ``shape[0]``, j < ``shape[1]``: a DC-FFT operator
+        with that table, exactly the periodic M ∗ g of the whole grid restricted to the window.
+        """
+        key = (tuple(shape), np.dtype(dtype).type)
+        windows = self.__dict__.setdefault("_windows", {})
+        if key not in windows:
+            if "_kernel" not in self.__dict__:
+                symbol = self._symbol[np.float64]
+                symbol = symbol.get() if hasattr(symbol, "get") else symbol
+                self._kernel = scipy.fft.irfft2(symbol, s=self.shape, norm="forward")
+            kernel = self._kernel[: shape[0], : shape[1]]
+            windows[key] = DCFFTOperator(shape, 1.0, 1.0, 1.0, self.xp, dtype, kernel=kernel)
+        return windows[key]
+
 
 class PreconditionerStack(SpectralPreconditioner):
     """One :class:`SpectralPreconditioner` symbol per contact of the stack (own dx, dy, E*)."""
@@ -121,6 +141,25 @@ class PreconditionerStack(SpectralPreconditioner):
         taken.shape, taken.xp = self.shape, self.xp
         taken._symbol = {dtype: symbol[rows] for dtype, symbol in self._symbol.items()}
         return taken
+
+    def window(self, shape: tuple[int, int], dtype: type[np.floating]) -> DCFFTStack:  # type: ignore[override]
+        """The window operator of each contact (:meth:`SpectralPreconditioner.window`)."""
+        return DCFFTStack([part.window(shape, dtype) for part in self.parts])
+
+
+class _OnWindow:
+    """The spectral preconditioner restricted to a window: z = M ∗ g by DC-FFT there."""
+
+    def __init__(self, operators: dict[type, DCFFTOperator | DCFFTStack]) -> None:
+        self.operators = operators
+
+    def apply(self, g: Any, dtype: type[np.floating] = np.float64) -> Any:
+        """M ∗ g of each window of the stack ``g`` (float64 result)."""
+        return self.operators[dtype].apply_batch(g, array_module(g).empty_like(g))
+
+    def take(self, rows: Any) -> _OnWindow:
+        """The preconditioner of the windows ``rows`` of the stack."""
+        return _OnWindow({dtype: op.take(rows) for dtype, op in self.operators.items()})
 
 
 def _sums(a: Any) -> Any:
@@ -289,9 +328,9 @@ def _nested_start(
     zero = np.zeros(h.shape[0])
     if nx % 2 or ny % 2 or min(nx, ny) // 2 < COARSEST:
         return xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy(), zero
-    coarse = solve_batch(
+    coarse = _solve(
         _coarsen(h), 2 * dx, 2 * dy, e_star, total / 4.0, COARSE_TOLERANCE, max_iterations,
-        nested=True, dtype=dtype,
+        None, True, dtype, None, check=False,
     )  # fmt: skip
     p = _refine_axis(_refine_axis(coarse.pressure, 1), 2)
     p *= _col(xp.asarray(total) / _sums(p))
@@ -322,7 +361,30 @@ def solve_batch(
     ``operator``: the float64 DC-FFT operator of the grid (default: the cached one).
     ``dx``, ``dy`` [m] and ``e_star`` [Pa] are scalars shared by all contacts or (B,) arrays, one
     per contact (then each contact has its own operator and preconditioner symbol).
+
+    When the start's pressure covers a small part of the grid, the CG runs on a window around it
+    (:func:`_window`) and the result is checked on the whole grid (:func:`_outside_clear`).
     """
+    return _solve(h, dx, dy, e_star, total, tol, max_iterations, initial, nested, dtype, operator,
+                  check=True)  # fmt: skip
+
+
+def _solve(
+    h: Any,
+    dx: Any,
+    dy: Any,
+    e_star: Any,
+    total: Any | None,
+    tol: float,
+    max_iterations: int,
+    initial: Any,
+    nested: bool,
+    dtype: type[np.floating],
+    operator: DCFFTOperator | DCFFTStack | None,
+    check: bool,
+) -> BatchIterate:
+    """:func:`solve_batch`; ``check`` False skips the whole-grid check of a window's result (the
+    coarse grids of a nested start, whose pressure is only the next grid's start)."""
     xp = array_module(h)
     nx, ny = h.shape[1:]
     coarse_work = np.zeros(h.shape[0])
@@ -334,21 +396,170 @@ def solve_batch(
         p, coarse_work = _nested_start(h, dx, dy, e_star, total, max_iterations, dtype)
     else:
         p = xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy()
-    preconditioner = _preconditioner((nx, ny), dx, dy, e_star, xp)
+    windows = [_window(p[b]) for b in range(len(p))]
+    groups: dict[Any, list[int]] = {}
+    for b, window in enumerate(windows):
+        groups.setdefault(None if window is None else _extent(window), []).append(b)
+    if len(groups) == 1:
+        p, iterations, residual, converged, u = _solve_on(
+            h, p, dx, dy, e_star, total, tol, max_iterations, dtype, operator, check, windows
+        )
+        return BatchIterate(p, iterations, coarse_work, residual, converged, u)
+    # Contacts whose windows differ in size are solved apart: each as it would be alone.
+    iterations, residual = np.zeros(len(p), dtype=int), np.zeros(len(p))
+    converged, exact = np.zeros(len(p), dtype=bool), True
+    u = xp.empty_like(p)
+    for rows in groups.values():
+        part = _solve_on(
+            h[rows], p[rows], *(_take(v, rows) for v in (dx, dy, e_star, total)), tol,
+            max_iterations, dtype, None if operator is None else operator.take(rows), check,
+            [windows[b] for b in rows],
+        )  # fmt: skip
+        p[rows], iterations[rows], residual[rows], converged[rows] = part[:4]
+        if part[4] is None:
+            exact = False
+        else:
+            u[rows] = part[4]
+    return BatchIterate(p, iterations, coarse_work, residual, converged, u if exact else None)
+
+
+def _take(value: Any, rows: list[int]) -> Any:
+    """The entries ``rows`` of a per-contact (B,) array; a shared scalar or None as it is."""
+    return value if value is None or np.ndim(value) == 0 else value[rows]
+
+
+def _extent(window: tuple[slice, slice]) -> tuple[int, int]:
+    """Cells of a window along each axis."""
+    return tuple(part.stop - part.start for part in window)  # type: ignore[return-value]
+
+
+def _solve_on(
+    h: Any,
+    p: Any,
+    dx: Any,
+    dy: Any,
+    e_star: Any,
+    total: Any | None,
+    tol: float,
+    max_iterations: int,
+    dtype: type[np.floating],
+    operator: DCFFTOperator | DCFFTStack | None,
+    check: bool,
+    windows: list[tuple[slice, slice] | None],
+) -> tuple[Any, Any, Any, Any, Any]:
+    """:func:`_iterate` on the whole grids, or on the ``windows`` (one per contact, all of one
+    size) with the whole-grid check; returns p, iterations, residual, converged, u = K ∗ p (None
+    if not computed)."""
+    xp = array_module(h)
+    shape = h.shape[1:]
+    if windows[0] is None:
+        return (*_iterate(h, p, dx, dy, e_star, total, tol, max_iterations, dtype, operator), None)
+    inner, iterations, residual, converged = _iterate(
+        xp.stack([h[b][w] for b, w in enumerate(windows)]),
+        xp.stack([p[b][w] for b, w in enumerate(windows)]), dx, dy, e_star, total, tol,
+        max_iterations, dtype, None, preconditioner=_preconditioner(shape, dx, dy, e_star, xp),
+    )  # fmt: skip
+    p = xp.zeros_like(h)
+    for b, w in enumerate(windows):
+        p[b][w] = inner[b]
+    if not check:
+        return p, iterations, residual, converged, None
+    if operator is None:
+        operator = _operator(shape, dx, dy, e_star, xp, np.float64)
+    u = operator.apply_batch(p, xp.empty_like(p))
+    if _outside_clear(h, u, p, windows, total is not None):
+        return p, iterations, residual, converged, u
+    # A cell outside its window penetrates: go on from here on the whole grids.
+    p, more, residual, converged = _iterate(
+        h, p, dx, dy, e_star, total, tol, max(max_iterations - int(iterations.max()), 1), dtype,
+        operator,
+    )  # fmt: skip
+    return p, iterations + more, residual, converged, None
+
+
+def _iterate(
+    h: Any,
+    p: Any,
+    dx: Any,
+    dy: Any,
+    e_star: Any,
+    total: Any | None,
+    tol: float,
+    max_iterations: int,
+    dtype: type[np.floating],
+    operator: DCFFTOperator | DCFFTStack | None,
+    preconditioner: SpectralPreconditioner | None = None,
+) -> tuple[Any, Any, Any, Any]:
+    """:func:`_pcg` on the (B, nx, ny) stack ``h`` from ``p``, in float32 first if ``dtype`` says
+    so. ``preconditioner``: that of the whole grid when ``h`` is a window of it (then applied on
+    the window, :meth:`SpectralPreconditioner.window`); default: the one of ``h``'s grid."""
+    xp = array_module(h)
+    shape = h.shape[1:]
+    if preconditioner is None:
+        apply: Any = _preconditioner(shape, dx, dy, e_star, xp)
+    else:
+        precisions = {np.float64, dtype}
+        apply = _OnWindow({d: preconditioner.window(shape, d) for d in precisions})
     iterations = np.zeros(h.shape[0], dtype=int)
     if dtype is np.float32:
-        single = _operator((nx, ny), dx, dy, e_star, xp, np.float32)
+        single = _operator(shape, dx, dy, e_star, xp, np.float32)
         p, iterations, residual, converged = _pcg(
-            h, p, single, preconditioner, max(tol, MIXED_SWITCH), max_iterations, total
+            h, p, single, apply, max(tol, MIXED_SWITCH), max_iterations, total
         )
         if tol >= MIXED_SWITCH:  # the float32 iterations met the stop (Σ|Δp| taken in float64)
-            return BatchIterate(p, iterations, coarse_work, residual, converged)
+            return p, iterations, residual, converged
     if operator is None:
-        operator = _operator((nx, ny), dx, dy, e_star, xp, np.float64)
+        operator = _operator(shape, dx, dy, e_star, xp, np.float64)
     p, more, residual, converged = _pcg(
-        h, p, operator, preconditioner, tol, max(max_iterations - int(iterations.max()), 1), total
+        h, p, operator, apply, tol, max(max_iterations - int(iterations.max()), 1), total
     )
-    return BatchIterate(p, iterations + more, coarse_work, residual, converged)
+    return p, iterations + more, residual, converged
+
+
+WINDOW_MARGIN = 0.125
+"""Cells added on each side of the start's pressure to make the window, as a fraction of the
+pressure's extent (plus :data:`WINDOW_MIN_MARGIN` cells): room for the contact to grow (GUESS;
+the nested start's contact edge is within a few cells of the converged one)."""
+WINDOW_MIN_MARGIN = 4
+"""Cells added on each side of the window at least."""
+WINDOW_MAX_FRACTION = 0.5
+"""Largest window, as a fraction of the grid's cells, worth solving on: a window iteration costs
+two padded FFT pairs of the window, a whole-grid one a padded pair and an unpadded pair of the
+grid."""
+
+
+def _window(p: Any) -> tuple[slice, slice] | None:
+    """Rows and columns around the pressure ``p`` (nx, ny), with a margin, sized to fast FFT
+    lengths; None if that is more than :data:`WINDOW_MAX_FRACTION` of the grid."""
+    xp = array_module(p)
+    support = p > 0.0
+    spans = []
+    for axis, n in ((1, p.shape[0]), (0, p.shape[1])):
+        hit = xp.flatnonzero(support.any(axis=axis))
+        if not hit.size:
+            return None
+        lo, hi = int(hit[0]), int(hit[-1]) + 1
+        margin = max(WINDOW_MIN_MARGIN, int(np.ceil(WINDOW_MARGIN * (hi - lo))))
+        size = min(scipy.fft.next_fast_len(hi - lo + 2 * margin, real=True), n)
+        first = min(max((lo + hi - size) // 2, 0), n - size)
+        spans.append(slice(first, first + size))
+    rows, cols = spans
+    if (rows.stop - rows.start) * (cols.stop - cols.start) > WINDOW_MAX_FRACTION * p.size:
+        return None
+    return rows, cols
+
+
+def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> bool:
+    """Whether no cell outside its contact's window penetrates: u + h ≥ ḡ there (ḡ = mean of
+    u + h over the contact set under load control, 0 under displacement control), so each
+    window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits no cell)."""
+    xp = array_module(h)
+    q = u + h
+    c = (p > 0.0).astype(q.dtype)
+    g_bar = _host(_dot(q, c)) / np.maximum(_host(_sums(c)), 1.0) if load else np.zeros(len(h))
+    for b, window in enumerate(windows):
+        q[b][window] = xp.inf
+    return bool((_host(q.min(axis=(1, 2))) >= g_bar).all())
 
 
 _PRECONDITIONERS: dict[tuple[Any, ...], SpectralPreconditioner] = {}
