@@ -1,11 +1,10 @@
-"""The preconditioned CG on a window around the contact: the same iterates as on the whole grid
-(exact convolution and preconditioner there), and a return to the whole grid when a cell outside
-the window penetrates."""
+"""The preconditioned CG on a window around the contact: the whole grid's solution (exact
+convolution there, the preconditioner periodic on the window), and a return to the whole grid when
+a cell outside the window penetrates."""
 
 import numpy as np
 
-from ballscrew.contact import hertz, preconditioned, solve_normal, solve_normal_batch
-from ballscrew.contact.preconditioned import SpectralPreconditioner
+from ballscrew.contact import DCFFTOperator, hertz, preconditioned, solve_normal, solve_normal_batch
 
 E_STAR = 113.19e9
 
@@ -18,29 +17,17 @@ def sphere(n=128, side=6.0):
     return (x[:, None] ** 2 + x[None, :] ** 2) / 20e-3, dx, reference
 
 
-def test_window_preconditioner_is_the_periodic_one_restricted():
-    """M ∗ g of g that vanishes outside a window: the DC-FFT on the window gives the whole grid's
-    periodic result there, to rounding."""
-    rng = np.random.default_rng(0)
-    whole = SpectralPreconditioner((48, 40), 1e-6, 2e-6, 1e11, np)
-    g = np.zeros((1, 48, 40))
-    g[0, 10:30, 5:22] = rng.standard_normal((20, 17))
-    periodic = whole.apply(g)[:, 10:30, 5:22]
-    windowed = whole.window((20, 17), np.float64).apply_batch(
-        g[:, 10:30, 5:22], np.empty((1, 20, 17))
-    )
-    np.testing.assert_allclose(windowed, periodic, rtol=0, atol=1e-12 * np.abs(periodic).max())
-
-
 def test_window_gives_the_whole_grid_solution(monkeypatch):
-    """Same iterations, pressures to 1e-10 of p0, and the displacement of the check is K ∗ p."""
+    """Same iterations, pressures within the stop's error (1e-7 of p0, as pcg against pk), and the
+    displacement handed back by the check is K ∗ p of the pressure."""
     gap, dx, reference = sphere()
     windowed = solve_normal(gap, dx, dx, E_STAR, 100.0)
     monkeypatch.setattr(preconditioned, "WINDOW_MAX_FRACTION", 0.0)  # no window
     whole = solve_normal(gap, dx, dx, E_STAR, 100.0)
     assert windowed.iterations == whole.iterations and windowed.coarse_work == whole.coarse_work
-    np.testing.assert_allclose(windowed.pressure, whole.pressure, atol=1e-10 * reference.p0)
-    np.testing.assert_allclose(windowed.displacement, whole.displacement, rtol=1e-12)
+    np.testing.assert_allclose(windowed.pressure, whole.pressure, atol=1e-7 * reference.p0)
+    exact = DCFFTOperator(gap.shape, dx, dx, E_STAR).apply(windowed.pressure)
+    np.testing.assert_array_equal(windowed.displacement, exact)
 
 
 def test_window_is_used_on_a_large_box_only():

@@ -46,8 +46,6 @@ class DCFFTOperator:
     Parameters: ``shape`` = (nx, ny) cells, ``dx``, ``dy`` cell sizes [m], ``e_star`` composite
     modulus [Pa], ``xp`` the array module of the pressures (numpy or cupy), ``dtype`` the precision
     of the FFTs (``numpy.float32`` for the mixed-precision iterations; u is returned in float64).
-    ``kernel``: another even kernel's table K[|i|, |j|] (nx, ny) in place of Love's coefficients
-    (the spectral preconditioner on a window of a grid, :mod:`ballscrew.contact.preconditioned`).
     """
 
     def __init__(
@@ -58,8 +56,6 @@ class DCFFTOperator:
         e_star: float,
         xp: ModuleType = np,
         dtype: type[np.floating] = np.float64,
-        *,
-        kernel: NDArray[np.float64] | None = None,
     ) -> None:
         nx, ny = int(shape[0]), int(shape[1])
         self.shape = (nx, ny)
@@ -74,7 +70,7 @@ class DCFFTOperator:
         # float pairs (2x faster than complex-by-real), with the 1/(4 nx ny) of the unnormalised
         # inverse folded in.
         quadrant = np.zeros((nx + 1, ny + 1))
-        quadrant[:nx, :ny] = love_coefficients(nx, ny, dx, dy, e_star) if kernel is None else kernel
+        quadrant[:nx, :ny] = love_coefficients(nx, ny, dx, dy, e_star)
         self.self_coefficient = float(quadrant[0, 0])
         """K(0, 0): displacement of a cell per unit pressure on itself [m/Pa]."""
         spectrum = scipy.fft.dctn(quadrant, type=1, workers=fft_threads(quadrant.size))

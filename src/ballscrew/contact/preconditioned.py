@@ -103,24 +103,6 @@ class SpectralPreconditioner:
         """The preconditioner of the grids ``rows`` of a stack: this one (shared by all)."""
         return self
 
-    def window(self, shape: tuple[int, int], dtype: type[np.floating]) -> DCFFTOperator:
-        """z = M ∗ g on a window of ``shape`` cells of the grid, for g that vanishes outside it.
-
-        The periodic kernel m = F⁻¹[M̂] is even, so on the window z is the linear convolution of
-        g with the table m[|i|, |j|], i < ``shape[0]``, j < ``shape[1]``: a DC-FFT operator
-        with that table, exactly the periodic M ∗ g of the whole grid restricted to the window.
-        """
-        key = (tuple(shape), np.dtype(dtype).type)
-        windows = self.__dict__.setdefault("_windows", {})
-        if key not in windows:
-            if "_kernel" not in self.__dict__:
-                symbol = self._symbol[np.float64]
-                symbol = symbol.get() if hasattr(symbol, "get") else symbol
-                self._kernel = scipy.fft.irfft2(symbol, s=self.shape, norm="forward")
-            kernel = self._kernel[: shape[0], : shape[1]]
-            windows[key] = DCFFTOperator(shape, 1.0, 1.0, 1.0, self.xp, dtype, kernel=kernel)
-        return windows[key]
-
 
 class PreconditionerStack(SpectralPreconditioner):
     """One :class:`SpectralPreconditioner` symbol per contact of the stack (own dx, dy, E*)."""
@@ -141,25 +123,6 @@ class PreconditionerStack(SpectralPreconditioner):
         taken.shape, taken.xp = self.shape, self.xp
         taken._symbol = {dtype: symbol[rows] for dtype, symbol in self._symbol.items()}
         return taken
-
-    def window(self, shape: tuple[int, int], dtype: type[np.floating]) -> DCFFTStack:  # type: ignore[override]
-        """The window operator of each contact (:meth:`SpectralPreconditioner.window`)."""
-        return DCFFTStack([part.window(shape, dtype) for part in self.parts])
-
-
-class _OnWindow:
-    """The spectral preconditioner restricted to a window: z = M ∗ g by DC-FFT there."""
-
-    def __init__(self, operators: dict[type, DCFFTOperator | DCFFTStack]) -> None:
-        self.operators = operators
-
-    def apply(self, g: Any, dtype: type[np.floating] = np.float64) -> Any:
-        """M ∗ g of each window of the stack ``g`` (float64 result)."""
-        return self.operators[dtype].apply_batch(g, array_module(g).empty_like(g))
-
-    def take(self, rows: Any) -> _OnWindow:
-        """The preconditioner of the windows ``rows`` of the stack."""
-        return _OnWindow({dtype: op.take(rows) for dtype, op in self.operators.items()})
 
 
 def _sums(a: Any) -> Any:
@@ -457,7 +420,7 @@ def _solve_on(
     inner, iterations, residual, converged = _iterate(
         xp.stack([h[b][w] for b, w in enumerate(windows)]),
         xp.stack([p[b][w] for b, w in enumerate(windows)]), dx, dy, e_star, total, tol,
-        max_iterations, dtype, None, preconditioner=_preconditioner(shape, dx, dy, e_star, xp),
+        max_iterations, dtype, None,
     )  # fmt: skip
     p = xp.zeros_like(h)
     for b, w in enumerate(windows):
@@ -488,18 +451,12 @@ def _iterate(
     max_iterations: int,
     dtype: type[np.floating],
     operator: DCFFTOperator | DCFFTStack | None,
-    preconditioner: SpectralPreconditioner | None = None,
 ) -> tuple[Any, Any, Any, Any]:
     """:func:`_pcg` on the (B, nx, ny) stack ``h`` from ``p``, in float32 first if ``dtype`` says
-    so. ``preconditioner``: that of the whole grid when ``h`` is a window of it (then applied on
-    the window, :meth:`SpectralPreconditioner.window`); default: the one of ``h``'s grid."""
+    so, with the preconditioner of ``h``'s grid (periodic on a window when ``h`` is one)."""
     xp = array_module(h)
     shape = h.shape[1:]
-    if preconditioner is None:
-        apply: Any = _preconditioner(shape, dx, dy, e_star, xp)
-    else:
-        precisions = {np.float64, dtype}
-        apply = _OnWindow({d: preconditioner.window(shape, d) for d in precisions})
+    apply = _preconditioner(shape, dx, dy, e_star, xp)
     iterations = np.zeros(h.shape[0], dtype=int)
     if dtype is np.float32:
         single = _operator(shape, dx, dy, e_star, xp, np.float32)
