@@ -21,7 +21,7 @@ preconditioner symbols). A contact that has converged leaves the batch.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 from typing import Any
 
@@ -282,22 +282,40 @@ def _refine_axis(p: Any, axis: int) -> Any:
     return fine.reshape(shape)
 
 
-def _nested_start(
-    h: Any, dx: Any, dy: Any, e_star: Any, total: Any, max_iterations: int, dtype: type
-) -> tuple[Any, Any]:
+def _nested_start(h: Any, setting: _Setting) -> tuple[Any, Any]:
     """Initial pressures for the (B, nx, ny) stack from the coarser grids, and their work."""
     xp = array_module(h)
     nx, ny = h.shape[1:]
     zero = np.zeros(h.shape[0])
+    total = setting.total
     if nx % 2 or ny % 2 or min(nx, ny) // 2 < COARSEST:
         return xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy(), zero
-    coarse = _solve(
-        _coarsen(h), 2 * dx, 2 * dy, e_star, total / 4.0, COARSE_TOLERANCE, max_iterations,
-        None, True, dtype, None, check=False,
-    )  # fmt: skip
-    p = _refine_axis(_refine_axis(coarse.pressure, 1), 2)
+    coarse = replace(
+        setting, dx=2 * setting.dx, dy=2 * setting.dy, total=total / 4.0, tol=COARSE_TOLERANCE
+    )
+    state = _solve(_coarsen(h), coarse, None, True, None, check=False)
+    p = _refine_axis(_refine_axis(state.pressure, 1), 2)
     p *= _col(xp.asarray(total) / _sums(p))
-    return p, (coarse.iterations + coarse.coarse_work) / 4.0
+    return p, (state.iterations + state.coarse_work) / 4.0
+
+
+@dataclass(frozen=True)
+class _Setting:
+    """What the iterations of a stack of contacts need besides the gaps and pressures."""
+
+    dx: Any
+    dy: Any
+    e_star: Any
+    total: Any | None
+    tol: float
+    max_iterations: int
+    dtype: type[np.floating]
+
+    def take(self, rows: list[int]) -> _Setting:
+        """The setting of the contacts ``rows``: their entries of the per-contact arrays."""
+        return replace(
+            self, **{k: _take(getattr(self, k), rows) for k in ("dx", "dy", "e_star", "total")}
+        )
 
 
 def solve_batch(
@@ -328,21 +346,15 @@ def solve_batch(
     When the start's pressure covers a small part of the grid, the CG runs on a window around it
     (:func:`_window`) and the result is checked on the whole grid (:func:`_outside_clear`).
     """
-    return _solve(h, dx, dy, e_star, total, tol, max_iterations, initial, nested, dtype, operator,
-                  check=True)  # fmt: skip
+    setting = _Setting(dx, dy, e_star, total, tol, max_iterations, dtype)
+    return _solve(h, setting, initial, nested, operator, check=True)
 
 
 def _solve(
     h: Any,
-    dx: Any,
-    dy: Any,
-    e_star: Any,
-    total: Any | None,
-    tol: float,
-    max_iterations: int,
+    setting: _Setting,
     initial: Any,
     nested: bool,
-    dtype: type[np.floating],
     operator: DCFFTOperator | DCFFTStack | None,
     check: bool,
 ) -> BatchIterate:
@@ -351,12 +363,13 @@ def _solve(
     xp = array_module(h)
     nx, ny = h.shape[1:]
     coarse_work = np.zeros(h.shape[0])
+    total = setting.total
     if initial is not None:
         p = xp.array(initial, dtype=np.float64, copy=True)
         if total is not None:
             p *= _col(xp.asarray(total) / _sums(p))
     elif nested:
-        p, coarse_work = _nested_start(h, dx, dy, e_star, total, max_iterations, dtype)
+        p, coarse_work = _nested_start(h, setting)
     else:
         p = xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy()
     windows = [_window(p[b]) for b in range(len(p))]
@@ -364,9 +377,7 @@ def _solve(
     for b, window in enumerate(windows):
         groups.setdefault(None if window is None else _extent(window), []).append(b)
     if len(groups) == 1:
-        p, iterations, residual, converged, u = _solve_on(
-            h, p, dx, dy, e_star, total, tol, max_iterations, dtype, operator, check, windows
-        )
+        p, iterations, residual, converged, u = _solve_on(h, p, setting, operator, check, windows)
         return BatchIterate(p, iterations, coarse_work, residual, converged, u)
     # Contacts whose windows differ in size are solved apart: each as it would be alone.
     iterations, residual = np.zeros(len(p), dtype=int), np.zeros(len(p))
@@ -374,9 +385,8 @@ def _solve(
     u = xp.empty_like(p)
     for rows in groups.values():
         part = _solve_on(
-            h[rows], p[rows], *(_take(v, rows) for v in (dx, dy, e_star, total)), tol,
-            max_iterations, dtype, None if operator is None else operator.take(rows), check,
-            [windows[b] for b in rows],
+            h[rows], p[rows], setting.take(rows), None if operator is None else operator.take(rows),
+            check, [windows[b] for b in rows],
         )  # fmt: skip
         p[rows], iterations[rows], residual[rows], converged[rows] = part[:4]
         if part[4] is None:
@@ -399,13 +409,7 @@ def _extent(window: tuple[slice, slice]) -> tuple[int, int]:
 def _solve_on(
     h: Any,
     p: Any,
-    dx: Any,
-    dy: Any,
-    e_star: Any,
-    total: Any | None,
-    tol: float,
-    max_iterations: int,
-    dtype: type[np.floating],
+    setting: _Setting,
     operator: DCFFTOperator | DCFFTStack | None,
     check: bool,
     windows: list[tuple[slice, slice] | None],
@@ -416,57 +420,49 @@ def _solve_on(
     xp = array_module(h)
     shape = h.shape[1:]
     if windows[0] is None:
-        return (*_iterate(h, p, dx, dy, e_star, total, tol, max_iterations, dtype, operator), None)
+        return (*_iterate(h, p, setting, operator), None)
     inner, iterations, residual, converged = _iterate(
         xp.stack([h[b][w] for b, w in enumerate(windows)]),
-        xp.stack([p[b][w] for b, w in enumerate(windows)]), dx, dy, e_star, total, tol,
-        max_iterations, dtype, None,
-    )  # fmt: skip
+        xp.stack([p[b][w] for b, w in enumerate(windows)]),
+        setting,
+        None,
+    )
     p = xp.zeros_like(h)
     for b, w in enumerate(windows):
         p[b][w] = inner[b]
     if not check:
         return p, iterations, residual, converged, None
     if operator is None:
-        operator = _operator(shape, dx, dy, e_star, xp, np.float64)
+        operator = _operator(shape, setting.dx, setting.dy, setting.e_star, xp, np.float64)
     u = operator.apply_batch(p, xp.empty_like(p))
-    if _outside_clear(h, u, p, windows, total is not None):
+    if _outside_clear(h, u, p, windows, setting.total is not None):
         return p, iterations, residual, converged, u
     # A cell outside its window penetrates: go on from here on the whole grids.
-    p, more, residual, converged = _iterate(
-        h, p, dx, dy, e_star, total, tol, max(max_iterations - int(iterations.max()), 1), dtype,
-        operator,
-    )  # fmt: skip
+    left = max(setting.max_iterations - int(iterations.max()), 1)
+    p, more, residual, converged = _iterate(h, p, replace(setting, max_iterations=left), operator)
     return p, iterations + more, residual, converged, None
 
 
 def _iterate(
-    h: Any,
-    p: Any,
-    dx: Any,
-    dy: Any,
-    e_star: Any,
-    total: Any | None,
-    tol: float,
-    max_iterations: int,
-    dtype: type[np.floating],
-    operator: DCFFTOperator | DCFFTStack | None,
+    h: Any, p: Any, setting: _Setting, operator: DCFFTOperator | DCFFTStack | None
 ) -> tuple[Any, Any, Any, Any]:
     """:func:`_pcg` on the (B, nx, ny) stack ``h`` from ``p``, in float32 first if ``dtype`` says
     so, with the preconditioner of ``h``'s grid (periodic on a window when ``h`` is one)."""
     xp = array_module(h)
     shape = h.shape[1:]
-    apply = _preconditioner(shape, dx, dy, e_star, xp)
+    cells = (setting.dx, setting.dy, setting.e_star)
+    total, tol, max_iterations = setting.total, setting.tol, setting.max_iterations
+    apply = _preconditioner(shape, *cells, xp)
     iterations = np.zeros(h.shape[0], dtype=int)
-    if dtype is np.float32:
-        single = _operator(shape, dx, dy, e_star, xp, np.float32)
+    if setting.dtype is np.float32:
+        single = _operator(shape, *cells, xp, np.float32)
         p, iterations, residual, converged = _pcg(
             h, p, single, apply, max(tol, MIXED_SWITCH), max_iterations, total
         )
         if tol >= MIXED_SWITCH:  # the float32 iterations met the stop (Σ|Δp| taken in float64)
             return p, iterations, residual, converged
     if operator is None:
-        operator = _operator(shape, dx, dy, e_star, xp, np.float64)
+        operator = _operator(shape, *cells, xp, np.float64)
     p, more, residual, converged = _pcg(
         h, p, operator, apply, tol, max(max_iterations - int(iterations.max()), 1), total
     )
