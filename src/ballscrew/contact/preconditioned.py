@@ -1,6 +1,6 @@
 """Preconditioned, nested-grid and batched conjugate gradients for the normal contact problem.
 
-The constrained CG of Polonsky & Keer (1999) with two additions (``docs/theory/contact.md``):
+The constrained CG of Polonsky & Keer (1999) with three additions (``docs/theory/contact.md``):
 
 1. A spectral preconditioner (after Vollebregt 2014, J. Comput. Phys. 257:333, "A new solver for
    the elastic normal contact problem using conjugate gradients, deflation, and an FFT-based
@@ -12,6 +12,11 @@ The constrained CG of Polonsky & Keer (1999) with two additions (``docs/theory/c
    grids coarsened by 2 × 2 (gap averaged over the four cells), down to :data:`COARSEST` cells,
    each to :data:`COARSE_TOLERANCE`, and the pressure is interpolated bilinearly to the next grid
    as its initial guess.
+3. A window: each contact iterates on the rows and columns around its start's pressure, with a
+   margin (:data:`WINDOW_MARGIN`), when they hold at most :data:`WINDOW_MAX_FRACTION` of the grid.
+   DC-FFT on the window is the exact displacement there of a pressure that vanishes outside it;
+   the preconditioner is periodic on the window. A whole-grid u = K ∗ p at the end checks that
+   no cell outside penetrates (else the CG goes on on the whole grid).
 
 Every array carries a leading batch axis: B contacts on grids of the same cell counts, each with its
 own gap and load, step length, conjugacy and stop, and either one operator for all (shared dx, dy,
@@ -31,7 +36,16 @@ import scipy.fft
 from ballscrew.backend import array_module, fft_threads
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 
-__all__ = ["COARSEST", "COARSE_TOLERANCE", "MIXED_SWITCH", "BatchIterate", "solve_batch"]
+__all__ = [
+    "COARSEST",
+    "COARSE_TOLERANCE",
+    "MIXED_SWITCH",
+    "WINDOW_MARGIN",
+    "WINDOW_MAX_FRACTION",
+    "WINDOW_MIN_MARGIN",
+    "BatchIterate",
+    "solve_batch",
+]
 
 COARSEST = 32
 """Cells along the shorter axis below which a grid is not coarsened further (GUESS, tuned on the
@@ -471,14 +485,15 @@ def _iterate(
 
 WINDOW_MARGIN = 0.125
 """Cells added on each side of the start's pressure to make the window, as a fraction of the
-pressure's extent (plus :data:`WINDOW_MIN_MARGIN` cells): room for the contact to grow (GUESS;
-the nested start's contact edge is within a few cells of the converged one)."""
+pressure's extent (at least :data:`WINDOW_MIN_MARGIN` cells): room for the contact to grow (GUESS;
+the nested start's contact edge is within a few cells of the converged one; 1/16 was 10-20 %
+faster on the Hertz problems at 1024², 1/8 leaves room for other gaps and warm starts)."""
 WINDOW_MIN_MARGIN = 4
 """Cells added on each side of the window at least."""
 WINDOW_MAX_FRACTION = 0.5
-"""Largest window, as a fraction of the grid's cells, worth solving on: a window iteration costs
-two padded FFT pairs of the window, a whole-grid one a padded pair and an unpadded pair of the
-grid."""
+"""Largest window, as a fraction of the grid's cells, worth solving on (GUESS: an iteration's cost
+is proportional to the cells, but a window needs its own operator, preconditioner and FFT plans
+and a whole-grid check at the end)."""
 
 
 def _window(p: Any) -> tuple[slice, slice] | None:
