@@ -13,7 +13,9 @@ positive), so the peak cell samples p0 itself.
 Columns: ``pcg`` = solve_normal with its default method (spectral preconditioner, nested-grid
 start), including the set-up of a new DC-FFT operator; ``it`` = iterations on the N × N grid +
 the coarse grids' iterations in N × N equivalents; ``best`` = the fastest repeat (this machine's
-timings are noisy); ``/floor`` for pcg counts its work (fine + coarse iterations); ``mixed`` =
+timings are noisy); ``/floor`` for pcg counts its work (fine + coarse iterations; pcg iterates
+on a window around the contact, whose FFT pairs are smaller than 2N × 2N, so it can fall below
+1); ``mixed`` =
 the same with float32 FFTs finished in float64; ``pk`` = the plain Polonsky & Keer CG (method
 "pk", uniform start); ``x pk`` = pk time / pcg time; ``x Tamaas`` = Tamaas 2.9.0's time on the
 same problem, measured in the same run when Tamaas is installed, else its time recorded earlier

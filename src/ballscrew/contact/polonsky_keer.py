@@ -63,6 +63,8 @@ class _Iterate:
     residual: float
     converged: bool
     coarse_work: float = 0.0
+    displacement: Any = None
+    """u = K ∗ p of the final pressure if the solver computed it exactly, else None."""
 
 
 def _reductions_context(xp: ModuleType) -> contextlib.AbstractContextManager[None]:
@@ -234,6 +236,7 @@ def _preconditioned(
         float(state.residual[0]),
         bool(state.converged[0]),
         float(state.coarse_work[0]),
+        None if state.displacement is None else state.displacement[0],
     )
 
 
@@ -325,7 +328,7 @@ def _finish(
     if not state.converged and raise_on_failure:
         raise ConvergenceError(SOLVER, state.iterations, state.residual, problem.tol)
     h, p = problem.h, state.pressure
-    u = problem.operator.apply(p)
+    u = problem.operator.apply(p) if state.displacement is None else state.displacement
     contact = p > 0.0
     n_contact = int(contact.sum())
     if approach is None:  # δ = mean of u + h over the contact set (Polonsky & Keer 1999).

@@ -1,0 +1,72 @@
+"""The preconditioned CG on a window around the contact: the whole grid's solution (exact
+convolution there, the preconditioner periodic on the window), and a return to the whole grid when
+a cell outside the window penetrates."""
+
+import numpy as np
+
+from ballscrew.contact import DCFFTOperator, hertz, preconditioned, solve_normal, solve_normal_batch
+
+E_STAR = 113.19e9
+
+
+def sphere(n=128, side=6.0):
+    """Hertz sphere R = 10 mm, W = 100 N on n × n cells, the box ``side`` × the contact radius."""
+    reference = hertz(10e-3, 10e-3, E_STAR, 100.0)
+    dx = side * reference.a / n
+    x = dx * (np.arange(n) - n // 2)
+    return (x[:, None] ** 2 + x[None, :] ** 2) / 20e-3, dx, reference
+
+
+def test_window_gives_the_whole_grid_solution(monkeypatch):
+    """Same iterations, pressures within the stop's error (1e-7 of p0, as pcg against pk), and the
+    displacement handed back by the check is K ∗ p of the pressure."""
+    gap, dx, reference = sphere()
+    windowed = solve_normal(gap, dx, dx, E_STAR, 100.0)
+    monkeypatch.setattr(preconditioned, "WINDOW_MAX_FRACTION", 0.0)  # no window
+    whole = solve_normal(gap, dx, dx, E_STAR, 100.0)
+    assert windowed.iterations == whole.iterations and windowed.coarse_work == whole.coarse_work
+    np.testing.assert_allclose(windowed.pressure, whole.pressure, atol=1e-7 * reference.p0)
+    exact = DCFFTOperator(gap.shape, dx, dx, E_STAR).apply(windowed.pressure)
+    np.testing.assert_array_equal(windowed.displacement, exact)
+
+
+def test_window_is_used_on_a_large_box_only():
+    gap = sphere()[0]
+    p = np.zeros_like(gap)
+    p[54:74, 50:78] = 1.0
+    rows, cols = preconditioned._window(p)
+    assert rows.start <= 50 and rows.stop >= 78 and cols.start <= 46 and cols.stop >= 82
+    assert (rows.stop - rows.start) * (cols.stop - cols.start) <= 0.5 * gap.size
+    assert preconditioned._window(np.ones_like(gap)) is None
+
+
+def test_a_contact_that_outgrows_its_window_is_finished_on_the_whole_grid(monkeypatch):
+    """A warm start on a patch of a quarter of the contact radius, no margin: the window's solution
+    leaves cells outside it penetrating, so the solve goes on on the whole grid, and ends where
+    a solve without a window does."""
+    gap, dx, reference = sphere()
+    monkeypatch.setattr(preconditioned, "WINDOW_MARGIN", 0.0)
+    monkeypatch.setattr(preconditioned, "WINDOW_MIN_MARGIN", 0)
+    seed = np.zeros_like(gap)
+    seed[60:68, 60:68] = 1.0
+    cleared = []
+    check = preconditioned._outside_clear
+    monkeypatch.setattr(
+        preconditioned, "_outside_clear", lambda *a: cleared.append(check(*a)) or cleared[-1]
+    )
+    result = solve_normal(gap, dx, dx, E_STAR, 100.0, initial=seed)
+    assert cleared == [False]
+    whole = solve_normal(gap, dx, dx, E_STAR, 100.0, nested=False, method="pk")
+    assert result.converged and result.displacement is not None
+    np.testing.assert_allclose(result.pressure, whole.pressure, atol=1e-6 * reference.p0)
+
+
+def test_batch_of_contacts_with_windows_of_two_sizes_equals_one_at_a_time():
+    gap, dx, _ = sphere()
+    gaps = np.stack([gap, gap, 2.0 * gap])
+    loads = np.array([100.0, 60.0, 30.0])
+    batch = solve_normal_batch(gaps, dx, dx, E_STAR, loads, precision="mixed")
+    for g, load, together in zip(gaps, loads, batch, strict=True):
+        alone = solve_normal(g, dx, dx, E_STAR, load, precision="mixed")
+        assert together.iterations == alone.iterations
+        np.testing.assert_array_equal(together.pressure, alone.pressure)
