@@ -140,6 +140,7 @@ def solve_normal_batch(
             float(state.residual[b]),
             bool(state.converged[b]),
             float(state.coarse_work[b]),
+            None if state.displacement is None else state.displacement[b],
         )
         if not iterate.converged and raise_on_failure:
             raise ConvergenceError(
