@@ -18,8 +18,9 @@ on a window around the contact, whose FFT pairs are smaller than 2N × 2N, so it
 1); ``mixed`` =
 the same with float32 FFTs finished in float64; ``pk`` = the plain Polonsky & Keer CG (method
 "pk", uniform start); ``x pk`` = pk time / pcg time; ``x Tamaas`` = Tamaas 2.9.0's time on the
-same problem, measured in the same run when Tamaas is installed, else its time recorded earlier
-on this machine (marked *), over the pcg time.
+same problem, measured in the same run when Tamaas is installed (``make bench`` installs it in
+its own environment, ``.venv-peers``), else its time recorded earlier on this machine (marked *),
+over the pcg time.
 
 Then ``solve_normal_batch`` on 32 ball contacts of 128 × 128 cells (--quick: 8 of 64 × 64; radii
 and loads drawn around the sphere case): contacts per second, batched and one at a time.
