@@ -20,7 +20,7 @@ from ballscrew.analyses.contact_law import (
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case.loader import CaseError
 from ballscrew.contact import hertz
-from ballscrew.errors import InputError
+from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.geometry import raceway_curvature
 from ballscrew.units import format_quantity
 
@@ -149,3 +149,19 @@ def test_a_ball_above_the_table_is_named_in_the_results_warnings(gao_case_path):
         assert message in ballscrew.screw_tcr(case).warnings
     with pytest.warns(ContactLawWarning):
         assert message in ballscrew.design_check(case).warnings
+
+
+def test_a_tabulation_that_does_not_converge_names_the_raceways_and_the_case_fields(
+    gao_case_path,
+):
+    """Ten iterations, the least a case allows, cannot reach a tolerance of 1e-14: the error says
+    which batch contact is which raceway and names the case field that bounds the iterations,
+    with its residual."""
+    limits = {"numerics.max_iterations": 10, "numerics.tolerance": 1e-14}
+    case = ballscrew.load_case(gao_case_path, NUMERICAL | limits)
+    with pytest.raises(ConvergenceError) as caught:
+        ballscrew.ball_loads(case)
+    message = str(caught.value)
+    assert "contact 0 = the screw raceway, contact 1 = the nut raceway" in message
+    assert "numerics.max_iterations = 10" in message
+    assert np.isfinite(caught.value.residual) and caught.value.residual > caught.value.tolerance

@@ -65,15 +65,25 @@ def test_the_skf_heat_is_the_friction_torque_times_the_speed_split_between_screw
 
 def test_the_skf_field_sends_the_generated_heat_to_ambient_coolant_and_table(fields):
     """Steady: generated = convected + coolant outflow W θ_out + table G_t θ_t; transient:
-    ∫Q dt = stored + lost. The coolant enters at ambient, so the heat input is the friction's."""
+    ∫Q dt = stored + lost. The coolant enters at ambient, so the heat input is the friction's.
+
+    The heat to ground is taken from the matrix's row sums (the conductances to ambient and from
+    the table, the internal links summing to zero in each row; the upwind coolant leaves W in the
+    inlet's row only), not its column sums, which balance the heat input by construction: a
+    coolant transport that did not conserve W θ would break the sum."""
     field = fields["skf"]
     sol = field.solution
     disc = sol.discretisation
     problem = field.problem
-    coolant = problem.shaft_coolant.capacity_rate * sol.steady[disc.extra["coolant"][-1]]
+    w = problem.shaft_coolant.capacity_rate
+    channel = disc.extra["coolant"]
+    coolant = w * sol.steady[channel[-1]]
     table = problem.table.conductance * sol.steady[disc.extra["table"]]
     a, _ = disc.assemble(disc.grid.weights)
-    ambient = np.asarray(a.sum(axis=0)).ravel() @ sol.steady - coolant - table
+    to_ground = np.asarray(a.sum(axis=1)).ravel()
+    assert to_ground[channel[0]] == pytest.approx(w, rel=1e-12)
+    to_ground[channel[0]] -= w
+    ambient = to_ground @ sol.steady - table
     assert 0.05 * field.heat_input < coolant < field.heat_input
     assert 0.0 < table < field.heat_input and ambient > 0.0
     assert ambient + coolant + table == pytest.approx(field.heat_input, rel=1e-9)

@@ -32,7 +32,7 @@ from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.case import NumericsSpec
 from ballscrew.contact import ContactRequest, HertzContact, grid_cells, hertz, solve_contacts
 from ballscrew.contact.grid import GapFunction
-from ballscrew.errors import InputError
+from ballscrew.errors import BallscrewError, ConvergenceError, InputError
 from ballscrew.geometry import RacewayCurvature, ScrewGeometry, gap_function, raceway_curvature
 from ballscrew.loads.contact_law import TabulatedContact
 from ballscrew.units import format_quantity
@@ -159,10 +159,13 @@ def raceways_approaches(
                 tuple(float(q) for q in loads[others]),
             )
         )  # fmt: skip
-    solved = solve_contacts(
-        requests, numerics.cells_across, numerics.box_factor, numerics.tolerance,
-        cells=numerics.cells, max_iterations=numerics.max_iterations,
-    )  # fmt: skip
+    try:
+        solved = solve_contacts(
+            requests, numerics.cells_across, numerics.box_factor, numerics.tolerance,
+            cells=numerics.cells, max_iterations=numerics.max_iterations,
+        )  # fmt: skip
+    except BallscrewError as error:
+        raise _named(error, sides, numerics) from None
     approaches = {}
     for side, result in zip(sides, solved, strict=True):
         delta = np.empty(loads.size)
@@ -170,6 +173,24 @@ def raceways_approaches(
         delta[others] = [s.approach for s in result.extra]
         approaches[side] = delta
     return approaches
+
+
+def _named(error: BallscrewError, sides: list[Side], numerics: NumericsSpec) -> BallscrewError:
+    """``error`` of the tabulation's :func:`~ballscrew.contact.solve_contacts` call with the
+    raceway of each batch index and the case fields that control it."""
+    which = ", ".join(f"contact {k} = the {side} raceway" for k, side in enumerate(sides))
+    if isinstance(error, ConvergenceError):
+        return ConvergenceError(
+            f"{error.solver}, tabulating the contact law ({which}; numerics.max_iterations = "
+            f"{numerics.max_iterations}, numerics.tolerance = {numerics.tolerance:g})",
+            error.iterations, error.residual, error.tolerance,
+        )  # fmt: skip
+    if isinstance(error, InputError):
+        return error
+    return BallscrewError(
+        f"{error} (tabulating the contact law, {which}: numerics.box_factor = "
+        f"{numerics.box_factor!r} in the case)"
+    )
 
 
 def _check_cells(
@@ -225,8 +246,8 @@ def numerical_contact(params: ScrewParameters, numerics: NumericsSpec) -> Tabula
     """Q(δ) of a ball's screw and nut contacts in series from the contact solver (cached).
 
     The nominal ball load is that of the case's nut forces (the larger of F_p and F_a for a
-    double nut, F_p + F_a for one nut, over Z sinβ cosα). A distribution whose balls go above
-    the table's top calls :func:`warn_above_table`.
+    double nut, F_p + F_a for one nut, over Z sinβ cosα). The law is cached; a distribution
+    whose balls go above the table's top warns through :func:`warn_above_table`.
     """
     fp, fa = params.preload, params.axial_load
     force = max(fp, fa) if params.nut_count == 2 else fp + fa

@@ -130,10 +130,9 @@ def _unit_motion(model: BallModel, state: BallState) -> BallMotion:
 def _semi_axes(model: BallModel, loads: FloatArray) -> tuple[FloatArray, FloatArray]:
     """Hertz semi-axes along and across the rolling direction [m] of the contacts A, B (columns)
     of the balls (rows; one per loaded nut, its Z balls share its state) at ``loads``:
-    a, b ∝ Q^(1/3) from the unit-load solution."""
-    unit = np.array([model.hertz_semi_axes(contact, 1.0) for contact in SIDES])
-    scale = np.maximum(loads, 0.0) ** (1.0 / 3.0)
-    return scale * unit[:, 0], scale * unit[:, 1]
+    :meth:`BallModel.hertz_semi_axes` of each contact's column."""
+    axes = [model.hertz_semi_axes(contact, loads[:, k]) for k, contact in enumerate(SIDES)]
+    return np.column_stack([a for a, _ in axes]), np.column_stack([b for _, b in axes])
 
 
 def _ball_ball_torque(

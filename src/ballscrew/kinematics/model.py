@@ -10,6 +10,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
 
 from ballscrew.contact import hertz
 from ballscrew.contact.hertz import HertzContact
@@ -96,10 +100,13 @@ class BallModel:
         """K of the Hertz approach δ = K Q^(2/3), m N^(−2/3) (1.513e-7 at A, reference screw)."""
         return self._unit_hertz[contact].approach
 
-    def hertz_semi_axes(self, contact: Side, load: float) -> tuple[float, float]:
-        """Hertz semi-axes (along x = t, along y = across the groove) at load Q [m]."""
+    def hertz_semi_axes(self, contact: Side, load: ArrayLike) -> tuple[Any, Any]:
+        """Hertz semi-axes (along x = t, along y = across the groove) at load Q [m]: a, b ∝
+        Q^(1/3) from the unit-load solution; floats for a float load, arrays for an array."""
         unit = self._unit_hertz[contact]
-        scale = max(load, 0.0) ** (1.0 / 3.0)
+        scale = np.maximum(load, 0.0) ** (1.0 / 3.0)
+        if np.ndim(scale) == 0:
+            return unit.a * float(scale), unit.b * float(scale)
         return unit.a * scale, unit.b * scale
 
     def deformed_radius(self, contact: Side = "screw") -> float:

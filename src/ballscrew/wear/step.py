@@ -3,7 +3,7 @@
 All contacts of a wear step (both flanks, both nuts, the ball-load classes of each, the segments
 of a duty cycle) share the fixed grid and differ only in gap and load: :func:`step_rates` solves
 them in one :func:`ballscrew.contact.solve_normal_batch` call (each result equals its own single
-solve); :func:`flank_rate` and :func:`flank_rates` are one flank's contacts of it.
+solve); :func:`flank_rate` is one contact of it.
 """
 
 from __future__ import annotations
@@ -32,7 +32,6 @@ __all__ = [
     "StepContact",
     "entrainment_speed",
     "flank_rate",
-    "flank_rates",
     "step_rates",
 ]
 
@@ -152,26 +151,6 @@ def flank_rate(
     """
     contact = StepContact(flank, nut_force, screw_speed, depth, initial, level, load_ratio)
     return step_rates(setup, [contact])[0]
-
-
-def flank_rates(
-    setup: WearSetup,
-    flank: int,
-    contacts: Sequence[tuple[float, float]],
-    screw_speed: float,
-    depth: FloatArray,
-    initial: Sequence[FloatArray | None],
-    level: WearLevel | None = None,
-) -> tuple[FlankRate, ...]:
-    """:func:`flank_rate` of several (nut force, load ratio) ``contacts`` of one flank, solved
-    together by :func:`step_rates`; ``initial`` gives each one's warm start or None."""
-    return step_rates(
-        setup,
-        [
-            StepContact(flank, force, screw_speed, depth, start, level, ratio)
-            for (force, ratio), start in zip(contacts, initial, strict=True)
-        ],
-    )
 
 
 def _rate(
