@@ -90,6 +90,11 @@ def test_bad_gas_inputs() -> None:
         gap_thickness(1e-12, D=1.59, G=1e-9, model="mean_plane", sampling_length=1e-3)
     with pytest.raises(InputError, match="rarefaction"):
         gap_conductance(0.0, 1e-8, apparent_area=AREA, lambda_f=0.1, rarefaction=math.nan)
+    with pytest.raises(InputError, match=r"p/H = 0\.6"):  # Y = 0 would leave no gap
+        gap_thickness(
+            1e-12, D=1.59, G=1e-9, model="mean_plane", sampling_length=1e-3, pressure=1.8e9,
+            hardness=3e9,
+        )  # fmt: skip
 
 
 def test_oil_lubricated_screw_unchanged() -> None:

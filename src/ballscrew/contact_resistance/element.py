@@ -282,6 +282,9 @@ def gap_thickness(
                 missing = "pressure" if pressure is None else "hardness"
                 raise InputError(missing, None, "a value > 0 for gap model 'mean_plane'")
             p = np.broadcast_to(nonnegative_array("pressure", pressure, "Pa"), a_arr.shape)
+            peak = float(p[loaded].max(initial=0.0)) / positive("hardness", hardness, "Pa")
+            if peak >= 0.5:  # Y = 0: the Gaussian surfaces touch everywhere, no gap is left
+                raise InputError("pressure", f"p/H = {peak:.3g}", "p/H < 0.5 for 'mean_plane'")
             y = plastic_separation(p[loaded], sigma=sigma, hardness=hardness)
             out[loaded] = fac * y
     elif model in _GAP_COEFFICIENTS:
