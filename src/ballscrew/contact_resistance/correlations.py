@@ -45,6 +45,7 @@ __all__ = [
     "mean_plane_separation",
     "mikic_elastic_conductance",
     "plastic_conductance",
+    "plastic_separation",
     "rms_profile_slope",
 ]
 
@@ -150,16 +151,30 @@ def mikic_elastic_conductance(pressure: ArrayLike, joint: GaussianJoint) -> NDAr
     return 1.54 * joint.lambda_s * joint.slope / joint.sigma * relative**0.94
 
 
-def mean_plane_separation(pressure: ArrayLike, joint: GaussianJoint) -> NDArray[np.float64]:
+def plastic_separation(
+    pressure: ArrayLike, *, sigma: float, hardness: float
+) -> NDArray[np.float64]:
     """Mean-plane separation Y = σ √2 erfc⁻¹(2p/H) of plastically loaded Gaussian surfaces, m.
 
     From the CMY force balance p/H = ½ erfc(Y/(σ√2)) (Cooper, Mikic & Yovanovich 1969;
     Yovanovich 1982). Y = ∞ where p = 0 and 0 where p/H ≥ 0.5.
+
+    Args:
+        pressure: apparent pressure p (>= 0), Pa.
+        sigma: combined RMS roughness σ, m.
+        hardness: microhardness H of the softer surface, Pa.
     """
+    s = positive("sigma", sigma, "m")
+    h = positive("hardness", hardness, "Pa")
     p = nonnegative_array("pressure", pressure, "Pa")
-    ratio = np.minimum(2.0 * p / joint.hardness, 2.0 * _MAX_RELATIVE_PRESSURE)
+    ratio = np.minimum(2.0 * p / h, 2.0 * _MAX_RELATIVE_PRESSURE)
     with np.errstate(divide="ignore"):
-        return joint.sigma * math.sqrt(2.0) * erfcinv(ratio)
+        return s * math.sqrt(2.0) * erfcinv(ratio)
+
+
+def mean_plane_separation(pressure: ArrayLike, joint: GaussianJoint) -> NDArray[np.float64]:
+    """:func:`plastic_separation` Y of the joint's σ and H, m."""
+    return plastic_separation(pressure, sigma=joint.sigma, hardness=joint.hardness)
 
 
 def gas_rarefaction_parameter(

@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ballscrew.contact_resistance.correlations import plastic_separation
 from ballscrew.errors import InputError
 from ballscrew.fractal import (
     largest_spot_area,
@@ -74,8 +75,11 @@ _GAP_COEFFICIENTS: dict[str, float] = {
     "cap_clearance": 1.0 - 2.0 / math.pi,
     "interference": 1.0,
 }
-GAP_MODELS: tuple[str, ...] = (*_GAP_COEFFICIENTS, "two_sigma")
-"""Gap-thickness models: mean_cap (T6, default), cap_clearance, interference, two_sigma."""
+_ROUGHNESS_GAP_MODELS: tuple[str, ...] = ("two_sigma", "mean_plane")
+"""Gap models set by the RMS roughness σ over the sampling length (need ``sampling_length``)."""
+GAP_MODELS: tuple[str, ...] = (*_GAP_COEFFICIENTS, *_ROUGHNESS_GAP_MODELS)
+"""Gap-thickness models: mean_cap (T6, default), cap_clearance, interference, two_sigma,
+mean_plane (Yovanovich's mean-plane separation Y, T9)."""
 
 
 # --------------------------------------------------------------------------------------------
@@ -222,6 +226,8 @@ def gap_thickness(
     model: str = "mean_cap",
     factor: float = 1.0,
     sampling_length: float | None = None,
+    pressure: ArrayLike | None = None,
+    hardness: float | None = None,
 ) -> NDArray[np.float64]:
     """Thickness L_g of the interstitial gap of an element, (T6) **[REC]** and the other gap models.
 
@@ -231,7 +237,12 @@ def gap_thickness(
       cosine cap z(x) = G^(D−1) L_u^(2−D) cos(πx/L_u) over its domain L_u = a_l^(1/2);
     - ``"cap_clearance"``: L_g = (1 − 2/π) δ_l, the mean clearance under the flat;
     - ``"interference"``: L_g = δ_l;
-    - ``"two_sigma"``: L_g = 2σ with σ from (F3) over the sampling length L_u (independent of a_l).
+    - ``"two_sigma"``: L_g = 2σ with σ from (F3) over the sampling length L_u (independent of a_l);
+    - ``"mean_plane"`` (T9): L_g = Y = σ √2 erfc⁻¹(2p/H), the mean-plane separation of Gaussian
+      surfaces of the same σ (F3 over L_u) carrying the element's apparent pressure p = P/A
+      plastically (Cooper, Mikic & Yovanovich 1969; Yovanovich 1982; Bahrami et al. 2004 take
+      the gas gap across the same local separation). The mean gap of a rough joint is several σ,
+      not the height of one cap.
 
     The result is multiplied by ``factor``. Elements with a_l = 0 are out of contact: L_g = ∞.
     Reconstruction of the paper's Eq. (44) (source: Liu Zhifeng et al. 2015, paywalled).
@@ -242,13 +253,17 @@ def gap_thickness(
         G: fractal roughness, m.
         model: one of :data:`GAP_MODELS`.
         factor: multiplier (> 0) on the modelled thickness.
-        sampling_length: sampling length L_u, m (required by ``"two_sigma"`` only).
+        sampling_length: sampling length L_u, m (required by ``"two_sigma"`` and
+            ``"mean_plane"``).
+        pressure: apparent element pressure p = P/A, Pa (required by ``"mean_plane"``;
+            broadcast against ``a_l``).
+        hardness: microhardness H of the softer surface, Pa (required by ``"mean_plane"``).
 
     Returns:
         L_g in m, same shape as ``a_l``.
 
     Raises:
-        InputError: unknown model, bad factor, or missing sampling length.
+        InputError: unknown model, bad factor, or missing sampling length, pressure or hardness.
     """
     D = validate_dimension(D)
     G = positive("G", G, "m")
@@ -256,10 +271,22 @@ def gap_thickness(
     a_arr = nonnegative_array("a_l", a_l, "m²")
     out = np.full(a_arr.shape, np.inf)
     loaded = a_arr > 0.0
-    if model == "two_sigma":
+    if model in _ROUGHNESS_GAP_MODELS:
         if sampling_length is None:
-            raise InputError("sampling_length", None, "a length > 0 m for gap model 'two_sigma'")
-        out[loaded] = fac * 2.0 * profile_rms_roughness(D, G, sampling_length)
+            raise InputError("sampling_length", None, f"a length > 0 m for gap model {model!r}")
+        sigma = profile_rms_roughness(D, G, sampling_length)
+        if model == "two_sigma":
+            out[loaded] = fac * 2.0 * sigma
+        else:
+            if pressure is None or hardness is None:
+                missing = "pressure" if pressure is None else "hardness"
+                raise InputError(missing, None, "a value > 0 for gap model 'mean_plane'")
+            p = np.broadcast_to(nonnegative_array("pressure", pressure, "Pa"), a_arr.shape)
+            peak = float(p[loaded].max(initial=0.0)) / positive("hardness", hardness, "Pa")
+            if peak >= 0.5:  # Y = 0: the Gaussian surfaces touch everywhere, no gap is left
+                raise InputError("pressure", f"p/H = {peak:.3g}", "p/H < 0.5 for 'mean_plane'")
+            y = plastic_separation(p[loaded], sigma=sigma, hardness=hardness)
+            out[loaded] = fac * y
     elif model in _GAP_COEFFICIENTS:
         coeff = fac * _GAP_COEFFICIENTS[model] * G ** (D - 1.0)
         out[loaded] = coeff * a_arr[loaded] ** ((2.0 - D) / 2.0)
@@ -269,10 +296,19 @@ def gap_thickness(
 
 
 def gap_conductance(
-    real_area: ArrayLike, thickness: ArrayLike, *, apparent_area: ArrayLike, lambda_f: float
+    real_area: ArrayLike,
+    thickness: ArrayLike,
+    *,
+    apparent_area: ArrayLike,
+    lambda_f: float,
+    rarefaction: float = 0.0,
 ) -> NDArray[np.float64]:
-    """Conductance G_g = λ_f (A − A_r)/L_g of the interstitial medium, (T3)/(T7).
+    """Conductance G_g = λ_f (A − A_r)/(L_g + M) of the interstitial medium, (T3)/(T7)/(T10).
 
+    M is the gas rarefaction (temperature-jump) parameter M = αβΛ (Yovanovich 1982; Song &
+    Yovanovich 1987; Bahrami et al. 2004): 0 for a liquid (oil, grease) — then (T7) unchanged —
+    and of the order of the mean free path for a gas (air at 1 atm: M ≈ 0.27 µm), which bounds
+    G_g by the free-molecular limit λ_f (A − A_r)/M when L_g ≪ M.
     A_r is capped at A (G_g = 0 when the element is fully in contact); L_g = ∞ gives 0.
 
     Args:
@@ -280,17 +316,28 @@ def gap_conductance(
         thickness: gap thickness(es) L_g (> 0, may be ∞), m.
         apparent_area: apparent element area A, m².
         lambda_f: conductivity of the interstitial medium (oil, grease, air), W/(m K).
+        rarefaction: M >= 0, m (from :func:`~.correlations.gas_rarefaction_parameter` for a
+            gas; 0, the default, for a liquid).
 
     Returns:
         G_g in W/K (broadcast shape).
     """
     area = positive_array("apparent_area", apparent_area, "m²")
     lam = positive("lambda_f", lambda_f, "W/(m K)")
+    m = _rarefaction(rarefaction)
     a_r = nonnegative_array("real_area", real_area, "m²")
     lg = np.asarray(thickness, dtype=np.float64)
     if np.any(np.isnan(lg) | (lg <= 0.0)):
         raise InputError("thickness", thickness, "values > 0 m (∞ allowed)")
-    return lam * np.maximum(area - a_r, 0.0) / lg
+    return lam * np.maximum(area - a_r, 0.0) / (lg + m)
+
+
+def _rarefaction(value: float) -> float:
+    """M validated: finite and >= 0 m."""
+    m = float(value)
+    if not (math.isfinite(m) and m >= 0.0):
+        raise InputError("rarefaction", value, "M ≥ 0 m (0 for a liquid)")
+    return m
 
 
 def constriction_alleviation_factor(
@@ -378,6 +425,9 @@ class FractalTCRModel:
     """Sampling length L_u for gap model ``two_sigma``, m."""
     constriction_alleviation: bool = False
     """Divide G_s by (1 − √(A_r/A))^1.5 (optional refinement)."""
+    rarefaction: float = 0.0
+    """Gas rarefaction parameter M = αβΛ of the medium (T10), m: 0 for a liquid (default), e.g.
+    0.27 µm for air at 20 °C and 1 atm (Yovanovich 1982)."""
     lambda_s: float = field(init=False)
     """Harmonic-mean solid conductivity 2λ₁λ₂/(λ₁+λ₂) (T1), W/(m K); derived."""
 
@@ -390,10 +440,11 @@ class FractalTCRModel:
         ELEMENT_MODELS.check(self.variant)
         if self.gap_model not in GAP_MODELS:
             raise InputError("gap_model", self.gap_model, f"one of {', '.join(GAP_MODELS)}")
-        if self.gap_model == "two_sigma":
+        if self.gap_model in _ROUGHNESS_GAP_MODELS:
             if self.sampling_length is None:
-                raise InputError("sampling_length", None, "a length > 0 m for 'two_sigma'")
+                raise InputError("sampling_length", None, f"a length > 0 m for {self.gap_model!r}")
             positive("sampling_length", self.sampling_length, "m")
+        _rarefaction(self.rarefaction)
         lam = harmonic_mean_conductivity(self.lambda_1, self.lambda_2)
         object.__setattr__(self, "lambda_s", lam)
 
@@ -436,7 +487,8 @@ def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRMode
 
     Chain per element (all elements at once, no loop): a_l from P (F15 inverted), A_r (F11,
     capped at A), L_g (T6 or option), G_s (T5 for V2 [REC], T2a for MT, 2λ_s√(A_r/π) for V1),
-    G_g (T7), R (T8). The result depends on the element size A (mesh dependence).
+    G_g (T7; with the gas term M of T10), R (T8). The result depends on the element size A
+    (mesh dependence).
 
     Sources: Majumdar & Bhushan (1990, J. Tribol. 112:205; 1991); Wang & Komvopoulos (1994);
     Majumdar & Tien (1991).
@@ -461,6 +513,8 @@ def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRMode
         model=model.gap_model,
         factor=model.gap_factor,
         sampling_length=model.sampling_length,
+        pressure=p / area,
+        hardness=model.H,
     )
     g_s = ELEMENT_MODELS[model.variant](np.asarray(a_l), a_r, model)
     loaded = p > 0.0
@@ -469,7 +523,11 @@ def element_tcr(load: ArrayLike, apparent_area: ArrayLike, model: FractalTCRMode
         with np.errstate(divide="ignore"):  # divisor 0 ⇔ A_r = A: perfect contact, G_s = ∞
             g_s = np.where(loaded, g_s / divisor, g_s)
     g_s = np.asarray(g_s, dtype=np.float64)
-    g_g = np.asarray(gap_conductance(a_r, l_g, apparent_area=area, lambda_f=model.lambda_f))
+    g_g = np.asarray(
+        gap_conductance(
+            a_r, l_g, apparent_area=area, lambda_f=model.lambda_f, rarefaction=model.rarefaction
+        )
+    )
     g = g_s + g_g
     resistance = np.full(p.shape, np.inf)
     resistance[loaded] = 1.0 / g[loaded]
