@@ -247,3 +247,21 @@ def test_the_four_contacts_solved_together_equal_the_single_solves(gao_case_path
                 together.pressure, alone.pressure, rtol=0, atol=1e-10 * alone.peak_pressure
             )
             assert together.approach == pytest.approx(alone.approach, rel=1e-10)
+
+
+def test_a_gas_in_the_gap_is_a_case_choice(doc_case):
+    """Air between the asperities (λ_f = 0.026 W/(m K), M = 0.27 µm): every gap conducts
+    λ_f/(L + M) instead of λ_f/L, so each model's R rises against M = 0 (the liquid default);
+    the element models across Yovanovich's mean-plane separation (``tcr.gap_model =
+    "mean_plane"``) rise further, their gap being microns instead of the MB cap's nanometres."""
+    air = {"medium.name": "air", "medium.thermal_conductivity": 0.026, "tcr.models": ["V2", "CMY"]}
+    liquid = ballscrew.screw_tcr(ballscrew.case.with_overrides(doc_case, air)).models
+    gas = ballscrew.case.with_overrides(doc_case, air | {"medium.rarefaction": 0.27e-6})
+    rarefied = ballscrew.screw_tcr(gas).models
+    plane = ballscrew.screw_tcr(ballscrew.case.with_overrides(gas, {"tcr.gap_model": "mean_plane"}))
+    for name in ("V2", "CMY"):
+        assert rarefied[name].resistance > liquid[name].resistance
+    assert plane.models["V2"].resistance > rarefied["V2"].resistance
+    assert plane.models["CMY"].resistance == pytest.approx(rarefied["CMY"].resistance, rel=1e-12)
+    with pytest.raises(CaseError, match=r"medium\.rarefaction"):
+        ballscrew.case.with_overrides(doc_case, {"medium.rarefaction": -1e-9})

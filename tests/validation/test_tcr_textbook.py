@@ -80,11 +80,10 @@ def _predicted(model: str, pressure: float, medium: str) -> float:
     lambda_f, rarefaction = AIR if medium == "air" else (VACUUM_LAMBDA_F, 0.0)
     p = np.array([pressure])
     if model in CORRELATIONS:
-        joint = GaussianJoint(SIGMA, SLOPE, LAMBDA, lambda_f, HARDNESS, E_STAR)
-        # the registered correlations carry a liquid gap (M = 0): swap in the medium's
-        solid = CORRELATIONS[model](p, joint) - joint_gap_conductance(p, joint)
-        gap = joint_gap_conductance(p, joint, rarefaction) if medium == "air" else 0.0
-        return float((solid + gap)[0])
+        joint = GaussianJoint(SIGMA, SLOPE, LAMBDA, lambda_f, HARDNESS, E_STAR, rarefaction)
+        if medium == "air":  # the gas gap with M (Yovanovich 1982)
+            return float(CORRELATIONS[model](p, joint)[0])
+        return float((CORRELATIONS[model](p, joint) - joint_gap_conductance(p, joint))[0])
     element = FractalTCRModel(
         D=D,
         G=_fractal_g(),

@@ -84,6 +84,8 @@ class Lubrication:
     density: float = 870.0
     """ρ of the lubricant at the inlet [kg/m³] (the named lubricant's; 870 otherwise, ASSUMED
     paraffinic mineral oil)."""
+    rarefaction: float = 0.0
+    """Gas rarefaction parameter M of the medium across the gap [m] (0 for a liquid)."""
 
     @property
     def lubricated(self) -> bool:
@@ -199,6 +201,7 @@ class ScrewParameters:
                 alpha,
                 film_model(case, named),
                 named.density if named is not None else 870.0,
+                medium.rarefaction,
             ),
             nuts=(),
         )

@@ -154,6 +154,8 @@ def tcr_model(
         cutoff_area=options.cutoff_area,
         gap_model=options.gap_model,
         gap_factor=options.gap_factor,
+        sampling_length=options.sampling_length,
+        rarefaction=params.lubrication.rarefaction,
     )
 
 
@@ -169,6 +171,8 @@ def tcr_fields(side: Side) -> dict[str, str]:
         "lambda_s": f"the mean thermal conductivity of {pair}",
         "lambda_f": "medium.thermal_conductivity",
         "factor": "tcr.gap_factor",
+        "sampling_length": "tcr.sampling_length",
+        "rarefaction": "medium.rarefaction",
     }
 
 

@@ -96,6 +96,7 @@ def gaussian_joint(params: ScrewParameters, options: TCRSpec, side: Side) -> Gau
         lambda_f=params.lubrication.thermal_conductivity,
         hardness=params.hardness(side),
         E_star=params.contact_modulus(side),
+        rarefaction=params.lubrication.rarefaction,
     )
 
 

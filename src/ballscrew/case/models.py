@@ -161,6 +161,13 @@ class MediumSpec(Model):
     density_15: quantity(
         "density", "an unnamed oil: density at 15 °C [ASSUMED 870]", gt=0, le=1e4
     ) = 870.0
+    rarefaction: quantity(
+        "length",
+        "gas rarefaction parameter M = αβΛ across the gap (0 for a liquid; air at 20 °C and "
+        "1 atm about 0.27 µm, Yovanovich 1982)",
+        ge=0,
+        le=1e-3,
+    ) = 0.0
 
     _known_lubricant = field_validator("lubricant")(known_lubricant)
     _one_oil = model_validator(mode="after")(check_oil_viscosities)
@@ -225,8 +232,11 @@ class TCRSpec(Model):
     cutoff_area: quantity("area", "lower spot-area cut-off a_s of variant MT", gt=0, le=1e-4) = (
         1e-16
     )
-    gap_model: Literal["mean_cap", "cap_clearance", "interference", "two_sigma"] = Field(
-        "mean_cap", description="gap-thickness model L_g (T6 = mean_cap)"
+    gap_model: Literal["mean_cap", "cap_clearance", "interference", "two_sigma", "mean_plane"] = (
+        Field(
+            "mean_cap",
+            description="gap-thickness model L_g (T6 = mean_cap; mean_plane = Yovanovich's Y)",
+        )
     )
     gap_factor: Annotated[float, Field(gt=0, le=1e3, description="multiplier on L_g")] = 1.0
     rebin: bool = Field(

@@ -117,6 +117,9 @@ class GaussianJoint:
     """Microhardness H of the softer surface, Pa."""
     E_star: float
     """Composite modulus E* = [(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂]⁻¹, Pa."""
+    rarefaction: float = 0.0
+    """Gas rarefaction parameter M of the medium (:func:`gas_rarefaction_parameter`), m; 0 for
+    a liquid."""
 
     def __post_init__(self) -> None:
         for name, unit in (
@@ -128,6 +131,7 @@ class GaussianJoint:
             ("E_star", "Pa"),
         ):
             positive(name, getattr(self, name), unit)
+        _rarefaction(self.rarefaction)
 
 
 def plastic_conductance(pressure: ArrayLike, joint: GaussianJoint) -> NDArray[np.float64]:
@@ -196,33 +200,40 @@ def gas_rarefaction_parameter(
     return alpha * 2.0 * gamma / ((gamma + 1.0) * pr) * lam
 
 
+def _rarefaction(value: float) -> float:
+    """M as a float, refused unless finite and ≥ 0."""
+    m = float(value)
+    if not (math.isfinite(m) and m >= 0.0):
+        raise InputError("rarefaction", value, "M ≥ 0 m")
+    return m
+
+
 def joint_gap_conductance(
-    pressure: ArrayLike, joint: GaussianJoint, rarefaction: float = 0.0
+    pressure: ArrayLike, joint: GaussianJoint, rarefaction: float | None = None
 ) -> NDArray[np.float64]:
     """Conductance h_g = λ_f/(Y + M) of the medium between the asperities, W/(m² K).
 
     Yovanovich's (1982) simple gap model across the mean-plane separation Y
     (:func:`mean_plane_separation`); M = 0 for a liquid (oil, grease), M from
-    :func:`gas_rarefaction_parameter` for a gas.
+    :func:`gas_rarefaction_parameter` for a gas; None takes the joint's ``rarefaction``.
     """
-    m = float(rarefaction)
-    if not (math.isfinite(m) and m >= 0.0):
-        raise InputError("rarefaction", rarefaction, "M ≥ 0 m")
+    m = _rarefaction(joint.rarefaction if rarefaction is None else rarefaction)
     with np.errstate(divide="ignore"):
         return joint.lambda_f / (mean_plane_separation(pressure, joint) + m)
 
 
 Correlation = Callable[[NDArray[np.float64], GaussianJoint], NDArray[np.float64]]
 CORRELATIONS: Registry[Correlation] = Registry("conductance correlation", "tcr.models")
-"""Joint conductance h(p) per unit apparent area [W/(m² K)]: solid spots plus the liquid gap."""
+"""Joint conductance h(p) per unit apparent area [W/(m² K)]: solid spots plus the gap (a liquid,
+or a gas with the joint's rarefaction parameter M)."""
 
 
-@CORRELATIONS.register("CMY", "Cooper–Mikic–Yovanovich plastic contacts + Yovanovich liquid gap")
+@CORRELATIONS.register("CMY", "Cooper–Mikic–Yovanovich plastic contacts + Yovanovich gap")
 def _cmy(pressure: NDArray[np.float64], joint: GaussianJoint) -> NDArray[np.float64]:
     return plastic_conductance(pressure, joint) + joint_gap_conductance(pressure, joint)
 
 
-@CORRELATIONS.register("Mikic", "Mikic elastic contacts + Yovanovich liquid gap")
+@CORRELATIONS.register("Mikic", "Mikic elastic contacts + Yovanovich gap")
 def _mikic(pressure: NDArray[np.float64], joint: GaussianJoint) -> NDArray[np.float64]:
     return mikic_elastic_conductance(pressure, joint) + joint_gap_conductance(pressure, joint)
 
