@@ -183,7 +183,8 @@ def test_xjtu_direction_loss_ratio(validation, dataset) -> None:
         ),
         assumptions=(
             "row k at 35·k h (source: every five degradation tests; 35 h per row ASSUMED)",
-            "Up and Down are the two travel directions of the one tested screw (source: one screw)",
+            "Up and Down: the two travel directions of the one tested screw (ASSUMED from the file "
+            "names; the source describes one screw)",
             "pitch diameter 32 mm (ASSUMED; the ratio does not depend on it)",
         ),
         known_miss=True,
