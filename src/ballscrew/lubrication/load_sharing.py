@@ -256,31 +256,61 @@ def _brackets(
 
     First two steps of the fixed-point map ψ ↦ g(ψ) = F_asp(h_c((1−ψ)Q))/Q from ψ₀ = 0: g falls
     as ψ grows where the film thickens as its load falls, so ψ₁ = g(0) ≥ ψ* ≥ ψ₂ = g(ψ₁); each
-    end is kept only where its residual has the right sign. Elsewhere (a starved film, which
-    shrinks again as its load vanishes): [ln 1e-300, 0] where r(ln 1e-300) ≤ 0 (there the film
-    is ~1e20 times thicker than at ψ = 0 and r = −ψQ < 0), else the first sign change on a grid
-    in t down from 0, and none means the film carries nothing.
+    end is kept only where its residual has the right sign. Where ψ₁ ≥ 1 or r(t₁) > 0: the first
+    sign change down the coarse points t = −1, −3, …, −243, ln 1e-300 (at ln 1e-300 the flooded
+    film is ~1e20 times thicker than at ψ = 0 and r = −ψQ < 0). A starved film shrinks again as
+    its load vanishes (its Hertz zone and so its meniscus distance do): where r(ln 1e-300) > 0 the
+    first sign change on a fine grid in t down from 0 brackets the root, and none means the film
+    carries nothing.
     """
-    with np.errstate(divide="ignore"):
-        t1 = np.maximum(np.log1p(-np.minimum(r_zero / load, 1.0)), _T_MIN)
-    r1 = residual(t1, k)
-    low, high = np.where(r1 <= 0.0, t1, _T_MIN), np.zeros(k.size)
-    r_low, r_high = np.where(r1 <= 0.0, r1, np.nan), r_zero.copy()
-    near = np.flatnonzero(r1 <= 0.0)
+    low, high = np.full(k.size, _T_MIN), np.zeros(k.size)
+    r_low, r_high = np.full(k.size, np.nan), r_zero.copy()
+    psi1 = r_zero / load
+    fixed = np.flatnonzero(psi1 < 1.0)
+    t1 = np.maximum(np.log1p(-psi1[fixed]), _T_MIN)
+    r1 = residual(t1, k[fixed])
+    near, below = fixed[r1 <= 0.0], r1 <= 0.0
+    low[near], r_low[near] = t1[below], r1[below]
     if near.size:
         # g(ψ₁) Q = F_asp at t₁ = r(t₁) − expm1(t₁) Q
-        psi2 = np.clip((r1[near] - np.expm1(t1[near]) * load[near]) / load[near], 0.0, 1.0)
+        psi2 = np.clip((r_low[near] - np.expm1(low[near]) * load[near]) / load[near], 0.0, 1.0)
         with np.errstate(divide="ignore"):
-            t2 = np.clip(np.log1p(-psi2), t1[near], 0.0)
+            t2 = np.clip(np.log1p(-psi2), low[near], 0.0)
         r2 = residual(t2, k[near])
         upper = r2 > 0.0
         high[near[upper]], r_high[near[upper]] = t2[upper], r2[upper]
         low[near[~upper]], r_low[near[~upper]] = t2[~upper], r2[~upper]
-    far = np.flatnonzero(r1 > 0.0)
-    if far.size:
-        r_low[far] = residual(low[far], k[far])
-    open_ = far[r_low[far] > 0.0]
-    for point in -np.geomspace(1e-12, -_T_MIN, 97):
+    open_ = np.setdiff1d(np.arange(k.size), near)
+    open_ = _scan(
+        residual,
+        k,
+        open_,
+        (-1.0, -3.0, -9.0, -27.0, -81.0, -243.0, _T_MIN),
+        low,
+        high,
+        r_low,
+        r_high,
+    )
+    high[open_], r_high[open_] = 0.0, r_zero[open_]
+    open_ = _scan(residual, k, open_, -np.geomspace(1e-12, -_T_MIN, 97), low, high, r_low, r_high)
+    none = np.zeros(k.size, dtype=bool)
+    none[open_] = True
+    return low, high, r_low, r_high, none
+
+
+def _scan(
+    residual: Callable[[NDArray[np.float64], NDArray[np.intp]], NDArray[np.float64]],
+    k: NDArray[np.intp],
+    open_: NDArray[np.intp],
+    points: Sequence[float] | NDArray[np.float64],
+    low: NDArray[np.float64],
+    high: NDArray[np.float64],
+    r_low: NDArray[np.float64],
+    r_high: NDArray[np.float64],
+) -> NDArray[np.intp]:
+    """Walk the contacts ``open_`` down ``points`` to their first r ≤ 0, updating their
+    brackets in place; those that find none are returned."""
+    for point in points:
         if open_.size == 0:
             break
         r = residual(np.full(open_.size, point), k[open_])
@@ -289,9 +319,7 @@ def _brackets(
         rest = open_[~found]
         high[rest], r_high[rest] = point, r[~found]
         open_ = rest
-    none = np.zeros(k.size, dtype=bool)
-    none[open_] = True
-    return low, high, r_low, r_high, none
+    return open_
 
 
 def load_sharing_residual(
