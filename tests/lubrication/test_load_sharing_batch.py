@@ -127,11 +127,11 @@ def test_batch_equals_one_at_a_time():
 
 def test_vectorised_film_is_the_scalar_film():
     loads = np.array([1e-6, 0.3, 39.41, 2e4])
-    got = hamrock_dowson_central(RX, RY, 2 * E_STAR, ETA, ALPHA, U_E, loads)
+    got = hamrock_dowson_central(RX, RY, 2 * E_STAR, ETA, ALPHA, U_E)(loads)
     want = [hamrock_dowson(RX, RY, 2 * E_STAR, ETA, ALPHA, U_E, q).central for q in loads]
     np.testing.assert_allclose(got, want, rtol=1e-15)
     with pytest.raises(InputError, match="load"):
-        hamrock_dowson_central(RX, RY, 2 * E_STAR, ETA, ALPHA, U_E, np.array([1.0, 0.0]))
+        hamrock_dowson_central(RX, RY, 2 * E_STAR, ETA, ALPHA, U_E)(np.array([1.0, 0.0]))
 
 
 def test_bad_batch_input():

@@ -139,16 +139,20 @@ def hamrock_dowson_central(
     viscosity: float,
     pressure_viscosity: float,
     entrainment_speed: float,
-    loads: NDArray[np.float64],
-) -> NDArray[np.float64]:
-    """Central film h_c of :func:`hamrock_dowson` at each of the film loads ``loads`` (all > 0),
-    elementwise as that function computes it [m]."""
+) -> Callable[[NDArray[np.float64]], NDArray[np.float64]]:
+    """Central film h_c(Q_f) of :func:`hamrock_dowson` as a function of the film loads Q_f (an
+    array, all > 0), elementwise as that function computes it [m]; the inputs checked once."""
     u, g, _, k = dimensionless_groups(
         rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, 0.0
     )
-    q = np.asarray(loads, dtype=float)
-    if not np.all(q > 0.0):
-        raise InputError(
-            "load", float(np.min(q)), "a film load > 0 N (the film thickness diverges at 0)"
-        )
-    return _central(rx, u, g, q / (e_prime * rx * rx), k)
+    scale = e_prime * rx * rx
+
+    def central(loads: NDArray[np.float64]) -> NDArray[np.float64]:
+        q = np.asarray(loads, dtype=float)
+        if not np.all(q > 0.0):
+            raise InputError(
+                "load", float(np.min(q)), "a film load > 0 N (the film thickness diverges at 0)"
+            )
+        return _central(rx, u, g, q / scale, k)
+
+    return central

@@ -196,6 +196,8 @@ def share_loads(
     film = film_function(film_model)
     args = (rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed)
 
+    vectorised = hamrock_dowson_central(*args) if film is hamrock_dowson else None
+
     def films(t: NDArray[np.float64], k: NDArray[np.intp]) -> list[FilmThickness]:
         # film load (1 − ψ) Q = e^t Q, passed through t to keep it > 0 near ψ = 1
         return [
@@ -203,8 +205,8 @@ def share_loads(
         ]
 
     def residual(t: NDArray[np.float64], k: NDArray[np.intp]) -> NDArray[np.float64]:
-        if film is hamrock_dowson:
-            central = hamrock_dowson_central(*args, np.exp(t) * q[k])
+        if vectorised is not None:
+            central = vectorised(np.exp(t) * q[k])
         else:
             central = np.array([f.central for f in films(t, k)])
         h = film_factor * central
