@@ -3,9 +3,9 @@
 examples/wear_step_stress.toml (theory manual ``docs/theory/lubrication.md``, load sharing): one
 JGP solve at contact A (``share_load``, the call of the kinematics and friction chains); a warm
 step on a worn groove (both flanks, both nuts: 4 contacts in one ``step_rates`` call) and the
-load sharing of its contacts alone; the example's whole wear run. Medians of the repeats after a
-warm-up. Runs on any tree that has ``share_load`` and ``step_rates`` (old and new alike), so two
-trees can be compared by alternating PYTHONPATH.
+load sharing of its contacts alone, one ``share_load`` call each and all in one ``share_loads``
+call (as the wear step does); the example's whole wear run. Medians of the repeats after a
+warm-up.
 
 Usage: BALLSCREW_FFT_THREADS=1 python benchmarks/bench_load_sharing.py [--repeats N]
 """
@@ -22,7 +22,7 @@ import numpy as np
 
 import ballscrew
 from ballscrew.analyses.wear import wear_setup
-from ballscrew.lubrication import share_load
+from ballscrew.lubrication import share_load, share_loads
 from ballscrew.wear.setup import FLANKS, nut_force_pair
 from ballscrew.wear.step import StepContact, entrainment_speed, step_rates
 
@@ -62,12 +62,17 @@ def main() -> None:
     def sharing(contacts: list[tuple[float, float]]) -> object:
         return [share_load(q, setup.rx, setup.ry, eta, alpha, u_e, a, surface) for q, a in contacts]
 
+    def batch() -> object:
+        loads, areas = zip(*shares, strict=True)
+        return share_loads(list(loads), setup.rx, setup.ry, eta, alpha, u_e, list(areas), surface)
+
     rows = [
         ("one load sharing (contact A)", _median_ms(lambda: sharing(shares[:1]), args.repeats)),
         (
             "load sharing of the step's 4 contacts",
             _median_ms(lambda: sharing(shares), args.repeats),
         ),
+        ("the same in one share_loads call", _median_ms(batch, args.repeats)),
         (
             "warm wear step, 4 contacts, worn",
             _median_ms(lambda: step_rates(setup, warm), args.repeats),
