@@ -21,6 +21,7 @@ from ballscrew.lubrication.load_sharing import (
     asperity_pressure,
     load_sharing_residual,
     share_load,
+    share_loads,
 )
 from ballscrew.lubrication.lubricants import LUBRICANTS, Lubricant, lubricant
 from ballscrew.lubrication.rolling_resistance import ehl_rolling_resistance
@@ -39,4 +40,5 @@ __all__ = [
     "load_sharing_residual",
     "lubricant",
     "share_load",
+    "share_loads",
 ]

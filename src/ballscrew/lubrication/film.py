@@ -10,12 +10,25 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TypeVar
+
+import numpy as np
+from numpy.typing import NDArray
 
 from ballscrew.errors import InputError
 from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["FilmModel", "FilmThickness", "dimensionless_groups", "film_function", "hamrock_dowson"]
+__all__ = [
+    "FilmModel",
+    "FilmThickness",
+    "dimensionless_groups",
+    "film_function",
+    "hamrock_dowson",
+    "hamrock_dowson_central",
+]
+
+FloatLike = TypeVar("FloatLike", float, NDArray[np.float64])
 
 
 @dataclass(frozen=True)
@@ -109,6 +122,37 @@ def hamrock_dowson(
     )
     if w <= 0.0:
         raise InputError("load", load, "a film load > 0 N (the film thickness diverges at 0)")
-    central = rx * 2.69 * u**0.67 * g**0.53 * w**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
+    central = _central(rx, u, g, w, k)
     minimum = rx * 3.63 * u**0.68 * g**0.49 * w**-0.073 * (1.0 - math.exp(-0.68 * k))
     return FilmThickness(central, minimum, u, g, w, k)
+
+
+def _central(rx: float, u: float, g: float, w: FloatLike, k: float) -> FloatLike:
+    """h_c = R_x · 2.69 U^0.67 Ḡ^0.53 W^−0.067 (1 − 0.61 e^(−0.73 κ_HD)) of (E6.1), m."""
+    return rx * 2.69 * u**0.67 * g**0.53 * w**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
+
+
+def hamrock_dowson_central(
+    rx: float,
+    ry: float,
+    e_prime: float,
+    viscosity: float,
+    pressure_viscosity: float,
+    entrainment_speed: float,
+) -> Callable[[NDArray[np.float64]], NDArray[np.float64]]:
+    """Central film h_c(Q_f) of :func:`hamrock_dowson` as a function of the film loads Q_f (an
+    array, all > 0), elementwise as that function computes it [m]; the inputs checked once."""
+    u, g, _, k = dimensionless_groups(
+        rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, 0.0
+    )
+    scale = e_prime * rx * rx
+
+    def central(loads: NDArray[np.float64]) -> NDArray[np.float64]:
+        q = np.asarray(loads, dtype=float)
+        if not np.all(q > 0.0):
+            raise InputError(
+                "load", float(np.min(q)), "a film load > 0 N (the film thickness diverges at 0)"
+            )
+        return _central(rx, u, g, q / scale, k)
+
+    return central

@@ -10,16 +10,23 @@ Theory manual: ``docs/theory/lubrication.md``, load sharing (E6.1)–(E6.5).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brentq
 
-from ballscrew.errors import ConvergenceError, InputError
+from ballscrew.errors import InputError
 from ballscrew.fractal import yan_komvopoulos as yk
-from ballscrew.lubrication.film import FilmModel, FilmThickness, film_function
+from ballscrew.lubrication.film import (
+    FilmModel,
+    FilmThickness,
+    film_function,
+    hamrock_dowson,
+    hamrock_dowson_central,
+)
+from ballscrew.lubrication.roots import bracketed_roots
 from ballscrew.validation import real_array, real_number
 
 __all__ = [
@@ -28,6 +35,7 @@ __all__ = [
     "asperity_pressure",
     "load_sharing_residual",
     "share_load",
+    "share_loads",
 ]
 
 _T_MIN = math.log(1e-300)
@@ -52,7 +60,7 @@ class AsperitySurface:
     sigma: float | None = None
     """RMS height σ [m]; None = (E5.3) with the sampling length L_s = √ΔA."""
 
-    @property
+    @cached_property
     def rms_height(self) -> float:
         """σ used in the bearing ratio (E5.15), m."""
         if self.sigma is not None:
@@ -125,9 +133,7 @@ def share_load(
         Q = F_film + F_asp,   h = h_c(F_film)  (Hamrock–Dowson, E′ = 2E*),
         F_asp(h) = A_n · F_asp,cell(a_l(h))/ΔA,   r(ψ) = F_asp(h_c((1−ψ)Q)) − ψQ = 0
 
-    r is strictly decreasing with r(0) ≥ 0 and r → −Q as ψ → 1; the root is found by Brent in
-    t = ln(1 − ψ) on [ln 1e-300, 0], which always brackets it (on rough surfaces the root lies
-    closer to 1 than 1e-12, where the document's bracket [0, 1 − 1e-12] has no sign change).
+    One contact of :func:`share_loads` (which gives the solve and its tolerance).
 
     ``nominal_area`` A_n: π a b of the Hertz ellipse (or the loaded cells' area). With no
     entrainment (u_e = 0) there is no film and ψ = 1 (dry contact).
@@ -139,55 +145,183 @@ def share_load(
     starved or grease-lubricated supply (a lumped supply factor; Hamrock & Dowson 1977, IV,
     give φ for a known inlet meniscus).
     """
+    return share_loads(
+        [load],
+        rx,
+        ry,
+        viscosity,
+        pressure_viscosity,
+        entrainment_speed,
+        [nominal_area],
+        surface,
+        xtol=xtol,
+        film_model=film_model,
+        film_factor=film_factor,
+    )[0]
+
+
+def share_loads(
+    loads: Sequence[float],
+    rx: float,
+    ry: float,
+    viscosity: float,
+    pressure_viscosity: float,
+    entrainment_speed: float,
+    nominal_areas: Sequence[float],
+    surface: AsperitySurface,
+    *,
+    xtol: float = 1e-14,
+    film_model: str | FilmModel = "hamrock_dowson",
+    film_factor: float = 1.0,
+) -> tuple[LoadSharing, ...]:
+    """:func:`share_load` of several contacts that share the curvature, lubricant, speed and
+    surface and differ in load Q_k and nominal area A_n,k, all solved together.
+
+    r is strictly decreasing with r(0) ≥ 0 and r → −Q as ψ → 1; each root is found in
+    t = ln(1 − ψ) on [ln 1e-300, 0], which always brackets it (on rough surfaces the root lies
+    closer to 1 than 1e-12, where the document's bracket [0, 1 − 1e-12] has no sign change), by
+    Chandrupatla's (1997) bracketed method for all contacts at once
+    (:func:`~ballscrew.lubrication.roots.bracketed_roots`): t lies in a bracket with a sign
+    change no wider than ``xtol`` + 2e-14 |t|, else :class:`ConvergenceError`.
+    """
     if not (math.isfinite(film_factor) and 0.0 < film_factor <= 1.0):
         raise InputError("film_factor", film_factor, "a supply factor in (0, 1]")
-    q = float(load)
-    if not (math.isfinite(q) and q > 0.0):
-        raise InputError("load", load, "a finite normal load > 0 N")
-    area = float(nominal_area)
-    if not (math.isfinite(area) and area > 0.0):
-        raise InputError("nominal_area", nominal_area, "a finite area > 0 m²")
+    q = np.array([_positive("load", v, "a finite normal load > 0 N") for v in loads])
+    area = np.array([_positive("nominal_area", v, "a finite area > 0 m²") for v in nominal_areas])
+    if q.shape != area.shape:
+        raise InputError("nominal_areas", len(area), f"one area per load ({q.size})")
     if float(entrainment_speed) == 0.0:
-        return LoadSharing(1.0, q, 0.0, None)
+        return tuple(LoadSharing(1.0, float(v), 0.0, None) for v in q)
     e_prime = 2.0 * surface.e_star
-    args = (q, rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed, film_model)
+    film = film_function(film_model)
+    args = (rx, ry, e_prime, viscosity, pressure_viscosity, entrainment_speed)
 
-    def residual_t(t: float) -> float:  # r at ψ = 1 − e^t
-        h = film_factor * _film(math.exp(t), *args).central
-        return area * float(surface.pressure(h)) + math.expm1(t) * q
+    vectorised = hamrock_dowson_central(*args) if film is hamrock_dowson else None
 
-    t = 0.0
-    if residual_t(0.0) <= 0.0:
-        psi = 0.0
-    else:
-        # Solve in t = ln(1 − ψ): h_c grows only as W^−0.067, so for rough surfaces the root
-        # lies within 1e-12 of ψ = 1; at t = ln(1e-300) the flooded film is ~1e20 times thicker
-        # than at ψ = 0 and r = −ψQ < 0, so [ln 1e-300, 0] brackets the root. A starved film
-        # shrinks again as its load vanishes (its Hertz zone and so its meniscus distance do):
-        # then the first sign change on a grid in t brackets the root, and none means the film
-        # carries nothing (ψ = 1, dry).
-        low = _bracket(residual_t)
-        if low is None:
-            return LoadSharing(1.0, q, 0.0, None)
-        t, info = brentq(residual_t, low[0], low[1], xtol=xtol, rtol=1e-14, full_output=True)
-        if not info.converged:  # pragma: no cover - brentq on a bracketed monotone function
-            raise ConvergenceError("JGP load sharing", info.iterations, residual_t(t), xtol)
-        psi = -math.expm1(t)
-    film = _film(math.exp(t), *args)
-    return LoadSharing(float(psi), q, film_factor * film.central, film)
+    def films(t: NDArray[np.float64], k: NDArray[np.intp]) -> list[FilmThickness]:
+        # film load (1 − ψ) Q = e^t Q, passed through t to keep it > 0 near ψ = 1
+        return [
+            film(*args, math.exp(tt) * q[kk]) for tt, kk in zip(t.tolist(), k.tolist(), strict=True)
+        ]
+
+    def residual(t: NDArray[np.float64], k: NDArray[np.intp]) -> NDArray[np.float64]:
+        if vectorised is not None:
+            central = vectorised(np.exp(t) * q[k])
+        else:
+            central = np.array([f.central for f in films(t, k)])
+        h = film_factor * central
+        return area[k] * surface.pressure(h) + np.expm1(t) * q[k]
+
+    every = np.arange(q.size)
+    t = np.zeros(q.size)
+    r_high = residual(t, every)
+    dry = np.zeros(q.size, dtype=bool)
+    wet = np.flatnonzero(r_high > 0.0)  # r(0) ≤ 0: the film carries all, ψ = 0
+    if wet.size:
+        low, high, r_low, r_top, none = _brackets(residual, wet, q[wet], r_high[wet])
+        dry[wet[none]] = True
+        keep = ~none
+        t[wet[keep]] = bracketed_roots(
+            lambda x, k: residual(x, wet[keep][k]),
+            low[keep],
+            high[keep],
+            r_low[keep],
+            r_top[keep],
+            xtol,
+            1e-14,
+            "JGP load sharing",
+        )
+    final = films(t, every)
+    return tuple(
+        LoadSharing(1.0, float(qk), 0.0, None)
+        if dk
+        else LoadSharing(float(-math.expm1(tk)), float(qk), film_factor * fk.central, fk)
+        for qk, tk, dk, fk in zip(q, t, dry, final, strict=True)
+    )
 
 
-def _bracket(residual: Callable[[float], float]) -> tuple[float, float] | None:
-    """[a, b] ⊂ [ln 1e-300, 0] with r(a) ≤ 0 < r(b), b the largest such (r(0) > 0 given)."""
-    if residual(_T_MIN) <= 0.0:
-        return _T_MIN, 0.0
-    grid = -np.geomspace(1e-12, -_T_MIN, 97)
-    upper = 0.0
-    for t in grid:
-        if residual(float(t)) <= 0.0:
-            return float(t), upper
-        upper = float(t)
-    return None
+def _positive(field: str, value: float, allowed: str) -> float:
+    out = float(value)
+    if not (math.isfinite(out) and out > 0.0):
+        raise InputError(field, value, allowed)
+    return out
+
+
+def _brackets(
+    residual: Callable[[NDArray[np.float64], NDArray[np.intp]], NDArray[np.float64]],
+    k: NDArray[np.intp],
+    load: NDArray[np.float64],
+    r_zero: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], ...]:
+    """Brackets [a, b] ⊂ [ln 1e-300, 0] with r(a) ≤ 0 < r(b) of the contacts k (loads Q_k,
+    r(0) = ``r_zero`` > 0), their residuals, and which have none (dry, ψ = 1).
+
+    First two steps of the fixed-point map ψ ↦ g(ψ) = F_asp(h_c((1−ψ)Q))/Q from ψ₀ = 0: g falls
+    as ψ grows where the film thickens as its load falls, so ψ₁ = g(0) ≥ ψ* ≥ ψ₂ = g(ψ₁); each
+    end is kept only where its residual has the right sign. Where ψ₁ ≥ 1 or r(t₁) > 0: the first
+    sign change down the coarse points t = −1, −3, …, −243, ln 1e-300 (at ln 1e-300 the flooded
+    film is ~1e20 times thicker than at ψ = 0 and r = −ψQ < 0). A starved film shrinks again as
+    its load vanishes (its Hertz zone and so its meniscus distance do): where r(ln 1e-300) > 0 the
+    first sign change on a fine grid in t down from 0 brackets the root, and none means the film
+    carries nothing.
+    """
+    low, high = np.full(k.size, _T_MIN), np.zeros(k.size)
+    r_low, r_high = np.full(k.size, np.nan), r_zero.copy()
+    psi1 = r_zero / load
+    fixed = np.flatnonzero(psi1 < 1.0)
+    t1 = np.maximum(np.log1p(-psi1[fixed]), _T_MIN)
+    r1 = residual(t1, k[fixed])
+    near, below = fixed[r1 <= 0.0], r1 <= 0.0
+    low[near], r_low[near] = t1[below], r1[below]
+    if near.size:
+        # g(ψ₁) Q = F_asp at t₁ = r(t₁) − expm1(t₁) Q
+        psi2 = np.clip((r_low[near] - np.expm1(low[near]) * load[near]) / load[near], 0.0, 1.0)
+        with np.errstate(divide="ignore"):
+            t2 = np.clip(np.log1p(-psi2), low[near], 0.0)
+        r2 = residual(t2, k[near])
+        upper = r2 > 0.0
+        high[near[upper]], r_high[near[upper]] = t2[upper], r2[upper]
+        low[near[~upper]], r_low[near[~upper]] = t2[~upper], r2[~upper]
+    open_ = np.setdiff1d(np.arange(k.size), near)
+    open_ = _scan(
+        residual,
+        k,
+        open_,
+        (-1.0, -3.0, -9.0, -27.0, -81.0, -243.0, _T_MIN),
+        low,
+        high,
+        r_low,
+        r_high,
+    )
+    high[open_], r_high[open_] = 0.0, r_zero[open_]
+    open_ = _scan(residual, k, open_, -np.geomspace(1e-12, -_T_MIN, 97), low, high, r_low, r_high)
+    none = np.zeros(k.size, dtype=bool)
+    none[open_] = True
+    return low, high, r_low, r_high, none
+
+
+def _scan(
+    residual: Callable[[NDArray[np.float64], NDArray[np.intp]], NDArray[np.float64]],
+    k: NDArray[np.intp],
+    open_: NDArray[np.intp],
+    points: Sequence[float] | NDArray[np.float64],
+    low: NDArray[np.float64],
+    high: NDArray[np.float64],
+    r_low: NDArray[np.float64],
+    r_high: NDArray[np.float64],
+) -> NDArray[np.intp]:
+    """Walk the contacts ``open_`` down ``points`` to their first r ≤ 0, updating their
+    brackets in place; those that find none are returned."""
+    for point in points:
+        if open_.size == 0:
+            break
+        r = residual(np.full(open_.size, point), k[open_])
+        found = r <= 0.0
+        low[open_[found]], r_low[open_[found]] = point, r[found]
+        rest = open_[~found]
+        high[rest], r_high[rest] = point, r[~found]
+        open_ = rest
+    return open_
 
 
 def load_sharing_residual(

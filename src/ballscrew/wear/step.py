@@ -19,7 +19,7 @@ from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
-from ballscrew.lubrication import share_load
+from ballscrew.lubrication import share_loads
 from ballscrew.wear.profile import worn_gap
 from ballscrew.wear.programme import WearLevel
 from ballscrew.wear.rates import cell_wear_rate
@@ -126,10 +126,45 @@ def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[Flank
             initial=None if starts is None else np.stack(starts),
         )
         solved.update(zip(group, results, strict=True))
+    psis = _asperity_shares(setup, contacts, loads, [solved[i] for i in range(len(contacts))])
     return tuple(
-        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level)
+        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level, psis[i])
         for i, (c, q) in enumerate(zip(contacts, loads, strict=True))
     )
+
+
+def _asperity_shares(
+    setup: WearSetup,
+    contacts: Sequence[StepContact],
+    loads: Sequence[float],
+    solved: Sequence[ContactResult],
+) -> list[float]:
+    """JGP asperity share ψ of each contact (E6.4), A_n its loaded cells; the contacts on one
+    surface, lubricant and speed are solved together (:func:`share_loads`); dry: ψ = 1."""
+    groups: dict[tuple[object, ...], list[int]] = {}
+    for i, c in enumerate(contacts):
+        eta, alpha = setup.lubricant(c.level)
+        if eta is not None and alpha is not None:
+            surface = setup.surface_at(float(np.max(c.depth)))
+            key = (surface, eta, alpha, entrainment_speed(setup.geometry, c.speed))
+            groups.setdefault(key, []).append(i)
+    psis = [1.0] * len(contacts)
+    for (surface, eta, alpha, speed), group in groups.items():
+        shares = share_loads(
+            [loads[i] for i in group],
+            setup.rx,
+            setup.ry,
+            eta,
+            alpha,
+            speed,
+            [_loaded_area(setup, solved[i]) for i in group],
+            surface,
+            film_model=setup.film_model,
+            film_factor=setup.spec.film_factor,
+        )
+        for i, share in zip(group, shares, strict=True):
+            psis[i] = share.psi
+    return psis
 
 
 def flank_rate(
@@ -161,8 +196,9 @@ def _rate(
     screw_speed: float,
     depth: FloatArray,
     level: WearLevel | None,
+    psi: float,
 ) -> FlankRate:
-    """Asperity share, sliding, cell wear and raceway depth rate of one solved contact."""
+    """Sliding, cell wear and raceway depth rate of one solved contact of asperity share ψ."""
     p = np.asarray(sol.pressure, dtype=float)
     if p[[0, -1], :].any() or p[:, [0, -1]].any():
         warnings.warn(
@@ -173,23 +209,6 @@ def _rate(
         )
     cell = setup.cell_area
     surface = setup.surface_at(float(np.max(depth)))
-    eta, alpha = setup.lubricant(level)
-    if eta is not None and alpha is not None:
-        area = float(np.count_nonzero(p > 0.0)) * cell
-        psi = share_load(
-            q,
-            setup.rx,
-            setup.ry,
-            eta,
-            alpha,
-            entrainment_speed(setup.geometry, screw_speed),
-            area,
-            surface,
-            film_model=setup.film_model,
-            film_factor=setup.spec.film_factor,
-        ).psi
-    else:
-        psi = 1.0
     speed = sliding_field_closed_form(
         setup.geometry, screw_speed, setup.x, setup.y, flank, curvature=True
     ).speed
@@ -210,3 +229,8 @@ def _rate(
         strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length_of(level)
     )
     return FlankRate(q, p, float(psi), w, depth_per_revolution(rate, screw_speed), sol.iterations)
+
+
+def _loaded_area(setup: WearSetup, sol: ContactResult) -> float:
+    """Nominal area A_n of a solved contact: its loaded cells [m²]."""
+    return float(np.count_nonzero(np.asarray(sol.pressure) > 0.0)) * setup.cell_area
