@@ -9,7 +9,7 @@ from ballscrew.case import Case
 from ballscrew.contact import solve_normal
 from ballscrew.wear.profile import worn_gap
 from ballscrew.wear.setup import nut_force_pair
-from ballscrew.wear.step import flank_rates
+from ballscrew.wear.step import StepContact, step_rates
 
 from .conftest import SPEED
 
@@ -26,10 +26,20 @@ def test_batched_class_contacts_equal_single_solves(coarse_case: Case) -> None:
     f1, f2 = nut_force_pair(setup.initial_preload, 2000.0)
     contacts = [(f1, 0.8), (f1, 1.0), (f1, 1.2), (f2, 0.9), (f2, 1.1)]
     depth = 1e-8 * np.exp(-((setup.y / (0.3 * setup.y.max())) ** 2))  # a worn groove
-    cold = flank_rates(setup, 1, contacts, SPEED, depth, [None] * 5)
+
+    def rates(d, starts):
+        return step_rates(
+            setup,
+            [
+                StepContact(1, force, SPEED, d, start, None, ratio)
+                for (force, ratio), start in zip(contacts, starts, strict=True)
+            ],
+        )
+
+    cold = rates(depth, [None] * 5)
     # a later step: warm starts for some contacts, none for the others (two batches)
     starts = [cold[0].pressure, None, cold[2].pressure, None, cold[4].pressure]
-    warm = flank_rates(setup, 1, contacts, SPEED, 0.5 * depth, starts)
+    warm = rates(0.5 * depth, starts)
     for outs, d, initial in ((cold, depth, [None] * 5), (warm, 0.5 * depth, starts)):
         for (force, ratio), out, p0 in zip(contacts, outs, initial, strict=True):
             load = ratio * setup.ball_load(force)
