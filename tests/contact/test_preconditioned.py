@@ -235,3 +235,23 @@ def test_mixed_precision_needs_the_preconditioned_solver():
         solve_normal(gap, dx, dy, E_STAR, load, method="pk", precision="mixed")
     with pytest.raises(InputError, match="precision"):
         solve_normal_displacement(gap, dx, dy, E_STAR, 1e-6, precision="double")
+
+
+def test_nested_grid_transfers_match_cell_by_cell_formulas():
+    """The 2 × 2 block mean (bit for bit numpy's mean of the blocks) and the cell-centred linear
+    refinement (3/4 own cell + 1/4 neighbour, edge cell repeated), written out cell by cell."""
+    from ballscrew.contact.preconditioned import _coarsen, _refine_axis
+
+    h = np.random.default_rng(11).uniform(-1e-6, 1e-6, (3, 6, 10))
+    coarse = _coarsen(h)
+    assert np.array_equal(coarse, h.reshape(3, 3, 2, 5, 2).mean(axis=(2, 4)))
+    fine = _refine_axis(_refine_axis(coarse, 1), 2)
+    assert fine.shape == h.shape
+    for i in range(6):
+        a, b = i // 2, min(max(i // 2 + (1 if i % 2 else -1), 0), 2)
+        for j in range(10):
+            c, d = j // 2, min(max(j // 2 + (1 if j % 2 else -1), 0), 4)
+            expected = 0.75 * (0.75 * coarse[:, a, c] + 0.25 * coarse[:, a, d]) + 0.25 * (
+                0.75 * coarse[:, b, c] + 0.25 * coarse[:, b, d]
+            )
+            np.testing.assert_allclose(fine[:, i, j], expected, rtol=1e-14, atol=1e-24)

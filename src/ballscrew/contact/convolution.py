@@ -111,15 +111,18 @@ class DCFFTOperator:
 
         ``out``, if given, is an (nx, ny) float64 array that receives u.
         """
-        transform = padded_rfft(self.shape, self.xp, self.dtype)
+        if out is None:
+            out = self.xp.empty(self.shape, dtype=np.float64)
+        return self._apply_with(padded_rfft(self.shape, self.xp, self.dtype), pressure, out)
+
+    __call__ = apply
+
+    def _apply_with(self, transform: Any, pressure: Any, out: Any) -> Any:
+        """:meth:`apply` with the padded transform of this grid already looked up."""
         spectrum = transform.forward(pressure)
         pairs = spectrum.view(self.dtype)
         self.xp.multiply(pairs, self._kernel_pairs, out=pairs)
-        if out is None:
-            out = self.xp.empty(self.shape, dtype=np.float64)
         return transform.inverse(spectrum, out)
-
-    __call__ = apply
 
     def apply_batch(self, pressures: Any, out: Any) -> Any:
         """u = K ∗ p of each grid of a (batch, nx, ny) stack ``pressures``, written to ``out``.
@@ -192,15 +195,20 @@ def _apply_each(operator: Callable[[int], DCFFTOperator], pressures: Any, out: A
     :func:`~ballscrew.backend.fft_threads` threads of one FFT thread each (grids of fewer than
     512² padded points get one FFT thread, so one core, otherwise)."""
     threads = min(fft_threads(4 * pressures.size), len(pressures))
+    first = operator(0)  # every grid of the stack has the same shape and precision
+
+    def each(chunk: Any) -> None:  # one transform lookup per chunk, not per grid
+        transform = padded_rfft(first.shape, first.xp, first.dtype)
+        for b in chunk:
+            operator(b)._apply_with(transform, pressures[b], out[b])
+
     if threads == 1:
-        for b, (p, u) in enumerate(zip(pressures, out, strict=True)):
-            operator(b).apply(p, out=u)
+        each(range(len(pressures)))
         return out
 
     def rows(chunk: Any) -> None:  # in a pool thread, one FFT thread
         with limited_fft_threads(1):
-            for b in chunk:
-                operator(b).apply(pressures[b], out=out[b])
+            each(chunk)
 
     list(_pool().map(rows, np.array_split(np.arange(len(pressures)), threads)))
     return out
