@@ -149,9 +149,9 @@ def test_bracketed_roots_of_a_batch_and_their_certificate():
         return np.cos(x) - c[i] * x
 
     lo, hi = np.zeros(3), np.full(3, 2.0)
-    x = bracketed_roots(r, lo, hi, 1e-14, 1e-14, "t")
+    x = bracketed_roots(r, lo, hi, r(lo, np.arange(3)), r(hi, np.arange(3)), 1e-14, 1e-14, "t")
     want = [brentq(lambda v, k=k: math.cos(v) - k * v, 0.0, 2.0, xtol=1e-14) for k in c]
     np.testing.assert_allclose(x, want, rtol=0, atol=3e-14)
     with pytest.raises(ConvergenceError, match="residual") as err:
-        bracketed_roots(r, lo, hi, 1e-14, 0.0, "t", 2)
+        bracketed_roots(r, lo, hi, r(lo, np.arange(3)), r(hi, np.arange(3)), 1e-14, 0.0, "t", 2)
     assert err.value.residual > 0.0

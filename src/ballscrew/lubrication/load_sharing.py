@@ -218,13 +218,15 @@ def share_loads(
     dry = np.zeros(q.size, dtype=bool)
     wet = np.flatnonzero(r_high > 0.0)  # r(0) ≤ 0: the film carries all, ψ = 0
     if wet.size:
-        low, high, none = _brackets(residual, wet, q[wet], r_high[wet])
+        low, high, r_low, r_top, none = _brackets(residual, wet, q[wet], r_high[wet])
         dry[wet[none]] = True
         keep = ~none
         t[wet[keep]] = bracketed_roots(
             lambda x, k: residual(x, wet[keep][k]),
             low[keep],
             high[keep],
+            r_low[keep],
+            r_top[keep],
             xtol,
             1e-14,
             "JGP load sharing",
@@ -252,7 +254,7 @@ def _brackets(
     r_zero: NDArray[np.float64],
 ) -> tuple[NDArray[np.float64], ...]:
     """Brackets [a, b] ⊂ [ln 1e-300, 0] with r(a) ≤ 0 < r(b) of the contacts k (loads Q_k,
-    r(0) = ``r_zero`` > 0) and which have none (dry, ψ = 1).
+    r(0) = ``r_zero`` > 0), their residuals, and which have none (dry, ψ = 1).
 
     First two steps of the fixed-point map ψ ↦ g(ψ) = F_asp(h_c((1−ψ)Q))/Q from ψ₀ = 0: g falls
     as ψ grows where the film thickens as its load falls, so ψ₁ = g(0) ≥ ψ* ≥ ψ₂ = g(ψ₁); each
@@ -295,7 +297,7 @@ def _brackets(
     open_ = _scan(residual, k, open_, -np.geomspace(1e-12, -_T_MIN, 97), low, high, r_low, r_high)
     none = np.zeros(k.size, dtype=bool)
     none[open_] = True
-    return low, high, none
+    return low, high, r_low, r_high, none
 
 
 def _scan(
