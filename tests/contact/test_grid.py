@@ -211,3 +211,14 @@ def test_a_failing_extra_load_is_named_with_its_contact(monkeypatch):
     _failing_at(monkeypatch, 400.0)
     with pytest.raises(ConvergenceError, match=r"\(contact 0 of the batch, extra load 400 N\)"):
         solve_contacts(requests, cells_across=16)
+
+
+def test_extra_loads_take_any_real_number_but_a_bool():
+    """NumPy scalars are loads; True is not a load of 1 N, NaN is no load at all."""
+    from ballscrew.contact.grid import _extra_load
+
+    assert _extra_load(np.float32(50.0), 100.0) == 50.0
+    assert _extra_load(np.int64(50), 100.0) == 50.0
+    for bad in (True, float("nan"), 0.0, 101.0):
+        with pytest.raises(InputError, match="extra_loads"):
+            _extra_load(bad, 100.0)

@@ -21,7 +21,14 @@ def test_window_gives_the_whole_grid_solution(monkeypatch):
     """Same iterations, pressures within the stop's error (1e-7 of p0, as pcg against pk), and the
     displacement handed back by the check is K ∗ p of the pressure."""
     gap, dx, reference = sphere()
+    windows = []
+    window = preconditioned._window
+    monkeypatch.setattr(
+        preconditioned, "_window", lambda p: windows.append(window(p)) or windows[-1]
+    )
     windowed = solve_normal(gap, dx, dx, E_STAR, 100.0)
+    used = [w for w in windows if w is not None]
+    assert used and all((r.stop - r.start) * (c.stop - c.start) <= 0.5 * gap.size for r, c in used)
     monkeypatch.setattr(preconditioned, "WINDOW_MAX_FRACTION", 0.0)  # no window
     whole = solve_normal(gap, dx, dx, E_STAR, 100.0)
     assert windowed.iterations == whole.iterations and windowed.coarse_work == whole.coarse_work

@@ -11,6 +11,7 @@ ask for further loads on the grid of its largest one (a load–approach table).
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -136,7 +137,7 @@ def grid_cells(
 
 def _extra_load(load: float, top: float) -> float:
     """An extra load of a request, checked to lie in (0, top] [N]."""
-    if not (isinstance(load, int | float) and 0.0 < load <= top):
+    if not (isinstance(load, numbers.Real) and not isinstance(load, bool) and 0.0 < load <= top):
         raise InputError("extra_loads", load, f"a load in (0, {top!r}] N (the request's load)")
     return float(load)
 

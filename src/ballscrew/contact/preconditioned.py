@@ -575,8 +575,9 @@ def _operator(
 def _preconditioner(
     shape: tuple[int, int], dx: Any, dy: Any, e_star: Any, xp: ModuleType
 ) -> SpectralPreconditioner:
-    """The preconditioner of this grid from a small cache (the last 8 grids), or the stack of
-    them for per-contact cells."""
+    """The preconditioner of this grid from a small cache (the last ``_CACHED`` grids and
+    windows; a plain dict, so one solving thread at a time), or the stack of them for
+    per-contact cells."""
     if np.ndim(dx) != 0:
         return PreconditionerStack(
             [_preconditioner(shape, *cell, xp) for cell in zip(dx, dy, e_star, strict=True)]
