@@ -26,9 +26,9 @@ XJTU_ASSUMPTIONS = (
     "25 mm would lower the catalogue torque by 12 %)",
     "double nut, each 60 balls of 4.7625 mm, conformity 0.52/0.52, contact angle 45 deg "
     "(ASSUMED, typical of a 32 x 8 screw with C ~ 16 kN; the catalogue formula does not use them)",
-    "'Up'/'Down' compared separately with the same prediction (orientation of the test axis not "
-    "published; the 26 % difference between the two directions is not explained by any model "
-    "here)",
+    "'Up'/'Down': the upper and the lower screw of one type (source, README of 2026-07-09), "
+    "compared separately with the same prediction; the 26 % difference between the two "
+    "specimens' as-new torques is not explained by any model here",
 )
 
 TORQUE_BAND = (
@@ -250,9 +250,9 @@ def test_xjtu_torque_decay_over_degradation(validation, dataset) -> None:
         unit="-",
         measured=data["up_Nm"][-1] / data["up_Nm"][0],
         assumptions=XJTU_ASSUMPTIONS,
-        reason="wear_life needs the revolutions run in each degradation stage (the stroke and "
-        "the duration of one degradation test are not published), the lubricant and the wear "
-        "coefficient of the lubricated raceway; fitting the wear coefficient to this decay would "
-        "make it a calibration, not a validation. Missing: the test programme (revolutions per "
-        "stage) or an independent wear coefficient for the same steel and lubricant.",
+        reason="wear_life needs the stroke (not published; 35 h per stage and the speeds are), "
+        "the lubricant and the wear coefficient of the lubricated raceway; fitting the wear "
+        "coefficient to this decay would make it a calibration, not a validation (that forecast "
+        "from the first half is in test_wear_history.py). Missing: an independent wear "
+        "coefficient for the same steel and lubricant.",
     )
