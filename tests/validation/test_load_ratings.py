@@ -138,7 +138,11 @@ def _rows(dataset, file: str, key: str) -> tuple[list[dict[str, Any]], dict[str,
 
 
 def predicted_ratings(
-    d0: float, lead: float, ball: float, circuits: int, static_model: str = "iso76",
+    d0: float,
+    lead: float,
+    ball: float,
+    circuits: int,
+    static_model: str = "iso76",
     turns: float = 1.0,
 ) -> tuple[float, float]:
     """(C_a, C_0a) [N] of one nut of ``circuits`` circuits of ``turns`` turns each (millimetre
@@ -195,7 +199,11 @@ def test_load_rating_against_catalogue(validation, dataset, maker, model, rating
     row = ROW_GEOMETRY.get(maker, dict)(next(r for r in rows if r["model"] == model))
     static_model, description = RATINGS[rating]
     ca, c0a = predicted_ratings(
-        row["d0_mm"], row["lead_mm"], row["ball_mm"], row[circuits], static_model or "iso76",
+        row["d0_mm"],
+        row["lead_mm"],
+        row["ball_mm"],
+        row[circuits],
+        static_model or "iso76",
         row.get("turns_per_circuit", 1.0),
     )
     static = static_model is not None
