@@ -30,15 +30,15 @@ import pytest
 
 from ballscrew.contact.elastic import composite_modulus
 from ballscrew.contact_resistance import FractalTCRModel, element_tcr, gap_conductance
-from ballscrew.contact_resistance.correlations import gas_rarefaction_parameter
 
 from . import test_tcr_textbook as textbook
+from .test_tcr import AIR_STEEL
 
 MPA = 1.0e6
 UM = 1.0e-6
 ELEMENT_AREA = 1.0e-6  # m², as the other TCR rows (GUESS)
 LAMBDA_GREASE = 0.14  # W/(m K), the reference case's oil/grease value (ASSUMED)
-AIR_M = gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71)  # 0.273 µm, as the other rows
+AIR_M = AIR_STEEL.rarefaction  # 0.273 µm, as the other rows
 GAP_MODELS = ("mean_cap", "mean_plane")
 VARIANTS = ("V2", "MT", "V1")
 
@@ -107,18 +107,8 @@ VENDOR_ASSUMPTIONS = (
     "only in L_g: mean_cap (T6) or mean_plane Y over L_u = 0.8 mm (T9)",
     "element area 1 mm² (GUESS, as the other TCR rows)",
 )
-STEEL = FractalTCRModel(
-    D=1.59,
-    G=9e-10,
-    E_star=composite_modulus(206e9, 0.3, 206e9, 0.3),
-    H=6.5e9,
-    lambda_1=40.0,
-    lambda_2=40.0,
-    lambda_f=0.026,
-    sampling_length=textbook.BAND[0],
-    rarefaction=AIR_M,
-)
-BECU = replace(STEEL, E_star=composite_modulus(128e9, 0.3, 206e9, 0.3), H=3.7e9, lambda_1=130.0)
+
+BECU = replace(AIR_STEEL, E_star=composite_modulus(128e9, 0.3, 206e9, 0.3), H=3.7e9, lambda_1=130.0)
 
 # row → (model → known miss, with the error found when the rows were first run)
 MISSES = {
@@ -197,7 +187,7 @@ def _vendor_cases():
 def test_vendor_steel_air(validation, dataset, variant, gap, index) -> None:
     data = dataset("tcr", "moldflow_steel_air_steel")
     pressure = data["pressure_MPa"][index]
-    model = replace(STEEL, variant=variant, gap_model=gap)
+    model = replace(AIR_STEEL, variant=variant, gap_model=gap)
     predicted = _element_h(model, pressure * MPA)
     row = f"moldflow_steel_air_steel_{pressure:g}MPa"
     measured = data["conductance_W_m2K"][index]
