@@ -40,21 +40,24 @@ SUBJECT = {"model": "element_tcr (fractal, V2)", "source": SOURCE, "assumptions"
 """What every comparison of this module shares."""
 
 
+AIR_STEEL = FractalTCRModel(
+    D=1.59,
+    G=9e-10,
+    E_star=composite_modulus(206e9, 0.3, 206e9, 0.3),
+    H=6.5e9,
+    lambda_1=40.0,
+    lambda_2=40.0,
+    lambda_f=0.026,
+    gap_model="mean_plane",
+    sampling_length=8e-4,
+    rarefaction=gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71),
+)
+"""The element model of the vendor's ground steel joint in air (V2, gas gap)."""
+
+
 def _conductance(pressure: float) -> float:
     """h = 1/(R A) of one element under contact pressure ``pressure``, W/(m² K)."""
-    model = FractalTCRModel(
-        D=1.59,
-        G=9e-10,
-        E_star=composite_modulus(206e9, 0.3, 206e9, 0.3),
-        H=6.5e9,
-        lambda_1=40.0,
-        lambda_2=40.0,
-        lambda_f=0.026,
-        gap_model="mean_plane",
-        sampling_length=8e-4,
-        rarefaction=gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71),
-    )
-    result = element_tcr(np.array([pressure * ELEMENT_AREA]), ELEMENT_AREA, model)
+    result = element_tcr(np.array([pressure * ELEMENT_AREA]), ELEMENT_AREA, AIR_STEEL)
     return float(1.0 / result.unit_area_resistance[0])
 
 

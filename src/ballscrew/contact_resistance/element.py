@@ -418,7 +418,9 @@ class FractalTCRModel:
     cutoff_area: float = 1.0e-16
     """Lower spot-area cut-off a_s of variant MT, m²."""
     gap_model: str = "mean_cap"
-    """Gap-thickness model, one of :data:`GAP_MODELS` (default T6)."""
+    """Gap-thickness model, one of :data:`GAP_MODELS` (default T6, for liquids too: no measured
+    rough joint in a liquid decides between it and ``"mean_plane"``; theory manual, *Gap
+    thickness in a liquid*)."""
     gap_factor: float = 1.0
     """Multiplier on the gap thickness L_g (dimensionless)."""
     sampling_length: float | None = None
