@@ -174,7 +174,7 @@ def _bordered(matrix: sp.csr_matrix, border: int, rtol: float) -> Solve:
 
     Preconditioner: the block lower triangle, P⁻¹b = (x₁, G⁻¹(b₂ − F x₁)) with x₁ one
     smoothed-aggregation V-cycle on K (block-triangular preconditioning: Elman, Silvester &
-    Wathen 2005, *Finite Elements and Fast Iterative Solvers*, Sec. 6.2; preconditioned GMRES:
+    Wathen 2005, *Finite Elements and Fast Iterative Solvers*; preconditioned GMRES:
     Saad 2003, *Iterative Methods for Sparse Linear Systems*, Sec. 9.3). With an exact
     K⁻¹ the preconditioned matrix is the identity plus a rank of the border, so GMRES needs
     about as many iterations as AMG-CG on K. Stops at ‖b − Ax‖ ≤ rtol‖b‖ (checked).
