@@ -26,7 +26,6 @@ from ballscrew.thermal.coolant import (
     bore_nusselt,
     bore_outlet_rise,
 )
-from ballscrew.thermal.models import MeshOptions, build_model
 from ballscrew.thermal.problem import Sensor, TableMass
 from ballscrew.thermal.simulate import time_to_fraction
 
@@ -176,18 +175,6 @@ def test_table_mass_alone_stores_heat():
     assert table.capacity == 1e5
     with pytest.raises(InputError, match="table_heat_capacity"):
         TableMass(100.0, 10.0, 0.0)
-
-
-def test_the_3d_model_refuses_a_hollow_shaft_in_one_line(case):
-    """The 3-D model has no bore: a one-line error naming the field (the axisymmetric model and
-    the network take it)."""
-    problem = field(case, BORE).problem
-    with pytest.raises(InputError, match="not supported by the 3d model") as error:
-        build_model("3d", problem, MeshOptions())
-    assert "thermal.shaft_coolant.bore_diameter" in str(error.value)
-    assert "\n" not in str(error.value)
-    assert build_model("axisymmetric", problem, MeshOptions(size=0.01)).unknowns > 0
-    assert replace(problem, shaft_coolant=None).shaft_coolant is None
 
 
 def test_bad_coolant_input_is_one_line_and_exit_2(tmp_path):

@@ -40,7 +40,7 @@ from ballscrew.analyses.thermal_setup import (
 from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case
 from ballscrew.case.thermal_spec import ThermalSpec
-from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
+from ballscrew.thermal.discretisation import Discretisation, coolant_outlet_rise, nut_mean_row
 from ballscrew.thermal.elongation import thermoelastic_elongation
 from ballscrew.thermal.models import THERMAL_MODELS, MeshOptions, build_model
 from ballscrew.thermal.problem import ThermalProblem
@@ -155,6 +155,12 @@ class ThermalField(Presented):
         return self.ambient_temperature + float(
             nut_mean_row(self.solution.discretisation) @ self.solution.steady
         )
+
+    @property
+    def coolant_outlet_temperature(self) -> float | None:
+        """Steady outlet temperature of the hollow shaft's coolant [K]; None for a solid shaft."""
+        rise = coolant_outlet_rise(self.solution.discretisation, self.solution.steady)
+        return None if rise is None else self.ambient_temperature + rise
 
     @property
     def elongation(self) -> float:

@@ -19,6 +19,7 @@ from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import label_box, legend_outside, plain
 from ballscrew.thermal.elongation import displacement_profile
+from ballscrew.thermal.mesh3d import circle_angles
 
 if TYPE_CHECKING:
     from ballscrew.analyses.thermal import ThermalField
@@ -122,6 +123,9 @@ def summary(result: ThermalField) -> dict[str, Any]:
         "timing": {k: value(v, "s") for k, v in sol.seconds.items()}
         | {"total": value(result.seconds, "s")},
     }
+    outlet = result.coolant_outlet_temperature
+    if outlet is not None:
+        summary["steady"]["coolant_outlet_temperature"] = value(outlet, "K")
     coupling = result.coupling
     if coupling is not None:
         summary["operating_point"] = {
@@ -298,8 +302,9 @@ def _mixed_or_long(tri: Triangulation, body: np.ndarray, longest: float) -> np.n
 
 
 def field_3d(result: ThermalField, path: Path) -> Path:
-    """The 3-D model's steady field: the meridional section θ = 0 (z, r) and the screw surface
-    unrolled over (z, θ), where the helical ball-contact heat shows."""
+    """The 3-D model's steady field: the meridional section (z, r) at the mesh angle nearest
+    θ = 0 (θ = 0 itself when the divisions are a multiple of 8) and the screw surface unrolled
+    over (z, θ), where the helical ball-contact heat shows."""
     disc = result.solution.discretisation
     m3 = disc.extra["mesh"]
     x, y, z = m3.mesh.p
@@ -310,7 +315,10 @@ def field_3d(result: ThermalField, path: Path) -> Path:
     r, theta = np.hypot(x, y), np.arctan2(y, x)
     levels = np.linspace(temp.min(), temp.max() + 1e-9, 24)
     fig, axes = plt.subplots(2, 1, figsize=(8.0, 5.8), layout="constrained")
-    plane = (np.abs(y) <= 1e-9 * r.max()) & (x >= 0.0)
+    angles = circle_angles(m3.divisions)
+    cut = float(angles[np.argmin(np.abs(angles))])
+    across = y * math.cos(cut) - x * math.sin(cut)
+    plane = (np.abs(across) <= 1e-9 * r.max()) & (x * math.cos(cut) + y * math.sin(cut) >= 0.0)
     tri = Triangulation(z[plane] * 1e3, r[plane] * 1e3)
     spacing = np.diff(np.unique(np.round(z[plane] * 1e3, 6))).max(initial=0.0)
     spacing = max(spacing, np.diff(np.unique(np.round(r[plane] * 1e3, 6))).max(initial=0.0))
@@ -318,7 +326,7 @@ def field_3d(result: ThermalField, path: Path) -> Path:
     image = axes[0].tricontourf(tri, temp[plane], levels=levels, cmap="inferno")
     _sensor_markers(axes[0], result)
     axes[0].set(xlabel="z [mm]", ylabel="r [mm]")
-    axes[0].set_title("section through the axis (θ = 0)", fontsize=9)
+    axes[0].set_title(f"section through the axis (θ = {math.degrees(cut):.3g}°)", fontsize=9)
     surface = (body == 0) & (r >= r[body == 0].max() * (1.0 - 1e-6))
     tri = Triangulation(z[surface] * 1e3, np.degrees(theta[surface]))
     axes[1].tricontourf(tri, temp[surface], levels=levels, cmap="inferno")
@@ -516,6 +524,10 @@ def sections(result: ThermalField) -> list[Section]:
         ["nut assembly mean temperature [°C]", _c(result.nut_temperature)],
         ["elongation α∫ΔT dz [µm]", result.elongation * 1e6],
     ]
+    if result.coolant_outlet_temperature is not None:
+        steady.append(
+            ["shaft coolant outlet temperature [°C]", _c(result.coolant_outlet_temperature)]
+        )
     if result.elongation_thermoelastic is not None:
         steady.append(
             ["thermo-elastic end displacement [µm]", result.elongation_thermoelastic * 1e6]

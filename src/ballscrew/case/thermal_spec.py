@@ -234,8 +234,7 @@ class ShaftCoolantSpec(Model):
     """Coolant through an axial bore of the screw (hollow-shaft cooling, Q11), inlet at z = 0.
 
     Off unless ``bore_diameter`` is given. h from the pipe correlations at the flow's Reynolds
-    number (laminar Nu below Re = 2300), or ``coefficient``; the network and axisymmetric models
-    solve it (the 3-D model refuses it).
+    number (laminar Nu below Re = 2300), or ``coefficient``; all three thermal models solve it.
     """
 
     bore_diameter: quantity("length", "diameter of the coolant bore", gt=0, le=5.0) | None = None

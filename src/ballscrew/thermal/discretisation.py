@@ -74,6 +74,13 @@ def nut_mean_row(disc: Discretisation) -> NDArray[np.float64]:
     return out
 
 
+def coolant_outlet_rise(disc: Discretisation, theta: NDArray[np.float64]) -> float | None:
+    """Bulk rise of the bore coolant at its outlet, its last cell (``extra['coolant']``, inlet
+    to outlet) [K]; None for a solid shaft."""
+    cells = disc.extra.get("coolant")
+    return None if cells is None or len(cells) == 0 else float(theta[cells[-1]])
+
+
 Entries = tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.float64]]
 """(rows, columns, values) of sparse matrix entries; repeated positions add up."""
 

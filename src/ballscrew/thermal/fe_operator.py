@@ -103,11 +103,14 @@ def fe_discretisation(
 ) -> Discretisation:
     """The :class:`Discretisation` of ``problem`` on ``op``; its ``rebind`` re-uses ``op``.
 
-    ``extra`` gains ``nut_mean`` (the nut assembly's volume-mean row) and ``operator``.
+    ``extra`` gains ``nut_mean`` (the nut assembly's volume-mean row), ``coolant`` (the
+    unknowns of the bore coolant's cells, inlet to outlet; empty for a solid shaft) and
+    ``operator``.
     """
 
     def discretise(p: ThermalProblem) -> Discretisation:
         total = op.size + extra_unknowns(op, p)
+        coolant = np.arange(op.size, total - (p.table is not None))
         capacity, assemble = bind(op, p)
         return Discretisation(
             model=model,
@@ -120,7 +123,12 @@ def fe_discretisation(
             axis_z=readouts.axis_z,
             axis=pad(readouts.axis, total),
             direct_limit=direct_limit,
-            extra={**extra, "nut_mean": pad(readouts.nut_mean, total), "operator": op},
+            extra={
+                **extra,
+                "nut_mean": pad(readouts.nut_mean, total),
+                "coolant": coolant,
+                "operator": op,
+            },
             rebind=discretise,
         )
 

@@ -6,7 +6,8 @@ meshes and extruded along the axial grid lines into trilinear hexahedra (skfem `
 - Shaft: an O-grid disc, a square core of half-side c·R with (n/4)² cells plus an O-ring of
   ``layers`` layers blending linearly from the square's perimeter to the circle r = R, so
   every node of the circle sits at an angle φ_m = −π/4 + 2π m/n (m = 0 … n−1); no degenerate
-  elements (no collapsed wedge at the axis).
+  elements (no collapsed wedge at the axis). A hollow shaft (a coolant bore of radius r_i) is
+  a tube instead: ``layers`` rings r_i … R on the same n angles, its first n nodes the bore.
 - Nut assembly: an annulus R … max outer radius on the same n angles, extruded along the
   ring's axial lines; elements beyond the outer radius of their part (nut or spacer) are
   dropped. Its bore nodes are separate copies of the shaft's surface nodes at the same
@@ -143,6 +144,34 @@ def annulus_section(radii: NDArray[np.float64], divisions: int) -> Section:
     return Section(p, _ccw(p, t))
 
 
+MAX_ASPECT = 10.0
+"""Largest ratio of the circumferential element size 2πR/n to the radial size of a tube's
+layers (flatter elements slow the iterative solve and resolve the wall badly)."""
+
+
+def tube_section(inner: float, radius: float, divisions: int, layers: int) -> Section:
+    """Annular shaft section r_i … R in ``layers`` equal rings on the :func:`circle_angles`.
+
+    The first ``divisions`` nodes are the bore r = r_i and the last ``divisions`` the circle
+    r = R, as in :func:`disc_section`. A wall thinner than ``layers`` elements of 1/MAX_ASPECT
+    of the circumferential size 2πR/n is refused.
+    """
+    if divisions < 8 or divisions % 4:
+        raise InputError("mesh.divisions_3d", divisions, "a multiple of 4, at least 8")
+    if layers < 1:
+        raise InputError("mesh.layers_3d", layers, "at least 1 radial layer")
+    thinnest = layers * 2.0 * math.pi * radius / divisions / MAX_ASPECT
+    if not radius - inner >= thinnest:
+        raise InputError(
+            "thermal.shaft_coolant.bore_diameter",
+            2.0 * inner,
+            f"≤ {2.0 * (radius - thinnest):.4g} m on the 3d mesh (a wall of {layers} layers "
+            f"no flatter than 1:{MAX_ASPECT:g} of the element size 2πR/n; fewer "
+            "thermal.mesh.layers_3d or more divisions_3d allow a thinner wall)",
+        )
+    return annulus_section(np.linspace(inner, radius, layers + 1), divisions)
+
+
 def extrude(section: Section, z: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray]:
     """Hexahedra of ``section`` between consecutive ``z`` lines.
 
@@ -181,8 +210,10 @@ class Mesh3D:
     facets: dict[str, NDArray[np.int64]]
     """Boundary facets: 'shaft_surface', 'shaft_ends', 'ring_outer', 'ring_ends', 'bore<k>'
     (nut k's bore: the nut side of the interface), 'interface<k>' (the shaft surface it faces
-    at the mean position: the screw side), 'spacer_bore<k>' and 'band<j>' (shaft surface
-    facets whose centre lies in bearing band j)."""
+    at the mean position: the screw side), 'spacer_bore<k>', 'band<j>' (shaft surface
+    facets whose centre lies in bearing band j) and, for a hollow shaft, 'shaft_bore'."""
+    bore_radius: float = 0.0
+    """Radius r_i of the shaft's coolant bore [m] (0: a solid shaft)."""
 
     @property
     def shaft_nodes(self) -> int:
@@ -208,8 +239,10 @@ def build_mesh3d(
     the shaft's O-ring; ``radial_size``: radial element size in the nut (default: the
     circumferential size 2πR/n, at least one layer per radius step).
     """
-    R = problem.shaft_radius
-    shaft_sec = disc_section(R, divisions, layers)
+    R, r_i = problem.shaft_radius, problem.bore_radius
+    shaft_sec = (
+        tube_section(r_i, R, divisions, layers) if r_i > 0.0 else disc_section(R, divisions, layers)
+    )
     size = 2.0 * math.pi * R / divisions if radial_size is None else radial_size
     if not size > 0.0:
         raise InputError("mesh.radial_size", size, "a length > 0 m")
@@ -256,6 +289,7 @@ def build_mesh3d(
         ring_nodes=ring_nodes.reshape(z_ring.size, ring_sec.p.shape[1]),
         divisions=divisions,
         facets={},
+        bore_radius=r_i,
     )
     m3.facets.update(_classify(m3, problem))
     return m3
@@ -283,6 +317,9 @@ def _classify(m3: Mesh3D, problem: ThermalProblem) -> dict[str, NDArray[np.int64
     bore = ~shaft & ~flat & at_r
     part = m3.part[elem]
     surface = shaft & ~flat & at_r
+    if problem.bore_radius > 0.0:
+        at_bore = np.all(np.abs(radius - problem.bore_radius) < tol, axis=0)
+        facets["shaft_bore"] = bf[shaft & ~flat & at_bore]
     for k, p in enumerate(problem.parts):
         key = f"bore{k}" if p.balls else f"spacer_bore{k}"
         facets[key] = bf[bore & (part == k)]

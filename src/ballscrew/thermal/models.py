@@ -17,7 +17,6 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ballscrew.errors import InputError
 from ballscrew.registry import Registry
 from ballscrew.thermal.discretisation import Discretisation
 from ballscrew.thermal.problem import ThermalProblem
@@ -92,13 +91,5 @@ def build_model(
     """Discretise ``problem`` with the registered model ``name``.
 
     ``patches``: per ring part, the ball contact patches of the 3-D model (None elsewhere).
-    The 3-D model has no hollow cooled shaft (its O-grid has no bore, and the coolant's upwind
-    advection is not symmetric for its conjugate-gradient solver).
     """
-    if problem.shaft_coolant is not None and name == "3d":
-        raise InputError(
-            "thermal.shaft_coolant.bore_diameter",
-            2.0 * problem.shaft_coolant.bore_radius,
-            'not supported by the 3d model: use model = "axisymmetric" or "network"',
-        )
     return THERMAL_MODELS[name](problem, mesh, patches)

@@ -40,6 +40,12 @@ q/h_c) depends on that choice. The friction heat of a nut enters at its patches,
 nut's screw share on the shaft side and of its nut share on the nut side per patch,
 normalised to the exact watts.
 
+A hollow shaft (``problem.shaft_coolant``) is meshed as a tube r_i … R
+(:func:`~ballscrew.thermal.mesh3d.tube_section`); its bore wall and coolant cells, one per axial
+cell of the shaft, enter the shared coolant terms of :mod:`~ballscrew.thermal.fe_operator`
+(h ∫_bore (θ_w − θ_c,k) v dA and the upwind balance W(θ_c,k − θ_c,k−1)). The bulk rise is
+one value per cell: the coolant is assumed mixed over the bore's section.
+
 The patches are fixed in the nut: the model is the quasi-static "frozen" contact (the screw's
 rotation, which sweeps the patches around the shaft, is not resolved; at speed it smears the
 screw-side pattern towards the axisymmetric one).
@@ -70,7 +76,12 @@ from ballscrew.thermal.fe_assembly import (
     surface_film,
     twin_dofs,
 )
-from ballscrew.thermal.fe_operator import FeOperator, Readouts, fe_discretisation
+from ballscrew.thermal.fe_operator import (
+    CoolantChannel,
+    FeOperator,
+    Readouts,
+    fe_discretisation,
+)
 from ballscrew.thermal.mesh3d import Mesh3D, build_mesh3d, circle_angles
 from ballscrew.thermal.problem import AxialGrid, ThermalProblem, axial_grid
 
@@ -300,6 +311,7 @@ def build_threed(
         bores=tuple(bores),
         bearings=bearing_loads(problem, fb_surface, _area_weight, max(size, far_size)),
         outer=np.asarray(asm(unit, facet_basis("ring_outer"))),
+        coolant=_coolant_channel(m3, facet_basis("shaft_bore")) if problem.bore_radius else None,
     )
     shaft_basis, shaft_volume, nut_mean = body_integrals(basis, intorder, m3.body, unit)
     readouts = Readouts(
@@ -322,18 +334,45 @@ def build_threed(
     return fe_discretisation("3d", problem, grid, operator, readouts, 0, extra)
 
 
+def _coolant_channel(m3: Mesh3D, fb: FacetBasis) -> CoolantChannel:
+    """The bore wall ∫uv dA and its cells B[i, k] = ∫_cell k φ_i dA.
+
+    On the extruded tube a bore node on axial line j has φ_i = ψ_m(s)·(its axial hat), so its
+    wall integral b_i = ∫φ_i dA splits between the cells j−1 and j in proportion to their
+    lengths Δz: B[i, k] = b_i Δz_k/(Δz_j−1 + Δz_j), exactly, and Σ_k B[i, k] = b_i = (wall·1)_i.
+    """
+    wall = sp.csr_matrix(asm(mass, fb))
+    b = np.asarray(wall.sum(axis=1)).ravel()
+    n2 = m3.shaft_section.p.shape[1]
+    dz = np.diff(m3.z_shaft)
+    cells = dz.size
+    bore = np.flatnonzero(b)  # the bore's nodes (iz, m) = iz·n₂ + m
+    j = bore // n2
+    below = np.where(j > 0, dz[np.maximum(j - 1, 0)], 0.0)
+    above = np.where(j < cells, dz[np.minimum(j, cells - 1)], 0.0)
+    rows = np.concatenate([bore, bore])
+    cols = np.concatenate([j - 1, j])
+    vals = np.concatenate([b[bore] * below, b[bore] * above]) / np.tile(below + above, 2)
+    keep = (cols >= 0) & (cols < cells) & (vals != 0.0)
+    shape = (wall.shape[0], cells)
+    return CoolantChannel(wall, sp.csr_matrix((vals[keep], (rows[keep], cols[keep])), shape))
+
+
 def _profile_nodes(m3: Mesh3D) -> dict[str, NDArray]:
     """Nodes along z on the line φ = −π/4 (the first circle angle), for axial profile plots
-    (the network's keys): 'shaft_mean' at the node nearest r = R/√2 (where a parabolic radial
-    profile equals its section mean), 'shaft_surface' at r = R, 'ring_bore' and 'ring_outer'
-    (outermost node of the part) on the nut's lines 'ring_z'."""
+    (the network's keys): 'shaft_mean' at the node nearest r = √((R² + r_i²)/2) (R/√2 on a
+    solid shaft: where a parabolic radial profile equals its section mean), 'shaft_surface' at
+    r = R, 'ring_bore' and 'ring_outer' (outermost node of the part) on the nut's lines
+    'ring_z'."""
     sec = m3.shaft_section
     n2, nz = sec.p.shape[1], m3.z_shaft.size
     r = np.hypot(sec.p[0], sec.p[1])
-    radius = r.max()
+    radius, inner = r.max(), m3.bore_radius
     on_line = np.abs(np.arctan2(sec.p[1], sec.p[0]) + 0.25 * math.pi) < 1e-9
     candidates = np.nonzero(on_line)[0]
-    mean_node = candidates[np.argmin(np.abs(r[candidates] - radius / math.sqrt(2.0)))]
+    mean_node = candidates[
+        np.argmin(np.abs(r[candidates] - math.sqrt(0.5 * (radius**2 + inner**2))))
+    ]
     surface_node = n2 - m3.divisions  # the first node of the circle (φ = −π/4)
     base = np.arange(nz) * n2
     radial = m3.ring_nodes[:, :: m3.divisions]  # (z lines, radial lines) at φ = −π/4
@@ -392,7 +431,7 @@ def _sensor_point(problem: ThermalProblem, m3: Mesh3D, sensor) -> NDArray[np.flo
     eps = 1e-9 * L
     shrink = math.cos(math.pi / m3.divisions) * (1.0 - 1e-9)  # inscribed polygon
     if sensor.body == "screw":
-        r = min(sensor.r, R * shrink)
+        r = max(min(sensor.r, R * shrink), problem.bore_radius * (1.0 + 1e-9))
         z = float(np.clip(sensor.z, eps, L - eps))
     else:
         start = problem.ring_centre - 0.5 * problem.ring_length
