@@ -120,3 +120,24 @@ def test_speed_limits_and_boundary_lubrication_are_warnings(case):
     )
     slow = operating_point(thin, speed=30 * RPM)
     assert any("boundary lubrication" in w for w in slow.warnings)
+
+
+def test_a_cooled_shaft_reports_its_coolant_outlet(case):
+    """The summary carries the outlet of the hollow-shaft coolant, warmer than its inlet by
+    the heat the bore takes (positive), and a solid shaft has no such key."""
+    cooled = ballscrew.load_case(
+        EXAMPLE,
+        {
+            "numerics.cells_across": 16,
+            "thermal.shaft_coolant.bore_diameter": "12 mm",
+            "thermal.shaft_coolant.flow_rate": "2 L/min",
+            "thermal.shaft_coolant.inlet_temperature": "19 degC",
+        },
+    )
+    point = operating_point(cooled, speed=1500 * RPM, axial_load=2000.0)
+    outlet = point.summary()["coolant_outlet_temperature"]
+    inlet = 273.15 + 19.0
+    assert outlet["unit"] == "K"
+    assert inlet < outlet["value"] < point.nut_temperature
+    solid = operating_point(case, speed=1500 * RPM, axial_load=2000.0)
+    assert "coolant_outlet_temperature" not in solid.summary()

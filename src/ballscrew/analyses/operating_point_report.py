@@ -16,8 +16,9 @@ CELSIUS = 273.15
 
 
 def summary(result: OperatingPoint) -> dict[str, Any]:
-    """Scalars of the operating point (SI, with units) and the thermal model used."""
-    return {
+    """Scalars of the operating point (SI, with units) and the thermal model used; the shaft
+    coolant's outlet temperature when the shaft is cooled."""
+    scalars = {
         "case": result.case.name,
         "speed": quantity(result.speed, "rad/s"),
         "axial_load": quantity(result.axial_load, "N"),
@@ -32,6 +33,10 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         "iterations": result.iterations,
         "thermal_model": result.field.model,
     }
+    outlet = result.field.coolant_outlet_temperature
+    if outlet is not None:
+        scalars["coolant_outlet_temperature"] = quantity(outlet, "K")
+    return scalars
 
 
 def fields(result: OperatingPoint) -> xr.Dataset:
