@@ -74,11 +74,10 @@ def calibrated_case(result: CalibrationResult) -> Any:
     speed/load range in ``[wear.calibrated]`` (a programme outside it then warns)."""
     from ballscrew.case import with_overrides
 
-    overrides: dict[str, Any] = {
-        FIT_PARAMETERS[n].key or "wear.torque_scale": v for n, v in result.values.items()
-    }
-    if "torque_scale" in result.values:
+    overrides: dict[str, Any] = {FIT_PARAMETERS[n].key: v for n, v in result.values.items()}
+    if {"torque_scale", "torque_offset"} & set(result.values):
         overrides["wear.initial_torque"] = None
+        overrides["wear.torque_scale"] = result.torque_scale
     if result.calibrated_range is not None:
         overrides["wear.calibrated"] = dict(result.calibrated_range)
     return with_overrides(result.case, overrides)
@@ -100,9 +99,10 @@ def calibrate(
         case: the case of the tested screw and its programme (``[wear]`` or ``[[duty]]``).
         measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
             (speed and axial-load columns) replaces the case's programme.
-        fit: names from ``wear_coefficient``, ``torque_scale``, ``film_factor``,
-            ``running_in_depth`` (a comma-separated string also works). The default fits K and,
-            for friction-torque data, the torque scale.
+        fit: names from ``wear_coefficient``, ``torque_scale``, ``torque_offset``,
+            ``film_factor``, ``running_in_depth`` (a comma-separated string also works). The
+            default fits K and, for friction-torque data, the torque scale. ``torque_offset``
+            is T_0 of T = m K_T F_p L/(2π) + T_0 (case default ``wear.torque_offset``, 0).
         fit_until: fit the points up to these revolutions and report ``prediction_rmse`` on the
             rest (None: fit all points).
         model: the wear model, case → history (default :func:`ballscrew.wear_life`).
@@ -139,13 +139,15 @@ def calibrate(
             raise InputError("--fit", "running_in_depth", "a case with a [wear.running_in] section")
         start["running_in_depth"] = running.depth
     scale0 = getattr(wear, "torque_scale", None) or 1.0
+    offset0 = float(getattr(wear, "torque_offset", 0.0) or 0.0)
     initial_torque = getattr(wear, "initial_torque", None)
-    base: dict[str, Any] = {}
+    # the model's torque without T_0: the fit adds it (and the initial torque's share of it)
+    base: dict[str, Any] = {"wear.torque_offset": 0.0} if wear is not None else {}
     if initial_torque is not None:
-        if "torque_scale" in names:
-            base["wear.initial_torque"] = None
-        else:
-            scale0 = _initial_torque_scale(case, float(initial_torque))
+        base["wear.initial_torque"] = None
+        if "torque_scale" not in names:
+            scale0 = _initial_torque_scale(case, float(initial_torque) - offset0)
+            base["wear.torque_scale"] = scale0
     warned: dict[tuple[tuple[str, float], ...], list[warnings.WarningMessage]] = {}
 
     def simulate(values: Mapping[str, float]) -> WearHistory:
@@ -167,7 +169,14 @@ def calibrate(
         return history
 
     result = fit_parameters(
-        simulate, data, names, start, torque_scale=float(scale0), fit_until=fit_until, **options
+        simulate,
+        data,
+        names,
+        start,
+        torque_scale=float(scale0),
+        torque_offset=offset0,
+        fit_until=fit_until,
+        **options,
     )
     with recorded_warnings() as messages:
         if warned:  # re-issue only the warnings of the run nearest the fit

@@ -31,6 +31,8 @@ _DISPLAY: dict[str, tuple[str, str, float]] = {
 
 def summary(result: CalibrationResult) -> dict[str, Any]:
     """The fit as a JSON-ready dict (the fitted values first, then diagnostics)."""
+    from ballscrew.calibration.multi import FIT_PARAMETERS
+
     return {
         "case": result.case_name,
         "wear_coefficient": value(result.wear_coefficient, ""),
@@ -43,8 +45,19 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         ),
         "torque_scale_fitted": result.torque_scale_error is not None,
         "correlation_ln_wear_coefficient_torque_scale": result.correlation,
+        "torque_offset": value(result.torque_offset, "N*m"),
+        "torque_offset_standard_error": (
+            value(result.errors["torque_offset"], "N*m")
+            if "torque_offset" in result.errors
+            else None
+        ),
+        "correlations": dict(result.correlations),
         "fitted": {
-            name: {"value": v, "standard_error": result.errors.get(name)}
+            name: {
+                "value": v,
+                "standard_error": result.errors.get(name),
+                "unit": FIT_PARAMETERS[name].unit,
+            }
             for name, v in result.values.items()
         },
         "fit_until": result.fit_until,
@@ -193,6 +206,8 @@ def figures(result: CalibrationResult) -> list[Figure]:
 
 def sections(result: CalibrationResult) -> list[Section]:
     """The fitted values, their uncertainty and the method."""
+    from ballscrew.calibration.multi import FIT_PARAMETERS
+
     label, unit, factor = _DISPLAY[result.quantity]
     rows: list[tuple[object, ...]] = [
         ("wear coefficient K", result.wear_coefficient),
@@ -206,16 +221,24 @@ def sections(result: CalibrationResult) -> list[Section]:
     if result.torque_scale_error is not None:
         rows.append(("standard error of the torque scale", result.torque_scale_error))
         rows.append(("correlation (ln K, torque scale)", result.correlation))
+    if result.quantity == "friction_torque":
+        fitted = " (fitted)" if "torque_offset" in result.values else ""
+        rows.append((f"torque offset T_0 [N·m]{fitted}", result.torque_offset))
     rows += [
         (f"{name} (fitted)", v)
         for name, v in result.values.items()
-        if name not in ("wear_coefficient", "torque_scale")
+        if name not in ("wear_coefficient", "torque_scale", "torque_offset")
     ]
     rows += [
-        (f"standard error of {name}", e)
+        (
+            f"standard error of {name}"
+            + (f" [{FIT_PARAMETERS[name].unit}]" * bool(FIT_PARAMETERS[name].unit)),
+            e,
+        )
         for name, e in result.errors.items()
         if name not in ("wear_coefficient", "torque_scale")
     ]
+    rows += [(f"correlation ({pair})", r) for pair, r in result.correlations.items()]
     if result.prediction_rmse is not None:
         rows.append((f"held-out RMS error [{unit}]", result.prediction_rmse * factor))
     if result.diagnostics:
