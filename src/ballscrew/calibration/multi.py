@@ -352,10 +352,10 @@ class HistoryFit:
         for i, name in enumerate(names):
             kind = FIT_PARAMETERS[name].kind
             if kind == "scale":
-                values[name] = self.torque_scale * x[i]
+                values[name] = float(self.torque_scale * x[i])
                 errors[name] = self.torque_scale * math.sqrt(cov[i, i])
             elif kind == "offset":
-                values[name] = self.scale * x[i]
+                values[name] = float(self.scale * x[i])
                 errors[name] = self.scale * math.sqrt(cov[i, i])
                 continue  # an offset may be 0: its error is not checked against its value
             else:

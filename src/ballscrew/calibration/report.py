@@ -19,10 +19,10 @@ from ballscrew.plotting import plain
 if TYPE_CHECKING:
     from ballscrew.calibration.result import CalibrationResult
 
-__all__ = ["figures", "fit_dataset", "fit_table", "sections", "summary"]
+__all__ = ["DISPLAY", "figures", "fit_dataset", "fit_plot", "fit_table", "sections", "summary"]
 
 #: Label and display unit (name, factor from SI) of each measured quantity.
-_DISPLAY: dict[str, tuple[str, str, float]] = {
+DISPLAY: dict[str, tuple[str, str, float]] = {
     "friction_torque": ("friction torque", "N·m", 1.0),
     "preload": ("preload", "N", 1.0),
     "wear_depth": ("maximum wear depth", "µm", 1.0e6),
@@ -120,7 +120,7 @@ def fit_table(result: CalibrationResult) -> str:
 
 def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     """Measured points and the fitted model curve against revolutions, residuals below."""
-    label, unit, factor = _DISPLAY[result.quantity]
+    label, unit, factor = DISPLAY[result.quantity]
     fig, (ax, axr) = plt.subplots(
         2,
         1,
@@ -193,7 +193,7 @@ def fit_dataset(result: CalibrationResult) -> xr.Dataset:
 
 def figures(result: CalibrationResult) -> list[Figure]:
     """The measured history with the fitted model."""
-    label = _DISPLAY[result.quantity][0]
+    label = DISPLAY[result.quantity][0]
     title = f"{result.case_name}: {label} against revolutions"
     return [
         Figure(
@@ -208,7 +208,7 @@ def sections(result: CalibrationResult) -> list[Section]:
     """The fitted values, their uncertainty and the method."""
     from ballscrew.calibration.multi import FIT_PARAMETERS
 
-    label, unit, factor = _DISPLAY[result.quantity]
+    label, unit, factor = DISPLAY[result.quantity]
     rows: list[tuple[object, ...]] = [
         ("wear coefficient K", result.wear_coefficient),
         ("standard error of K", result.standard_error),
