@@ -572,7 +572,12 @@ def start_values(
     ln_k = math.log(base[_K])
     scanned_rms: tuple[tuple[float, float], ...] = ()
     if fit_k:
-        best, scanned = scan(first, ln_k, scan_steps)
+        try:
+            best, scanned = scan(first, ln_k, scan_steps)
+        except CalibrationError as exc:
+            if part.fit_scale and part.fit_offset:
+                raise _unidentifiable(part.data.source) from exc
+            raise
         ln_k = refine(first, best, scanned, refine_steps)
         scanned_rms = tuple((math.exp(v), first.rms_at(v)[0]) for v in scanned)
     current, rms = {**base, _K: math.exp(ln_k)}, first.rms_at(ln_k)[0]
@@ -593,6 +598,16 @@ def start_values(
         ln_k = math.log(current[_K])
         bracket = (ln_k - LN10, ln_k + LN10)
     return current, scanned_rms, bracket
+
+
+def _unidentifiable(source: str) -> CalibrationError:
+    return CalibrationError(
+        f"{source}: K, the torque scale m and the torque offset T_0 are not identifiable "
+        "together: while the preload loss is small, T = m·T_p(N; K) + T_0 is linear in K, so "
+        "only m·K and m·T_p(0) + T_0 are determined, and these data are best fitted in that "
+        "limit (the scan in K ran to the end of its range); fix the torque scale (fit K and "
+        "torque_offset with the case's wear.torque_scale) or the offset"
+    )
 
 
 def _check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
