@@ -65,6 +65,7 @@ __all__ = [
     "CalibrationWarning",
     "FitParameter",
     "HistoryFit",
+    "check_names",
     "correlations",
     "fit_parameters",
     "solve",
@@ -267,7 +268,7 @@ class HistoryFit:
         diff_step: float,
         label: str,
     ) -> None:
-        self.names = _check_names(fit, data)
+        self.names = check_names(fit, data)
         check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
         if not math.isfinite(torque_offset):
             raise InputError("wear.torque_offset", torque_offset, "a finite torque in N·m")
@@ -610,7 +611,9 @@ def _unidentifiable(source: str) -> CalibrationError:
     )
 
 
-def _check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
+def check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
+    """``fit`` checked (known names; the torque scale and offset only for torque data) and in
+    column order: the model parameters, then the torque scale and the offset."""
     names = list(dict.fromkeys(fit))
     allowed = ", ".join(FIT_PARAMETERS)
     if not names:

@@ -95,6 +95,10 @@ def calibrate(
         raise InputError(
             "--fit-torque-scale", True, f"only with friction_torque data (got {data[0].quantity})"
         )
+    from ballscrew.calibration.multi import check_names
+
+    extra = [n.strip() for n in separate.split(",") if n.strip()] if separate else []
+    check_names([*names, *extra], data[0])
     if len(data) > 1:
         _joint(case_file, case, measured, data, names, separate, fit_until, output)
         return
