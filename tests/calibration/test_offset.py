@@ -124,7 +124,9 @@ def test_joint_fit_recovers_shared_k_and_each_offset() -> None:
     model = CaseModel()
     case = load_case(Path(__file__).parents[2] / "examples" / "wear_step_stress.toml")
     case = with_overrides(case, {"wear.torque_offset": 0.01})
-    result = calibrate_joint(case, [a, b], fit_until=UNTIL, model=model)
+    result = calibrate_joint(
+        case, [a, b], separate=("torque_scale", "torque_offset"), fit_until=UNTIL, model=model
+    )
     assert set(model.offsets) == {0.0}  # the model runs without T_0
     assert abs(result.wear_coefficient - K) < 3.5 * result.errors["wear_coefficient"]
     for history_fit, (scale, offset) in zip(
@@ -142,13 +144,11 @@ def test_joint_fit_recovers_shared_k_and_each_offset() -> None:
     assert "wear_coefficient,torque_offset[2]" in result.correlations
 
 
-def test_joint_fit_with_a_shared_scale_and_offset_per_history() -> None:
+def test_joint_fit_with_the_case_scale_and_offset_per_history() -> None:
     a, b = noisy(1.0, 0.05, 4, "a"), noisy(1.0, 0.12, 5, "b")
     case = load_case(Path(__file__).parents[2] / "examples" / "wear_step_stress.toml")
-    result = calibrate_joint(
-        case, [a, b], shared=("wear_coefficient",), separate="torque_offset", model=CaseModel()
-    )
-    assert result.separate == ("torque_offset",)
+    result = calibrate_joint(case, [a, b], model=CaseModel())  # the default: T_0 per history
+    assert result.shared == ("wear_coefficient",) and result.separate == ("torque_offset",)
     for history_fit, offset in zip(result.histories, (0.05, 0.12), strict=True):
         within(history_fit, {"torque_offset": offset})
     assert abs(result.wear_coefficient - K) < 3.5 * result.errors["wear_coefficient"]
@@ -248,7 +248,7 @@ def test_cli_round_trip_with_the_offset(tmp_path, wear_case_path, monkeypatch) -
     assert joint.exit_code == 0, joint.output
     summary = json.loads((tmp_path / "two" / "summary.json").read_text())
     assert summary["joint"] and summary["shared"] == ["wear_coefficient"]
-    assert summary["separate"] == ["torque_scale", "torque_offset"]
+    assert summary["separate"] == ["torque_offset"]
     assert len(summary["histories"]) == 2 and len(summary["prediction_rmse"]) == 2
     assert (tmp_path / "two" / "fit.csv").read_text().startswith("history,revolutions")
 

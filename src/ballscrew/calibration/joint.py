@@ -34,7 +34,6 @@ from ballscrew.calibration import joint_report
 from ballscrew.calibration.api import CaseSetup, as_measured, case_setup, programme_range
 from ballscrew.calibration.multi import (
     FIT_PARAMETERS,
-    LINEAR,
     CalibrationWarning,
     HistoryFit,
     correlations,
@@ -239,7 +238,8 @@ def calibrate_joint(
             :class:`MeasuredHistory`), all of one quantity.
         shared: parameters common to every history (default: the wear coefficient).
         separate: parameters of each history on its own (default for friction-torque data:
-            ``torque_scale`` and ``torque_offset``; otherwise none).
+            ``torque_offset``, the torque scale then the case's ``wear.torque_scale``: with both
+            per history, K is not determined while the preload loss is small; otherwise none).
         fit_until: fit each history up to these revolutions and report its held-out error on
             the rest (one number for all, or one per history; None: fit all points).
         model: the wear model, case → history (default :func:`ballscrew.wear_life`).
@@ -259,7 +259,7 @@ def calibrate_joint(
         raise InputError("--measured", ", ".join(quantities), "histories of one quantity")
     shared_names = _split_names(shared)
     if separate is None:
-        separate_names = list(LINEAR) if quantities[0] == "friction_torque" else []
+        separate_names = ["torque_offset"] if quantities[0] == "friction_torque" else []
     else:
         separate_names = _split_names(separate)
     both = set(shared_names) & set(separate_names)

@@ -29,7 +29,8 @@ SeparateOpt = Annotated[
     typer.Option(
         "--separate",
         help="joint fit only: parameters each history fits on its own, comma-separated "
-        "(default for friction_torque data: torque_scale,torque_offset; otherwise none)",
+        "(default for friction_torque data: torque_offset, the torque scale then the case's; "
+        "otherwise none)",
         show_default=False,
     ),
 ]
