@@ -268,6 +268,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         data["loads"] = case.loads.model_dump(mode="json")
     else:  # the uniform distribution: the checkpoints of earlier versions stay valid
         del data["wear"]["load_classes"]
+    if not data["wear"]["torque_offset"]:  # no offset: earlier checkpoints stay valid
+        del data["wear"]["torque_offset"]
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":
