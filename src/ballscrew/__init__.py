@@ -31,7 +31,7 @@ from ballscrew.analyses.operating_point import operating_point
 from ballscrew.analyses.screw_tcr import screw_tcr
 from ballscrew.analyses.thermal import thermal_field
 from ballscrew.analyses.wear import wear_life
-from ballscrew.calibration import calibrate
+from ballscrew.calibration import calibrate, calibrate_joint
 from ballscrew.case import load_case
 from ballscrew.loads import nut_forces
 
@@ -40,6 +40,7 @@ __all__ = [
     "ball_kinematics",
     "ball_loads",
     "calibrate",
+    "calibrate_joint",
     "case",
     "contact",
     "contact_resistance",

@@ -120,6 +120,7 @@ for _analysis in (
             "wear_coefficient",
             "wear_coefficient_standard_error",
             "torque_scale",
+            "torque_offset",
             "rms_residual",
         ),
     ),

@@ -85,6 +85,7 @@ def wear_options(case: Case) -> WearOptions:
         film_factor=spec.film_factor,
         running_in=(None if running is None else RunningIn(running.D, running.G, running.depth)),
         load_classes=spec.load_classes,
+        torque_offset=spec.torque_offset,
     )
 
 
@@ -168,7 +169,16 @@ def wear_setup(case: Case) -> WearSetup:
         geometry.contact_angle,
     )
     catalogue = preload_drag_torque(preload, geometry.lead, geometry.lead_angle)
-    factor = spec.torque_scale if spec.initial_torque is None else spec.initial_torque / catalogue
+    if spec.initial_torque is None:
+        factor = spec.torque_scale
+    elif spec.initial_torque > spec.torque_offset:
+        factor = (spec.initial_torque - spec.torque_offset) / catalogue
+    else:
+        raise InputError(
+            "wear.initial_torque",
+            spec.initial_torque,
+            f"more than wear.torque_offset = {spec.torque_offset:g} N·m",
+        )
     return WearSetup(
         geometry=geometry,
         spec=spec,
@@ -194,6 +204,7 @@ def wear_setup(case: Case) -> WearSetup:
         body_compliance=_preload_loop_compliance(case, params),
         film_model=params.lubrication.film_model,
         ball_classes=classes,
+        torque_offset=spec.torque_offset,
     )
 
 
@@ -257,6 +268,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         data["loads"] = case.loads.model_dump(mode="json")
     else:  # the uniform distribution: the checkpoints of earlier versions stay valid
         del data["wear"]["load_classes"]
+    if not data["wear"]["torque_offset"]:  # no offset: earlier checkpoints stay valid
+        del data["wear"]["torque_offset"]
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":

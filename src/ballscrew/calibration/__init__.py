@@ -3,11 +3,15 @@
 1. ``data = read_measured("bench.csv")`` reads a measured history of friction torque, preload
    or wear depth against screw revolutions (header row; units in brackets are converted).
 2. ``result = calibrate(case, data, fit=("wear_coefficient", "torque_scale"), fit_until=None)``
-   fits any subset of K, the torque scale (torque data; fitted by default), the film supply
+   fits any subset of K, the torque scale (torque data; fitted by default), the
+   preload-independent torque offset T_0 (torque data), the film supply
    factor and the running-in depth by nonlinear least squares, running
    :func:`ballscrew.wear_life` on the case for each trial; ``fit_until`` holds the rest of the
    data out and reports ``prediction_rmse`` on it. :func:`fit_wear_coefficient` is the K-only
    fit with any model callable ``K -> history``; :func:`fit_parameters` the general one.
+   ``calibrate_joint(case, [up, down], shared=("wear_coefficient",))`` fits several histories
+   of one screw together: one K, each history its own torque scale and offset T_0
+   (:mod:`ballscrew.calibration.joint`).
 3. ``result.wear_coefficient``, ``result.standard_error``, ``result.torque_scale`` and
    ``result.rms_residual`` are the fit; ``ballscrew.results.write_results`` writes its folder.
 
@@ -18,6 +22,7 @@ report it together with them.
 from ballscrew.calibration.api import DEFAULT_FIT, as_measured, calibrate, calibrated_case
 from ballscrew.calibration.diagnostics import ResidualDiagnostics, residual_diagnostics
 from ballscrew.calibration.fit import fit_wear_coefficient
+from ballscrew.calibration.joint import JointCalibrationResult, calibrate_joint, fit_joint
 from ballscrew.calibration.measured import (
     QUANTITIES,
     MeasuredHistory,
@@ -34,11 +39,14 @@ __all__ = [
     "CalibrationError",
     "CalibrationResult",
     "CalibrationWarning",
+    "JointCalibrationResult",
     "MeasuredHistory",
     "ResidualDiagnostics",
     "as_measured",
     "calibrate",
+    "calibrate_joint",
     "calibrated_case",
+    "fit_joint",
     "fit_parameters",
     "fit_wear_coefficient",
     "measured_history",

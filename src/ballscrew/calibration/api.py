@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -20,7 +20,16 @@ from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_
 from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.errors import InputError
 
-__all__ = ["DEFAULT_FIT", "as_measured", "calibrate", "calibrated_case", "schedule_programme"]
+__all__ = [
+    "DEFAULT_FIT",
+    "CaseSetup",
+    "as_measured",
+    "calibrate",
+    "calibrated_case",
+    "case_setup",
+    "programme_range",
+    "schedule_programme",
+]
 
 DEFAULT_FIT: tuple[str, ...] = ("wear_coefficient", "torque_scale")
 """Fitted by default; the torque scale only for friction-torque data."""
@@ -51,7 +60,7 @@ def as_measured(measured: Any, quantity: str = "friction_torque") -> MeasuredHis
     return measured_history(array[:, 0], array[:, 1], quantity, "array")
 
 
-def _programme_range(case: Any) -> dict[str, float] | None:
+def programme_range(case: Any) -> dict[str, float] | None:
     """Speeds and loads of the case's wear programme (or duty), as the calibrated range."""
     from ballscrew.analyses.wear import wear_options
 
@@ -74,11 +83,10 @@ def calibrated_case(result: CalibrationResult) -> Any:
     speed/load range in ``[wear.calibrated]`` (a programme outside it then warns)."""
     from ballscrew.case import with_overrides
 
-    overrides: dict[str, Any] = {
-        FIT_PARAMETERS[n].key or "wear.torque_scale": v for n, v in result.values.items()
-    }
-    if "torque_scale" in result.values:
+    overrides: dict[str, Any] = {FIT_PARAMETERS[n].key: v for n, v in result.values.items()}
+    if {"torque_scale", "torque_offset"} & set(result.values):
         overrides["wear.initial_torque"] = None
+        overrides["wear.torque_scale"] = result.torque_scale
     if result.calibrated_range is not None:
         overrides["wear.calibrated"] = dict(result.calibrated_range)
     return with_overrides(result.case, overrides)
@@ -100,9 +108,10 @@ def calibrate(
         case: the case of the tested screw and its programme (``[wear]`` or ``[[duty]]``).
         measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
             (speed and axial-load columns) replaces the case's programme.
-        fit: names from ``wear_coefficient``, ``torque_scale``, ``film_factor``,
-            ``running_in_depth`` (a comma-separated string also works). The default fits K and,
-            for friction-torque data, the torque scale.
+        fit: names from ``wear_coefficient``, ``torque_scale``, ``torque_offset``,
+            ``film_factor``, ``running_in_depth`` (a comma-separated string also works). The
+            default fits K and, for friction-torque data, the torque scale. ``torque_offset``
+            is T_0 of T = m K_T F_p L/(2π) + T_0 (case default ``wear.torque_offset``, 0).
         fit_until: fit the points up to these revolutions and report ``prediction_rmse`` on the
             rest (None: fit all points).
         model: the wear model, case → history (default :func:`ballscrew.wear_life`).
@@ -115,10 +124,98 @@ def calibrate(
         ``rms_residual``, ``prediction_rmse``, ``prediction_sigma``, ``diagnostics``,
         ``calibrated_range`` and ``warnings`` (systematic residuals; the model's own).
     """
-    from ballscrew.case import with_overrides
 
     data = as_measured(measured)
     names = _names(fit, fit_torque_scale, data)
+    setup = case_setup(case, data, names, model)
+    result = fit_parameters(
+        setup.simulate,
+        data,
+        names,
+        setup.start,
+        torque_scale=setup.torque_scale,
+        torque_offset=setup.torque_offset,
+        fit_until=fit_until,
+        **options,
+    )
+    with recorded_warnings() as messages:
+        setup.reissue(result.values)
+        if result.diagnostics.get("systematic"):
+            from ballscrew.calibration.diagnostics import residual_diagnostics
+
+            text = residual_diagnostics(result.fitted[: result.n_fit] - data.values[: result.n_fit])
+            warnings.warn(text.message(), CalibrationWarning, stacklevel=2)
+    return replace(
+        result,
+        case=setup.case,
+        warnings=tuple(messages),
+        calibrated_range=programme_range(setup.case),
+    )
+
+
+@dataclass
+class CaseSetup:
+    """The wear model of one case as the fitters see it: ``simulate({name: value})`` runs the
+    case with those values (its torque without T_0, which the fit adds), the model
+    parameters' start, the torque scale and offset the fit starts from, and the warnings of
+    each run."""
+
+    case: Any
+    base: dict[str, Any]
+    """Case overrides of every run."""
+    start: dict[str, float]
+    torque_scale: float
+    torque_offset: float
+    model: Callable[[Any], WearHistory]
+    source: str
+    quantity: str
+    warned: dict[tuple[tuple[str, float], ...], list[warnings.WarningMessage]] = field(
+        default_factory=dict
+    )
+
+    def simulate(self, values: Mapping[str, float]) -> WearHistory:
+        """One model run of the case at ``values``; a BudgetError becomes a CalibrationError."""
+        from ballscrew.case import with_overrides
+
+        overrides = {**self.base, **{FIT_PARAMETERS[n].key: v for n, v in values.items()}}
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            try:
+                history = self.model(with_overrides(self.case, overrides))
+            except BudgetError as exc:
+                trial = ", ".join(
+                    ("K" if n == "wear_coefficient" else n) + f" = {v:.3g}"
+                    for n, v in values.items()
+                )
+                raise CalibrationError(
+                    f"{self.source}: the wear model cannot run at the trial {trial} ({exc}); "
+                    f"the measured {self.quantity} is out of the model's reach (check the data)"
+                ) from None
+        self.warned[tuple(sorted(values.items()))] = seen
+        return history
+
+    def reissue(self, fitted: Mapping[str, float]) -> None:
+        """Warn again the warnings of the run nearest the fitted values."""
+        if not self.warned:
+            return
+
+        def distance(key: tuple[tuple[str, float], ...]) -> float:
+            return sum(abs(math.log(v / fitted.get(k, v))) for k, v in key)
+
+        for w in self.warned[min(self.warned, key=distance)]:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+
+
+def case_setup(
+    case: Any,
+    data: MeasuredHistory,
+    names: Sequence[str],
+    model: Callable[[Any], WearHistory] | None = None,
+) -> CaseSetup:
+    """The :class:`CaseSetup` of ``case`` for fitting ``names`` to ``data`` (a schedule in the
+    data replaces the case's programme; ``model`` defaults to :func:`ballscrew.wear_life`)."""
+    from ballscrew.case import with_overrides
+
     if data.schedule is not None:
         if getattr(case, "duty", None):
             raise InputError(
@@ -139,55 +236,16 @@ def calibrate(
             raise InputError("--fit", "running_in_depth", "a case with a [wear.running_in] section")
         start["running_in_depth"] = running.depth
     scale0 = getattr(wear, "torque_scale", None) or 1.0
+    offset0 = float(getattr(wear, "torque_offset", 0.0) or 0.0)
     initial_torque = getattr(wear, "initial_torque", None)
-    base: dict[str, Any] = {}
+    # the model's torque without T_0: the fit adds it (and the initial torque's share of it)
+    base: dict[str, Any] = {"wear.torque_offset": 0.0} if wear is not None else {}
     if initial_torque is not None:
-        if "torque_scale" in names:
-            base["wear.initial_torque"] = None
-        else:
-            scale0 = _initial_torque_scale(case, float(initial_torque))
-    warned: dict[tuple[tuple[str, float], ...], list[warnings.WarningMessage]] = {}
-
-    def simulate(values: Mapping[str, float]) -> WearHistory:
-        overrides = {**base, **{FIT_PARAMETERS[n].key: v for n, v in values.items()}}
-        with warnings.catch_warnings(record=True) as seen:
-            warnings.simplefilter("always")
-            try:
-                history = model(with_overrides(case, overrides))
-            except BudgetError as exc:
-                trial = ", ".join(
-                    ("K" if n == "wear_coefficient" else n) + f" = {v:.3g}"
-                    for n, v in values.items()
-                )
-                raise CalibrationError(
-                    f"{data.source}: the wear model cannot run at the trial {trial} ({exc}); "
-                    f"the measured {data.quantity} is out of the model's reach (check the data)"
-                ) from None
-        warned[tuple(sorted(values.items()))] = seen
-        return history
-
-    result = fit_parameters(
-        simulate, data, names, start, torque_scale=float(scale0), fit_until=fit_until, **options
-    )
-    with recorded_warnings() as messages:
-        if warned:  # re-issue only the warnings of the run nearest the fit
-
-            def distance(key: tuple[tuple[str, float], ...]) -> float:
-                return sum(abs(math.log(v / result.values.get(k, v))) for k, v in key)
-
-            for w in warned[min(warned, key=distance)]:
-                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-        if result.diagnostics.get("systematic"):
-            from ballscrew.calibration.diagnostics import residual_diagnostics
-
-            text = residual_diagnostics(result.fitted[: result.n_fit] - data.values[: result.n_fit])
-            warnings.warn(text.message(), CalibrationWarning, stacklevel=2)
-    return replace(
-        result,
-        case=case,
-        warnings=tuple(messages),
-        calibrated_range=_programme_range(case),
-    )
+        base["wear.initial_torque"] = None
+        if "torque_scale" not in names:
+            scale0 = _initial_torque_scale(case, float(initial_torque) - offset0)
+            base["wear.torque_scale"] = scale0
+    return CaseSetup(case, base, start, float(scale0), offset0, model, data.source, data.quantity)
 
 
 def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:

@@ -51,13 +51,27 @@ from ballscrew.calibration.search import (
     check_determined,
     covariance,
     line_minimum,
+    linear_fit,
     refine,
     scan,
     solve_least_squares,
 )
 from ballscrew.errors import InputError
 
-__all__ = ["FIT_PARAMETERS", "CalibrationWarning", "FitParameter", "fit_parameters"]
+__all__ = [
+    "CORRELATION_LIMIT",
+    "FIT_PARAMETERS",
+    "LINEAR",
+    "CalibrationWarning",
+    "FitParameter",
+    "HistoryFit",
+    "check_names",
+    "correlations",
+    "fit_parameters",
+    "solve",
+    "start_values",
+    "warn_correlated",
+]
 
 
 _K = "wear_coefficient"
@@ -71,13 +85,19 @@ class CalibrationWarning(UserWarning):
 class FitParameter:
     """A parameter the calibration can fit."""
 
-    key: str | None
-    """Dotted case key the value goes to (None: the torque multiplier, applied after the run)."""
+    key: str
+    """Dotted case key the value goes to."""
     lower: float
     upper: float
     description: str
     short: str = ""
     """Its name in a message about its own value (default: the description)."""
+    kind: str = "model"
+    """``model``: a wear-model input, fitted as its logarithm, each trial one model run;
+    ``scale`` / ``offset``: m and T_0 of T = m·T_model + T_0, applied after the run (exact
+    Jacobian columns, no model run)."""
+    unit: str = ""
+    """SI unit of the value (``summary.json``)."""
 
 
 FIT_PARAMETERS: dict[str, FitParameter] = {
@@ -85,13 +105,33 @@ FIT_PARAMETERS: dict[str, FitParameter] = {
         "wear.coefficient", 1.0e-16, 1.0, "wear coefficient K", short="K"
     ),
     "torque_scale": FitParameter(
-        None, 0.0, math.inf, "drag-torque scale on K_T", short="torque scale"
+        "wear.torque_scale",
+        0.0,
+        math.inf,
+        "drag-torque scale on K_T",
+        short="torque scale",
+        kind="scale",
+    ),
+    "torque_offset": FitParameter(
+        "wear.torque_offset",
+        -math.inf,
+        math.inf,
+        "preload-independent torque T_0 [N·m]",
+        short="torque offset",
+        kind="offset",
+        unit="N*m",
     ),
     "film_factor": FitParameter("wear.film_factor", 1.0e-3, 1.0, "film supply factor φ"),
     "running_in_depth": FitParameter(
-        "wear.running_in.depth", 1.0e-9, 1.0e-4, "running-in depth h_r [m]"
+        "wear.running_in.depth", 1.0e-9, 1.0e-4, "running-in depth h_r [m]", unit="m"
     ),
 }
+LINEAR = ("torque_scale", "torque_offset")
+"""The parameters applied after the model run, in their column order (last)."""
+CORRELATION_LIMIT = 0.995
+"""|correlation| of two fitted parameters above which a CalibrationWarning says the data hardly
+separate them (GUESS: each one's standard error is then 1/√(1 − r²) = 10× what it would be
+with the other known)."""
 
 
 def _split(data: MeasuredHistory, fit_until: float | None) -> tuple[MeasuredHistory, int]:
@@ -123,7 +163,9 @@ _SIGMA_FLOOR = 1e-6
 class _SecantJacobian:
     """Jacobian of the scaled residuals: forward differences of the model columns at the first
     point, Broyden's (1965) rank-one secant update at every later one (one model run per
-    iteration instead of one per parameter), the torque-multiplier column exact."""
+    iteration instead of one per parameter), the columns of the torque multiplier m (the
+    model's values) and of the offset (ones, as it is fitted in units of the data scale)
+    exact."""
 
     def __init__(
         self,
@@ -132,11 +174,13 @@ class _SecantJacobian:
         upper: Sequence[float],
         fit_scale: bool,
         scale: float,
+        fit_offset: bool = False,
     ) -> None:
         self.model_at = model_at
         self.diff_step = diff_step
         self.upper = list(upper)
         self.fit_scale = fit_scale
+        self.fit_offset = fit_offset
         self.scale = scale
         self.x: np.ndarray | None = None
         self.values = np.zeros(0)
@@ -175,9 +219,13 @@ class _SecantJacobian:
         return self._full(x)
 
     def _full(self, x: np.ndarray) -> np.ndarray:
-        m = float(x[-1]) if self.fit_scale else 1.0
-        jac = m * self.columns / self.scale
-        return np.column_stack([jac, self.values / self.scale]) if self.fit_scale else jac
+        m = float(x[len(self.upper)]) if self.fit_scale else 1.0
+        columns = [m * self.columns / self.scale]
+        if self.fit_scale:
+            columns.append(self.values[:, None] / self.scale)
+        if self.fit_offset:
+            columns.append(np.ones((self.values.size, 1)))
+        return np.hstack(columns)
 
 
 def _converged(
@@ -200,6 +248,227 @@ def _converged(
     return bool(np.all(np.abs(moved) <= _MOVE * sigma))
 
 
+class HistoryFit:
+    """One measured history's part of a fit: its model runs (:class:`ModelRuns`), its fitted
+    parameters and their local vector x = (ln θ_model…, m, c/s) (m and c where fitted), the
+    scaled residuals and the Jacobian; :meth:`result` turns a solution into a
+    :class:`CalibrationResult`."""
+
+    def __init__(
+        self,
+        simulate: Callable[[Mapping[str, float]], WearHistory],
+        data: MeasuredHistory,
+        fit: Sequence[str],
+        start: Mapping[str, float],
+        *,
+        torque_scale: float,
+        torque_offset: float,
+        fit_until: float | None,
+        max_evaluations: int,
+        diff_step: float,
+        label: str,
+    ) -> None:
+        self.names = check_names(fit, data)
+        check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
+        if not math.isfinite(torque_offset):
+            raise InputError("wear.torque_offset", torque_offset, "a finite torque in N·m")
+        self.data = data
+        self.fitted_data, self.n_fit = _split(data, fit_until)
+        self.fit_until = fit_until
+        self.model_names = [n for n in self.names if FIT_PARAMETERS[n].kind == "model"]
+        self.fit_scale = "torque_scale" in self.names
+        self.fit_offset = "torque_offset" in self.names
+        self.base = {k: float(v) for k, v in start.items()}
+        for name in self.model_names:
+            if name not in self.base:
+                raise InputError("fit", name, f"a parameter of the model ({', '.join(self.base)})")
+        self.start = dict(self.base)
+        self.runs = ModelRuns(simulate, self.fitted_data, max_evaluations, label)
+        self.y = self.fitted_data.values
+        self.scale = float(np.max(np.abs(self.y))) or 1.0
+        self.torque_scale = torque_scale
+        self.torque_offset = torque_offset
+        self.lower = [math.log(FIT_PARAMETERS[n].lower) for n in self.model_names]
+        self.upper = [math.log(FIT_PARAMETERS[n].upper) for n in self.model_names]
+        self.jacobian = _SecantJacobian(
+            self.model_at, diff_step, self.upper, self.fit_scale, self.scale, self.fit_offset
+        )
+
+    def values_of(self, x: np.ndarray) -> dict[str, float]:
+        """The model parameters at ``x``."""
+        fitted = zip(self.model_names, x, strict=False)
+        return {**self.base, **{n: math.exp(v) for n, v in fitted}}
+
+    def linear(self, x: np.ndarray) -> tuple[float, float]:
+        """(m, T_0) at ``x`` (1 and the case's offset where not fitted)."""
+        i = len(self.model_names)
+        m = float(x[i]) if self.fit_scale else 1.0
+        c = float(x[i + self.fit_scale]) * self.scale if self.fit_offset else self.torque_offset
+        return m, c
+
+    def model_at(self, x: np.ndarray) -> np.ndarray:
+        """The unscaled model at the fitted revolutions."""
+        return self.runs.at(self.values_of(x), self.fitted_data.revolutions)
+
+    def residuals(self, x: np.ndarray) -> np.ndarray:
+        """(m·y_model + T_0 − y)/s at the fitted points."""
+        m, c = self.linear(x)
+        return (m * self.model_at(x) + c - self.y) / self.scale
+
+    def begin(self, k_bracket: tuple[float, float] | None) -> tuple[np.ndarray, list, list]:
+        """(x₀, lower, upper) from :attr:`base` (after :func:`_start`), m and T_0 in closed form;
+        ln K bounded to ``k_bracket``."""
+        x0 = [math.log(self.base[n]) for n in self.model_names]
+        lower, upper = list(self.lower), list(self.upper)
+        if k_bracket is not None and _K in self.model_names:
+            i = self.model_names.index(_K)
+            lower[i], upper[i] = k_bracket
+        m, c = linear_fit(
+            self.model_at(np.array(x0)), self.y, self.fit_scale, self.fit_offset, self.torque_offset
+        )
+        if self.fit_scale:
+            x0, lower, upper = [*x0, float(m)], [*lower, 0.0], [*upper, np.inf]
+        if self.fit_offset:
+            x0, lower, upper = [*x0, float(c) / self.scale], [*lower, -np.inf], [*upper, np.inf]
+        x = np.array([min(max(v, lo), hi) for v, lo, hi in zip(x0, lower, upper, strict=True)])
+        return x, lower, upper
+
+    def check_bracket(self, x: np.ndarray, lower: Sequence[float], upper: Sequence[float]) -> None:
+        """CalibrationError when ln K stopped at the edge of the scan's bracket."""
+        if _K in self.model_names:
+            i = self.model_names.index(_K)
+            if min(abs(x[i] - lower[i]), abs(x[i] - upper[i])) < 1e-9:
+                raise CalibrationError(
+                    f"least squares stopped at the edge of the bracket K = "
+                    f"{math.exp(lower[i]):.3g}–{math.exp(upper[i]):.3g} found by the scan (the "
+                    "data do not constrain K)"
+                )
+
+    def result(
+        self, x: np.ndarray, cov: np.ndarray, noise: float, message: str, scanned: tuple
+    ) -> CalibrationResult:
+        """The fit at ``x`` with covariance ``cov`` (of x) and noise σ ``noise`` [SI]."""
+        data, names, n_fit = self.data, self.names, self.n_fit
+        values, errors = {}, {}
+        for i, name in enumerate(names):
+            kind = FIT_PARAMETERS[name].kind
+            if kind == "scale":
+                values[name] = float(self.torque_scale * x[i])
+                errors[name] = self.torque_scale * math.sqrt(cov[i, i])
+            elif kind == "offset":
+                values[name] = float(self.scale * x[i])
+                errors[name] = self.scale * math.sqrt(cov[i, i])
+                continue  # an offset may be 0: its error is not checked against its value
+            else:
+                values[name] = math.exp(x[i])
+                errors[name] = values[name] * math.sqrt(cov[i, i])
+            spec = FIT_PARAMETERS[name]
+            label = spec.short or spec.description
+            check_determined(data.source, label, values[name], errors[name])
+        m, c = self.linear(x)
+        final = self.values_of(x)
+        model_rev, model_val = self.runs.run(final)
+        fitted_all = m * np.interp(data.revolutions, model_rev, model_val) + c
+        residual_fit = fitted_all[:n_fit] - self.y
+        rss = float(residual_fit @ residual_fit)
+        gradient = []
+        for i, h in enumerate(self.jacobian.steps(x)):  # the runs of the difference Jacobian
+            shifted = np.array(x, dtype=float)
+            shifted[i] += h
+            gradient.append(m * (self.runs.at(self.values_of(shifted), model_rev) - model_val) / h)
+        if self.fit_scale:
+            gradient.append(model_val)
+        if self.fit_offset:
+            gradient.append(np.full(model_val.size, self.scale))
+        g = np.column_stack(gradient)
+        sigma = np.sqrt(np.einsum("ij,jk,ik->i", g, cov, g) + noise**2)
+        held = fitted_all[n_fit:] - data.values[n_fit:]
+        diagnostics = residual_diagnostics(residual_fit)
+        curve = m * model_val + c
+        for arr in (fitted_all, curve, sigma):
+            arr.setflags(write=False)
+        return CalibrationResult(
+            quantity=data.quantity,
+            unit=data.unit,
+            source=data.source,
+            wear_coefficient=values.get(_K, self.base.get(_K, math.nan)),
+            standard_error=errors.get(_K, 0.0),
+            torque_scale=values.get("torque_scale", self.torque_scale),
+            torque_scale_error=errors.get("torque_scale"),
+            correlation=_correlation(cov, names),
+            rms_residual=math.sqrt(rss / n_fit),
+            n_points=n_fit,
+            parameters=len(names),
+            evaluations=self.runs.evaluations,
+            initial_coefficient=float(self.start.get(_K, math.nan)),
+            revolutions=data.revolutions,
+            measured=data.values,
+            fitted=fitted_all,
+            model_revolutions=model_rev,
+            model_values=curve,
+            scan=scanned,
+            message=message,
+            values=values,
+            errors=errors,
+            n_fit=n_fit,
+            fit_until=self.fit_until,
+            prediction_rmse=float(np.sqrt(np.mean(held**2))) if held.size else None,
+            prediction_sigma=sigma,
+            diagnostics=diagnostics.as_dict(),
+            torque_offset=values.get("torque_offset", self.torque_offset),
+            correlations=correlations(cov, names),
+        )
+
+
+def solve(
+    residuals: Callable[[np.ndarray], np.ndarray],
+    jacobian: Callable[[np.ndarray], np.ndarray],
+    difference: Callable[[np.ndarray], np.ndarray],
+    x: np.ndarray,
+    bounds: tuple[Sequence[float], Sequence[float]],
+    n: int,
+    max_evaluations: int,
+    label: str,
+    best_rms: Callable[[], float],
+    source: str,
+) -> tuple[np.ndarray, str]:
+    """Least squares from ``x``, restarted (at most :data:`_RESTARTS` runs) from fresh
+    differences ``difference`` while a Gauss–Newton step would still move the solution
+    (:func:`_converged`); (solution, solver message)."""
+    message = ""
+    for _ in range(_RESTARTS):
+        solution = solve_least_squares(
+            residuals, x, jacobian, bounds, max_evaluations, label, best_rms
+        )
+        x, message = solution.x, str(solution.message)
+        if _converged(difference(x), residuals(x), x, bounds, n):
+            break
+    else:
+        warnings.warn(
+            f"{source}: after {_RESTARTS} least-squares runs a Gauss–Newton step would "
+            f"still move the parameters by more than {_MOVE:g} standard error: the fit may "
+            "not be at the minimum (check the data, or fit fewer parameters)",
+            CalibrationWarning,
+            stacklevel=3,
+        )
+    return x, message
+
+
+def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
+    """CalibrationWarning for each pair of fitted parameters whose correlation exceeds
+    :data:`CORRELATION_LIMIT` in magnitude (the data hardly separate them)."""
+    for pair, r in correlations(cov, names).items():
+        if abs(r) > CORRELATION_LIMIT:
+            a, b = (FIT_PARAMETERS[n.split("[")[0]].description for n in pair.split(","))
+            warnings.warn(
+                f"{source}: the data hardly separate the {a} and the {b} ({pair}: correlation "
+                f"{r:+.3f} from the covariance): one trades off against the other, so each "
+                "alone is poorly identified; quote them together, or fix one",
+                CalibrationWarning,
+                stacklevel=3,
+            )
+
+
 def fit_parameters(
     simulate: Callable[[Mapping[str, float]], WearHistory],
     data: MeasuredHistory,
@@ -207,6 +476,7 @@ def fit_parameters(
     start: Mapping[str, float],
     *,
     torque_scale: float = 1.0,
+    torque_offset: float = 0.0,
     fit_until: float | None = None,
     max_evaluations: int = 200,
     diff_step: float = DIFF_STEP,
@@ -219,10 +489,13 @@ def fit_parameters(
     Args:
         simulate: the wear model, {name: value} of the model parameters → history.
         data: the measured history.
-        fit: the parameters to fit; ``torque_scale`` needs friction-torque data.
+        fit: the parameters to fit; ``torque_scale`` and ``torque_offset`` need friction-torque
+            data.
         start: the starting value of every model parameter (``wear_coefficient`` and any other
             the model takes); those not fitted stay at it.
         torque_scale: the torque scale the model torques were computed with.
+        torque_offset: T_0 added to the model torque [N m] (its start when fitted); the model's
+            own torque must not contain it.
         fit_until: fit the points up to these revolutions, predict the rest (None: fit all).
         max_evaluations: most model runs; more raises ConvergenceError.
         diff_step: forward-difference step in the logarithm of each model parameter.
@@ -230,139 +503,44 @@ def fit_parameters(
         refine_steps: most surrogate steps in K after the scan (one model run each).
         label: names the solver in a ConvergenceError.
     """
-    names = _check_names(fit, data)
-    check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
-    fitted_data, n_fit = _split(data, fit_until)
-    p = len(names)
+    part = HistoryFit(
+        simulate,
+        data,
+        fit,
+        start,
+        torque_scale=torque_scale,
+        torque_offset=torque_offset,
+        fit_until=fit_until,
+        max_evaluations=max_evaluations,
+        diff_step=diff_step,
+        label=label,
+    )
+    p, n_fit = len(part.names), part.n_fit
     if n_fit <= p:
         raise CalibrationError(
             f"{data.source}: {n_fit} points cannot determine {p} parameter(s); give at "
             f"least {p + 1}"
         )
-    model_names = [n for n in names if n != "torque_scale"]
-    fit_scale = "torque_scale" in names
-    base = {k: float(v) for k, v in start.items()}
-    for name in model_names:
-        if name not in base:
-            raise InputError("fit", name, f"a parameter of the model ({', '.join(base)})")
-    model = ModelRuns(simulate, fitted_data, max_evaluations, label)
-    y = fitted_data.values
-    scale = float(np.max(np.abs(y))) or 1.0
-    lower = [math.log(FIT_PARAMETERS[n].lower) for n in model_names]
-    upper = [math.log(FIT_PARAMETERS[n].upper) for n in model_names]
-    base, scanned, k_bracket = _start(model, base, model_names, fit_scale, scan_steps, refine_steps)
-    x0 = [math.log(base[n]) for n in model_names]
-    if k_bracket is not None:
-        i = model_names.index("wear_coefficient")
-        lower[i], upper[i] = k_bracket
-
-    def values_of(x: np.ndarray) -> dict[str, float]:
-        return {**base, **{n: math.exp(v) for n, v in zip(model_names, x, strict=False)}}
-
-    def multiplier(x: np.ndarray) -> float:
-        return float(x[-1]) if fit_scale else 1.0
-
-    def residuals(x: np.ndarray) -> np.ndarray:
-        return (multiplier(x) * model.at(values_of(x), fitted_data.revolutions) - y) / scale
-
-    jacobian = _SecantJacobian(
-        lambda x: model.at(values_of(x), fitted_data.revolutions),
-        diff_step,
-        upper,
-        fit_scale,
-        scale,
+    part.base, scanned, k_bracket = start_values(part, scan_steps, refine_steps)
+    x, lower, upper = part.begin(k_bracket)
+    x, message = solve(
+        part.residuals,
+        part.jacobian,
+        part.jacobian.difference,
+        x,
+        (lower, upper),
+        n_fit,
+        max_evaluations,
+        label,
+        lambda: part.runs.best_rms,
+        data.source,
     )
-    if fit_scale:
-        here = model.at(values_of(np.array(x0)), fitted_data.revolutions)
-        m0 = max(float(here @ y) / float(here @ here), 1e-12) if here @ here > 0 else 1.0
-        x0, lower, upper = [*x0, m0], [*lower, 0.0], [*upper, np.inf]
-    x = np.array([min(max(v, lo), hi) for v, lo, hi in zip(x0, lower, upper, strict=True)])
-    message = ""
-    for _ in range(_RESTARTS):
-        solution = solve_least_squares(
-            residuals, x, jacobian, (lower, upper), max_evaluations, label, lambda: model.best_rms
-        )
-        x, message = solution.x, str(solution.message)
-        if _converged(jacobian.difference(x), residuals(x), x, (lower, upper), n_fit):
-            break
-    else:
-        warnings.warn(
-            f"{data.source}: after {_RESTARTS} least-squares runs a Gauss–Newton step would "
-            f"still move the parameters by more than {_MOVE:g} standard error: the fit may "
-            "not be at the minimum (check the data, or fit fewer parameters)",
-            CalibrationWarning,
-            stacklevel=2,
-        )
-    if "wear_coefficient" in model_names:
-        i = model_names.index("wear_coefficient")
-        if min(abs(x[i] - lower[i]), abs(x[i] - upper[i])) < 1e-9:
-            raise CalibrationError(
-                f"least squares stopped at the edge of the bracket K = "
-                f"{math.exp(lower[i]):.3g}–{math.exp(upper[i]):.3g} found by the scan (the data "
-                "do not constrain K)"
-            )
-    r = residuals(x)
-    cov = _covariance(jacobian.difference(x), r, n_fit, names, data.source)
-    values, errors = {}, {}
-    for i, name in enumerate(names):
-        if name == "torque_scale":
-            values[name], errors[name] = torque_scale * x[i], torque_scale * math.sqrt(cov[i, i])
-        else:
-            values[name] = math.exp(x[i])
-            errors[name] = values[name] * math.sqrt(cov[i, i])
-        spec = FIT_PARAMETERS[name]
-        check_determined(data.source, spec.short or spec.description, values[name], errors[name])
-    m = multiplier(x)
-    final = values_of(x)
-    model_rev, model_val = model.run(final)
-    fitted_all = m * np.interp(data.revolutions, model_rev, model_val)
-    residual_fit = fitted_all[:n_fit] - y
-    rss = float(residual_fit @ residual_fit)
-    noise = math.sqrt(rss / (n_fit - p))
-    gradient = []
-    for i, h in enumerate(jacobian.steps(x)):  # the runs of the difference Jacobian
-        shifted = np.array(x, dtype=float)
-        shifted[i] += h
-        gradient.append(m * (model.at(values_of(shifted), model_rev) - model_val) / h)
-    if fit_scale:
-        gradient.append(model_val)
-    g = np.column_stack(gradient)
-    sigma = np.sqrt(np.einsum("ij,jk,ik->i", g, cov, g) + noise**2)
-    held = fitted_all[n_fit:] - data.values[n_fit:]
-    diagnostics = residual_diagnostics(residual_fit)
-    k = values.get("wear_coefficient", base.get("wear_coefficient", math.nan))
-    curve = m * model_val
-    for arr in (fitted_all, curve, sigma):
-        arr.setflags(write=False)
-    return CalibrationResult(
-        quantity=data.quantity,
-        unit=data.unit,
-        source=data.source,
-        wear_coefficient=k,
-        standard_error=errors.get("wear_coefficient", 0.0),
-        torque_scale=values.get("torque_scale", torque_scale),
-        torque_scale_error=errors.get("torque_scale"),
-        correlation=_correlation(cov, names),
-        rms_residual=math.sqrt(rss / n_fit),
-        n_points=n_fit,
-        parameters=p,
-        evaluations=model.evaluations,
-        initial_coefficient=float(start.get("wear_coefficient", math.nan)),
-        revolutions=data.revolutions,
-        measured=data.values,
-        fitted=fitted_all,
-        model_revolutions=model_rev,
-        model_values=curve,
-        scan=scanned,
-        message=message,
-        values=values,
-        errors=errors,
-        n_fit=n_fit,
-        fit_until=fit_until,
-        prediction_rmse=float(np.sqrt(np.mean(held**2))) if held.size else None,
-        prediction_sigma=sigma,
-        diagnostics=diagnostics.as_dict(),
-    )
+    part.check_bracket(x, lower, upper)
+    r = part.residuals(x)
+    cov = _covariance(part.jacobian.difference(x), r, n_fit, part.names, data.source)
+    warn_correlated(cov, part.names, data.source)
+    noise = part.scale * math.sqrt(float(r @ r) / (n_fit - p))
+    return part.result(x, cov, noise, message, scanned)
 
 
 def _grid(name: str, value: float, points: int = 3) -> list[float]:
@@ -377,37 +555,41 @@ def _grid(name: str, value: float, points: int = 3) -> list[float]:
     return sorted(inside, key=lambda v: abs(math.log(v / value)))
 
 
-def _start(
-    model: ModelRuns,
-    base: dict[str, float],
-    names: list[str],
-    fit_scale: bool,
-    scan_steps: int,
-    refine_steps: int,
+def start_values(
+    part: HistoryFit, scan_steps: int, refine_steps: int
 ) -> tuple[dict[str, float], tuple[tuple[float, float], ...], tuple[float, float] | None]:
     """Starting values: K from a decade scan and surrogate steps (:func:`.search.scan`,
-    :func:`.search.refine`); then for each other parameter in turn the best of half-decade
-    trial values, K re-fitted at each by :func:`.search.line_minimum`; the decade scan; and the
-    bracket of ln K (a decade either side of its best). Every run is one of ``model``'s."""
-    fit_k = "wear_coefficient" in names
-    first = KLine(model, base, fit_scale)
-    ln_k = math.log(base["wear_coefficient"])
+    :func:`.search.refine`); then for each other model parameter in turn the best of
+    half-decade trial values, K re-fitted at each by :func:`.search.line_minimum`; the torque
+    multiplier and offset in closed form throughout. Returns the start, the decade scan and
+    the bracket of ln K (a decade either side of its best). Every run is one of ``part``'s."""
+    model, base, names = part.runs, part.base, part.model_names
+    fit_k = _K in names
+
+    def line(values: Mapping[str, float]) -> KLine:
+        return KLine(model, values, part.fit_scale, part.fit_offset, part.torque_offset)
+
+    first = line(base)
+    ln_k = math.log(base[_K])
     scanned_rms: tuple[tuple[float, float], ...] = ()
     if fit_k:
-        best, scanned = scan(first, ln_k, scan_steps)
+        try:
+            best, scanned = scan(first, ln_k, scan_steps)
+        except CalibrationError as exc:
+            if part.fit_scale and part.fit_offset:
+                raise _unidentifiable(part.data.source) from exc
+            raise
         ln_k = refine(first, best, scanned, refine_steps)
         scanned_rms = tuple((math.exp(v), first.rms_at(v)[0]) for v in scanned)
-    current, rms = {**base, "wear_coefficient": math.exp(ln_k)}, first.rms_at(ln_k)[0]
-    for name in (n for n in names if n != "wear_coefficient"):
+    current, rms = {**base, _K: math.exp(ln_k)}, first.rms_at(ln_k)[0]
+    for name in (n for n in names if n != _K):
         for trial in _grid(name, current[name])[1:]:
             values = {**current, name: trial}
             try:
                 if fit_k:
-                    ln_t, rms_t = line_minimum(
-                        KLine(model, values, fit_scale), math.log(current[_K])
-                    )
+                    ln_t, rms_t = line_minimum(line(values), math.log(current[_K]))
                 else:
-                    ln_t, rms_t = ln_k, KLine(model, values, fit_scale).rms_at(ln_k)[0]
+                    ln_t, rms_t = ln_k, line(values).rms_at(ln_k)[0]
             except CalibrationError:  # K cannot reach the data at this trial value
                 continue
             if rms_t < rms:
@@ -419,7 +601,19 @@ def _start(
     return current, scanned_rms, bracket
 
 
-def _check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
+def _unidentifiable(source: str) -> CalibrationError:
+    return CalibrationError(
+        f"{source}: K, the torque scale m and the torque offset T_0 are not identifiable "
+        "together: while the preload loss is small, T = m·T_p(N; K) + T_0 is linear in K, so "
+        "only m·K and m·T_p(0) + T_0 are determined, and these data are best fitted in that "
+        "limit (the scan in K ran to the end of its range); fix the torque scale (fit K and "
+        "torque_offset with the case's wear.torque_scale) or the offset"
+    )
+
+
+def check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
+    """``fit`` checked (known names; the torque scale and offset only for torque data) and in
+    column order: the model parameters, then the torque scale and the offset."""
     names = list(dict.fromkeys(fit))
     allowed = ", ".join(FIT_PARAMETERS)
     if not names:
@@ -427,14 +621,10 @@ def _check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
     for name in names:
         if name not in FIT_PARAMETERS:
             raise InputError("--fit", name, f"one or more of {allowed}")
-    if "torque_scale" in names and data.quantity != "friction_torque":
-        raise InputError(
-            "--fit", "torque_scale", f"only with friction_torque data (got {data.quantity})"
-        )
-    # the torque multiplier is the last column
-    return [n for n in names if n != "torque_scale"] + (
-        ["torque_scale"] if "torque_scale" in names else []
-    )
+        if name in LINEAR and data.quantity != "friction_torque":
+            raise InputError("--fit", name, f"only with friction_torque data (got {data.quantity})")
+    # the torque multiplier and the offset are the last columns
+    return [n for n in names if n not in LINEAR] + [n for n in LINEAR if n in names]
 
 
 def _covariance(
@@ -446,7 +636,18 @@ def _covariance(
 
 
 def _correlation(cov: np.ndarray, names: list[str]) -> float | None:
-    if "wear_coefficient" not in names or "torque_scale" not in names:
+    if _K not in names or "torque_scale" not in names:
         return None
-    i, j = names.index("wear_coefficient"), names.index("torque_scale")
+    i, j = names.index(_K), names.index("torque_scale")
     return float(cov[i, j] / math.sqrt(cov[i, i] * cov[j, j]))
+
+
+def correlations(cov: np.ndarray, names: Sequence[str]) -> dict[str, float]:
+    """Correlation of each pair of fitted parameters, keyed ``"a,b"`` (K's of ln K)."""
+    sigma = np.sqrt(np.diag(cov))
+    return {
+        f"{names[i]},{names[j]}": float(cov[i, j] / (sigma[i] * sigma[j]))
+        for i in range(len(names))
+        for j in range(i + 1, len(names))
+        if sigma[i] > 0.0 and sigma[j] > 0.0
+    }

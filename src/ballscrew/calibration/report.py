@@ -19,10 +19,10 @@ from ballscrew.plotting import plain
 if TYPE_CHECKING:
     from ballscrew.calibration.result import CalibrationResult
 
-__all__ = ["figures", "fit_dataset", "fit_table", "sections", "summary"]
+__all__ = ["DISPLAY", "figures", "fit_dataset", "fit_plot", "fit_table", "sections", "summary"]
 
 #: Label and display unit (name, factor from SI) of each measured quantity.
-_DISPLAY: dict[str, tuple[str, str, float]] = {
+DISPLAY: dict[str, tuple[str, str, float]] = {
     "friction_torque": ("friction torque", "N·m", 1.0),
     "preload": ("preload", "N", 1.0),
     "wear_depth": ("maximum wear depth", "µm", 1.0e6),
@@ -31,6 +31,8 @@ _DISPLAY: dict[str, tuple[str, str, float]] = {
 
 def summary(result: CalibrationResult) -> dict[str, Any]:
     """The fit as a JSON-ready dict (the fitted values first, then diagnostics)."""
+    from ballscrew.calibration.multi import FIT_PARAMETERS
+
     return {
         "case": result.case_name,
         "wear_coefficient": value(result.wear_coefficient, ""),
@@ -43,8 +45,19 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         ),
         "torque_scale_fitted": result.torque_scale_error is not None,
         "correlation_ln_wear_coefficient_torque_scale": result.correlation,
+        "torque_offset": value(result.torque_offset, "N*m"),
+        "torque_offset_standard_error": (
+            value(result.errors["torque_offset"], "N*m")
+            if "torque_offset" in result.errors
+            else None
+        ),
+        "correlations": dict(result.correlations),
         "fitted": {
-            name: {"value": v, "standard_error": result.errors.get(name)}
+            name: {
+                "value": v,
+                "standard_error": result.errors.get(name),
+                "unit": FIT_PARAMETERS[name].unit,
+            }
             for name, v in result.values.items()
         },
         "fit_until": result.fit_until,
@@ -107,7 +120,7 @@ def fit_table(result: CalibrationResult) -> str:
 
 def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     """Measured points and the fitted model curve against revolutions, residuals below."""
-    label, unit, factor = _DISPLAY[result.quantity]
+    label, unit, factor = DISPLAY[result.quantity]
     fig, (ax, axr) = plt.subplots(
         2,
         1,
@@ -180,7 +193,7 @@ def fit_dataset(result: CalibrationResult) -> xr.Dataset:
 
 def figures(result: CalibrationResult) -> list[Figure]:
     """The measured history with the fitted model."""
-    label = _DISPLAY[result.quantity][0]
+    label = DISPLAY[result.quantity][0]
     title = f"{result.case_name}: {label} against revolutions"
     return [
         Figure(
@@ -193,7 +206,9 @@ def figures(result: CalibrationResult) -> list[Figure]:
 
 def sections(result: CalibrationResult) -> list[Section]:
     """The fitted values, their uncertainty and the method."""
-    label, unit, factor = _DISPLAY[result.quantity]
+    from ballscrew.calibration.multi import FIT_PARAMETERS
+
+    label, unit, factor = DISPLAY[result.quantity]
     rows: list[tuple[object, ...]] = [
         ("wear coefficient K", result.wear_coefficient),
         ("standard error of K", result.standard_error),
@@ -206,16 +221,24 @@ def sections(result: CalibrationResult) -> list[Section]:
     if result.torque_scale_error is not None:
         rows.append(("standard error of the torque scale", result.torque_scale_error))
         rows.append(("correlation (ln K, torque scale)", result.correlation))
+    if result.quantity == "friction_torque":
+        fitted = " (fitted)" if "torque_offset" in result.values else ""
+        rows.append((f"torque offset T_0 [N·m]{fitted}", result.torque_offset))
     rows += [
         (f"{name} (fitted)", v)
         for name, v in result.values.items()
-        if name not in ("wear_coefficient", "torque_scale")
+        if name not in ("wear_coefficient", "torque_scale", "torque_offset")
     ]
     rows += [
-        (f"standard error of {name}", e)
+        (
+            f"standard error of {name}"
+            + (f" [{FIT_PARAMETERS[name].unit}]" * bool(FIT_PARAMETERS[name].unit)),
+            e,
+        )
         for name, e in result.errors.items()
         if name not in ("wear_coefficient", "torque_scale")
     ]
+    rows += [(f"correlation ({pair})", r) for pair, r in result.correlations.items()]
     if result.prediction_rmse is not None:
         rows.append((f"held-out RMS error [{unit}]", result.prediction_rmse * factor))
     if result.diagnostics:

@@ -64,7 +64,7 @@ class CalibrationResult(Presented):
         correlation: correlation of ln K and the torque scale, None when not fitted.
         rms_residual: root-mean-square of (model − measured), SI unit of the quantity.
         n_points: number of measured points.
-        parameters: number of fitted parameters (1 or 2).
+        parameters: number of fitted parameters.
         evaluations: number of wear-model runs.
         initial_coefficient: the K the scan started from.
         revolutions: measured revolutions.
@@ -118,6 +118,10 @@ class CalibrationResult(Presented):
     """Runs test and lag-1 autocorrelation of the fitted residuals."""
     calibrated_range: Mapping[str, float] | None = None
     """Speeds [rad/s] and axial loads [N] of the calibrated programme."""
+    torque_offset: float = 0.0
+    """Preload-independent torque T_0 added to the model torque [N m] (fitted or the case's)."""
+    correlations: Mapping[str, float] = field(default_factory=dict)
+    """Correlation of each pair of fitted parameters from the covariance, keyed ``"a,b"``."""
 
     analysis: ClassVar[str] = "calibrate"
     presentation: ClassVar[ModuleType] = calibration_report

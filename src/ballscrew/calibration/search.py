@@ -35,6 +35,7 @@ __all__ = [
     "covariance",
     "downhill",
     "line_minimum",
+    "linear_fit",
     "refine",
     "scan",
     "solve_least_squares",
@@ -92,14 +93,48 @@ class ModelRuns:
         return np.interp(revolutions, rev, val)
 
 
+def linear_fit(
+    model: np.ndarray, y: np.ndarray, fit_scale: bool, fit_offset: bool, offset: float = 0.0
+) -> tuple[np.ndarray, np.ndarray]:
+    """Closed-form (m, c) minimising |m·model + c − y|² along the last axis (ordinary least
+    squares of a line; m = 1 and c = ``offset`` where not fitted; m ≥ 1e-12)."""
+    model = np.asarray(model, dtype=float)
+    ones = np.ones(model.shape[:-1])
+    if fit_scale and fit_offset:
+        centred = model - model.mean(axis=-1, keepdims=True)
+        norm = np.einsum("...i,...i->...", centred, centred)
+        ok = norm > 0.0
+        m = np.where(ok, centred @ (y - y.mean()) / np.where(ok, norm, 1.0), 1.0)
+        m = np.maximum(m, 1e-12)
+        return m, y.mean() - m * model.mean(axis=-1)
+    if fit_scale:
+        norm = np.einsum("...i,...i->...", model, model)
+        ok = norm > 0.0
+        m = np.where(ok, model @ (y - offset) / np.where(ok, norm, 1.0), 1.0)
+        return np.maximum(m, 1e-12), offset * ones
+    if fit_offset:
+        return ones, (y - model).mean(axis=-1)
+    return ones, offset * ones
+
+
 class KLine:
     """The residual of the fit along ln K, the other model parameters fixed at ``values``, the
-    torque multiplier m in closed form (its runs are those of ``runs``)."""
+    torque multiplier m and offset c (where fitted) in closed form (:func:`linear_fit`; its
+    runs are those of ``runs``)."""
 
-    def __init__(self, runs: ModelRuns, values: Mapping[str, float], fit_scale: bool) -> None:
+    def __init__(
+        self,
+        runs: ModelRuns,
+        values: Mapping[str, float],
+        fit_scale: bool,
+        fit_offset: bool = False,
+        offset: float = 0.0,
+    ) -> None:
         self.runs = runs
         self.values = dict(values)
         self.fit_scale = fit_scale
+        self.fit_offset = fit_offset
+        self.offset = offset
         self.data = runs.data
 
     def at_data(self, ln_k: float) -> np.ndarray:
@@ -107,20 +142,15 @@ class KLine:
         values = {**self.values, _K: math.exp(float(ln_k))}
         return self.runs.at(values, self.data.revolutions)
 
-    def best_multiplier(self, model: np.ndarray) -> float:
-        """Closed-form m minimising |m·model − data|² (1 when the scale is not fitted)."""
-        if not self.fit_scale:
-            return 1.0
-        denominator = float(model @ model)
-        if denominator <= 0.0:
-            return 1.0
-        return max(float(model @ self.data.values) / denominator, 1e-12)
+    def best_linear(self, model: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(m, c) minimising |m·model + c − data|² (:func:`linear_fit`)."""
+        return linear_fit(model, self.data.values, self.fit_scale, self.fit_offset, self.offset)
 
     def rms_at(self, ln_k: float) -> tuple[float, float]:
         """(RMS residual in SI units, best m) at K = exp(ln_k)."""
         model = self.at_data(ln_k)
-        m = self.best_multiplier(model)
-        return float(np.sqrt(np.mean((m * model - self.data.values) ** 2))), m
+        m, c = self.best_linear(model)
+        return float(np.sqrt(np.mean((m * model + c - self.data.values) ** 2))), float(m)
 
 
 def downhill(points: Mapping[float, float], step: float) -> float | None:
@@ -159,9 +189,9 @@ def surrogate_minimum(line: KLine, points: list[float]) -> float:
 
     The model's values at the data are interpolated, as vectors, quadratically in ln K
     (Lagrange) through the three runs ``points``; the sum of squares of this surrogate (with
-    the best torque multiplier at each ln K) is minimised on a dense grid between the outer
-    points. No model run is spent; the model history is smooth in ln K even where the sum of
-    squares is far from a parabola (the preload saturating at 0 for large K).
+    the best torque multiplier and offset at each ln K) is minimised on a dense grid between
+    the outer points. No model run is spent; the model history is smooth in ln K even where the
+    sum of squares is far from a parabola (the preload saturating at 0 for large K).
     """
     x = np.asarray(sorted(points))
     runs = np.stack([line.at_data(v) for v in x])
@@ -176,12 +206,8 @@ def surrogate_minimum(line: KLine, points: list[float]) -> float:
         axis=1,
     )
     surrogate = basis @ runs  # (grid, data)
-    y = line.data.values
-    if line.fit_scale:
-        norm = np.einsum("ij,ij->i", surrogate, surrogate)
-        m = np.where(norm > 0.0, surrogate @ y / np.where(norm > 0.0, norm, 1.0), 1.0)
-        surrogate = surrogate * np.maximum(m, 1e-12)[:, None]
-    sse = np.sum((surrogate - y) ** 2, axis=1)
+    m, c = line.best_linear(surrogate)
+    sse = np.sum((surrogate * m[:, None] + c[:, None] - line.data.values) ** 2, axis=1)
     return float(grid[int(np.argmin(sse))])
 
 

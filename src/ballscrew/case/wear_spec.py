@@ -152,6 +152,13 @@ class WearSpec(Model):
         )
         | None
     ) = None
+    torque_offset: quantity(
+        "torque",
+        "preload-independent drag torque T_0 (N·m; seals, wipers, grease churning) added to "
+        "the torque of (E9.1); default 0",
+        ge=-1e5,
+        le=1e5,
+    ) = 0.0
     programme: list[WearLevel] = Field(
         default_factory=lambda: [
             WearLevel(axial_load=load, speed=100.0 * 3.141592653589793 / 30.0, revolutions=4.8e5)

@@ -60,9 +60,9 @@ ABOUT: dict[str, tuple[str, str]] = {
         "wear.md",
     ),
     "calibrate": (
-        "A nonlinear least-squares fit of the wear coefficient (and the drag-torque scale) to "
-        "the measured history, each trial running the wear model; standard errors by the "
-        "delta method.",
+        "A nonlinear least-squares fit of the wear coefficient (and the drag-torque scale and "
+        "offset) to the measured history, or to several histories of the screw together, each "
+        "trial running the wear model; standard errors by the delta method.",
         "wear.md",
     ),
     "surface": (

@@ -101,3 +101,5 @@ class WearOptions:
     """Initial surface and running-in depth; None: one surface throughout."""
     load_classes: int = 3
     """Ball-load classes per nut of the elastic distribution (:mod:`.load_classes`) [-]."""
+    torque_offset: float = 0.0
+    """Preload-independent drag torque T_0 added to (E9.1) [N m]."""

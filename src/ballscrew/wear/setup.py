@@ -59,6 +59,8 @@ class WearSetup:
     ball_classes: tuple[tuple[float, tuple[LoadClasses, LoadClasses]], ...] = ()
     """Per axial load of the programme, the ball-load classes of nut 1 and nut 2 (elastic
     distribution at the initial preload); empty or an absent load: every ball the mean load."""
+    torque_offset: float = 0.0
+    """Preload-independent drag torque T_0 (seals, wipers, grease churning) [N m]."""
 
     @property
     def cell_area(self) -> float:
@@ -114,9 +116,10 @@ class WearSetup:
         )
 
     def torque(self, preload: float) -> float:
-        """Drag torque T = f · K_T F_p L/(2π) (E9.1, E9.3) [N m]."""
+        """Drag torque T = f · K_T F_p L/(2π) + T_0 (E9.1, E9.3, E9.4) [N m]."""
         g = self.geometry
-        return self.torque_factor * preload_drag_torque(preload, g.lead, g.lead_angle)
+        drag = self.torque_factor * preload_drag_torque(preload, g.lead, g.lead_angle)
+        return drag + self.torque_offset
 
     def ball_load(self, nut_force: float) -> float:
         """Q = F/(Z sinβ cosλ) (E1.6) [N]."""

@@ -1,0 +1,347 @@
+"""Joint calibration of several histories of one screw: shared and per-history parameters.
+
+Histories j = 1…H of the same screw (the two travel directions of a friction-torque test,
+repeated runs) share the wear-model parameters ``shared`` (one wear coefficient K: the same
+raceways wear) and keep their own ``separate`` ones (the torque scale m_j and the offset T_0,j
+of each direction). The residuals of all histories are stacked,
+
+    r = [r_1(θ_s, θ_1); …; r_H(θ_s, θ_H)],   r_j = (m_j y_model,j + T_0,j − y_j)/s,
+
+with one data scale s for every history (they must measure the same quantity, so their points
+weigh alike), and minimised by the same trust-region least squares, restarts and secant
+Jacobian as a single history (:mod:`ballscrew.calibration.multi`): each history's Jacobian
+block comes from its own :class:`~ballscrew.calibration.multi.HistoryFit`, scattered into the
+columns of the shared and its own parameters. The covariance of all parameters is
+s_r² (JᵀJ)⁻¹ of the stacked Jacobian, s_r² = RSS/(n − p) over every fitted point (Seber & Wild
+1989, §2.1); each history's standard errors, prediction band, RMS and held-out error
+(``fit_until``) are read from it. Histories of equal cases share their model runs (one memo).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from types import ModuleType
+from typing import Any, ClassVar
+
+import numpy as np
+import xarray as xr
+
+from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.calibration import joint_report
+from ballscrew.calibration.api import CaseSetup, as_measured, case_setup, programme_range
+from ballscrew.calibration.multi import (
+    FIT_PARAMETERS,
+    CalibrationWarning,
+    HistoryFit,
+    correlations,
+    solve,
+    start_values,
+    warn_correlated,
+)
+from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
+from ballscrew.calibration.search import DIFF_STEP, SCAN_STEPS, covariance
+from ballscrew.case.inputs import resolved_inputs
+from ballscrew.errors import InputError
+
+__all__ = ["JointCalibrationResult", "calibrate_joint", "fit_joint"]
+
+_K = "wear_coefficient"
+
+
+@dataclass(frozen=True)
+class JointCalibrationResult(Presented):
+    """Several histories fitted together.
+
+    Attributes:
+        histories: each history's fit (its values include the shared ones; its standard errors
+            come from the joint covariance).
+        shared: names of the shared parameters.
+        separate: names of the per-history parameters.
+        values: the shared parameters' values.
+        errors: their standard errors.
+        correlations: correlation of each pair of parameters, keyed ``"a,b"``; a per-history
+            parameter is named ``name[j]`` (j from 1).
+        rms_residual: RMS of (model − measured) over every fitted point [SI].
+        evaluations: distinct model runs.
+        message: the least-squares solver's termination message.
+        case: the first history's case (its inputs head the report).
+        warnings: warnings of the fit (one line each).
+    """
+
+    histories: tuple[CalibrationResult, ...]
+    shared: tuple[str, ...]
+    separate: tuple[str, ...]
+    values: Mapping[str, float]
+    errors: Mapping[str, float]
+    correlations: Mapping[str, float]
+    rms_residual: float
+    evaluations: int
+    message: str
+    case: Any = None
+    options: Mapping[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+
+    analysis: ClassVar[str] = "calibrate"
+    presentation: ClassVar[ModuleType] = joint_report
+
+    @property
+    def title(self) -> str:
+        return f"Joint wear calibration: {self.case_name}"
+
+    @property
+    def case_name(self) -> str:
+        """Name of the first history's case (its file's when there is no case)."""
+        return self.histories[0].case_name
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return resolved_inputs(self.case) if self.case is not None else {}
+
+    @property
+    def wear_coefficient(self) -> float:
+        """The shared K (or the first history's)."""
+        return self.values.get(_K, self.histories[0].wear_coefficient)
+
+    @property
+    def prediction_rmse(self) -> tuple[float | None, ...]:
+        """Each history's held-out RMS error (None without ``fit_until``)."""
+        return tuple(h.prediction_rmse for h in self.histories)
+
+    def to_xarray(self) -> dict[str, xr.Dataset]:
+        return joint_report.fields(self)
+
+
+def fit_joint(
+    parts: Sequence[HistoryFit],
+    shared: Sequence[str],
+    *,
+    max_evaluations: int = 200,
+    scan_steps: int = SCAN_STEPS,
+    refine_steps: int = 6,
+    label: str = "joint calibration (least squares)",
+) -> JointCalibrationResult:
+    """Fit the histories of ``parts`` together, the parameters ``shared`` common to all.
+
+    Every part must fit the shared parameters; its other fitted ones are its own. The start
+    is each part's own start (:func:`~ballscrew.calibration.multi.start_values`) with the
+    shared model parameters at their geometric mean, ln K bounded to the union of the parts'
+    brackets.
+    """
+    shared = list(dict.fromkeys(shared))
+    source = " + ".join(p.data.source for p in parts)
+    for part in parts:
+        missing = [n for n in shared if n not in part.names]
+        if missing:
+            raise InputError("shared", ", ".join(missing), "parameters every history fits")
+    scale = max(p.scale for p in parts)
+    for part in parts:  # one scale: the points of every history weigh alike
+        part.scale = part.jacobian.scale = scale
+    starts = [start_values(p, scan_steps, refine_steps) for p in parts]
+    common = {
+        n: math.exp(float(np.mean([math.log(s[0][n]) for s in starts])))
+        for n in shared
+        if FIT_PARAMETERS[n].kind == "model"
+    }
+    brackets = [s[2] for s in starts if s[2] is not None]
+    bracket = (min(b[0] for b in brackets), max(b[1] for b in brackets)) if brackets else None
+    index: list[np.ndarray] = []
+    names: list[str] = []
+    x0: list[float] = []
+    lower: list[float] = []
+    upper: list[float] = []
+    for j, (part, (base, _, _)) in enumerate(zip(parts, starts, strict=True)):
+        part.base = {**base, **common}
+        x, lo, hi = part.begin(bracket)
+        columns = []
+        for name, v, a, b in zip(part.names, x, lo, hi, strict=True):
+            label_j = name if name in shared else f"{name}[{j + 1}]"
+            if label_j not in names:
+                names.append(label_j)
+                x0.append(float(v))
+                lower.append(a)
+                upper.append(b)
+            columns.append(names.index(label_j))
+        index.append(np.array(columns))
+    rows = np.cumsum([0] + [p.n_fit for p in parts])
+    n, p = int(rows[-1]), len(names)
+    if n <= p:
+        raise CalibrationError(f"{source}: {n} points cannot determine {p} parameter(s)")
+
+    def residuals(x: np.ndarray) -> np.ndarray:
+        return np.concatenate([part.residuals(x[i]) for part, i in zip(parts, index, strict=True)])
+
+    def stacked(block: Callable[[HistoryFit], Callable[[np.ndarray], np.ndarray]]):
+        def jacobian(x: np.ndarray) -> np.ndarray:
+            out = np.zeros((n, p))
+            for j, (part, i) in enumerate(zip(parts, index, strict=True)):
+                np.add.at(out, (slice(rows[j], rows[j + 1]), i), block(part)(x[i]))
+            return out
+
+        return jacobian
+
+    difference = stacked(lambda part: part.jacobian.difference)
+    x, message = solve(
+        residuals,
+        stacked(lambda part: part.jacobian),
+        difference,
+        np.array(x0),
+        (lower, upper),
+        n,
+        max_evaluations,
+        label,
+        lambda: min(part.runs.best_rms for part in parts),
+        source,
+    )
+    for part, i in zip(parts, index, strict=True):
+        part.check_bracket(x[i], np.array(lower)[i], np.array(upper)[i])
+    r = residuals(x)
+    what = " and ".join(names) + " together"
+    cov = covariance(difference(x), r, n, p, source, what)
+    warn_correlated(cov, [name.split("[")[0] for name in names], source)
+    noise = scale * math.sqrt(float(r @ r) / (n - p))
+    histories = tuple(
+        part.result(x[i], cov[np.ix_(i, i)], noise, message, s[1])
+        for part, i, s in zip(parts, index, starts, strict=True)
+    )
+    first = histories[0]
+    return JointCalibrationResult(
+        histories=histories,
+        shared=tuple(shared),
+        separate=tuple(n for n in parts[0].names if n not in shared),
+        values={n: first.values[n] for n in shared},
+        errors={n: first.errors[n] for n in shared},
+        correlations=correlations(cov, names),
+        rms_residual=scale * math.sqrt(float(r @ r) / n),
+        evaluations=len({k for part in parts for k in part.runs.cache}),
+        message=message,
+    )
+
+
+def calibrate_joint(
+    cases: Any,
+    measured: Sequence[Any],
+    shared: Sequence[str] | str = (_K,),
+    separate: Sequence[str] | str | None = None,
+    fit_until: float | Sequence[float | None] | None = None,
+    *,
+    model: Callable[[Any], WearHistory] | None = None,
+    **options: Any,
+) -> JointCalibrationResult:
+    """Fit one wear model to several measured histories of the same screw.
+
+    Args:
+        cases: one case for every history, or a sequence of cases (one per history).
+        measured: the histories (each a CSV path, DataFrame, array or
+            :class:`MeasuredHistory`), all of one quantity.
+        shared: parameters common to every history (default: the wear coefficient).
+        separate: parameters of each history on its own (default for friction-torque data:
+            ``torque_offset``, the torque scale then the case's ``wear.torque_scale``: with both
+            per history, K is not determined while the preload loss is small; otherwise none).
+        fit_until: fit each history up to these revolutions and report its held-out error on
+            the rest (one number for all, or one per history; None: fit all points).
+        model: the wear model, case → history (default :func:`ballscrew.wear_life`).
+        options: ``max_evaluations``, ``scan_steps``, ``refine_steps`` of :func:`fit_joint`,
+            ``diff_step`` of the Jacobian.
+
+    Returns:
+        :class:`JointCalibrationResult`; ``histories[j]`` is history j's
+        :class:`CalibrationResult` (values, standard errors, ``rms_residual``,
+        ``prediction_rmse``).
+    """
+    data = [as_measured(m) for m in measured]
+    if len(data) < 2:
+        raise InputError("--measured", len(data), "two or more histories for a joint fit")
+    quantities = sorted({d.quantity for d in data})
+    if len(quantities) > 1:
+        raise InputError("--measured", ", ".join(quantities), "histories of one quantity")
+    shared_names = _split_names(shared)
+    if separate is None:
+        separate_names = ["torque_offset"] if quantities[0] == "friction_torque" else []
+    else:
+        separate_names = _split_names(separate)
+    both = set(shared_names) & set(separate_names)
+    if both:
+        raise InputError("--separate", ", ".join(sorted(both)), "names not also shared")
+    case_list = list(cases) if isinstance(cases, list | tuple) else [cases] * len(data)
+    until = list(fit_until) if isinstance(fit_until, list | tuple) else [fit_until] * len(data)
+    if len(case_list) != len(data) or len(until) != len(data):
+        raise InputError(
+            "cases" if len(case_list) != len(data) else "fit_until",
+            len(case_list) if len(case_list) != len(data) else len(until),
+            f"one per history ({len(data)})",
+        )
+    names = shared_names + separate_names
+    setups = [case_setup(c, d, names, model) for c, d in zip(case_list, data, strict=True)]
+    diff_step = options.pop("diff_step", DIFF_STEP)
+    max_evaluations = options.get("max_evaluations", 200)
+    runs = _SharedRuns(setups)
+    parts = [
+        HistoryFit(
+            runs.simulate(j),
+            d,
+            names,
+            s.start,
+            torque_scale=s.torque_scale,
+            torque_offset=s.torque_offset,
+            fit_until=u,
+            max_evaluations=max_evaluations,
+            diff_step=diff_step,
+            label="joint calibration (least squares)",
+        )
+        for j, (s, d, u) in enumerate(zip(setups, data, until, strict=True))
+    ]
+    result = fit_joint(parts, shared_names, **options)
+    with recorded_warnings() as messages:
+        setups[0].reissue(result.histories[0].values)
+        for history in result.histories:
+            if history.diagnostics.get("systematic"):
+                warnings.warn(
+                    f"{history.source}: the residuals are systematic (runs-test p = "
+                    f"{history.diagnostics['runs_test_p_value']:.2g}): the model misses the "
+                    "shape of the data and the standard errors understate the uncertainty",
+                    CalibrationWarning,
+                    stacklevel=2,
+                )
+    histories = tuple(_with_case(h, s.case) for h, s in zip(result.histories, setups, strict=True))
+    return replace(
+        result,
+        histories=histories,
+        case=setups[0].case,
+        warnings=tuple(messages),
+        evaluations=len(runs.memo),
+    )
+
+
+def _with_case(result: CalibrationResult, case: Any) -> CalibrationResult:
+    return replace(result, case=case, calibrated_range=programme_range(case))
+
+
+def _split_names(names: Sequence[str] | str) -> list[str]:
+    items = names.split(",") if isinstance(names, str) else list(names)
+    return [n.strip() for n in items if n.strip()]
+
+
+class _SharedRuns:
+    """One memo of model runs for the histories whose cases (and run overrides) are equal."""
+
+    def __init__(self, setups: Sequence[CaseSetup]) -> None:
+        self.setups = setups
+        self.group = [
+            next(i for i, o in enumerate(setups) if o.case == s.case and o.base == s.base)
+            for s in setups
+        ]
+        self.memo: dict[tuple[int, tuple[tuple[str, float], ...]], WearHistory] = {}
+
+    def simulate(self, j: int) -> Callable[[Mapping[str, float]], WearHistory]:
+        group = self.group[j]
+
+        def run(values: Mapping[str, float]) -> WearHistory:
+            key = (group, tuple(sorted(values.items())))
+            if key not in self.memo:
+                self.memo[key] = self.setups[group].simulate(values)
+            return self.memo[key]
+
+        return run
