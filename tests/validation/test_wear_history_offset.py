@@ -5,14 +5,14 @@ Same data, case and split as ``test_wear_history.py`` (XJTU degradation dataset;
 0–490 h, fitted; rows 16–30 predicted), with the drag torque T = m K_T F_p(N) L/(2π) + T_0
 (theory manual, *Wear*, E9.4). Two fits:
 
-(a) each direction on its own: K and T_0 fitted, m the catalogue K_T (``wear.torque_scale`` =
+(a) each screw on its own: K and T_0 fitted, m the catalogue K_T (``wear.torque_scale`` =
     1). K, m and T_0 together are not identifiable on these data: the fit is refused (theory
     manual, *Wear*);
-(b) both directions together (``calibrate_joint``): one K for the screw, T_0 per direction,
+(b) both screws together (``calibrate_joint``): one K for the screw type, T_0 per screw,
     m = 1.
 
 Each forecast must beat a straight line in revolutions fitted to the same first half; a model
-that does worse is a strict known miss with its numbers. The direction-loss row compares the
+that does worse is a strict known miss with its numbers. The specimen-loss row compares the
 ratio of the relative torque losses Down/Up (lines in time) of the jointly fitted model with
 the measured one.
 """
@@ -46,7 +46,7 @@ measured with this code)."""
 OFFSET_ASSUMPTIONS = (
     *ASSUMPTIONS,
     "drag torque T = K_T F_p L/2π + T_0 with the catalogue K_T = 0.05/√tanλ (torque scale 1); "
-    "T_0 fitted per direction (seals, wipers, grease churning; not published)",
+    "T_0 fitted per screw (seals, wipers, grease churning; not published)",
 )
 
 
@@ -146,7 +146,7 @@ MISSES = [("up_Nm", False), ("down_Nm", True)]
 
 @pytest.mark.parametrize(("key", "known_miss"), MISSES)
 def test_xjtu_offset_forecast(validation, key, known_miss) -> None:
-    """(a) K and T_0 per direction: Up +12.2 % (line −50 %), Down +14.7 % (line +5.2 %, a
+    """(a) K and T_0 per screw: Up +12.2 % (line −50 %), Down +14.7 % (line +5.2 %, a
     known miss); K rises 1.2× (Up) and 1.5× (Down) against the fit without T_0."""
     _check(
         validation,
@@ -161,7 +161,7 @@ def test_xjtu_offset_forecast(validation, key, known_miss) -> None:
 
 @pytest.mark.parametrize(("key", "known_miss"), MISSES)
 def test_xjtu_joint_forecast(validation, key, known_miss) -> None:
-    """(b) One K for both directions, T_0 per direction: Up +18.6 % (line −50 %), Down +9.8 %
+    """(b) One K for both screws, T_0 per screw: Up +18.6 % (line −50 %), Down +9.8 %
     (line +5.2 %: still a known miss, about a third smaller than the single fits' +14 %)."""
     joint = _joint()
     result = joint.histories[KEYS.index(key)]
@@ -170,15 +170,15 @@ def test_xjtu_joint_forecast(validation, key, known_miss) -> None:
         "xjtu_joint_forecast",
         key,
         result,
-        "wear_life per duty segment + calibrate_joint(shared K, T_0 per direction; 490 h)",
+        "wear_life per duty segment + calibrate_joint(shared K, T_0 per screw; 490 h)",
         f"; joint RMS residual {joint.rms_residual:.4f} N m",
         known_miss,
     )
 
 
-def test_xjtu_joint_direction_loss_ratio(validation) -> None:
+def test_xjtu_joint_specimen_loss_ratio(validation) -> None:
     """Down/Up ratio of the relative torque losses over 0–1015 h (lines in time) of the jointly
-    fitted model against the measured 0.611: with one preload history and T_0 per direction
+    fitted model against the measured 0.611: with one preload history and T_0 per screw
     the model's ratio is T_Up(0)/T_Down(0) ≈ 0.76, a known miss (the measured absolute loss of
     Up is larger than Down's, which no shared preload term gives)."""
     data = _data()
@@ -190,9 +190,8 @@ def test_xjtu_joint_direction_loss_ratio(validation) -> None:
     model_up, model_down = (_relative_loss(hours, h.fitted)[0] for h in joint.histories)
     sigma = math.hypot(rel_up, rel_down)
     validation.check(
-        "xjtu_joint_direction_loss_ratio",
-        model="calibrate_joint: T = K_T F_p(N) L/2π + T_0 per direction, one K and one "
-        "preload history",
+        "xjtu_joint_specimen_loss_ratio",
+        model="calibrate_joint: T = K_T F_p(N) L/2π + T_0 per screw, one K and one preload history",
         source=SOURCE,
         reference=data,
         quantity="relative torque loss over 0–1015 h, Down / Up (lines in time)",
@@ -210,8 +209,8 @@ def test_xjtu_joint_direction_loss_ratio(validation) -> None:
         ),
         assumptions=(
             *OFFSET_ASSUMPTIONS,
-            "Up and Down: the two travel directions of the one tested screw (ASSUMED from the "
-            "file names), so one preload history and one K",
+            "Up and Down: the upper and the lower screw of one rig (the dataset's README), two "
+            "screws of one type on one programme, so one preload history and one K",
         ),
         known_miss=True,
     )

@@ -46,8 +46,8 @@ def summary(result: JointCalibrationResult) -> dict[str, Any]:
         "message": result.message,
         "histories": [report.summary(h) for h in result.histories],
         "options": dict(result.options),
-        "note": "One wear coefficient for every history of the screw; the separate parameters "
-        "(e.g. each travel direction's torque scale and offset) per history. Standard errors "
+        "note": "One wear coefficient for every history of the screw type; the separate "
+        "parameters (e.g. each specimen's torque scale and offset) per history. Standard errors "
         "from the stacked Jacobian, one noise level for all histories.",
     }
 
