@@ -1,9 +1,10 @@
-"""Joint calibration of several histories of one screw: shared and per-history parameters.
+"""Joint calibration of several histories of one screw type: shared and per-history parameters.
 
 Histories j = 1…H of one screw type on one programme (specimens of a life test, repeated
 runs) share the wear-model parameters ``shared`` (one wear coefficient K: alike raceways wear
 alike) and keep their own ``separate`` ones (the torque scale m_j and the offset T_0,j of each
-specimen: seals and grease fill differ from screw to screw). The residuals of all histories are stacked,
+specimen: seals and grease fill differ from screw to screw). The residuals of all histories
+are stacked,
 
     r = [r_1(θ_s, θ_1); …; r_H(θ_s, θ_H)],   r_j = (m_j y_model,j + T_0,j − y_j)/s,
 
