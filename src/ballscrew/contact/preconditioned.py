@@ -9,9 +9,10 @@ The constrained CG of Polonsky & Keer (1999) with three additions (``docs/theory
    result is restricted to I_c and made mean-free there, z = P (M ∗ g). P M P is symmetric and
    positive definite on the mean-free functions of I_c, so the projected CG stays a CG.
 2. A nested-grid start (as in full multigrid, Brandt 1977; ASPHER): the problem is solved first on
-   grids coarsened by 2 × 2 (gap averaged over the four cells), down to :data:`COARSEST` cells,
-   each to :data:`COARSE_TOLERANCE`, and the pressure is interpolated bilinearly to the next grid
-   as its initial guess.
+   grids coarsened by 2 × 2 (gap averaged over the four cells), down to :data:`COARSEST` cells
+   below the problem's grid and :data:`HERTZ_COARSEST` below a coarse one, each to
+   :data:`COARSE_TOLERANCE`, the coarsest from a Hertz pressure, and the pressure is interpolated
+   bilinearly to the next grid as its initial guess.
 3. A window: each contact iterates on the rows and columns around its start's pressure, with a
    margin (:data:`WINDOW_MARGIN`), when they hold at most :data:`WINDOW_MAX_FRACTION` of the grid.
    DC-FFT on the window is the exact displacement there of a pressure that vanishes outside it;
@@ -49,7 +50,7 @@ __all__ = [
 ]
 
 COARSEST = 32
-"""Cells along the shorter axis below which a grid is not coarsened further (GUESS, tuned on the
+"""Cells along the shorter axis below which the problem's grid is not coarsened (GUESS, tuned on the
 64²-512² Hertz problems of the benchmark: 48 → 32 cut their work, fine iterations + coarse
 equivalents, by 8-20 %; the fine-grid iterations stay at 13-15; 16 saves a little more work but
 its tiny grids cost more in per-iteration overhead than they save)."""
