@@ -76,3 +76,31 @@ def test_command_line_writes_the_day(tmp_path):
     assert summary["analysis"] == "duty" and summary["duration"]["value"] == pytest.approx(7200)
     assert summary["segment_heat"][1]["value"] == 0.0
     assert (out / "duty_day.png").is_file() and (out / "fields.nc").is_file()
+
+
+def test_a_cooled_shaft_records_its_coolant_outlet_over_the_day():
+    """The outlet of the hollow shaft's coolant (inlet at ambient) is a history: at ambient at
+    the start, warming while the screw turns, cooling at rest; the energy still balances, and
+    it reaches the summary and the dataset (a solid shaft has neither)."""
+    case = ballscrew.load_case(
+        EXAMPLE,
+        {
+            "duty": CYCLE,
+            "thermal.shaft_coolant.bore_diameter": "12 mm",
+            "thermal.shaft_coolant.flow_rate": "2 L/min",
+        },
+    )
+    cooled = thermal_duty(case, "network")
+    outlet = cooled.coolant_outlet_temperature
+    hours = cooled.time / 3600.0
+    assert outlet[0] == pytest.approx(cooled.ambient_temperature)  # the day starts at ambient
+    assert cooled.heat_balance_error < 1e-10
+    assert np.all(np.diff(outlet[(hours > 0.1) & (hours < 2 / 3)]) > 0)
+    assert np.all(np.diff(outlet[(hours > 2 / 3 + 0.05) & (hours < 0.9)]) < 0)
+    assert cooled.ambient_temperature < outlet[-1] < outlet.max() < cooled.max_temperature.max()
+    summary = cooled.summary()
+    assert summary["peak_coolant_outlet_temperature"]["value"] == pytest.approx(outlet.max())
+    assert "coolant_outlet_temperature" in cooled.to_xarray()
+    solid = thermal_duty(ballscrew.load_case(EXAMPLE, {"duty": CYCLE}), "network")
+    assert solid.coolant_outlet_temperature is None
+    assert "peak_coolant_outlet_temperature" not in solid.summary()

@@ -37,7 +37,7 @@ from ballscrew.analyses.thermal_setup import build_problem, check_mesh, thermal_
 from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import InputError
-from ballscrew.thermal.discretisation import Discretisation
+from ballscrew.thermal.discretisation import Discretisation, coolant_outlet_rise
 from ballscrew.thermal.models import THERMAL_MODELS, build_model
 from ballscrew.thermal.problem import ThermalProblem
 from ballscrew.thermal.simulate import check_transient
@@ -79,6 +79,8 @@ class DutyThermal(Presented):
     """Heat that entered over the day [J]."""
     heat_balance_error: float
     """|heat in − stored − lost| / heat in over the day [-]."""
+    coolant_outlet_temperature: FloatArray | None = None
+    """Outlet temperature of the hollow shaft's coolant [K] (None: a solid shaft)."""
     warnings: tuple[str, ...] = ()
 
     analysis: ClassVar[str] = "duty"
@@ -190,6 +192,8 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
         contact = np.full(steps + 1, amb)
         heat = np.zeros(steps + 1)
         viscosity = np.zeros(steps + 1)
+        cooled = coolant_outlet_rise(first, np.zeros(first.unknowns)) is not None
+        outlet = np.zeros(steps + 1) if cooled else None
 
         def system(n: int) -> StepSystem:
             k = segment_of[n]
@@ -203,6 +207,8 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
             elongation[n] = first.elongation @ theta
             sensors[n] = first.sensors @ theta
             contact[n] = amb + 0.5 * (nut_rise(theta) + float(screw_row @ theta))
+            if outlet is not None:
+                outlet[n] = coolant_outlet_rise(first, theta)
 
         # per step only triangular solves and vector products: BLAS threads just contend for
         # the cores (the 8-hour axisymmetric day: 46 s threaded, 12 s on one thread, 2 shared
@@ -235,5 +241,6 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
         viscosity=viscosity,
         heat_in=heat_in,
         heat_balance_error=abs(heat_in - stored - lost) / heat_in if heat_in > 0 else 0.0,
+        coolant_outlet_temperature=None if outlet is None else amb + outlet,
         warnings=tuple(messages),
     )

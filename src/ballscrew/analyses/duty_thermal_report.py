@@ -38,13 +38,29 @@ def summary(result: DutyThermal) -> dict[str, Any]:
         "final_viscosity": quantity(float(result.viscosity[-1]), "Pa*s"),
         "heat_in": quantity(result.heat_in, "J"),
         "heat_balance_error": quantity(result.heat_balance_error, ""),
+    } | _coolant_summary(result)
+
+
+def _coolant_summary(result: DutyThermal) -> dict[str, Any]:
+    """Peak and final outlet temperature of the shaft coolant (nothing for a solid shaft)."""
+    outlet = result.coolant_outlet_temperature
+    if outlet is None:
+        return {}
+    return {
+        "peak_coolant_outlet_temperature": quantity(float(outlet.max()), "K"),
+        "final_coolant_outlet_temperature": quantity(float(outlet[-1]), "K"),
     }
 
 
 def fields(result: DutyThermal) -> xr.Dataset:
     """The time histories with units."""
+    outlet = result.coolant_outlet_temperature
+    cooled = (
+        {} if outlet is None else {"coolant_outlet_temperature": ("time", outlet, {"units": "K"})}
+    )
     return xr.Dataset(
         {
+            **cooled,
             "max_temperature": ("time", result.max_temperature, {"units": "K"}),
             "elongation": ("time", result.elongation, {"units": "m"}),
             "sensor_temperature": (("time", "sensor"), result.sensors, {"units": "K"}),
@@ -117,6 +133,13 @@ def sections(result: DutyThermal) -> list[Section]:
         ("final contact temperature [°C]", float(result.contact_temperature[-1]) - CELSIUS),
         ("heat balance error [-]", result.heat_balance_error),
     )
+    if result.coolant_outlet_temperature is not None:
+        peaks += (
+            (
+                "peak shaft coolant outlet temperature [°C]",
+                float(result.coolant_outlet_temperature.max()) - CELSIUS,
+            ),
+        )
     return [
         Section(
             "Duty cycle",
