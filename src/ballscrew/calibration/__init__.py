@@ -9,8 +9,9 @@
    :func:`ballscrew.wear_life` on the case for each trial; ``fit_until`` holds the rest of the
    data out and reports ``prediction_rmse`` on it. :func:`fit_wear_coefficient` is the K-only
    fit with any model callable ``K -> history``; :func:`fit_parameters` the general one.
-   ``calibrate_joint(case, [up, down], shared=("wear_coefficient",))`` fits several histories
-   of one screw together: one K, each history its own torque scale and offset T_0
+   ``calibrate_joint(case, [a, b], shared=("wear_coefficient",))`` fits several histories
+   of one screw type together (e.g. two specimens on one programme): one K, each history its
+   own offset T_0, and its own torque scale when ``separate`` names it
    (:mod:`ballscrew.calibration.joint`).
 3. ``result.wear_coefficient``, ``result.standard_error``, ``result.torque_scale`` and
    ``result.rms_residual`` are the fit; ``ballscrew.results.write_results`` writes its folder.
