@@ -32,6 +32,13 @@ def environment(key):
     return os.environ.get(key)
 
 
+def profiling():
+    """Whether the Dask worker that runs this samples its threads' stacks."""
+    import dask
+
+    return dask.config.get("distributed.worker.profile.enabled")
+
+
 def test_workers_run_their_pools_on_one_thread(tmp_path, coarse_case, monkeypatch):
     # Pools as wide as the machine in this process's environment must not reach the points.
     close_clients()
@@ -46,6 +53,7 @@ def test_workers_run_their_pools_on_one_thread(tmp_path, coarse_case, monkeypatc
     assert sum(client.nthreads().values()) == 2  # one task thread per worker
     fft_env = client.run(environment, "BALLSCREW_FFT_THREADS")
     assert set(fft_env.values()) == {"1"}
+    assert set(client.run(profiling).values()) == {False}
 
 
 def test_one_worker_two_workers_serial_and_warm_workers_agree(tmp_path, coarse_case):

@@ -32,6 +32,9 @@ WORKER_ENV = {
     "BALLSCREW_FFT_THREADS": "1",
 }
 
+#: Dask settings of a local worker.
+WORKER_CONFIG = {"distributed.worker.profile.enabled": False}
+
 _CLIENTS: dict[tuple[str | None, int | None], tuple[Any, Any]] = {}
 
 
@@ -66,7 +69,10 @@ def _local(workers: int | None) -> tuple[Any, Any]:
     # The nanny sets the pre-spawn variables in this process too: not the FFT threads.
     pools = {k: v for k, v in WORKER_ENV.items() if k != "BALLSCREW_FFT_THREADS"}
     pre_spawn = {**dask.config.get("distributed.nanny.pre-spawn-environ", {}), **pools}
-    with dask.config.set({"distributed.nanny.pre-spawn-environ": pre_spawn}):
+    # The workers' statistical profiler samples every thread's stack 100 times a second; a
+    # sweep does not read it, and it takes CPU from the points on the shared cores.
+    settings = {"distributed.nanny.pre-spawn-environ": pre_spawn, **WORKER_CONFIG}
+    with dask.config.set(settings):
         cluster = LocalCluster(
             n_workers=workers,
             threads_per_worker=1,
