@@ -4,10 +4,11 @@ Run: ``python benchmarks/bench_sweep.py [--points 100] [--repeats 3]``. Prints a
 test. Both clusters are started and warmed once (every worker runs one point first), then the
 same sweep runs on 1 and 2 workers in alternating order (1, 2 / 2, 1 / ...), so slow drifts of
 the machine's load fall on both. Points/s exclude the start-up and the warm-up; the load average
-(``os.getloadavg``) is printed with each run, for judging the noise, with two diagnostics of
-the scheduling: ``busy`` (the workers' compute time over workers × wall, from Dask's task stream;
-below 100 % the workers waited for tasks) and the CPU seconds of this process (client and
-scheduler, which share the cores with the workers).
+(``os.getloadavg``) is printed with each run, for judging the noise, with three diagnostics:
+``busy``, the workers' task time over workers × wall (Dask's task stream; below 100 % the
+workers waited for tasks: scheduling and the tail), ``cores``, the CPU seconds the worker
+processes got over the wall time (below the worker count the machine's other load took the
+rest), and the CPU seconds of this process (client and scheduler, sharing the cores).
 """
 
 from __future__ import annotations
@@ -33,22 +34,24 @@ def load() -> str:
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
-def timed_sweep(base, axis, store: Path, workers: int) -> tuple[float, float, float]:
-    """(wall [s], busy share of the workers, CPU [s] of this process) of one sweep."""
+def timed_sweep(base, axis, store: Path, workers: int) -> tuple[float, float, float, float]:
+    """(wall [s], busy share of the workers, cores the workers got, CPU [s] here) of one sweep."""
     from distributed import get_task_stream
 
     client = shared_client(None, workers)
+    worker_cpu = sum(client.run(time.process_time).values())
     cpu, start = time.process_time(), time.perf_counter()
     with get_task_stream(client) as stream:
         run_sweep(base, [axis], tcr_scalars, "tcr", store, workers=workers)
     wall, cpu = time.perf_counter() - start, time.process_time() - cpu
+    worker_cpu = sum(client.run(time.process_time).values()) - worker_cpu
     busy = sum(
         step["stop"] - step["start"]
         for task in stream.data
         for step in task["startstops"]
         if step["action"] == "compute"
     )
-    return wall, busy / (workers * wall), cpu
+    return wall, busy / (workers * wall), worker_cpu / wall, cpu
 
 
 def main() -> None:
@@ -70,7 +73,7 @@ def main() -> None:
             f"{', '.join(f'{s:.2f}' for s in warm.values())} s"
         )
     print(
-        f"\n{'repeat':>6}{'workers':>8}{'wall [s]':>10}{'points/s':>10}{'busy':>7}"
+        f"\n{'repeat':>6}{'workers':>8}{'wall [s]':>10}{'points/s':>10}{'busy':>7}{'cores':>7}"
         f"{'CPU [s]':>9}  load average"
     )
     rates: dict[int, list[float]] = {w: [] for w in WORKERS}
@@ -78,11 +81,11 @@ def main() -> None:
         for repeat in range(args.repeats):
             for workers in WORKERS if repeat % 2 == 0 else WORKERS[::-1]:
                 store = Path(scratch) / f"{repeat}-{workers}"
-                wall, busy, cpu = timed_sweep(base, axis, store, workers)
+                wall, busy, cores, cpu = timed_sweep(base, axis, store, workers)
                 rates[workers].append(args.points / wall)
                 print(
                     f"{repeat:>6}{workers:>8}{wall:>10.2f}{args.points / wall:>10.2f}"
-                    f"{busy:>7.0%}{cpu:>9.2f}  {load()}"
+                    f"{busy:>7.0%}{cores:>7.2f}{cpu:>9.2f}  {load()}"
                 )
     close_clients()
     ratios = [two / one for one, two in zip(rates[1], rates[2], strict=True)]
