@@ -70,6 +70,7 @@ $(PEERS_STAMP): pyproject.toml
 bench: $(STAMP) $(PEERS_STAMP)
 	$(PEERS)/bin/python benchmarks/bench_contact.py
 	$(PY) benchmarks/bench_tcr.py
+	$(PY) benchmarks/bench_sweep.py
 	$(PY) benchmarks/bench_thermal.py
 	$(PY) benchmarks/bench_wear.py
 	$(PY) benchmarks/bench_operating_point.py

@@ -61,6 +61,7 @@ __all__ = [
     "fft_threads",
     "limited_fft_threads",
     "padded_rfft",
+    "single_thread_pools",
 ]
 
 MAX_FFT_THREADS = 8
@@ -139,6 +140,17 @@ def blas_single_thread() -> Iterator[None]:
     that mix FFTs and BLAS reductions run their loop inside this context.
     """
     with _threadpool_controller().limit(limits=1, user_api="blas"):
+        yield
+
+
+@contextlib.contextmanager
+def single_thread_pools() -> Iterator[None]:
+    """Run the block with every BLAS and OpenMP pool of the process on one thread.
+
+    A sweep's worker runs its points like this: the workers, one per core, already fill the
+    cores (the pools loaded when the process first used this are the ones limited).
+    """
+    with _threadpool_controller().limit(limits=1):
         yield
 
 

@@ -8,11 +8,10 @@ import cloudpickle
 import numpy as np
 import pytest
 
-from ballscrew import load_case
 from ballscrew.analyses.screw_tcr import tcr_scalars
 from ballscrew.case import CaseError, with_overrides
 from ballscrew.sweep import parse_axis, run_point, run_sweep
-from ballscrew.sweep.runner import chunk_indices
+from ballscrew.sweep.runner import chunk_indices, run_chunk
 
 # Workers are separate processes that cannot import this test module: ship it by value.
 cloudpickle.register_pickle_by_value(sys.modules[__name__])
@@ -25,13 +24,6 @@ def tcr_with_one_failure(case):
     if (case.surface.D, case.operating.axial_load) == FAILING_POINT:
         raise RuntimeError("injected failure")
     return tcr_scalars(case)
-
-
-@pytest.fixture
-def coarse_case(gao_case_path):
-    return load_case(
-        gao_case_path, {"numerics.cells_across": 24, "numerics.gap_model": "quadratic"}
-    )
 
 
 def _sweep_with_one_failure(store, case, workers):
@@ -117,23 +109,32 @@ def test_sweeps_of_one_process_share_one_cluster(tmp_path, coarse_case):
 def test_chunks_cover_every_point_once_and_keep_both_workers_busy():
     todo = list(range(3, 103))
     chunks = chunk_indices(todo, threads=2)
-    assert [i for chunk in chunks for i in chunk] == todo
-    assert len(chunks) == 8  # 4 tasks per worker thread
-    assert sorted(map(len, chunks)) == [9] + [13] * 7
+    assert sorted(i for chunk in chunks for i in chunk) == todo
+    sizes = [len(chunk) for chunk in chunks]
+    # Guided: each chunk takes 1/8 of the points left (4 tasks per worker thread), down to one.
+    assert sizes[:8] == [13, 11, 10, 9, 8, 7, 6, 5]
+    assert sizes == sorted(sizes, reverse=True) and sizes[-8:] == [1] * 8
+    # Each chunk of several points reaches into both the first and the last third of the grid.
+    for chunk in chunks[:8]:
+        assert min(chunk) < 3 + 100 / 3 and max(chunk) > 3 + 200 / 3
     assert chunk_indices([5], threads=2) == [[5]]
-    assert chunk_indices(list(range(3)), threads=4) == [[0], [1], [2]]
+    assert sorted(chunk_indices(list(range(3)), threads=4)) == [[0], [1], [2]]
 
 
 def test_a_failed_point_in_a_chunk_keeps_the_others_and_reports_every_point(tmp_path, coarse_case):
-    # Six points on one worker go as three chunks of two; the failing point shares one.
+    # Six points on one worker go as five chunks (2, 1, 1, 1, 1).
     _, ds, computed, seen = _sweep_with_one_failure(tmp_path, coarse_case, workers=1)
     assert computed == 6
     assert seen == [(n, 6) for n in range(7)]  # every point reported once
     assert int(ds["failed"].sum()) == 1
     assert int(np.isfinite(ds["resistance"]).sum()) == 5
     assert len(list((tmp_path / "points").glob("*.json"))) == 6
-    # The failing point's chunk partner equals the same point run on its own, unchunked.
+    # In one chunk with the failing point, a point equals the sweep's and the point run alone.
+    failing = dict(zip(["surface.D", "operating.axial_load"], FAILING_POINT, strict=True))
     partner = {"surface.D": 1.5, "operating.axial_load": 0.0}
-    alone = run_point(tcr_scalars, with_overrides(coarse_case, partner), partner)
-    assert alone.error is None
+    cases = [with_overrides(coarse_case, p) for p in (failing, partner)]
+    bad, good = run_chunk(tcr_with_one_failure, cases, [failing, partner])
+    assert "injected failure" in bad.error and good.error is None
+    alone = run_point(tcr_scalars, cases[1], partner)
+    assert good.results == alone.results
     assert float(ds["resistance"].sel(partner)) == alone.results["resistance"][0]

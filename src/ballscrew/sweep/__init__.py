@@ -1,7 +1,7 @@
 """Parameter sweeps over case keys, run on Dask and collected into xarray."""
 
 from ballscrew.sweep.axes import SweepAxis, grid_points, parse_axis, validate_points
-from ballscrew.sweep.runner import PointRecord, assemble, run_point, run_sweep
+from ballscrew.sweep.runner import PointRecord, assemble, run_point, run_sweep, warm_workers
 
 __all__ = [
     "PointRecord",
@@ -12,4 +12,5 @@ __all__ = [
     "run_point",
     "run_sweep",
     "validate_points",
+    "warm_workers",
 ]

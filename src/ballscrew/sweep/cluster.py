@@ -3,6 +3,10 @@
 Starting a local cluster costs seconds (worker processes import numpy, scipy and ballscrew); a
 notebook or script that runs several sweeps pays it once. The clients are closed when the
 interpreter exits, or by :func:`close_clients`.
+
+A local worker runs one task thread, and its BLAS, OpenMP and FFT pools one thread each
+(:data:`WORKER_ENV`): the sweep's parallelism is its workers, one per core, and a second pool
+thread per worker only competes for the same cores.
 """
 
 from __future__ import annotations
@@ -18,6 +22,18 @@ log = logging.getLogger(__name__)
 
 #: How long connecting to a scheduler given by address may take.
 CONNECT_TIMEOUT = "5s"
+
+#: Thread pools of a local worker: set before its process starts (BLAS and OpenMP read them when
+#: they load) and in the worker (the FFT threads, :func:`ballscrew.backend.fft_threads`).
+WORKER_ENV = {
+    "OMP_NUM_THREADS": "1",
+    "OPENBLAS_NUM_THREADS": "1",
+    "MKL_NUM_THREADS": "1",
+    "BALLSCREW_FFT_THREADS": "1",
+}
+
+#: Dask settings of a local worker.
+WORKER_CONFIG = {"distributed.worker.profile.enabled": False}
 
 _CLIENTS: dict[tuple[str | None, int | None], tuple[Any, Any]] = {}
 
@@ -47,15 +63,24 @@ def _connect(scheduler: str) -> Any:
 
 
 def _local(workers: int | None) -> tuple[Any, Any]:
+    import dask
     from distributed import Client, LocalCluster
 
-    cluster = LocalCluster(
-        n_workers=workers,
-        threads_per_worker=1,
-        processes=True,
-        host="127.0.0.1",  # the local cluster listens on the loopback interface only
-        dashboard_address="127.0.0.1:0",  # its HTTP server on loopback, any free port
-    )
+    # The nanny sets the pre-spawn variables in this process too: not the FFT threads.
+    pools = {k: v for k, v in WORKER_ENV.items() if k != "BALLSCREW_FFT_THREADS"}
+    pre_spawn = {**dask.config.get("distributed.nanny.pre-spawn-environ", {}), **pools}
+    # The workers' statistical profiler samples every thread's stack 100 times a second; a
+    # sweep does not read it, and it takes CPU from the points on the shared cores.
+    settings = {"distributed.nanny.pre-spawn-environ": pre_spawn, **WORKER_CONFIG}
+    with dask.config.set(settings):
+        cluster = LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            env=WORKER_ENV,
+            host="127.0.0.1",  # the local cluster listens on the loopback interface only
+            dashboard_address="127.0.0.1:0",  # its HTTP server on loopback, any free port
+        )
     return Client(cluster, set_as_default=False), cluster
 
 

@@ -2,9 +2,11 @@
 
 Each point runs ``analysis(case) -> {name: (value, unit)}`` on a Dask worker: a local cluster
 by default, or any running scheduler given by address; the client is shared by every sweep of
-the process (:mod:`ballscrew.sweep.cluster`). Points go in chunks of several per task
-(:func:`chunk_indices`), the analysis once to each worker. A point that raises is recorded
-with its error and does not stop the sweep. Finished points are stored one JSON file each under
+the process (:mod:`ballscrew.sweep.cluster`). Points go in chunks of several per task that
+shrink towards the end of the sweep, each mixing points from across the grid
+(:func:`chunk_indices`), the analysis once to each worker; a chunk runs with the worker's BLAS
+and OpenMP pools and its FFTs on one thread. A point that raises is recorded with its error and
+does not stop the sweep. Finished points are stored one JSON file each under
 ``points/``, so re-running into the same folder computes only what is missing.
 """
 
@@ -23,7 +25,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from ballscrew.backend import limited_fft_threads
+from ballscrew.backend import limited_fft_threads, single_thread_pools
 from ballscrew.case import Case
 from ballscrew.files import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
@@ -65,20 +67,49 @@ def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> Po
 def run_chunk(
     analysis: Analysis, cases: Sequence[Case], points: Sequence[dict[str, float]]
 ) -> list[PointRecord]:
-    """Run several points in one task (runs on a worker); each point fails on its own."""
-    return [run_point(analysis, case, point) for case, point in zip(cases, points, strict=True)]
+    """Run several points in one task (runs on a worker); each point fails on its own.
+
+    The worker's BLAS and OpenMP pools run one thread meanwhile, whatever its environment set:
+    a worker started elsewhere (``--scheduler``) may have pools as wide as its machine.
+    """
+    with single_thread_pools():
+        return [run_point(analysis, c, p) for c, p in zip(cases, points, strict=True)]
 
 
-#: Tasks per worker thread: enough that the last tasks balance the workers, few enough that
-#: the scheduler's per-task cost (some ms) stays small beside the points' own.
+#: Share of the points still to send that the next chunk takes: 1 / (this × worker threads).
+#: The first chunks are large, so the scheduler's per-task cost (some ms) stays small beside
+#: the points' own; the last ones hold a single point, so the workers finish together.
 TASKS_PER_THREAD = 4
+
+_GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
+
+
+def spread_order(todo: Sequence[int]) -> list[int]:
+    """``todo`` in the order of the fractional parts of ``k·φ`` (φ the golden ratio, k its place).
+
+    Neighbours in this order lie far apart in ``todo`` (steps of Fibonacci numbers), so any run
+    of it samples the whole grid: a chunk holds cheap and costly points alike (Weyl's
+    equidistributed sequence; Knuth 1998, *The Art of Computer Programming* 3, §6.4).
+    """
+    return [todo[k] for k in sorted(range(len(todo)), key=lambda k: (k * _GOLDEN) % 1.0)]
 
 
 def chunk_indices(todo: Sequence[int], threads: int) -> list[list[int]]:
-    """Split ``todo`` into about ``TASKS_PER_THREAD × threads`` chunks of near-equal size."""
-    tasks = max(1, min(len(todo), TASKS_PER_THREAD * max(threads, 1)))
-    size = math.ceil(len(todo) / tasks)
-    return [list(todo[n : n + size]) for n in range(0, len(todo), size)]
+    """Split ``todo`` into chunks that shrink towards the end, each spread over the grid.
+
+    Guided self-scheduling (Polychronopoulos & Kuck 1987): the next chunk takes
+    ``ceil(R / (TASKS_PER_THREAD × threads))`` of the ``R`` points left, so the last chunks
+    hold one point and no worker is left with a long task while the others idle. The points
+    are taken in :func:`spread_order`, so costly regions of the grid do not gather in one chunk.
+    """
+    order = spread_order(todo)
+    share = TASKS_PER_THREAD * max(threads, 1)
+    chunks, start = [], 0
+    while start < len(order):
+        size = math.ceil((len(order) - start) / share)
+        chunks.append(order[start : start + size])
+        start += size
+    return chunks
 
 
 def point_key(analysis_name: str, case: Case) -> str:
@@ -161,6 +192,31 @@ def run_sweep(
             client.cancel(list(futures))  # an interrupted sweep leaves no work behind
     records = [_load(folder / f"{key}.json") for key in keys]
     return assemble(axes, records, analysis_name, base), len(todo)
+
+
+def warm_workers(
+    analysis: Analysis, case: Case, scheduler: str | None = None, workers: int | None = None
+) -> dict[str, float]:
+    """Run ``case`` once on every worker of the shared client and discard the result.
+
+    A worker's first point imports the physics and builds its FFT plans and caches; a timed
+    sweep (points per second) starts after this. The results of later points do not change.
+    Returns each worker's seconds for its point.
+    """
+    client = shared_client(scheduler, workers)
+    futures = {
+        worker: client.submit(
+            run_chunk,
+            analysis,
+            [case],
+            [{}],
+            workers=[worker],
+            allow_other_workers=False,
+            pure=False,
+        )
+        for worker in client.nthreads()
+    }
+    return {worker: future.result()[0].seconds for worker, future in futures.items()}
 
 
 def assemble(
