@@ -250,6 +250,10 @@ def test_cli_round_trip_with_the_offset(tmp_path, wear_case_path, monkeypatch) -
     assert summary["joint"] and summary["shared"] == ["wear_coefficient"]
     assert summary["separate"] == ["torque_offset"]
     assert len(summary["histories"]) == 2 and len(summary["prediction_rmse"]) == 2
+    # the standard errors' n − p is the joint one: fitted points of both, K and two offsets
+    fitted = sum(h["measured"]["points"] for h in summary["histories"])
+    assert summary["degrees_of_freedom"] == fitted - 3
+    assert all("degrees_of_freedom" not in h["fit"] for h in summary["histories"])
     assert (tmp_path / "two" / "fit.csv").read_text().startswith("history,revolutions")
 
 
@@ -269,3 +273,85 @@ def test_cli_bad_input_is_one_line(tmp_path, wear_case_path, extra, word) -> Non
     lines = [line for line in result.output.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith("error:") and word in lines[0], result.output
     assert not out.exists()
+
+
+def test_an_initial_torque_at_or_below_the_offset_is_named(wear_case_path) -> None:
+    """The calibration refuses it as the wear run does, naming wear.initial_torque (not a
+    negative torque scale derived from it)."""
+    case = with_overrides(
+        load_case(wear_case_path), {"wear.initial_torque": 0.01, "wear.torque_offset": 0.5}
+    )
+    with pytest.raises(InputError) as info:
+        calibrate(case, noisy(1.0, 0.05, 1), fit="wear_coefficient", model=CaseModel())
+    assert info.value.field == "wear.initial_torque"
+
+
+def test_separate_names_are_checked_as_separate(tmp_path, wear_case_path) -> None:
+    """A per-history name the data cannot take is reported against --separate."""
+    rows = "\n".join(f"{n:.10g},{1e-7 + n * 1e-13:.10g}" for n in MEASURED_AT)
+    depth = tmp_path / "depth.csv"
+    depth.write_text("revolutions,wear_depth [m]\n" + rows + "\n")
+    out = tmp_path / "o"
+    args = ("-m", depth, "-m", depth, "--fit", "wear_coefficient", "--separate", "torque_offset")
+    result = _run("calibrate", wear_case_path, "--out", out, *args)
+    assert result.exit_code == 2, result.output
+    assert result.output.strip().startswith("error: --separate = "), result.output
+    assert not out.exists()
+
+
+def test_joint_fit_reissues_the_warnings_of_every_case() -> None:
+    """Histories of two different cases: each case's model warnings reach the result."""
+
+    class Warning_(CaseModel):
+        def __call__(self, case):
+            warnings.warn(f"model note {case.wear.stroke:g}", UserWarning, stacklevel=1)
+            return super().__call__(case)
+
+    case = load_case(Path(__file__).parents[2] / "examples" / "wear_step_stress.toml")
+    other = with_overrides(case, {"wear.stroke": 2 * case.wear.stroke})
+    a, b = noisy(1.0, 0.05, 4, "a"), noisy(1.0, 0.12, 5, "b")
+    result = calibrate_joint([case, other], [a, b], model=Warning_())
+    notes = [w for w in result.warnings if w.startswith("model note")]
+    assert len(set(notes)) == 2, result.warnings
+
+
+def _profile_sse(k: float, data: list) -> float:
+    """Σ_j min over (m_j, T_0,j) of Σ_i (m_j y_i(K) + T_0,j − d_ij)²: linear in m_j, T_0,j."""
+    y = history({"wear_coefficient": k}, MEASURED_AT).friction_torque
+    basis = np.column_stack([y, np.ones_like(y)])
+    return sum(float(np.linalg.lstsq(basis, d.values, rcond=None)[1][0]) for d in data)
+
+
+def test_joint_fit_weighs_every_point_alike() -> None:
+    """One noise level for all histories: the joint K minimises the plain sum of squares of
+    both histories (scale and offset per history profiled out), here with histories of
+    different size and different preferred K, where any per-history weighting moves it."""
+    rng = np.random.default_rng(7)
+    data = []
+    for k, scale, offset, name in ((K, 3.0, 0.05, "big"), (2 * K, 1.0, 0.12, "small")):
+        clean = scale * history({"wear_coefficient": k}, MEASURED_AT).friction_torque + offset
+        noisy_values = clean + rng.normal(0.0, NOISE, clean.size)
+        data.append(measured_history(MEASURED_AT, noisy_values, "friction_torque", name))
+    case = load_case(Path(__file__).parents[2] / "examples" / "wear_step_stress.toml")
+    result = calibrate_joint(
+        case, data, separate=("torque_scale", "torque_offset"), model=CaseModel()
+    )
+    best = result.wear_coefficient
+    at_best = _profile_sse(best, data)
+    for step in (0.98, 1.02):
+        assert _profile_sse(step * best, data) > at_best
+
+
+def test_a_fixed_case_offset_is_added_when_not_fitted(wear_case_path) -> None:
+    """T_0 from the case, not fitted: data shifted by it give the fit of the unshifted data."""
+    case = load_case(wear_case_path)
+    data = noisy(1.2, 0.0, 3)
+    shifted = measured_history(data.revolutions, data.values + 0.03, data.quantity, "shifted")
+    fit = ("wear_coefficient", "torque_scale")
+    plain = calibrate(case, data, fit=fit, model=CaseModel())
+    offset_case = with_overrides(case, {"wear.torque_offset": 0.03})
+    moved = calibrate(offset_case, shifted, fit=fit, model=CaseModel())
+    assert moved.torque_offset == 0.03
+    assert moved.wear_coefficient == pytest.approx(plain.wear_coefficient, rel=1e-6)
+    assert moved.torque_scale == pytest.approx(plain.torque_scale, rel=1e-6)
+    assert moved.rms_residual == pytest.approx(plain.rms_residual, rel=1e-6)

@@ -241,6 +241,12 @@ def case_setup(
     # the model's torque without T_0: the fit adds it (and the initial torque's share of it)
     base: dict[str, Any] = {"wear.torque_offset": 0.0} if wear is not None else {}
     if initial_torque is not None:
+        if not initial_torque > offset0:  # the wear run's own check, before the scale from it
+            raise InputError(
+                "wear.initial_torque",
+                initial_torque,
+                f"more than wear.torque_offset = {offset0:g} N·m",
+            )
         base["wear.initial_torque"] = None
         if "torque_scale" not in names:
             scale0 = _initial_torque_scale(case, float(initial_torque) - offset0)

@@ -68,6 +68,8 @@ class JointCalibrationResult(Presented):
         rms_residual: RMS of (model − measured) over every fitted point [SI].
         evaluations: distinct model runs.
         message: the least-squares solver's termination message.
+        degrees_of_freedom: fitted points of all histories less all fitted parameters, n − p
+            (those of the standard errors and the noise estimate).
         case: the first history's case (its inputs head the report).
         warnings: warnings of the fit (one line each).
     """
@@ -81,6 +83,7 @@ class JointCalibrationResult(Presented):
     rms_residual: float
     evaluations: int
     message: str
+    degrees_of_freedom: int
     case: Any = None
     options: Mapping[str, Any] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
@@ -201,7 +204,7 @@ def fit_joint(
     r = residuals(x)
     what = " and ".join(names) + " together"
     cov = covariance(difference(x), r, n, p, source, what)
-    warn_correlated(cov, [name.split("[")[0] for name in names], source)
+    warn_correlated(cov, names, source)
     noise = scale * math.sqrt(float(r @ r) / (n - p))
     histories = tuple(
         part.result(x[i], cov[np.ix_(i, i)], noise, message, s[1])
@@ -218,6 +221,7 @@ def fit_joint(
         rms_residual=scale * math.sqrt(float(r @ r) / n),
         evaluations=len({k for part in parts for k in part.runs.cache}),
         message=message,
+        degrees_of_freedom=n - p,
     )
 
 
@@ -296,7 +300,8 @@ def calibrate_joint(
     ]
     result = fit_joint(parts, shared_names, **options)
     with recorded_warnings() as messages:
-        setups[0].reissue(result.histories[0].values)
+        for group in dict.fromkeys(runs.group):  # each distinct case ran (and warned) once
+            setups[group].reissue(result.histories[group].values)
         for history in result.histories:
             if history.diagnostics.get("systematic"):
                 warnings.warn(

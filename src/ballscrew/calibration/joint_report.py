@@ -14,8 +14,19 @@ from ballscrew.calibration import report
 
 if TYPE_CHECKING:
     from ballscrew.calibration.joint import JointCalibrationResult
+    from ballscrew.calibration.result import CalibrationResult
 
 __all__ = ["fields", "figures", "fit_table", "sections", "summary"]
+
+
+def _history_summary(history: CalibrationResult) -> dict[str, Any]:
+    """One history's summary; its fit block counts the parameters it has in the joint fit,
+    while the standard errors use the joint degrees of freedom (the top level's)."""
+    out = report.summary(history)
+    fit = out["fit"]
+    fit["parameters_in_this_history"] = fit.pop("parameters")
+    fit.pop("degrees_of_freedom")
+    return out
 
 
 def summary(result: JointCalibrationResult) -> dict[str, Any]:
@@ -44,7 +55,8 @@ def summary(result: JointCalibrationResult) -> dict[str, Any]:
         "correlations": dict(result.correlations),
         "model_evaluations": result.evaluations,
         "message": result.message,
-        "histories": [report.summary(h) for h in result.histories],
+        "degrees_of_freedom": result.degrees_of_freedom,
+        "histories": [_history_summary(h) for h in result.histories],
         "options": dict(result.options),
         "note": "One wear coefficient for every history of the screw type; the separate "
         "parameters (e.g. each specimen's torque scale and offset) per history. Standard errors "

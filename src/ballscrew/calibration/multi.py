@@ -454,12 +454,19 @@ def solve(
     return x, message
 
 
+def _described(name: str) -> str:
+    """A fit name in words; ``name[j]`` (a per-history parameter) as "… of history j"."""
+    base, _, index = name.partition("[")
+    words = FIT_PARAMETERS[base].description
+    return f"{words} of history {index.rstrip(']')}" if index else words
+
+
 def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
     """CalibrationWarning for each pair of fitted parameters whose correlation exceeds
     :data:`CORRELATION_LIMIT` in magnitude (the data hardly separate them)."""
     for pair, r in correlations(cov, names).items():
         if abs(r) > CORRELATION_LIMIT:
-            a, b = (FIT_PARAMETERS[n.split("[")[0]].description for n in pair.split(","))
+            a, b = (_described(n) for n in pair.split(","))
             warnings.warn(
                 f"{source}: the data hardly separate the {a} and the {b} ({pair}: correlation "
                 f"{r:+.3f} from the covariance): one trades off against the other, so each "
@@ -611,18 +618,19 @@ def _unidentifiable(source: str) -> CalibrationError:
     )
 
 
-def check_names(fit: Sequence[str], data: MeasuredHistory) -> list[str]:
+def check_names(fit: Sequence[str], data: MeasuredHistory, option: str = "--fit") -> list[str]:
     """``fit`` checked (known names; the torque scale and offset only for torque data) and in
-    column order: the model parameters, then the torque scale and the offset."""
+    column order: the model parameters, then the torque scale and the offset. Errors name
+    ``option``, the option the names came from."""
     names = list(dict.fromkeys(fit))
     allowed = ", ".join(FIT_PARAMETERS)
     if not names:
-        raise InputError("--fit", "", f"one or more of {allowed}")
+        raise InputError(option, "", f"one or more of {allowed}")
     for name in names:
         if name not in FIT_PARAMETERS:
-            raise InputError("--fit", name, f"one or more of {allowed}")
+            raise InputError(option, name, f"one or more of {allowed}")
         if name in LINEAR and data.quantity != "friction_torque":
-            raise InputError("--fit", name, f"only with friction_torque data (got {data.quantity})")
+            raise InputError(option, name, f"only with friction_torque data (got {data.quantity})")
     # the torque multiplier and the offset are the last columns
     return [n for n in names if n not in LINEAR] + [n for n in LINEAR if n in names]
 

@@ -98,8 +98,9 @@ def calibrate(
         )
     from ballscrew.calibration.multi import check_names
 
-    extra = [n.strip() for n in separate.split(",") if n.strip()] if separate else []
-    check_names([*names, *extra], data[0])
+    check_names(names, data[0])
+    if separate:
+        check_names([n.strip() for n in separate.split(",") if n.strip()], data[0], "--separate")
     if len(data) > 1:
         _joint(case_file, case, measured, data, names, separate, fit_until, output)
         return

@@ -345,10 +345,10 @@ def _nested_start(h: Any, setting: _Setting, coarse: bool) -> tuple[Any, Any]:
         if coarse:
             return _hertz_start(h, setting), zero
         return xp.broadcast_to(_col(xp.asarray(total)) / (nx * ny), h.shape).copy(), zero
-    coarse = replace(
+    halved = replace(
         setting, dx=2 * setting.dx, dy=2 * setting.dy, total=total / 4.0, tol=COARSE_TOLERANCE
     )
-    state = _solve(_coarsen(h), coarse, None, True, None, check=False)
+    state = _solve(_coarsen(h), halved, None, True, None, check=False)
     p = _refine_axis(_refine_axis(state.pressure, 1), 2)
     p *= _col(xp.asarray(total) / _sums(p))
     return p, (state.iterations + state.coarse_work) / 4.0

@@ -145,31 +145,35 @@ def annulus_section(radii: NDArray[np.float64], divisions: int) -> Section:
 
 
 MAX_ASPECT = 10.0
-"""Largest ratio of the circumferential element size 2πR/n to the radial size of a tube's
-layers (flatter elements slow the iterative solve and resolve the wall badly)."""
+"""Largest ratio of the circumferential element size 2πr/n to the radial size of a tube's
+layers (flatter elements slow the iterative solve and resolve the wall badly). GUESS: a
+common mesh-quality limit, not a measured one."""
 
 
 def tube_section(inner: float, radius: float, divisions: int, layers: int) -> Section:
-    """Annular shaft section r_i … R in ``layers`` equal rings on the :func:`circle_angles`.
+    """Annular shaft section r_i … R in ``layers`` geometric rings on the :func:`circle_angles`.
 
-    The first ``divisions`` nodes are the bore r = r_i and the last ``divisions`` the circle
-    r = R, as in :func:`disc_section`. A wall thinner than ``layers`` elements of 1/MAX_ASPECT
-    of the circumferential size 2πR/n is refused.
+    The ring radii are r_k = r_i q^k with q = (R/r_i)^(1/L): every element has the same shape,
+    2πr/n around and r(q − 1) across, and the logarithmic temperature profile of radial
+    conduction next to a cooled bore, ΔT ∝ ln r, is linear in the node index (equal rings
+    would smear a small bore's steep profile over the first ring). The first ``divisions``
+    nodes are the bore r = r_i and the last ``divisions`` the circle r = R, as in
+    :func:`disc_section`. A wall whose elements are flatter than 1:MAX_ASPECT is refused.
     """
     if divisions < 8 or divisions % 4:
         raise InputError("mesh.divisions_3d", divisions, "a multiple of 4, at least 8")
     if layers < 1:
         raise InputError("mesh.layers_3d", layers, "at least 1 radial layer")
-    thinnest = layers * 2.0 * math.pi * radius / divisions / MAX_ASPECT
-    if not radius - inner >= thinnest:
+    flattest = 1.0 + 2.0 * math.pi / divisions / MAX_ASPECT  # the least ring ratio q
+    if not radius / inner >= flattest**layers:
         raise InputError(
             "thermal.shaft_coolant.bore_diameter",
             2.0 * inner,
-            f"≤ {2.0 * (radius - thinnest):.4g} m on the 3d mesh (a wall of {layers} layers "
-            f"no flatter than 1:{MAX_ASPECT:g} of the element size 2πR/n; fewer "
+            f"≤ {2.0 * radius / flattest**layers:.4g} m on the 3d mesh (a wall of {layers} "
+            f"layers no flatter than 1:{MAX_ASPECT:g} of the element size 2πr/n; fewer "
             "thermal.mesh.layers_3d or more divisions_3d allow a thinner wall)",
         )
-    return annulus_section(np.linspace(inner, radius, layers + 1), divisions)
+    return annulus_section(np.geomspace(inner, radius, layers + 1), divisions)
 
 
 def extrude(section: Section, z: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray]:
