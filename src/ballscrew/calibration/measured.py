@@ -269,7 +269,8 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     Raises:
         InputError: unreadable file, no header, missing ``revolutions`` column, none or more
             than one measured column, a unit of the wrong dimension, a non-numeric or missing
-            cell, revolutions that are negative or not strictly increasing, too few rows.
+            cell, a row with more cells than the header, revolutions that are negative or not
+            strictly increasing, too few rows.
     """
     path = Path(path)
     source = path.name
@@ -314,6 +315,12 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     wanted = [("revolutions", rev_index, rev), (quantity, val_index, val)]
     wanted += [(name, columns[name][0], plan[name]) for name in scheduled]
     for (line_number, _), row in zip(numbered[1:], rows[1:], strict=True):
+        if any(cell.strip() for cell in row[len(rows[0]) :]):
+            raise InputError(
+                f"{source}: line {line_number}",
+                ",".join(row),
+                f"at most {len(rows[0])} cells, one per header column ({','.join(rows[0])})",
+            )
         for name, index, store in wanted:
             cell = row[index].strip() if index < len(row) else ""
             try:
