@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -109,3 +110,42 @@ def test_set_names_list_entries_by_index(gao_case_path) -> None:
         load_case(gao_case_path, {"duty.5.stroke": 1.0})
     with pytest.raises(CaseError, match=r"duty.stroke: duty is a list; name an entry, e.g. duty.0"):
         load_case(gao_case_path, {"duty.stroke": 1.0})
+
+
+def test_surface_resolution_too_coarse_for_the_profile(tmp_path: Path) -> None:
+    """``--resolution 1 m`` on a 2 mm profile said 'heights = 4000 points per profile is not
+    allowed: ≥ 64'; it now names the resolution and its limit L/60 (ω_top/3 ≥ 10/L)."""
+    profile = MEASURED.parent.parent / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
+    out = tmp_path / "out"
+    line = refused("surface", profile, "--resolution", "34 um", "--out", out)
+    assert line.startswith("error: resolution = 3.4e-05 is not allowed: at most 3.33e-05 m")
+    assert not out.exists()
+
+
+def test_root_diameter_outside_the_thread(gao_case_path) -> None:
+    """``design.root_diameter = 1e-12`` (allowed: > 0) made the ball-load Newton's Jacobian
+    singular: a numpy LinAlgError traceback from ``ballscrew check``."""
+    with pytest.raises(
+        CaseError, match=r"design.root_diameter = 1e-12 m is not allowed: .* 0.0273"
+    ):
+        load_case(gao_case_path, {"design.root_diameter": 1e-12})
+    with pytest.raises(CaseError, match=r"kinematics.root_diameter = 0.04 m is not allowed"):
+        load_case(gao_case_path, {"kinematics.root_diameter": "40 mm"})
+    assert load_case(gao_case_path, {"design.root_diameter": "34.4 mm"}).design.root_diameter
+
+
+def test_singular_ball_load_newton_is_a_convergence_error() -> None:
+    """A singular Jacobian (here G = 0) ends the ball-load Newton with its residual, not a
+    LinAlgError."""
+    from ballscrew.errors import ConvergenceError
+    from ballscrew.loads.distribution import _newton
+
+    with pytest.raises(ConvergenceError, match=r"residual 1\.000e\+00"):
+        _newton(
+            np.zeros((2, 2)),
+            np.zeros((2, 1)),
+            np.ones(2),
+            np.zeros((1, 2)),
+            np.ones(1),
+            np.zeros(3),
+        )
