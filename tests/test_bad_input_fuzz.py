@@ -149,3 +149,16 @@ def test_singular_ball_load_newton_is_a_convergence_error() -> None:
             np.ones(1),
             np.zeros(3),
         )
+
+
+def test_measured_schedule_beyond_the_case_ranges(tmp_path: Path) -> None:
+    """A schedule row at 1e12 rpm fitted (exit 0); a negative speed was reported as
+    'np.float64(-10.47…)'."""
+    path = tmp_path / "sched.csv"
+    head = "revolutions,friction_torque,speed [rpm],axial_load [N]\n0,0.48,100,2000\n"
+    path.write_text(head + "20000,0.47,1e12,2000\n40000,0.46,100,2000\n")
+    with pytest.raises(InputError, match=r"^sched.csv: speed \(point 2\) = 1047.*\[0, 100000\]"):
+        read_measured(path)
+    path.write_text(head + "20000,0.47,-100,2000\n40000,0.46,100,2000\n")
+    with pytest.raises(InputError, match=r"^sched.csv: speed \(point 2\) = -10.47\d+ is not"):
+        read_measured(path)

@@ -39,6 +39,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.budget import check_memory, format_bytes
+from ballscrew.case.base import MAX_SPEED
 from ballscrew.errors import InputError
 from ballscrew.units import SI_UNITS, to_si
 
@@ -61,6 +62,9 @@ QUANTITIES: dict[str, str] = {
 
 #: Optional schedule columns of a test-bench file: name → physical kind.
 SCHEDULE: dict[str, str] = {"speed": "angular_velocity", "axial_load": "force"}
+
+#: Largest value of each schedule column (SI): that of a ``wear.programme`` speed and load.
+SCHEDULE_RANGE = (("speed", MAX_SPEED, "rad/s"), ("axial_load", 1e8, "N"))
 
 #: Largest plausible measured value of each quantity (SI): a ball-screw drag torque, a preload
 #: and a raceway wear depth beyond these are a unit or data error.
@@ -174,11 +178,13 @@ def _check_schedule(source: str, schedule: ArrayLike, points: int) -> NDArray[np
         raise InputError(
             f"{source}: schedule", plan.shape, f"(speed, axial_load) per row ({points})"
         )
-    for column, (name, low) in enumerate((("speed", 0.0), ("axial_load", 0.0))):
-        bad = np.flatnonzero(~(np.isfinite(plan[:, column]) & (plan[:, column] >= low)))
+    for column, (name, high, unit) in enumerate(SCHEDULE_RANGE):
+        values = plan[:, column]
+        bad = np.flatnonzero(~(np.isfinite(values) & (values >= 0.0) & (values <= high)))
         if bad.size:
             row = int(bad[0])
-            raise InputError(f"{source}: {name} (point {row + 1})", plan[row, column], "≥ 0")
+            allowed = f"in [0, {high:g}] {unit}"
+            raise InputError(f"{source}: {name} (point {row + 1})", float(values[row]), allowed)
     if not np.any(plan[:, 0] > 0.0):
         raise InputError(f"{source}: speed", "all 0", "a turning screw in some rows")
     plan.setflags(write=False)
