@@ -117,10 +117,10 @@ def _without_ball_heat(problem: ThermalProblem) -> ThermalProblem:
 
 
 def _segment(
-    case: Case, phase: DutyPhase, model: str, reuse: Discretisation | None = None
+    case: Case, index: int, phase: DutyPhase, model: str, reuse: Discretisation | None = None
 ) -> tuple[_Segment, Discretisation]:
-    """The step system of one segment, its heat at the steady operating point and its model
-    (``reuse``'s mesh and matrices re-bound to the segment's loads when they fit)."""
+    """The step system of segment ``index``, its heat at the steady operating point and its
+    model (``reuse``'s mesh and matrices re-bound to the segment's loads when they fit)."""
     spec = thermal_spec(case)
     base = with_overrides(
         case,
@@ -141,6 +141,14 @@ def _segment(
         **heat_overrides(heat, to_screw, phase.mean_speed),
     }
     problem, *_ = build_problem(with_overrides(base, overrides))
+    free = problem.shaft_length - problem.ring_length
+    if phase.stroke > free:
+        raise InputError(
+            f"duty.{index}.stroke",
+            phase.stroke,
+            f"at most {free:g} m: the nut assembly ({problem.ring_length:g} m) stays on the "
+            f"{problem.shaft_length:g} m shaft (thermal.shaft_length)",
+        )
     check_mesh(spec, problem, model)
     options = _mesh_options(spec)
     disc = (reuse.rebound(problem) if reuse is not None else None) or build_model(
@@ -175,7 +183,7 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
     with recorded_warnings() as messages:
         built: list[tuple[_Segment, Discretisation]] = []
         for k in range(len(case.duty)):
-            built.append(_segment(case, phases[k], model, built[-1][1] if built else None))
+            built.append(_segment(case, k, phases[k], model, built[-1][1] if built else None))
         segments = [b[0] for b in built]
         first = built[0][1]
         check_transient(first, total, dt)

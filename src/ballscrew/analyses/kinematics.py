@@ -34,6 +34,7 @@ from ballscrew.analyses.ball_contact import solve_raceway_contact
 from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
+from ballscrew.case.base import MAX_SPEED
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.kinematics.balance import LEVELS, BallState, solve_ball
@@ -71,15 +72,18 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 
+_SPEED_RANGE = f"a screw speed in [0, {MAX_SPEED:g}] rad/s (the range of operating.speed)"
+
+
 def _speed(case: Case, speed: float | None) -> float:
     case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
     try:
         omega = float(value)
     except (TypeError, ValueError):
-        raise InputError("speed", value, "a screw speed >= 0 rad/s") from None
-    if not (math.isfinite(omega) and omega >= 0.0):
-        raise InputError("speed", value, "a screw speed >= 0 rad/s")
+        raise InputError("speed", value, _SPEED_RANGE) from None
+    if not (math.isfinite(omega) and 0.0 <= omega <= MAX_SPEED):
+        raise InputError("speed", value, _SPEED_RANGE)
     return omega
 
 

@@ -40,9 +40,10 @@ from ballscrew.calibration.multi import (
     correlations,
     solve,
     start_values,
+    too_few_points,
     warn_correlated,
 )
-from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
+from ballscrew.calibration.result import CalibrationResult, WearHistory
 from ballscrew.calibration.search import DIFF_STEP, SCAN_STEPS, covariance
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import InputError
@@ -172,7 +173,8 @@ def fit_joint(
     rows = np.cumsum([0] + [p.n_fit for p in parts])
     n, p = int(rows[-1]), len(names)
     if n <= p:
-        raise CalibrationError(f"{source}: {n} points cannot determine {p} parameter(s)")
+        until = next((part.fit_until for part in parts if part.fit_until is not None), None)
+        raise too_few_points(source, n, p, until)
 
     def residuals(x: np.ndarray) -> np.ndarray:
         return np.concatenate([part.residuals(x[i]) for part, i in zip(parts, index, strict=True)])

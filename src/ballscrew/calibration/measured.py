@@ -39,6 +39,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.budget import check_memory, format_bytes
+from ballscrew.case.base import MAX_SPEED
 from ballscrew.errors import InputError
 from ballscrew.units import SI_UNITS, to_si
 
@@ -61,6 +62,9 @@ QUANTITIES: dict[str, str] = {
 
 #: Optional schedule columns of a test-bench file: name → physical kind.
 SCHEDULE: dict[str, str] = {"speed": "angular_velocity", "axial_load": "force"}
+
+#: Largest value of each schedule column (SI): that of a ``wear.programme`` speed and load.
+SCHEDULE_RANGE = (("speed", MAX_SPEED, "rad/s"), ("axial_load", 1e8, "N"))
 
 #: Largest plausible measured value of each quantity (SI): a ball-screw drag torque, a preload
 #: and a raceway wear depth beyond these are a unit or data error.
@@ -174,11 +178,13 @@ def _check_schedule(source: str, schedule: ArrayLike, points: int) -> NDArray[np
         raise InputError(
             f"{source}: schedule", plan.shape, f"(speed, axial_load) per row ({points})"
         )
-    for column, (name, low) in enumerate((("speed", 0.0), ("axial_load", 0.0))):
-        bad = np.flatnonzero(~(np.isfinite(plan[:, column]) & (plan[:, column] >= low)))
+    for column, (name, high, unit) in enumerate(SCHEDULE_RANGE):
+        values = plan[:, column]
+        bad = np.flatnonzero(~(np.isfinite(values) & (values >= 0.0) & (values <= high)))
         if bad.size:
             row = int(bad[0])
-            raise InputError(f"{source}: {name} (point {row + 1})", plan[row, column], "≥ 0")
+            allowed = f"in [0, {high:g}] {unit}"
+            raise InputError(f"{source}: {name} (point {row + 1})", float(values[row]), allowed)
     if not np.any(plan[:, 0] > 0.0):
         raise InputError(f"{source}: speed", "all 0", "a turning screw in some rows")
     plan.setflags(write=False)
@@ -269,7 +275,8 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     Raises:
         InputError: unreadable file, no header, missing ``revolutions`` column, none or more
             than one measured column, a unit of the wrong dimension, a non-numeric or missing
-            cell, revolutions that are negative or not strictly increasing, too few rows.
+            cell, a row with more cells than the header, revolutions that are negative or not
+            strictly increasing, too few rows.
     """
     path = Path(path)
     source = path.name
@@ -314,6 +321,12 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     wanted = [("revolutions", rev_index, rev), (quantity, val_index, val)]
     wanted += [(name, columns[name][0], plan[name]) for name in scheduled]
     for (line_number, _), row in zip(numbered[1:], rows[1:], strict=True):
+        if any(cell.strip() for cell in row[len(rows[0]) :]):
+            raise InputError(
+                f"{source}: line {line_number}",
+                ",".join(row),
+                f"at most {len(rows[0])} cells, one per header column ({','.join(rows[0])})",
+            )
         for name, index, store in wanted:
             cell = row[index].strip() if index < len(row) else ""
             try:

@@ -134,6 +134,14 @@ separate them (GUESS: each one's standard error is then 1/√(1 − r²) = 10× 
 with the other known)."""
 
 
+def too_few_points(source: str, n: int, p: int, fit_until: float | None) -> CalibrationError:
+    """The error for ``n`` fitted points and ``p`` parameters, naming ``--fit-until`` if set."""
+    points = f"{source}: {n} points"
+    if fit_until is not None:
+        points = f"--fit-until = {fit_until!r} is not allowed: the {n} points of {source} it keeps"
+    return CalibrationError(f"{points} cannot determine {p} parameter(s); give at least {p + 1}")
+
+
 def _split(data: MeasuredHistory, fit_until: float | None) -> tuple[MeasuredHistory, int]:
     if fit_until is None:
         return data, len(data)
@@ -524,10 +532,7 @@ def fit_parameters(
     )
     p, n_fit = len(part.names), part.n_fit
     if n_fit <= p:
-        raise CalibrationError(
-            f"{data.source}: {n_fit} points cannot determine {p} parameter(s); give at "
-            f"least {p + 1}"
-        )
+        raise too_few_points(data.source, n_fit, p, fit_until)
     part.base, scanned, k_bracket = start_values(part, scan_steps, refine_steps)
     x, lower, upper = part.begin(k_bracket)
     x, message = solve(

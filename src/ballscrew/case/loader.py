@@ -137,7 +137,8 @@ def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:
 def apply_overrides(
     raw: Mapping[str, Any], overrides: Mapping[str, Any], source: str = "case"
 ) -> dict[str, Any]:
-    """Copy of ``raw`` with each dotted key of ``overrides`` set. The key must name a field."""
+    """Copy of ``raw`` with each dotted key of ``overrides`` set. The key must name a field; a
+    list entry is named by its index (``duty.0.stroke``) and must exist."""
     if not isinstance(overrides, Mapping):
         problem = f"overrides must map dotted keys to values, not {type(overrides).__name__}"
         raise CaseError([problem], source)
@@ -147,26 +148,47 @@ def apply_overrides(
             raise CaseError([f"override key {dotted!r} is not a dotted key string"], source)
         keys = dotted.split(".")
         check_field_path(keys, source)
-        node = data
-        for key in keys[:-1]:
-            child = node.get(key)
-            if not isinstance(child, dict):
+        node: Any = data
+        for depth, key in enumerate(keys):
+            if isinstance(node, list):
+                if int(key) >= len(node):
+                    where = ".".join(keys[:depth])
+                    entries = f"0 to {len(node) - 1}" if node else "none"
+                    problem = f"{dotted}: {where} has no entry {key} (entries: {entries})"
+                    raise CaseError([problem], source)
+                key = int(key)
+            if depth == len(keys) - 1:
+                node[key] = value
+                break
+            child = node[key] if isinstance(node, list) else node.get(key)
+            if isinstance(child, tuple):
+                child = list(child)
+            if not isinstance(child, dict | list):
                 child = {}
-                node[key] = child
+            node[key] = child
             node = child
-        node[keys[-1]] = value
     return data
 
 
 def check_field_path(keys: list[str], source: str = "case") -> None:
-    """Raise :class:`CaseError` unless ``keys`` walk down existing fields of :class:`Case`."""
+    """Raise :class:`CaseError` unless ``keys`` walk down existing fields of :class:`Case`
+    (an index after each list field)."""
     model: type[BaseModel] | None = Case
+    listed = False
     for depth, key in enumerate(keys):
+        where = ".".join(keys[:depth]) or "the case"
+        if listed:
+            listed = False
+            if not key.isdigit():
+                problem = f"{'.'.join(keys)}: {where} is a list; name an entry, e.g. {where}.0"
+                raise CaseError([problem], source)
+            continue
         fields = model.model_fields if model is not None else {}
         if key not in fields:
-            where = ".".join(keys[:depth]) or "the case"
             raise CaseError([unknown_key_message(".".join(keys), key, list(fields), where)], source)
-        model = _submodel(fields[key].annotation)
+        annotation = fields[key].annotation
+        listed = any(get_origin(a) in (list, tuple) for a in _members(annotation))
+        model = _submodel(annotation)
 
 
 def _submodel(annotation: Any) -> type[BaseModel] | None:

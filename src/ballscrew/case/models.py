@@ -335,6 +335,18 @@ class Case(Model):
         return self
 
     @model_validator(mode="after")
+    def _root_in_the_thread(self) -> Case:
+        d_m, d_w = self.screw.pitch_diameter, self.screw.ball_diameter
+        for key, spec in (("design", self.design), ("kinematics", self.kinematics)):
+            root = None if spec is None else spec.root_diameter
+            if root is not None and not d_m - 2.0 * d_w < root < d_m:
+                raise ValueError(
+                    f"{key}.root_diameter = {root:g} m is not allowed: a thread minor diameter "
+                    f"between d_m − 2·D_w = {d_m - 2.0 * d_w:g} m and d_m = {d_m:g} m"
+                )
+        return self
+
+    @model_validator(mode="after")
     def _some_ball_is_loaded(self) -> Case:
         op = self.operating
         if self.screw.nuts == 2 and op.preload <= 0:

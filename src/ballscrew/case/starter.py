@@ -14,6 +14,7 @@ Ball count: a circuit of t turns holds floor(t π d_m/(D_w cos λ)) − 1 balls
 from __future__ import annotations
 
 import math
+import tomllib
 from dataclasses import dataclass
 
 from ballscrew.design import MAX_PRELOAD_SHARE, circuit_ball_count, dynamic_load_rating
@@ -117,7 +118,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     preload = sheet.preload
     if preload is None:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
-    return _TEMPLATE.format(
+    text = _TEMPLATE.format(
         name=name,
         d0=_mm(d0),
         d0_mm=f"{d0 * 1e3:.6g}",
@@ -143,6 +144,47 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         nut_length=_mm(nut_length),
         nut_od=_mm(1.75 * d0),
     )  # fmt: skip
+    _check_case(text, sheet)
+    return text
+
+
+#: The ``init`` option behind the case fields it sets (prefixes); others follow from --d0.
+_OPTION_OF = (
+    ("screw.lead", "--lead"),
+    ("screw.ball_diameter", "--ball"),
+    ("operating.preload", "--preload"),
+    ("thermal.nut_length", "--nut-length"),
+    ("thermal.shaft_length", "--length"),
+    ("thermal.bearings", "--length"),
+    ("design.unsupported_length", "--length"),
+    ("duty.0.stroke", "--length"),
+)
+
+
+def _check_case(text: str, sheet: CatalogueSheet) -> None:
+    """InputError naming the option whose value makes the starter case ``text`` invalid."""
+    from ballscrew.case.loader import CaseError, case_from_dict
+
+    try:
+        case_from_dict(tomllib.loads(text), source="init")
+    except CaseError as exc:
+        problem = exc.problems[0]
+        given: dict[str, float | None] = {
+            "--d0": sheet.nominal_diameter,
+            "--lead": sheet.lead,
+            "--ball": sheet.ball_diameter,
+            "--preload": sheet.preload,
+            "--nut-length": sheet.nut_length,
+            "--length": sheet.length,
+        }
+        option = next(
+            (o for field, o in _OPTION_OF if problem.startswith(field) and given[o] is not None),
+            "--d0",
+        )
+        value = float(given[option] or 0.0)
+        shown = f"{value:g} N" if option == "--preload" else f"{value * 1e3:g} mm"
+        allowed = f"a value that gives a valid case; it gives {problem}"
+        raise InputError(option, shown, allowed) from None
 
 
 _TEMPLATE = """\

@@ -303,7 +303,10 @@ def _newton(
             jac[n:, :n] = g
             if norm < _TOLERANCE:
                 return y, jac, it - 1
-            step = np.linalg.solve(jac, -r)
+            try:
+                step = np.linalg.solve(jac, -r)
+            except np.linalg.LinAlgError:  # a stiffness so far off that J is singular
+                break
             t, phi = 1.0, norm
             while True:
                 trial = y + t * step
@@ -313,7 +316,7 @@ def _newton(
                     break
                 t *= 0.5
             y, r, slope, norm = trial, r_t, slope_t, norm_t
-    raise ConvergenceError("ball load distribution (Newton)", _MAX_ITERATIONS, norm, _TOLERANCE)
+    raise ConvergenceError("ball load distribution (Newton)", it, norm, _TOLERANCE)
 
 
 def solve_distribution(

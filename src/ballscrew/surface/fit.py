@@ -333,6 +333,14 @@ def fit_power_spectrum(
         if hi < 10.0 * lo:
             lo = max(5.0 / length, hi / 10.0)
             notes.append("short profile: PSD fit range narrowed below the 20/L low end")
+        if hi < 2.0 * lo and resolution is not None and resolution > dx:
+            # ω_top/3 = 1/(6·resolution) must reach 2·(5/L): resolution ≤ L/60
+            raise InputError(
+                "resolution",
+                resolution,
+                f"at most {length / 60.0:.3g} m on this {length:.3g} m profile (a coarser one "
+                "leaves no PSD fit range)",
+            )
         if hi < 2.0 * lo:
             raise InputError(
                 "heights", f"{n} points per profile", "enough points for a PSD fit (≥ 64)"

@@ -24,6 +24,9 @@ LAMINAR_LIMIT = 2300.0
 TURBULENT_LIMIT = 3000.0
 """Reynolds number from which the turbulent correlation is used (blend in between)."""
 
+REYNOLDS_MAX = 5e6
+"""Highest Reynolds number of the turbulent correlations (Gnielinski 1976: 3000 ≤ Re ≤ 5·10⁶)."""
+
 NU_LAMINAR = {"temperature": 3.66, "flux": 4.36}
 """Fully developed laminar Nu of a circular tube at uniform wall temperature or heat flux
 (Incropera & DeWitt 2007, Eqs. 8.53 and 8.55)."""
@@ -112,6 +115,14 @@ class BoreFlow:
     def __post_init__(self) -> None:
         positive("thermal.shaft_coolant.bore_diameter", self.diameter, "m")
         positive("thermal.shaft_coolant.flow_rate", self.flow_rate, "m³/s")
+        if self.reynolds > REYNOLDS_MAX:
+            most = self.flow_rate * REYNOLDS_MAX / self.reynolds
+            raise InputError(
+                "thermal.shaft_coolant.flow_rate",
+                self.flow_rate,
+                f"at most {most:.3g} m³/s through a {self.diameter * 1e3:g} mm bore: Re = "
+                f"{self.reynolds:.3g} is above {REYNOLDS_MAX:g}, the pipe correlations' range",
+            )
 
     @property
     def velocity(self) -> float:

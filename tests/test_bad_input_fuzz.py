@@ -1,0 +1,164 @@
+"""Bad input found by fuzzing the command line: one line, exit 2, nothing written.
+
+Each case is one perturbed input that once slipped through (a case printed that no command
+accepts, a silently ignored cell, a run far outside the case's ranges or the correlations'
+validity, a message naming the wrong field); the tests hold the one-line refusal.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from ballscrew.calibration import read_measured
+from ballscrew.case import load_case
+from ballscrew.case.loader import CaseError
+from ballscrew.cli import app
+from ballscrew.errors import InputError
+from ballscrew.thermal.coolant import FLUIDS, BoreFlow
+
+MEASURED = Path(__file__).parent.parent / "examples" / "measured" / "step_stress_torque.csv"
+INIT = ("init", "--d0", "40", "--lead", "10", "--ball", "6.35", "--turns", "2.5x2")
+
+
+def refused(*args: object) -> str:
+    """Run ``ballscrew ARGS``; it must refuse with one ``error:`` line. Returns that line."""
+    result = CliRunner().invoke(app, [str(a) for a in args])
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.output
+    lines = [line for line in result.output.splitlines() if line.strip()]
+    assert result.exit_code == 2 and len(lines) == 1, result.output
+    assert lines[0].startswith("error: "), result.output
+    return lines[0]
+
+
+def test_kinematics_speed_option_above_the_case_range(tmp_path: Path, gao_case_path) -> None:
+    """``--speed 1e12 rpm`` ran (1e11 rad/s, a 0.27 m film) where operating.speed stops at
+    1e5 rad/s."""
+    out = tmp_path / "out"
+    line = refused("kinematics", gao_case_path, "--speed", "1e12 rpm", "--out", out)
+    assert line.startswith("error: speed = 1047") and "100000] rad/s" in line
+    assert not out.exists()
+
+
+def test_bore_flow_beyond_the_pipe_correlations() -> None:
+    """A 1 µm bore at 2 L/min (u = 4·10⁷ m/s, Re = 5·10⁷) ran the 3-D model with Gnielinski far
+    outside 3000 ≤ Re ≤ 5·10⁶; the 12 mm bore of the tests (Re = 4123) still runs."""
+    water = FLUIDS["water"]
+    with pytest.raises(InputError, match=r"^thermal.shaft_coolant.flow_rate = 3.33.*Re = 4.9"):
+        BoreFlow(1e-6, 2e-3 / 60.0, water)
+    assert BoreFlow(0.012, 2e-3 / 60.0, water).reynolds < 5e6
+
+
+def test_measured_row_with_more_cells_than_the_header(tmp_path: Path) -> None:
+    """A third cell in a two-column CSV was dropped without a word."""
+    path = tmp_path / "long.csv"
+    path.write_text("revolutions,friction_torque\n0,0.48,5\n10000,0.47\n20000,0.46\n")
+    with pytest.raises(InputError, match=r"^long.csv: line 2 = '0,0.48,5' is not allowed: at"):
+        read_measured(path)
+    path.write_text("revolutions,friction_torque,\n0,0.48,\n10000,0.47,\n")  # empty cells pass
+    assert len(read_measured(path)) == 2
+
+
+def test_fit_until_that_leaves_too_few_points_names_it(tmp_path: Path, wear_case_path) -> None:
+    """``--fit-until 0`` said only '1 points cannot determine 2 parameter(s)'."""
+    out = tmp_path / "out"
+    line = refused(
+        "calibrate", wear_case_path, "-q", "-m", MEASURED, "--fit-until", "0", "--out", out
+    )
+    assert line.startswith("error: --fit-until = 0.0 is not allowed: the 1 points")
+    assert not out.exists()
+
+
+def test_duty_stroke_longer_than_the_shaft(tmp_path: Path, gao_case_path) -> None:
+    """A 5 m stroke on the 1 m shaft ran the duty cycle."""
+    case = tmp_path / "case.toml"
+    case.write_text(gao_case_path.read_text().replace('stroke = "400 mm"', 'stroke = "5 m"'))
+    out = tmp_path / "out"
+    line = refused("duty", case, "--out", out, "--set", "numerics.cells_across=16")
+    assert line.startswith("error: duty.0.stroke = 5.0 is not allowed: at most 0.87 m")
+    assert not out.exists()
+
+
+@pytest.mark.parametrize(
+    ("option", "value", "field"),
+    [
+        ("--d0", "1e30", "screw.pitch_diameter"),
+        ("--preload", "1e30", "operating.preload"),
+        ("--length", "1e30", "thermal.shaft_length"),
+    ],
+)
+def test_init_refuses_options_whose_case_no_command_accepts(option, value, field) -> None:
+    """``init --d0 1e30`` printed a case with d_m = 1e30 mm (exit 0) that every command
+    refused."""
+    args = list(INIT)
+    if option in args:
+        args[args.index(option) + 1] = value
+    else:
+        args += [option, value]
+    line = refused(*args)
+    assert line.startswith(f"error: {option} = '1e+30 ") and f"it gives {field} = " in line
+
+
+def test_set_names_list_entries_by_index(gao_case_path) -> None:
+    """``--set duty.0.stroke=…`` said 'duty.0.stroke: unknown key; allowed in duty: …, stroke,
+    …'; an index now names the entry, and a missing one or a missing index is named."""
+    assert load_case(gao_case_path, {"duty.1.duration": "5 min"}).duty[1].duration == 300.0
+    with pytest.raises(CaseError, match=r"duty.5.stroke: duty has no entry 5 \(entries: 0 to 1\)"):
+        load_case(gao_case_path, {"duty.5.stroke": 1.0})
+    with pytest.raises(CaseError, match=r"duty.stroke: duty is a list; name an entry, e.g. duty.0"):
+        load_case(gao_case_path, {"duty.stroke": 1.0})
+
+
+def test_surface_resolution_too_coarse_for_the_profile(tmp_path: Path) -> None:
+    """``--resolution 1 m`` on a 2 mm profile said 'heights = 4000 points per profile is not
+    allowed: ≥ 64'; it now names the resolution and its limit L/60 (ω_top/3 ≥ 10/L)."""
+    profile = MEASURED.parent.parent / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
+    out = tmp_path / "out"
+    line = refused("surface", profile, "--resolution", "34 um", "--out", out)
+    assert line.startswith("error: resolution = 3.4e-05 is not allowed: at most 3.33e-05 m")
+    assert not out.exists()
+
+
+def test_root_diameter_outside_the_thread(gao_case_path) -> None:
+    """``design.root_diameter = 1e-12`` (allowed: > 0) made the ball-load Newton's Jacobian
+    singular: a numpy LinAlgError traceback from ``ballscrew check``."""
+    with pytest.raises(
+        CaseError, match=r"design.root_diameter = 1e-12 m is not allowed: .* 0.0273"
+    ):
+        load_case(gao_case_path, {"design.root_diameter": 1e-12})
+    with pytest.raises(CaseError, match=r"kinematics.root_diameter = 0.04 m is not allowed"):
+        load_case(gao_case_path, {"kinematics.root_diameter": "40 mm"})
+    assert load_case(gao_case_path, {"design.root_diameter": "34.4 mm"}).design.root_diameter
+
+
+def test_singular_ball_load_newton_is_a_convergence_error() -> None:
+    """A singular Jacobian (here G = 0) ends the ball-load Newton with its residual, not a
+    LinAlgError."""
+    from ballscrew.errors import ConvergenceError
+    from ballscrew.loads.distribution import _newton
+
+    with pytest.raises(ConvergenceError, match=r"residual 1\.000e\+00"):
+        _newton(
+            np.zeros((2, 2)),
+            np.zeros((2, 1)),
+            np.ones(2),
+            np.zeros((1, 2)),
+            np.ones(1),
+            np.zeros(3),
+        )
+
+
+def test_measured_schedule_beyond_the_case_ranges(tmp_path: Path) -> None:
+    """A schedule row at 1e12 rpm fitted (exit 0); a negative speed was reported as
+    'np.float64(-10.47…)'."""
+    path = tmp_path / "sched.csv"
+    head = "revolutions,friction_torque,speed [rpm],axial_load [N]\n0,0.48,100,2000\n"
+    path.write_text(head + "20000,0.47,1e12,2000\n40000,0.46,100,2000\n")
+    with pytest.raises(InputError, match=r"^sched.csv: speed \(point 2\) = 1047.*\[0, 100000\]"):
+        read_measured(path)
+    path.write_text(head + "20000,0.47,-100,2000\n40000,0.46,100,2000\n")
+    with pytest.raises(InputError, match=r"^sched.csv: speed \(point 2\) = -10.47\d+ is not"):
+        read_measured(path)
