@@ -7,12 +7,17 @@ solver cells themselves. The TCR is mesh dependent, so these tests use that grid
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
 import ballscrew
 from ballscrew import load_case
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.tcr_models import gaussian_joint
 from ballscrew.case import CaseError
+from ballscrew.contact_resistance.correlations import correlation_conductance
 
 DOC_GRID = {
     "numerics.cells": [40, 200],
@@ -265,3 +270,32 @@ def test_a_gas_in_the_gap_is_a_case_choice(doc_case):
     assert plane.models["CMY"].resistance == pytest.approx(rarefied["CMY"].resistance, rel=1e-12)
     with pytest.raises(CaseError, match=r"medium\.rarefaction"):
         ballscrew.case.with_overrides(doc_case, {"medium.rarefaction": -1e-9})
+
+
+def test_lift_off_doubles_the_patches_at_root_two_times_the_pressure(gao_case_path):
+    """At lift-off (F1 = 2^{3/2} F_p, F2 = 0) a ball of nut 1 carries 2^{3/2} Q_0: Hertz gives it
+    patches twice as large at √2 times the pressure, so S does not change and, for a model whose
+    conductance is local in the pressure (CMY), R(lift-off)/R(0) = Σ 1/G(√2 p_0) / Σ 1/G(p_0)
+    over the screw and nut contacts of the preload solution (theory manual, *Axial load and
+    lift-off*). The step's sign is the sign of −dh/dp."""
+    base = load_case(gao_case_path, {"numerics.cells_across": 24})
+    lifted = ballscrew.case.with_overrides(base, {"operating.axial_load": 4243.0})
+    before, after = ballscrew.screw_tcr(base), ballscrew.screw_tcr(lifted)
+    assert [n.index for n in after.nuts] == [1]
+    assert after.apparent_area == pytest.approx(before.apparent_area, rel=0.01)
+    params = ScrewParameters.from_case(base)
+
+    def ball(scale: float) -> float:
+        total = 0.0
+        for side in ("screw", "nut"):
+            sol = getattr(before.nuts[0], side).contact.solution
+            joint = gaussian_joint(params, base.tcr, side)
+            total += 1.0 / correlation_conductance(
+                scale * sol.pressure, sol.dx, sol.dy, joint, "CMY"
+            )
+        return total
+
+    predicted = ball(math.sqrt(2.0)) / ball(1.0)
+    ratio = after.models["CMY"].resistance / before.models["CMY"].resistance
+    assert ratio == pytest.approx(predicted, rel=0.01)
+    assert predicted == pytest.approx(0.746, abs=0.005)  # h rises with p: R falls by a quarter
