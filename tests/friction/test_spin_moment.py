@@ -56,7 +56,7 @@ def test_grid_spin_moment_is_the_hertz_ellipse_integral(model):
     )
     load, mu = 40.0, 0.1
     a, b = model.hertz_semi_axes("screw", load)
-    x, y, p = hertz_pressure_grid(a, b, load, 64)
+    x, y, p = hertz_pressure_grid(a, b, load, model.traction_cells)
     traction = contact_traction(
         motion,
         x,
@@ -71,7 +71,7 @@ def test_grid_spin_moment_is_the_hertz_ellipse_integral(model):
         deformed_radius=model.deformed_radius("screw"),
     )
     expected = _spin_moment(load, b, a, mu)
-    assert abs(float(traction.moment @ axes.z)) == pytest.approx(expected, rel=0.01)
+    assert abs(float(traction.moment @ axes.z)) == pytest.approx(expected, rel=5e-3)
     assert np.linalg.norm(traction.force) < 1e-3 * mu * load  # a pure couple
     assert traction.power_loss == pytest.approx(expected * spin, rel=0.01)
 
