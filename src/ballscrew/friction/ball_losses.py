@@ -96,9 +96,6 @@ class BallLosses:
     """Torque whose heat goes into the screw (the rest goes into the nut)."""
     film_parameter: float
     """Λ = h/σ at A of the first loaded nut (0 dry)."""
-    traction_coefficient: float = 0.0
-    """μ = s μ_b + (1 − s) μ_f of the traction law at A of the first loaded nut: the friction
-    coefficient of a sliding cell whose film shear has reached its cap (s = ψ or φ_bl)."""
     groove_slip: float = 0.0
     """Differential (Heathcote) slip at the nut contact B."""
     ball_ball: float = 0.0
@@ -107,6 +104,10 @@ class BallLosses:
     """Drag of the balls in the lubricant of the nut."""
     recirculation: float = 0.0
     """Kinetic energy of the balls lost in the ball returns."""
+    traction_coefficient: float = 0.0
+    """μ = s μ_b + (1 − s) μ_f of the traction law at A of the first loaded nut: the friction
+    coefficient of a sliding cell whose film shear has reached its cap (s = ψ or φ_bl; 0 when
+    no ball is loaded)."""
 
     @property
     def total(self) -> float:

@@ -97,11 +97,11 @@ class FrictionTorque:
     """Λ = h/σ at the screw contact of the loaded nut (ball model)."""
     regime: str | None = None
     """boundary, mixed or EHL from Λ (ball model)."""
+    speed: float = 0.0
+    """ω_s [rad/s]."""
     traction_coefficient: float | None = None
     """μ of the traction law at the screw contact of the loaded nut, s μ_b + (1 − s) μ_f
     (ball model; the coefficient of a cell whose film shear has reached its cap)."""
-    speed: float = 0.0
-    """ω_s [rad/s]."""
 
     @property
     def friction(self) -> float:
