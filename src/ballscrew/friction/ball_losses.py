@@ -104,6 +104,10 @@ class BallLosses:
     """Drag of the balls in the lubricant of the nut."""
     recirculation: float = 0.0
     """Kinetic energy of the balls lost in the ball returns."""
+    traction_coefficient: float = 0.0
+    """μ = s μ_b + (1 − s) μ_f of the traction law at A of the first loaded nut: the friction
+    coefficient of a sliding cell whose film shear has reached its cap (s = ψ or φ_bl; 0 when
+    no ball is loaded)."""
 
     @property
     def total(self) -> float:
@@ -176,9 +180,9 @@ def _contact_losses(
     unit: BallMotion,
     semi_nut: tuple[float, float],
     nut: NutLossParameters,
-) -> tuple[tuple[float, ...], float]:
-    """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball and the
-    separation h at A [m]."""
+) -> tuple[tuple[float, ...], float, float]:
+    """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball, the
+    separation h at A [m] and the JGP asperity share ψ at A."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
@@ -196,13 +200,23 @@ def _contact_losses(
         )
         viscous = power / state.screw_speed
     return (
-        sliding,
-        rolling - rolling_b,
-        rolling_b,
-        _ball_ball_torque(model, state, unit, nut),
-        viscous,
-        _groove_slip_torque(model, state, unit, semi_nut),
-    ), drag.separation
+        (
+            sliding,
+            rolling - rolling_b,
+            rolling_b,
+            _ball_ball_torque(model, state, unit, nut),
+            viscous,
+            _groove_slip_torque(model, state, unit, semi_nut),
+        ),
+        drag.separation,
+        drag.psi,
+    )
+
+
+def _traction_coefficient(model: BallModel, state: BallState, psi: float) -> float:
+    """s μ_b + (1 − s) μ_f of the traction law at A for the JGP share ψ (dry at rest: μ_b)."""
+    law = traction_weights(model, psi, state.screw_speed if state.ball_speed != 0.0 else 0.0)
+    return law.share * law.boundary_friction + (1.0 - law.share) * law.film_friction
 
 
 def _recirculation_torque(model: BallModel, state: BallState, nut: NutLossParameters) -> float:
@@ -246,11 +260,12 @@ def ball_losses(
     loads = np.array([(state.load_screw, state.load_nut) for state in states])
     along, across = _semi_axes(model, loads)
     sums = np.zeros(6)
-    separations = []
+    separations, shares = [], []
     for state, unit, a, b in zip(states, units, along[:, 1], across[:, 1], strict=True):
-        torques, separation = _contact_losses(model, state, unit, (float(a), float(b)), nut)
+        torques, separation, psi = _contact_losses(model, state, unit, (float(a), float(b)), nut)
         sums += torques
         separations.append(separation)
+        shares.append(psi)
     sliding, rolling_a, rolling_b, balls, drag, groove = model.balls * sums
     # hysteresis of every ball at A and B in one batch, at its rolling speed per ω_s, |V|/ω_s
     ratio = np.array([abs(unit.ball_speed / unit.screw_speed) for unit in units])
@@ -272,4 +287,5 @@ def ball_losses(
         recirculation=float(returns),
         screw_share=float(SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a)),
         film_parameter=film,
+        traction_coefficient=_traction_coefficient(model, states[0], shares[0]),
     )

@@ -99,6 +99,9 @@ class FrictionTorque:
     """boundary, mixed or EHL from Λ (ball model)."""
     speed: float = 0.0
     """ω_s [rad/s]."""
+    traction_coefficient: float | None = None
+    """μ of the traction law at the screw contact of the loaded nut, s μ_b + (1 − s) μ_f
+    (ball model; the coefficient of a cell whose film shear has reached its cap)."""
 
     @property
     def friction(self) -> float:
@@ -144,6 +147,7 @@ def _result(
         model=model,
         film_parameter=film,
         regime=regime(film) if film is not None else None,
+        traction_coefficient=losses.traction_coefficient if losses is not None else None,
         speed=omega,
     )
 
