@@ -1,0 +1,105 @@
+"""The XJTU friction-torque history with running-in: fit the first half, predict the rest.
+
+Same data, case and split as ``test_wear_history.py`` (XJTU degradation dataset; rows 1–15,
+0–490 h, fitted; rows 16–30 predicted) and the torque law of ``test_wear_history_offset.py``
+(T = K_T F_p(N) L/(2π) + T_0, catalogue K_T). Added: a ``[wear.running_in]`` section, the
+as-machined raceway (D_0, G_0) approaching the steady ``[surface]`` set exponentially with the
+worn depth over h_r (theory manual, *Wear*, running-in; Queener, Smith & Mitchell 1965; Ge &
+Chen 1999). Both screws are fitted together (``calibrate_joint``): one K and one h_r (one
+steel, one grinding process, one initial surface), T_0 per screw. Each forecast must beat a
+straight line in revolutions fitted to the same first half; a model that does worse is a
+strict known miss with its numbers. The specimen-loss row compares the ratio of the relative
+torque losses Down/Up (lines in time) with the measured one.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+
+import ballscrew
+from ballscrew.case import with_overrides
+
+from .test_wear_history import _case
+from .test_wear_history_offset import (
+    KEYS,
+    MISSES,
+    OFFSET_ASSUMPTIONS,
+    _data,
+    _histories,
+    _until,
+    check_forecast,
+    check_loss_ratio,
+)
+
+RUNNING_IN = {"D": 1.3, "G": "1e-9 m", "depth": "0.2 um"}
+"""As-machined raceway and the start of h_r: the theory manual's rougher new raceway (ASSUMED)."""
+RUNNING_IN_ASSUMPTIONS = (
+    *OFFSET_ASSUMPTIONS,
+    "as-machined raceway D_0 = 1.3, G_0 = 1e-9 m running in towards the [surface] set D = 1.4, "
+    "G = 1e-10 m over the worn depth h_r (rougher when new: D rises and G falls while a surface "
+    "runs in, Ge & Chen 1999); ASSUMED, the surfaces of the XJTU screws are not published. The "
+    "published as-ground raceway of Gao et al. (2019), D = 1.59, G = 9e-10 m, wears slower than "
+    "this steady set in the model and so does not run in (theory manual, Wear)",
+    "one K and one h_r for both screws (one steel, one grinding process, one initial surface), "
+    "T_0 per screw; fit started at the case's K = 1.304e-4 and h_r = 0.2 µm",
+)
+MODEL = "wear_life with [wear.running_in] + calibrate_joint(shared K, h_r; T_0 per screw; 490 h)"
+
+
+@functools.cache
+def _joint() -> ballscrew.calibration.JointCalibrationResult:
+    histories = _histories()
+    case = with_overrides(_case(_data()), {"wear.running_in": RUNNING_IN})
+    return ballscrew.calibrate_joint(
+        case,
+        [histories[k] for k in KEYS],
+        shared=("wear_coefficient", "running_in_depth"),
+        separate=("torque_offset",),
+        fit_until=_until(),
+    )
+
+
+def _fitted() -> str:
+    joint = _joint()
+    k, h = joint.values["wear_coefficient"], joint.values["running_in_depth"]
+    dk, dh = joint.errors["wear_coefficient"], joint.errors["running_in_depth"]
+    r = joint.correlations["wear_coefficient,running_in_depth"]
+    return (
+        f"K = {k:.3g} ± {dk:.2g}, h_r = {h * 1e6:.2f} ± {dh * 1e6:.2f} µm (correlation "
+        f"{r:+.2f}); joint RMS residual {joint.rms_residual:.4f} N m"
+    )
+
+
+@pytest.mark.parametrize(("key", "known_miss"), MISSES)
+def test_xjtu_running_in_joint_forecast(validation, key, known_miss) -> None:
+    """Up +12.1 % (line −50.2 %), Down +5.5 % (line +5.2 %: a known miss by 0.3 points; the
+    held-out RMS 0.012 N m is below the line's 0.021); without running-in +18.6 % and +9.8 %.
+    K falls 16× (8.1e-6 → 5.2e-7): the early loss is the running-in transient."""
+    result = _joint().histories[KEYS.index(key)]
+    check_forecast(
+        validation,
+        "xjtu_running_in_joint_forecast",
+        key,
+        result,
+        MODEL,
+        f"fitted: {_fitted()}; T_0 = {result.torque_offset:.4f} "
+        f"± {result.errors['torque_offset']:.2g} N m",
+        RUNNING_IN_ASSUMPTIONS,
+        known_miss,
+    )
+
+
+def test_xjtu_running_in_specimen_loss_ratio(validation) -> None:
+    """Down/Up ratio of the relative torque losses with running-in: still T_Up(0)/T_Down(0) ≈ 0.76
+    against the measured 0.611, a known miss; one shared surface law gives both screws one
+    preload history, so running-in cannot make the lower screw lose a smaller fraction."""
+    check_loss_ratio(
+        validation,
+        "xjtu_running_in_specimen_loss_ratio",
+        _joint(),
+        "calibrate_joint with running-in: one K, one h_r, T_0 per screw",
+        f"; {_fitted()}",
+        RUNNING_IN_ASSUMPTIONS,
+    )
