@@ -74,7 +74,7 @@ def _fitted() -> str:
 
 @pytest.mark.parametrize(("key", "known_miss"), MISSES)
 def test_xjtu_running_in_joint_forecast(validation, key, known_miss) -> None:
-    """Up +12.1 % (line −50.2 %), Down +5.5 % (line +5.2 %: a known miss by 0.3 points; the
+    """Up +12.1 % (line −50.2 %), Down +5.5 % (line −5.2 %: a known miss by 0.3 points; the
     held-out RMS 0.012 N m is below the line's 0.021); without running-in +18.6 % and +9.8 %.
     K falls 16× (8.1e-6 → 5.2e-7): the early loss is the running-in transient."""
     result = _joint().histories[KEYS.index(key)]
