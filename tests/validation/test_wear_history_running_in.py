@@ -76,7 +76,8 @@ def _fitted() -> str:
 def test_xjtu_running_in_joint_forecast(validation, key, known_miss) -> None:
     """Up +12.1 % (line −50.2 %), Down +5.5 % (line −5.2 %: a known miss by 0.3 points; the
     held-out RMS 0.012 N m is below the line's 0.021); without running-in +18.6 % and +9.8 %.
-    K falls 16× (8.1e-6 → 5.2e-7): the early loss is the running-in transient."""
+    K falls 16× (8.1e-6 → 5.2e-7): the fit puts the whole test into the transient (0.69 µm
+    worn at 1015 h against h_r = 0.65 ± 0.57 µm)."""
     result = _joint().histories[KEYS.index(key)]
     check_forecast(
         validation,
