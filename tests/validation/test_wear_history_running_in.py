@@ -19,6 +19,7 @@ import functools
 import pytest
 
 import ballscrew
+from ballscrew.calibration import CalibrationResult
 from ballscrew.case import with_overrides
 
 from .test_wear_history import _case
@@ -42,18 +43,25 @@ RUNNING_IN_ASSUMPTIONS = (
     "runs in, Ge & Chen 1999); ASSUMED, the surfaces of the XJTU screws are not published. The "
     "published as-ground raceway of Gao et al. (2019), D = 1.59, G = 9e-10 m, wears slower than "
     "this steady set in the model and so does not run in (theory manual, Wear)",
+    "fit started at the case's K = 1.304e-4 and h_r = 0.2 µm",
+)
+JOINT_ASSUMPTIONS = (
+    *RUNNING_IN_ASSUMPTIONS,
     "one K and one h_r for both screws (one steel, one grinding process, one initial surface), "
-    "T_0 per screw; fit started at the case's K = 1.304e-4 and h_r = 0.2 µm",
+    "T_0 per screw",
 )
 MODEL = "wear_life with [wear.running_in] + calibrate_joint(shared K, h_r; T_0 per screw; 490 h)"
+
+
+def _running_in_case() -> ballscrew.case.Case:
+    return with_overrides(_case(_data()), {"wear.running_in": RUNNING_IN})
 
 
 @functools.cache
 def _joint() -> ballscrew.calibration.JointCalibrationResult:
     histories = _histories()
-    case = with_overrides(_case(_data()), {"wear.running_in": RUNNING_IN})
     return ballscrew.calibrate_joint(
-        case,
+        _running_in_case(),
         [histories[k] for k in KEYS],
         shared=("wear_coefficient", "running_in_depth"),
         separate=("torque_offset",),
@@ -61,14 +69,41 @@ def _joint() -> ballscrew.calibration.JointCalibrationResult:
     )
 
 
-def _fitted() -> str:
-    joint = _joint()
-    k, h = joint.values["wear_coefficient"], joint.values["running_in_depth"]
-    dk, dh = joint.errors["wear_coefficient"], joint.errors["running_in_depth"]
-    r = joint.correlations["wear_coefficient,running_in_depth"]
+def _fitted(fit: ballscrew.calibration.JointCalibrationResult | CalibrationResult) -> str:
+    k, h = fit.values["wear_coefficient"], fit.values["running_in_depth"]
+    dk, dh = fit.errors["wear_coefficient"], fit.errors["running_in_depth"]
+    r = fit.correlations["wear_coefficient,running_in_depth"]
     return (
         f"K = {k:.3g} ± {dk:.2g}, h_r = {h * 1e6:.2f} ± {dh * 1e6:.2f} µm (correlation "
-        f"{r:+.2f}); joint RMS residual {joint.rms_residual:.4f} N m"
+        f"{r:+.2f}); RMS residual {fit.rms_residual:.4f} N m"
+    )
+
+
+def _with_offset(result: CalibrationResult) -> str:
+    return f"T_0 = {result.torque_offset:.4f} ± {result.errors['torque_offset']:.2g} N m"
+
+
+def test_xjtu_running_in_forecast_down(validation) -> None:
+    """Down on its own (K, h_r, T_0): +15.9 % (line −5.2 %), a known miss. Its h_r = 0.24 µm
+    puts the transient into the first rows (Down's step from row 1 to 2), after which the
+    forecast is flatter than the data. Up on its own is refused: its h_r is not determined
+    (1.45 ± 1.6 µm; theory manual, Wear, *With running-in*)."""
+    key = "down_Nm"
+    result = ballscrew.calibrate(
+        _running_in_case(),
+        _histories()[key],
+        fit=("wear_coefficient", "running_in_depth", "torque_offset"),
+        fit_until=_until(),
+    )
+    check_forecast(
+        validation,
+        "xjtu_running_in_forecast",
+        key,
+        result,
+        "wear_life with [wear.running_in] + calibrate(fit=K, h_r, T_0; fit_until=490 h)",
+        f"fitted: {_fitted(result)}; {_with_offset(result)}",
+        RUNNING_IN_ASSUMPTIONS,
+        known_miss=True,
     )
 
 
@@ -85,9 +120,8 @@ def test_xjtu_running_in_joint_forecast(validation, key, known_miss) -> None:
         key,
         result,
         MODEL,
-        f"fitted: {_fitted()}; T_0 = {result.torque_offset:.4f} "
-        f"± {result.errors['torque_offset']:.2g} N m",
-        RUNNING_IN_ASSUMPTIONS,
+        f"fitted: {_fitted(_joint())}; {_with_offset(result)}",
+        JOINT_ASSUMPTIONS,
         known_miss,
     )
 
@@ -101,6 +135,6 @@ def test_xjtu_running_in_specimen_loss_ratio(validation) -> None:
         "xjtu_running_in_specimen_loss_ratio",
         _joint(),
         "calibrate_joint with running-in: one K, one h_r, T_0 per screw",
-        f"; {_fitted()}",
-        RUNNING_IN_ASSUMPTIONS,
+        f"; {_fitted(_joint())}",
+        JOINT_ASSUMPTIONS,
     )
