@@ -102,20 +102,21 @@ def _line(key: str) -> tuple[float, float]:
     return float(np.polyval(line, revolutions[-1])), float(np.sqrt(np.mean(held**2)))
 
 
-def _check(
+def check_forecast(
     validation,
     row: str,
     key: str,
     result: CalibrationResult,
     model: str,
-    note: str,
+    fitted: str,
+    assumptions: tuple[str, ...],
     known_miss: bool,
 ) -> None:
+    """Record ``result``'s forecast at 1015 h against the line's error as tolerance."""
     data = _data()
     measured = float(data[key][-1])
     line_end, line_rmse = _line(key)
     line_error = abs(line_end - measured) / measured
-    predicted = float(result.fitted[-1])
     name = key.removesuffix("_Nm")
     validation.check(
         f"{row}_{name}",
@@ -125,20 +126,34 @@ def _check(
         quantity=f"friction torque at 1015 h ({name}), forecast from 0–490 h",
         unit="N*m",
         measured=measured,
-        predicted=predicted,
+        predicted=float(result.fitted[-1]),
         tolerance=line_error,
         relative=True,
         tolerance_basis=(
             "the error of a straight line in revolutions fitted to the same first 15 rows "
             f"({line_error:.1%}); held-out RMS errors {result.prediction_rmse:.4f} N m (model) "
-            f"and {line_rmse:.4f} N m (line); fitted: K = {result.wear_coefficient:.3g} "
-            f"± {result.standard_error:.2g} (without T_0, with a fitted torque scale: "
-            f"{WITHOUT_OFFSET_K[key]:.3g}), T_0 = {result.torque_offset:.4f} "
-            f"± {result.errors['torque_offset']:.2g} N m{note}"
+            f"and {line_rmse:.4f} N m (line); {fitted}"
         ),
-        assumptions=OFFSET_ASSUMPTIONS,
+        assumptions=assumptions,
         known_miss=known_miss,
     )
+
+
+def _check(
+    validation,
+    row: str,
+    key: str,
+    result: CalibrationResult,
+    model: str,
+    note: str,
+    known_miss: bool,
+) -> None:
+    fitted = (
+        f"fitted: K = {result.wear_coefficient:.3g} ± {result.standard_error:.2g} (without T_0, "
+        f"with a fitted torque scale: {WITHOUT_OFFSET_K[key]:.3g}), T_0 = "
+        f"{result.torque_offset:.4f} ± {result.errors['torque_offset']:.2g} N m{note}"
+    )
+    check_forecast(validation, row, key, result, model, fitted, OFFSET_ASSUMPTIONS, known_miss)
 
 
 MISSES = [("up_Nm", False), ("down_Nm", True)]
@@ -181,8 +196,27 @@ def test_xjtu_joint_specimen_loss_ratio(validation) -> None:
     fitted model against the measured 0.611: with one preload history and T_0 per screw
     the model's ratio is T_Up(0)/T_Down(0) ≈ 0.76, a known miss (the measured absolute loss of
     Up is larger than Down's, which no shared preload term gives)."""
-    data = _data()
     joint = _joint()
+    check_loss_ratio(
+        validation,
+        "xjtu_joint_specimen_loss_ratio",
+        joint,
+        "calibrate_joint: T = K_T F_p(N) L/2π + T_0 per screw, one K and one preload history",
+        f", K = {joint.wear_coefficient:.3g}",
+        OFFSET_ASSUMPTIONS,
+    )
+
+
+def check_loss_ratio(
+    validation,
+    row: str,
+    joint: ballscrew.calibration.JointCalibrationResult,
+    model: str,
+    fitted: str,
+    assumptions: tuple[str, ...],
+) -> None:
+    """Record the Down/Up ratio of the relative losses of ``joint`` (a known miss)."""
+    data = _data()
     up, down = (np.asarray(data[k], dtype=float) for k in KEYS)
     hours = HOURS_PER_ROW * np.arange(up.size)
     loss_up, rel_up = _relative_loss(hours, up)
@@ -190,8 +224,8 @@ def test_xjtu_joint_specimen_loss_ratio(validation) -> None:
     model_up, model_down = (_relative_loss(hours, h.fitted)[0] for h in joint.histories)
     sigma = math.hypot(rel_up, rel_down)
     validation.check(
-        "xjtu_joint_specimen_loss_ratio",
-        model="calibrate_joint: T = K_T F_p(N) L/2π + T_0 per screw, one K and one preload history",
+        row,
+        model=model,
         source=SOURCE,
         reference=data,
         quantity="relative torque loss over 0–1015 h, Down / Up (lines in time)",
@@ -204,11 +238,10 @@ def test_xjtu_joint_specimen_loss_ratio(validation) -> None:
             f"2σ of the measured ratio ({2.0 * sigma:.1%}); measured relative losses "
             f"{loss_up:.3f} (Up) and {loss_down:.3f} (Down), model {model_up:.3f} and "
             f"{model_down:.3f}; fitted T_0 {joint.histories[0].torque_offset:.4f} (Up) and "
-            f"{joint.histories[1].torque_offset:.4f} N m (Down), K = "
-            f"{joint.wear_coefficient:.3g}"
+            f"{joint.histories[1].torque_offset:.4f} N m (Down){fitted}"
         ),
         assumptions=(
-            *OFFSET_ASSUMPTIONS,
+            *assumptions,
             "Up and Down: the upper and the lower screw of one rig (the dataset's README), two "
             "screws of one type on one programme, so one preload history and one K",
         ),
