@@ -73,3 +73,11 @@ def test_plot_axes_get_values_and_the_unit_symbol():
     assert symbol == "µm" and values == pytest.approx([0, 10, 50])
     celsius, symbol = to_display([293.15, 303.15], "temperature")
     assert symbol == "°C" and celsius == pytest.approx([20, 30])
+
+
+def test_a_zero_length_reads_in_millimetres():
+    """A zero stroke or rarefaction length was shown as '0 nm' in the report's inputs."""
+    assert to_display(0.0, "length")[1] == "mm"
+    assert format_quantity(0.0, "length") == "0 mm"
+    assert to_display(np.array([0.0, 2e-3]), "length")[1] == "mm"  # nonzero: as before
+    assert format_quantity(0.0, "force") == "0 N"

@@ -234,6 +234,9 @@ DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
     "dimensionless": (("", 1.0),),
 }
 
+#: Display unit of a zero of each kind whose smallest unit would read oddly (0 nm).
+ZERO_UNITS: dict[str, str] = {"length": "mm"}
+
 #: Largest magnitude (SI) of each kind that is solver noise, not data: far below any physical
 #: value of a ball screw (1e-9 rpm, 1e-15 m) and far above float round-off of typical values.
 NOISE_FLOOR: dict[str, float] = {
@@ -322,8 +325,11 @@ def display_unit(kind: str, magnitude: float = 1.0) -> tuple[str, float]:
     ``kind`` is a key of :data:`DISPLAY_UNITS` or an SI unit of :data:`KIND_OF_UNIT`. For
     ``temperature`` the values must first be shifted by −273.15 (see :func:`to_display`).
     """
-    units = DISPLAY_UNITS[KIND_OF_UNIT.get(kind, kind)]
+    kind = KIND_OF_UNIT.get(kind, kind)
+    units = DISPLAY_UNITS[kind]
     size = abs(float(magnitude))
+    if size == 0.0 and kind in ZERO_UNITS:  # a zero stroke reads 0 mm, not 0 nm
+        return next(u for u in units if u[0] == ZERO_UNITS[kind])
     chosen = units[0]
     for symbol, scale in units:
         if size >= scale * (1.0 - 1e-12):
@@ -366,7 +372,7 @@ def format_quantity(
     if kind == "temperature":
         number, symbol = value - _CELSIUS, "°C"
     elif abs(value) < floor:
-        number, symbol = 0.0, display_unit(kind)[0]
+        number, symbol = 0.0, display_unit(kind, 0.0)[0]
     else:
         symbol, scale = display_unit(kind, value)
         number = value / scale

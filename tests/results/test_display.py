@@ -163,3 +163,8 @@ def test_the_nut_forces_mark_the_lift_off(tmp_path, monkeypatch):
     )
     plot_nut_forces(ds, tmp_path / "forces.png")
     assert lines == [4.0]  # kN, the axis unit
+
+
+def test_a_margin_ratio_reads_as_a_margin():
+    """The check's headline read 'speed: ratio'."""
+    assert readable("margins.speed.ratio") == "speed margin (capacity/demand)"

@@ -20,6 +20,7 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
 from ballscrew.plotting import legend_outside
+from ballscrew.units import KIND_OF_UNIT, to_display
 
 if TYPE_CHECKING:
     from ballscrew.analyses.design_check import DesignCheck
@@ -303,10 +304,21 @@ def _ratings_note(result: DesignCheck) -> str:
     )
 
 
+def _engineering(demand: float, capacity: float, unit: str) -> tuple[float, float, str]:
+    """(demand, capacity, unit) of a margin in one engineering unit: rpm, kN (SI in, as
+    ``summary.json`` keeps them)."""
+    kind = KIND_OF_UNIT.get(unit)
+    if kind is None:
+        return demand, capacity, unit
+    shown, symbol = to_display(np.array([demand, capacity]), kind)
+    return float(shown[0]), float(shown[1]), symbol
+
+
 def sections(result: DesignCheck) -> list[Section]:
     """Margins (green/amber/red), design values, stiffness curve and life."""
     margins = tuple(
-        (m.label, m.demand, m.capacity, m.unit, m.ratio, m.status.upper()) for m in result.margins
+        (m.label, *_engineering(m.demand, m.capacity, m.unit), m.ratio, m.status.upper())
+        for m in result.margins
     )
     s = result.spectrum
     spectrum = tuple(
