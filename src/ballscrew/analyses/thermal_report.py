@@ -20,9 +20,10 @@ from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import label_box, legend_outside, plain
 from ballscrew.thermal.elongation import displacement_profile
 from ballscrew.thermal.mesh3d import circle_angles
+from ballscrew.units import format_number
 
 if TYPE_CHECKING:
-    from ballscrew.analyses.thermal import ThermalField
+    from ballscrew.analyses.thermal import SensorReading, ThermalField
 
 CELSIUS = 273.15
 
@@ -442,6 +443,13 @@ def elongation_plot(result: ThermalField, path: Path) -> Path:
     return path
 
 
+def _transient(sensor: SensorReading) -> tuple[object, str]:
+    """(final [°C], time to 95 %) of a sensor; '–' for both without a transient."""
+    if not math.isfinite(sensor.final):
+        return "–", "–"
+    return _c(sensor.final), _fmt_s(sensor.time_to_95)
+
+
 def _fmt_s(seconds: float) -> str:
     return "not reached" if not math.isfinite(seconds) else f"{seconds / 60:.1f} min"
 
@@ -544,19 +552,18 @@ def sections(result: ThermalField) -> list[Section]:
             ["time to 95 % of the steady elongation", _fmt_s(result.elongation_time_to_95)],
         ]
     sensor_rows = [
-        [s.name, s.body, s.r * 1e3, s.z * 1e3, _c(s.steady), _c(s.final), _fmt_s(s.time_to_95)]
-        for s in result.sensors
+        [s.name, s.body, s.r * 1e3, s.z * 1e3, _c(s.steady), *_transient(s)] for s in result.sensors
     ]
     balance = [
         ["heat input [W]", result.heat_input],
         ["steady convective loss [W]", sol.heat_loss],
-        ["steady relative error", f"{result.heat_balance_error:.2e}"],
+        ["steady relative error", format_number(result.heat_balance_error, 2)],
     ]
     if t is not None:
         balance += [
             ["transient: heat in [J]", t.heat_in],
             ["transient: stored + convected [J]", t.stored + t.convected],
-            ["transient relative error", f"{result.transient_heat_balance_error:.2e}"],
+            ["transient relative error", format_number(result.transient_heat_balance_error, 2)],
         ]
     return [
         Section(
@@ -633,13 +640,18 @@ def _coupling_text(result: ThermalField) -> tuple[str, ...]:
     """How the balls' heat was found: the coupled operating point, or the case's fixed heat."""
     c = result.coupling
     if c is None:
-        return ("The balls' heat is the fixed torque of [thermal.drag_torque] (not coupled).",)
+        source = result.case.thermal.drag_torque.source if result.case.thermal else "given"
+        return (
+            "The balls' heat is held fixed in this solve: [thermal.drag_torque] source = "
+            f"{source!r} (the method column).",
+        )
     viscosity = "a dry contact" if math.isnan(c.viscosity) else f"η = {1e3 * c.viscosity:.4g} mPa s"
     return (
         f"The balls' heat is that of the coupled operating point ({c.friction_model} friction "
         f"model): {c.friction_torque:.4g} N·m, {c.heat:.4g} W ({c.heat_to_screw:.4g} W into the "
         f"screw) with the lubricant at the contact temperature {_c(c.contact_temperature):.4g} °C "
-        f"({viscosity}), {c.iterations} fixed-point iterations on the {result.model} model.",
+        f"({viscosity}), {c.iterations} fixed-point iteration{'s' * (c.iterations != 1)} on the "
+        f"{result.model} model.",
     )
 
 
