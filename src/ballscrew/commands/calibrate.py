@@ -74,8 +74,9 @@ def calibrate(
     *,
     output: Output,
 ) -> None:
-    """Fit the wear model (K, torque scale, torque offset, …) to one measured history, or
-    jointly to several (repeat --measured)."""
+    """Fit the wear model (K, torque scale, offset, …) to measured histories (--measured).
+
+    One history, or several jointly (repeat --measured)."""
     from dataclasses import replace
 
     from ballscrew.calibration import DEFAULT_FIT, read_measured

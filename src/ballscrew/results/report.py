@@ -10,10 +10,12 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ballscrew import __version__
 from ballscrew.case.inputs import input_rows
 from ballscrew.results.about import ABOUT, theory_link
-from ballscrew.results.display import engineering
+from ballscrew.results.display import engineering, engineering_array
 from ballscrew.units import format_number
 
 _STYLE = """
@@ -43,8 +45,15 @@ class Section:
 
 
 def _input_row(key: str, value: Any, unit: str) -> list[object]:
+    if isinstance(value, list) and value and all(_is_number(v) for v in value):
+        shown, shown_unit = engineering_array(np.asarray(value, dtype=float), unit, key)
+        return [key, ", ".join(format_number(v) for v in shown), shown_unit]
     shown, shown_unit = engineering(value, unit, key)
     return [key, shown, shown_unit]
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
 
 
 def inputs_warnings_sections(
