@@ -63,3 +63,14 @@ def test_report_and_summary_read_in_rpm_with_the_points_warnings(coarse_case, tm
     assert "<td>500, 1750, 3000</td><td>rpm</td>" in report
     assert "52.359" not in report and "d·n high" in report
     assert "sweep_warnings.png" not in {p.name for p in folder.iterdir()}
+
+
+def test_the_sweep_reports_the_guessed_defaults_of_its_case(coarse_case, tmp_path):
+    axis = parse_axis("operating.speed=500 rpm,1000 rpm")
+    records = [run_point(_fast_warns, coarse_case, {axis.key: v}) for v in axis.values]
+    (tmp_path / "sweep").mkdir()
+    folder = write_sweep(assemble([axis], records, "test", coarse_case), tmp_path / "sweep", 2,
+                         coarse_case, [axis])  # fmt: skip
+    summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
+    assert "case.friction.circuits" in summary["guessed_defaults"]
+    assert "<td>case.friction.circuits</td>" in (folder / "report.html").read_text("utf-8")

@@ -57,10 +57,14 @@ def _is_number(value: object) -> bool:
 
 
 def inputs_warnings_sections(
-    inputs: Mapping[str, Any], warnings: Sequence[str], analysis: str | None = None
+    inputs: Mapping[str, Any],
+    warnings: Sequence[str],
+    analysis: str | None = None,
+    guesses: Mapping[str, str] | None = None,
 ) -> list[Section]:
-    """The first sections of every report: the inputs as they ran, the warnings and, for a
-    known ``analysis``, what was computed and how (linked to the theory manual)."""
+    """The first sections of every report: the inputs as they ran, the warnings, the
+    ``guesses`` (dotted input key → description, :func:`ballscrew.case.inputs.guessed_defaults`)
+    and, for a known ``analysis``, what was computed and how (linked to the theory manual)."""
     rows = [_input_row(key, value, unit) for key, value, unit in input_rows(dict(inputs))]
     sections = [
         Section(
@@ -73,6 +77,23 @@ def inputs_warnings_sections(
         ),
         Section("Warnings", paragraphs=list(warnings) or ["No warnings."]),
     ]
+    if guesses:
+        guessed = [
+            [*_input_row(key, value, unit), guesses[key]]
+            for key, value, unit in input_rows(dict(inputs))
+            if key in guesses
+        ]
+        sections.append(
+            Section(
+                "Defaults that are guesses",
+                paragraphs=[
+                    "Inputs the case left at a default that is only a guess (GUESS or ASSUMED in "
+                    "its description); each counts only where the analysis uses it. Write the "
+                    "value into the case when it is known."
+                ],
+                tables=[(["input", "value", "unit", "what and why"], guessed)],
+            )
+        )
     if analysis in ABOUT:
         text, page = ABOUT[analysis]
         title = page.removesuffix(".md").replace("-", " ")

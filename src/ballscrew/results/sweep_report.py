@@ -20,7 +20,7 @@ import numpy as np
 import xarray as xr
 
 from ballscrew.case import Case
-from ballscrew.case.inputs import resolved_inputs
+from ballscrew.case.inputs import guessed_defaults, resolved_inputs
 from ballscrew.plotting import legend_outside, line_styles, zero_noise
 from ballscrew.results.display import engineering, engineering_array, readable
 from ballscrew.results.export import export_results, parse_formats
@@ -159,7 +159,8 @@ def write_sweep(
     folder = Path(folder)
     export = parse_formats(export)
     with writing(folder):
-        _write_files(ds, folder, computed, sweep_inputs(ds, case, axes))
+        guesses = guessed_defaults(case, "case.") if case is not None else {}
+        _write_files(ds, folder, computed, sweep_inputs(ds, case, axes), guesses)
         if export:
             export_results(folder, export)
         write_marker(folder, "sweep", SWEEP_PATTERNS)
@@ -201,7 +202,9 @@ def _point_warnings(ds: xr.Dataset) -> list[str]:
     ]
 
 
-def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any]) -> None:
+def _write_files(
+    ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any], guesses: dict[str, str]
+) -> None:
     write_netcdf(ds, folder / "sweep.nc")
     names = [n for n in ds.data_vars if n not in ("error", "failed", "warnings")]
     forces = {"F1", "F2"} <= set(names) and ds["F1"].ndim == 1
@@ -238,12 +241,13 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, 
         "axes": {d: {"values": ds[d].values, "unit": ds[d].attrs.get("units", "")} for d in dims},
         "failures": failures,
         "warnings": warnings,
+        "guessed_defaults": sorted(guesses),
         "inputs": inputs,
     }
     with atomic_file(folder / SUMMARY_NAME) as tmp:
         write_summary(tmp, summary)
     sections = [
-        *inputs_warnings_sections(_shown_axes(inputs), warnings, "sweep"),
+        *inputs_warnings_sections(_shown_axes(inputs), warnings, "sweep", guesses),
         Section(
             "Sweep",
             paragraphs=[
