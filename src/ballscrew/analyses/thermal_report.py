@@ -13,6 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
+from matplotlib.ticker import MaxNLocator
 from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.result import Figure, Section, Table
@@ -360,7 +361,9 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
         levels = np.linspace(temp.min(), temp.max() + 1e-9, 30)
         for ax in axes:
             image = ax.tricontourf(tri, temp, levels=levels, cmap="inferno")
-        fig.colorbar(image, ax=axes, label="steady temperature [°C]")
+        bar = fig.colorbar(image, ax=axes, label="steady temperature [°C]")
+        bar.locator = MaxNLocator(8)  # round ticks, not the 30 contour levels (29.859 °C)
+        bar.update_ticks()
     else:
         ex = disc.extra
         amb = result.ambient_temperature
