@@ -231,6 +231,7 @@ DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
     "thermal_conductivity": (("W/(m·K)", 1.0),),
     "energy": (("J", 1.0), ("kJ", 1e3), ("MJ", 1e6)),
     "revolutions": (("rev", 1.0),),
+    "percent": (("%", 0.01),),
     "dimensionless": (("", 1.0),),
 }
 
@@ -284,8 +285,10 @@ def display_kind(unit: str, key: str = "") -> str | None:
     """The display kind of a value in SI ``unit`` named ``key`` (a dotted summary key or a case
     field); None when the unit has no engineering display. An absolute temperature (a key that
     names a temperature, not a rise) is in °C, a worn depth or elongation in µm, a count of
-    revolutions in rev."""
+    revolutions in rev, a relative difference in %."""
     name = key.rsplit(".", 1)[-1].lower()
+    if not unit and "relative_difference" in key.lower():
+        return "percent"
     if unit == "K" and "temperature" in name and not any(w in name for w in _DIFFERENCES):
         return "temperature"
     if not unit and ("revolutions" in name or name.endswith("_life")):
