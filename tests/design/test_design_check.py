@@ -191,3 +191,5 @@ def test_margins_read_in_engineering_units() -> None:
     assert unit == "rpm" and demand == pytest.approx(1000.0)
     assert rows["axial load vs 0.5 × buckling load"][3] == "kN"
     assert result.summary()["margins"]["speed"]["demand"]["unit"] == "rad/s"
+    values = dict(next(s for s in result.report() if s.title == "Design values").tables[0].rows)
+    assert values["preload drag torque [N·m]"] == pytest.approx(result.preload_drag_torque)

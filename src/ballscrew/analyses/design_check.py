@@ -257,7 +257,7 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
             design.SPEED_SAFETY * check["critical_speed"],
             "rad/s",
         ),
-        Margin("dn", "d·n vs its limit", check["dn"], spec.dn_limit, "mm rpm"),
+        Margin("dn", "d·n vs its limit", check["dn"], spec.dn_limit, "mm·rpm"),
         Margin(
             "buckling",
             "axial load vs 0.5 × buckling load",
