@@ -81,3 +81,9 @@ def test_a_zero_length_reads_in_millimetres():
     assert format_quantity(0.0, "length") == "0 mm"
     assert to_display(np.array([0.0, 2e-3]), "length")[1] == "mm"  # nonzero: as before
     assert format_quantity(0.0, "force") == "0 N"
+
+
+def test_flows_and_kinematic_viscosities_read_in_their_engineering_units():
+    """A coolant flow read '3.333×10⁻⁵ m³/s' and an air viscosity '1.589×10⁻⁵ m²/s'."""
+    assert format_quantity(2e-3 / 60.0, "m^3/s") == "2 L/min"
+    assert format_quantity(1.589e-5, "m^2/s") == "15.89 mm²/s"

@@ -232,6 +232,8 @@ DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
     "energy": (("J", 1.0), ("kJ", 1e3), ("MJ", 1e6)),
     "revolutions": (("rev", 1.0),),
     "percent": (("%", 0.01),),
+    "kinematic_viscosity": (("mm²/s", 1e-6),),
+    "volume_flow": (("L/min", 1e-3 / 60.0),),
     "dimensionless": (("", 1.0),),
 }
 
@@ -272,6 +274,8 @@ KIND_OF_UNIT: dict[str, str] = {
     "W/(m^2*K)": "heat_transfer_coefficient",
     "W/(m*K)": "thermal_conductivity",
     "rev": "revolutions",
+    "m^2/s": "kinematic_viscosity",
+    "m^3/s": "volume_flow",
     "": "dimensionless",
 }
 
