@@ -193,3 +193,12 @@ def test_margins_read_in_engineering_units() -> None:
     assert result.summary()["margins"]["speed"]["demand"]["unit"] == "rad/s"
     values = dict(next(s for s in result.report() if s.title == "Design values").tables[0].rows)
     assert values["preload drag torque [N·m]"] == pytest.approx(result.preload_drag_torque)
+
+
+def test_the_headlines_give_the_life_in_hours() -> None:
+    """The console gave the rating life only in revolutions (3.278×10⁸ rev)."""
+    from ballscrew.results.headlines import headline_keys, headline_rows
+
+    summary = design_check(case_from_dict(raw_case())).summary()
+    rows = dict(headline_rows(summary, headline_keys("check")))
+    assert rows["life hours"].endswith(" h") and rows["rating life"].endswith(" rev")
