@@ -23,6 +23,7 @@ def test_guesses_are_the_defaults_labelled_so_that_the_case_left_alone():
     guesses = guessed_defaults(case)
     assert "friction.circuits" in guesses and "GUESS" in guesses["friction.circuits"]
     assert "medium.density_15" in guesses  # ASSUMED
+    assert "friction.hysteresis" in guesses
     assert "friction.rolling_friction" not in guesses  # a default, but not labelled a guess
     given = load_case(EXAMPLE, {"friction.circuits": 3})
     assert "friction.circuits" not in guessed_defaults(given)
