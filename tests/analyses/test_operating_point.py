@@ -169,3 +169,20 @@ def test_the_report_tells_the_screw_torque_from_its_friction_part(case):
     work = 2000.0 * case.screw.lead / (2 * math.pi)
     part = rows["friction part of T = heat / ω [N·m]"]
     assert part == pytest.approx(point.friction_torque - work, rel=1e-9)
+
+
+def test_a_steady_field_draws_no_empty_time_axis(case, tmp_path, monkeypatch):
+    """Without a transient the elongation figure had an empty 0–1 min time axis."""
+    import matplotlib.pyplot as plt
+
+    from ballscrew.analyses import thermal_report
+
+    point = operating_point(case, speed=1500 * RPM)
+    drawn = []
+    original = plt.Figure.savefig
+    monkeypatch.setattr(
+        plt.Figure, "savefig", lambda fig, *a, **k: drawn.append(fig) or original(fig, *a, **k)
+    )
+    thermal_report.elongation_plot(point.field, tmp_path / "e.png")
+    [ax] = drawn[0].axes
+    assert ax.get_xlabel() == "z [mm]" and "µm" in ax.get_title()

@@ -428,19 +428,24 @@ def elongation_plot(result: ThermalField, path: Path) -> Path:
     """Thermal elongation over time and the steady axial profile of the screw."""
     sol = result.solution
     t = sol.transient
-    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6), layout="constrained")
-    if t is not None:
+    if t is None:  # steady only: the profile, the elongation in the title (no empty time axis)
+        fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
+        profile = ax
+        ax.set_title(f"steady elongation ΔL = α∫ΔT dz = {result.elongation * 1e6:.4g} µm")
+    else:
+        fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6), layout="constrained")
         axes[0].plot(t.time / 60.0, t.elongation * 1e6, "b-")
-    axes[0].axhline(result.elongation * 1e6, color="b", ls="--", lw=0.8, label="steady")
-    axes[0].set_xlabel("time [min]")
-    axes[0].set_ylabel("elongation ΔL = α∫ΔT dz [µm]")
-    legend_outside(axes[0], fontsize=7)
-    axes[0].grid(alpha=0.3)
+        axes[0].axhline(result.elongation * 1e6, color="b", ls="--", lw=0.8, label="steady")
+        axes[0].set_xlabel("time [min]")
+        axes[0].set_ylabel("elongation ΔL = α∫ΔT dz [µm]")
+        legend_outside(axes[0], fontsize=7)
+        axes[0].grid(alpha=0.3)
+        profile = axes[1]
     z = sol.discretisation.axis_z * 1e3
-    axes[1].plot(z, sol.axis, "r-")
-    axes[1].set_xlabel("z [mm]")
-    axes[1].set_ylabel("steady screw mean rise [K]", color="r")
-    axes[1].grid(alpha=0.3)
+    profile.plot(z, sol.axis, "r-")
+    profile.set_xlabel("z [mm]")
+    profile.set_ylabel("steady screw mean rise [K]", color="r")
+    profile.grid(alpha=0.3)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -467,7 +472,9 @@ def figures(result: ThermalField) -> list[Figure]:
         ),
         Figure(
             "elongation",
-            "Thermal elongation over time and the steady axial temperature profile.",
+            "Thermal elongation over time and the steady axial temperature profile."
+            if result.solution.transient is not None
+            else "Steady axial temperature profile of the screw and its thermal elongation.",
             partial(elongation_plot, result),
         ),
     ]
