@@ -202,6 +202,31 @@ def _point_warnings(ds: xr.Dataset) -> list[str]:
     ]
 
 
+#: Most rows of the report's table of every point (the rest are in sweep.nc and the exports).
+MAX_TABLE_ROWS = 200
+
+
+def _value_section(ds: xr.Dataset, names: Sequence[str]) -> Section:
+    """Every point's swept values and results in engineering units, one row each."""
+    dims = list(ds["failed"].dims)
+    axes = [_axis(ds, d) for d in dims]
+    results = [_axis(ds, n) for n in names]
+    rows = [
+        [float(values[i]) for (values, _), i in zip(axes, idx, strict=True)]
+        + [float(values[idx]) for values, _ in results]
+        for idx in np.ndindex(ds["failed"].shape)
+    ]
+    shown = "" if len(rows) <= MAX_TABLE_ROWS else f" The first {MAX_TABLE_ROWS} are shown."
+    return Section(
+        "Values at every point",
+        paragraphs=[
+            f"{len(rows)} points in engineering units; nan: a failed point or a value the "
+            f"analysis does not give there. All of them: sweep.nc or --export csv.{shown}"
+        ],
+        tables=[([label for _, label in axes + results], rows[:MAX_TABLE_ROWS])],
+    )
+
+
 def _write_files(
     ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any], guesses: dict[str, str]
 ) -> None:
@@ -257,6 +282,7 @@ def _write_files(
             tables=[(["point", "error"], failures)] if failures else [],
             figures=figures,
         ),
+        _value_section(ds, [n for n in ds.data_vars if n not in ("error", "failed", "warnings")]),
     ]
     with atomic_file(folder / "report.html") as tmp:
         write_report(
