@@ -658,8 +658,9 @@ def _coupling_text(result: ThermalField) -> tuple[str, ...]:
     viscosity = "a dry contact" if math.isnan(c.viscosity) else f"η = {1e3 * c.viscosity:.4g} mPa s"
     return (
         f"The balls' heat is that of the coupled operating point ({c.friction_model} friction "
-        f"model): {c.friction_torque:.4g} N·m, {c.heat:.4g} W ({c.heat_to_screw:.4g} W into the "
-        f"screw) with the lubricant at the contact temperature {_c(c.contact_temperature):.4g} °C "
+        f"model): screw torque {c.friction_torque:.4g} N·m, heat {c.heat:.4g} W "
+        f"({c.heat_to_screw:.4g} W into the screw) with the lubricant at the contact "
+        f"temperature {_c(c.contact_temperature):.4g} °C "
         f"({viscosity}), {c.iterations} fixed-point iteration{'s' * (c.iterations != 1)} on the "
         f"{result.model} model.",
     )
