@@ -65,12 +65,16 @@ def test_report_and_summary_read_in_rpm_with_the_points_warnings(coarse_case, tm
     assert "sweep_warnings.png" not in {p.name for p in folder.iterdir()}
 
 
-def test_the_sweep_reports_the_guessed_defaults_of_its_case(coarse_case, tmp_path):
+def _two_speeds(case, tmp_path):
+    """The folder of a 500/1000 rpm sweep of the stand-in analysis."""
     axis = parse_axis("operating.speed=500 rpm,1000 rpm")
-    records = [run_point(_fast_warns, coarse_case, {axis.key: v}) for v in axis.values]
+    records = [run_point(_fast_warns, case, {axis.key: v}) for v in axis.values]
     (tmp_path / "sweep").mkdir()
-    folder = write_sweep(assemble([axis], records, "test", coarse_case), tmp_path / "sweep", 2,
-                         coarse_case, [axis])  # fmt: skip
+    return write_sweep(assemble([axis], records, "test", case), tmp_path / "sweep", 2, case, [axis])
+
+
+def test_the_sweep_reports_the_guessed_defaults_of_its_case(coarse_case, tmp_path):
+    folder = _two_speeds(coarse_case, tmp_path)
     summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
     assert "case.friction.circuits" in summary["guessed_defaults"]
     assert "<td>case.friction.circuits</td>" in (folder / "report.html").read_text("utf-8")
@@ -78,12 +82,7 @@ def test_the_sweep_reports_the_guessed_defaults_of_its_case(coarse_case, tmp_pat
 
 def test_the_report_tabulates_every_point_in_engineering_units(coarse_case, tmp_path):
     """The sweep report had plots only: no number of any point could be read from it."""
-    axis = parse_axis("operating.speed=500 rpm,1000 rpm")
-    records = [run_point(_fast_warns, coarse_case, {axis.key: v}) for v in axis.values]
-    (tmp_path / "sweep").mkdir()
-    folder = write_sweep(assemble([axis], records, "test", coarse_case), tmp_path / "sweep", 2,
-                         coarse_case, [axis])  # fmt: skip
-    report = (folder / "report.html").read_text("utf-8")
+    report = (_two_speeds(coarse_case, tmp_path) / "report.html").read_text("utf-8")
     assert "<h2>Values at every point</h2>" in report
     assert "<th>speed [rpm]</th><th>heat [W]</th>" in report
     assert "<td>1000</td><td>104.7</td>" in report  # the stand-in's heat is ω in W
