@@ -51,6 +51,7 @@ def test_contact_writes_a_complete_results_folder(tmp_path, example, request):
         assert fields["screw_x"].attrs["units"] == "m"
     html = (out / "report.html").read_text()
     assert "data:image/png;base64," in html and "Hertz" in html
+    assert "good to half a cell (screw " in html  # '+0.000 %' semi-axes are grid-limited
 
 
 BAD_EDITS = [
@@ -233,3 +234,16 @@ def test_calibrate_refuses_a_bad_csv(tmp_path, wear_case_path):
     result = run("calibrate", wear_case_path, "--measured", bad, "--out", tmp_path / "o")
     assert result.exit_code == 2
     assert "bad.csv" in result.output and "Traceback" not in result.output
+
+
+def test_python_dash_m_runs_the_command_line(monkeypatch, capsys):
+    """``python -m ballscrew`` is the ``ballscrew`` entry point (it was 'cannot be directly
+    executed')."""
+    import runpy
+    import sys
+
+    monkeypatch.setattr(sys, "argv", ["python -m ballscrew", "--version"])
+    with pytest.raises(SystemExit) as exit_:
+        runpy.run_module("ballscrew", run_name="__main__")
+    assert exit_.value.code == 0
+    assert capsys.readouterr().out.startswith("ballscrew ")

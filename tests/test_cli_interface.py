@@ -211,3 +211,20 @@ def test_the_examples_raise_no_plausibility_warning():
 
     for path in sorted(EXAMPLES.glob("*.toml")):
         assert implausible_values(ballscrew.load_case(path)) == [], path.name
+
+
+def test_every_command_list_line_is_a_whole_sentence():
+    """The list read 'Fit the wear model (…) to one measured history, or' (cut mid-sentence)."""
+    for name in COMMANDS:
+        first_line = (GROUP.commands[name].help or "").split("\n")[0].strip()
+        assert first_line.endswith("."), name
+
+
+def test_sweep_help_names_the_analyses_and_options_their_units():
+    from ballscrew.sweep.registry import SWEEPABLE
+
+    text = flat(run("sweep", "--help").output)
+    assert all(name in text for name in SWEEPABLE)
+    assert '"2 kN" or 2000 (N)' in flat(run("operating-point", "--help").output)
+    surface = flat(run("surface", "--help").output)
+    assert "(a bare number is in m)" in surface and "(default: the spacing)" in surface

@@ -112,3 +112,18 @@ def test_turns_notation() -> None:
     assert parse_turns("2.5x2") == (2.5, 2)
     assert parse_turns("1×4") == (1.0, 4)
     assert parse_turns("3") == (3.0, 1)
+
+
+def test_the_stated_load_rating_is_the_one_the_check_uses(generated) -> None:
+    """The comment said 'here C_a = 60.5 kN' while ``ballscrew check`` computed 49.12 kN (the
+    hardness and accuracy factors of the shaft steel and grade)."""
+    import re
+
+    from ballscrew.analyses.design_check import load_ratings
+    from ballscrew.analyses.parameters import ScrewParameters
+
+    case = case_from_dict(tomllib.loads(generated))
+    ca, _, computed = load_ratings(case, ScrewParameters.from_case(case))
+    assert "dynamic_load_rating" in computed
+    stated = re.search(r"here C_a = ([\d.]+) kN", generated)
+    assert stated is not None and float(stated.group(1)) == pytest.approx(ca * 1e-3, rel=2e-3)

@@ -73,3 +73,17 @@ def test_plot_axes_get_values_and_the_unit_symbol():
     assert symbol == "µm" and values == pytest.approx([0, 10, 50])
     celsius, symbol = to_display([293.15, 303.15], "temperature")
     assert symbol == "°C" and celsius == pytest.approx([20, 30])
+
+
+def test_a_zero_length_reads_in_millimetres():
+    """A zero stroke or rarefaction length was shown as '0 nm' in the report's inputs."""
+    assert to_display(0.0, "length")[1] == "mm"
+    assert format_quantity(0.0, "length") == "0 mm"
+    assert to_display(np.array([0.0, 2e-3]), "length")[1] == "mm"  # nonzero: as before
+    assert format_quantity(0.0, "force") == "0 N"
+
+
+def test_flows_and_kinematic_viscosities_read_in_their_engineering_units():
+    """A coolant flow read '3.333×10⁻⁵ m³/s' and an air viscosity '1.589×10⁻⁵ m²/s'."""
+    assert format_quantity(2e-3 / 60.0, "m^3/s") == "2 L/min"
+    assert format_quantity(1.589e-5, "m^2/s") == "15.89 mm²/s"

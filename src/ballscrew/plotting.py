@@ -145,6 +145,18 @@ def legend_outside(ax: plt.Axes, **kwargs: object) -> None:
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, **kwargs)
 
 
+def revolutions_axis(revolutions: np.ndarray) -> tuple[float, str]:
+    """(divisor, label) of a revolution count for a plot axis: a power of 10³ of the largest,
+    ``screw revolutions [10⁶ rev]``, so that matplotlib puts no bare ``1e6`` beside the axis."""
+    revolutions = np.asarray(revolutions, dtype=float)
+    top = float(np.nanmax(np.abs(revolutions))) if revolutions.size else 0.0
+    power = 3 * int(np.floor(np.log10(top) / 3)) if top >= 1e4 else 0
+    if power == 0:
+        return 1.0, "screw revolutions"
+    exponent = str(power).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    return 10.0**power, f"screw revolutions [10{exponent} rev]"
+
+
 def zero_noise(values: np.ndarray, tolerance: float) -> np.ndarray:
     """``values`` with every entry smaller in magnitude than ``tolerance`` set to 0.
 

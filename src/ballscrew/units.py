@@ -231,8 +231,14 @@ DISPLAY_UNITS: dict[str, tuple[tuple[str, float], ...]] = {
     "thermal_conductivity": (("W/(m·K)", 1.0),),
     "energy": (("J", 1.0), ("kJ", 1e3), ("MJ", 1e6)),
     "revolutions": (("rev", 1.0),),
+    "percent": (("%", 0.01),),
+    "kinematic_viscosity": (("mm²/s", 1e-6),),
+    "volume_flow": (("L/min", 1e-3 / 60.0),),
     "dimensionless": (("", 1.0),),
 }
+
+#: Display unit of a zero of each kind whose smallest unit would read oddly (0 nm).
+ZERO_UNITS: dict[str, str] = {"length": "mm"}
 
 #: Largest magnitude (SI) of each kind that is solver noise, not data: far below any physical
 #: value of a ball screw (1e-9 rpm, 1e-15 m) and far above float round-off of typical values.
@@ -268,6 +274,8 @@ KIND_OF_UNIT: dict[str, str] = {
     "W/(m^2*K)": "heat_transfer_coefficient",
     "W/(m*K)": "thermal_conductivity",
     "rev": "revolutions",
+    "m^2/s": "kinematic_viscosity",
+    "m^3/s": "volume_flow",
     "": "dimensionless",
 }
 
@@ -281,8 +289,10 @@ def display_kind(unit: str, key: str = "") -> str | None:
     """The display kind of a value in SI ``unit`` named ``key`` (a dotted summary key or a case
     field); None when the unit has no engineering display. An absolute temperature (a key that
     names a temperature, not a rise) is in °C, a worn depth or elongation in µm, a count of
-    revolutions in rev."""
+    revolutions in rev, a relative difference in %."""
     name = key.rsplit(".", 1)[-1].lower()
+    if not unit and "relative_difference" in key.lower():
+        return "percent"
     if unit == "K" and "temperature" in name and not any(w in name for w in _DIFFERENCES):
         return "temperature"
     if not unit and ("revolutions" in name or name.endswith("_life")):
@@ -322,8 +332,11 @@ def display_unit(kind: str, magnitude: float = 1.0) -> tuple[str, float]:
     ``kind`` is a key of :data:`DISPLAY_UNITS` or an SI unit of :data:`KIND_OF_UNIT`. For
     ``temperature`` the values must first be shifted by −273.15 (see :func:`to_display`).
     """
-    units = DISPLAY_UNITS[KIND_OF_UNIT.get(kind, kind)]
+    kind = KIND_OF_UNIT.get(kind, kind)
+    units = DISPLAY_UNITS[kind]
     size = abs(float(magnitude))
+    if size == 0.0 and kind in ZERO_UNITS:  # a zero stroke reads 0 mm, not 0 nm
+        return next(u for u in units if u[0] == ZERO_UNITS[kind])
     chosen = units[0]
     for symbol, scale in units:
         if size >= scale * (1.0 - 1e-12):
@@ -366,7 +379,7 @@ def format_quantity(
     if kind == "temperature":
         number, symbol = value - _CELSIUS, "°C"
     elif abs(value) < floor:
-        number, symbol = 0.0, display_unit(kind)[0]
+        number, symbol = 0.0, display_unit(kind, 0.0)[0]
     else:
         symbol, scale = display_unit(kind, value)
         number = value / scale

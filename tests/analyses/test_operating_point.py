@@ -141,3 +141,48 @@ def test_a_cooled_shaft_reports_its_coolant_outlet(case):
     assert inlet < outlet["value"] < point.nut_temperature
     solid = operating_point(case, speed=1500 * RPM, axial_load=2000.0)
     assert "coolant_outlet_temperature" not in solid.summary()
+
+
+def test_the_steady_field_of_a_point_reads_cleanly(case):
+    """The operating-point report showed 'nan' for the sensors' final temperatures, the heat
+    balance as '1.33e-15' and 'the fixed torque … (not coupled)' for the coupled point's heat."""
+    from ballscrew.analyses import thermal_report
+
+    point = operating_point(case, speed=1500 * RPM)
+    sections = {s.title: s for s in thermal_report.sections(point.field)}
+    heat = sections["Heat sources (Q2–Q4)"].paragraphs[0]
+    assert "not coupled" not in heat and "source = 'operating_point'" in heat
+    sensors = sections["Results"].tables[1].rows
+    assert sensors and all(row[-2:] == ("–", "–") for row in sensors)
+    balance = dict(sections["Heat balance"].tables[0].rows)
+    assert "e-" not in balance["steady relative error"]
+
+
+def test_the_report_tells_the_screw_torque_from_its_friction_part(case):
+    """'friction torque' is the screw torque with the work on the load; the report said
+    'friction torque [N·m] 3.727' at 2 kN where 0.54 N·m of it is friction."""
+    from ballscrew.analyses import operating_point_report
+
+    point = operating_point(case, speed=1500 * RPM, axial_load=2000.0)
+    rows = dict(operating_point_report.sections(point)[0].tables[0].rows)
+    assert rows["screw torque T, work F_a·L/2π included [N·m]"] == point.friction_torque
+    work = 2000.0 * case.screw.lead / (2 * math.pi)
+    part = rows["friction part of T = heat / ω [N·m]"]
+    assert part == pytest.approx(point.friction_torque - work, rel=1e-9)
+
+
+def test_a_steady_field_draws_no_empty_time_axis(case, tmp_path, monkeypatch):
+    """Without a transient the elongation figure had an empty 0–1 min time axis."""
+    import matplotlib.pyplot as plt
+
+    from ballscrew.analyses import thermal_report
+
+    point = operating_point(case, speed=1500 * RPM)
+    drawn = []
+    original = plt.Figure.savefig
+    monkeypatch.setattr(
+        plt.Figure, "savefig", lambda fig, *a, **k: drawn.append(fig) or original(fig, *a, **k)
+    )
+    thermal_report.elongation_plot(point.field, tmp_path / "e.png")
+    [ax] = drawn[0].axes
+    assert ax.get_xlabel() == "z [mm]" and "µm" in ax.get_title()

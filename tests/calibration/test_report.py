@@ -110,3 +110,18 @@ def test_command_writes_the_folder(
         [str(wear_case_path), "--measured", str(bad).replace("bad", "none"), "-o", str(out)],
     )
     assert run.exit_code == 2
+
+
+def test_the_report_states_each_correlation_once() -> None:
+    """The (ln K, torque scale) correlation was shown twice, once as
+    'correlation (wear_coefficient,torque_scale)'."""
+    from ballscrew.calibration.report import sections
+
+    from .test_fit import bench
+
+    data = bench("friction_torque", seed=3, scale=1.25)
+    result = fit_wear_coefficient(SyntheticModel(), data, fit_torque_scale=True)
+    labels = [row[0] for row in sections(result)[0].tables[0].rows]
+    assert [label for label in labels if label.startswith("correlation")] == [
+        "correlation (ln K, torque scale)"
+    ]

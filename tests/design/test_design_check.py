@@ -172,3 +172,33 @@ def test_fixed_fixed_shaft_stiffness_uses_the_span() -> None:
     mid = shaft(mounting="fixed-fixed")
     assert shaft(mounting="fixed-fixed", nut_distance="0.65 m") == pytest.approx(mid)
     assert shaft(mounting="fixed-free", nut_distance="0.65 m") == pytest.approx(mid / 2)
+
+
+def test_margins_read_in_engineering_units() -> None:
+    """The margins table showed the speed in rad/s and the red-life warning as '2e+04 against
+    1.137e+04 h'; summary.json keeps SI."""
+    raw = raw_case(required_life="1e6 h")
+    raw["design"]["unsupported_length"] = "4 m"
+    with pytest.warns(UserWarning):
+        result = design_check(case_from_dict(raw))
+    life = next(w for w in result.warnings if w.startswith("required life"))
+    assert life.startswith("required life vs rating life: 1×10⁶ h against ") and "e+" not in life
+    speed = next(w for w in result.warnings if w.startswith("speed vs"))
+    assert speed.startswith("speed vs 0.8 × critical speed: 1000 rpm against ")
+    table = next(s for s in result.report() if s.title == "Margins").tables[0]
+    rows = {row[0]: row for row in table.rows}
+    _, demand, _, unit = rows["speed vs 0.8 × critical speed"][:4]
+    assert unit == "rpm" and demand == pytest.approx(1000.0)
+    assert rows["axial load vs 0.5 × buckling load"][3] == "kN"
+    assert result.summary()["margins"]["speed"]["demand"]["unit"] == "rad/s"
+    values = dict(next(s for s in result.report() if s.title == "Design values").tables[0].rows)
+    assert values["preload drag torque [N·m]"] == pytest.approx(result.preload_drag_torque)
+
+
+def test_the_headlines_give_the_life_in_hours() -> None:
+    """The console gave the rating life only in revolutions (3.278×10⁸ rev)."""
+    from ballscrew.results.headlines import headline_keys, headline_rows
+
+    summary = design_check(case_from_dict(raw_case())).summary()
+    rows = dict(headline_rows(summary, headline_keys("check")))
+    assert rows["life hours"].endswith(" h") and rows["rating life"].endswith(" rev")

@@ -66,3 +66,13 @@ def test_whirling_warning_needs_a_length(ref_case):
         warnings.simplefilter("error")
         ballscrew.ball_kinematics(long, speed=0.99 * allowed)  # below both limits
         ballscrew.ball_kinematics(ref_case, speed=1.01 * allowed)  # no length, no whirling check
+
+
+def test_speed_warnings_read_in_rpm(ref_case):
+    """The limits were stated in rad/s ('speed 314.2 rad/s gives d·n = …'); an engineer reads rpm
+    and mm."""
+    with pytest.warns(SpeedLimitWarning, match=r"^speed 3000 rpm gives d·n = 120000 mm·rpm"):
+        ballscrew.ball_kinematics(ref_case, speed=3000 * RPM)
+    long = updated(ref_case, kinematics={"unsupported_length": 3.0, "mounting": "fixed-free"})
+    with pytest.warns(SpeedLimitWarning, match=r"rpm \(fixed-free, l = 3 m, d_r = 33\.48 mm\)"):
+        ballscrew.ball_kinematics(long, speed=1000 * RPM)

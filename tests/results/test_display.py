@@ -163,3 +163,17 @@ def test_the_nut_forces_mark_the_lift_off(tmp_path, monkeypatch):
     )
     plot_nut_forces(ds, tmp_path / "forces.png")
     assert lines == [4.0]  # kN, the axis unit
+
+
+def test_a_margin_ratio_reads_as_a_margin():
+    """The check's headline read 'speed: ratio'."""
+    assert readable("margins.speed.ratio") == "speed margin (capacity/demand)"
+
+
+def test_a_revolution_axis_has_its_power_in_the_label():
+    """The wear plots' x axis read 'screw revolutions' with a bare '1e6' beside it."""
+    from ballscrew.plotting import revolutions_axis
+
+    assert revolutions_axis(np.array([0.0, 1.44e6])) == (1e6, "screw revolutions [10⁶ rev]")
+    assert revolutions_axis(np.array([0.0, 5e4])) == (1e3, "screw revolutions [10³ rev]")
+    assert revolutions_axis(np.array([0.0, 2000.0])) == (1.0, "screw revolutions")

@@ -76,3 +76,11 @@ def test_label_of_is_kept_as_readable():
     assert "label_of" in headlines.__all__
     for key in ("contacts.screw.numerical.peak_pressure", "nuts.nut1.orbital_speed", "F1"):
         assert label_of(key) == readable(key)
+
+
+def test_a_relative_difference_reads_in_percent():
+    """The contact headline read 'relative difference to hertz: peak pressure  0.001316'."""
+    entry = {"value": 0.001316, "unit": ""}
+    key = "contacts.screw.relative_difference_to_hertz.peak_pressure"
+    assert format_entry(key, entry) == "0.1316 %"
+    assert format_entry("static_safety_factor", {"value": 28.91, "unit": ""}) == "28.91"

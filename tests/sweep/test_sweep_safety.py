@@ -88,11 +88,11 @@ def test_sweep_folder_states_its_inputs_and_failed_points(tmp_path, gao_case_pat
         prepare_sweep_folder(out)
         write_sweep(data, out, 2, case, [parse_axis("operating.axial_load=0,1")])
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["warnings"] == ["point F=1 failed: InputError: boom"]
+    assert summary["warnings"] == ["point F=1 N failed: InputError: boom"]  # with its unit
     assert summary["inputs"]["analysis"] == "tcr"
     assert summary["inputs"]["axes"]["F"] == {"values": [0.0, 1.0], "unit": "N"}
     assert summary["inputs"]["case"]["operating"]["preload"]["unit"] == "N"
     assert summary["failed"] == 1 and summary["axes"]["F"]["unit"] == "N"  # as before
     report = (out / "report.html").read_text()
     assert "<h2>Inputs</h2>" in report and "operating.preload" in report
-    assert "point F=1 failed: InputError: boom" in report
+    assert "point F=1 N failed: InputError: boom" in report

@@ -57,6 +57,7 @@ def test_thermal_writes_a_complete_results_folder(tmp_path, gao_case_path, model
         assert fields.sizes["time"] == 19
     html = (out / "report.html").read_text()
     assert "data:image/png;base64," in html and "Heat balance" in html
+    assert "friction model): screw torque 0.4231 N·m, heat 44.31 W" in html  # 'torque' named
 
 
 def test_case_without_thermal_section_exits_2(tmp_path, gao_case_path):

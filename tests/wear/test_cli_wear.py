@@ -58,7 +58,7 @@ def test_wear_writes_a_complete_results_folder(tmp_path) -> None:
     assert h["unit"] == "m" and 0.0 < h["value"] < 1e-6
     assert summary["final_preload"]["value"] < summary["initial_preload"]["value"]
     assert summary["wear_coefficient"]["value"] == pytest.approx(1.304e-4)
-    assert "h_max = 2.43 µm at 1.44e6 rev" in summary["wear_coefficient"]["source"]
+    assert "h_max = 2.43 µm at 1.44×10⁶ rev" in summary["wear_coefficient"]["source"]
     with xr.open_dataset(out / "history.nc", engine="h5netcdf") as ds:
         assert ds["wear_depth"].attrs["units"] == "m"
         assert ds["preload"].attrs["units"] == "N"

@@ -82,6 +82,7 @@ for _analysis in (
         scalars=design_scalars,
         headlines=(
             "rating_life",
+            "life_hours",
             "static_safety_factor",
             "axial_stiffness",
             "margins.speed.ratio",

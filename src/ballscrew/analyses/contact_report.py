@@ -180,6 +180,11 @@ def sections(result: BallContacts) -> list[Section]:
     iterations = ", ".join(
         f"{side} {data['contacts'][side]['numerical']['iterations']}" for side in SIDES
     )
+    cells = ", ".join(
+        f"{side} {0.5e6 * result.contact(side).solution.dx:.3g} × "
+        f"{0.5e6 * result.contact(side).solution.dy:.3g} µm"
+        for side in SIDES
+    )
     return [
         Section(
             "Operating point",
@@ -211,7 +216,10 @@ def sections(result: BallContacts) -> list[Section]:
                 "rectangular-cell influence coefficients, on the "
                 f"{case.numerics.gap_model} raceway gap. Hertz: exact elliptical solution of "
                 "the quadratic gap. The difference is the non-Hertzian effect of the helical "
-                f"raceway plus discretisation. CG iterations: {iterations}.",
+                f"raceway plus discretisation. CG iterations: {iterations}. The numerical "
+                "semi-axes are the half-extents of the loaded cells, good to half a cell "
+                f"({cells}); on a grid sized to the Hertz ellipse a difference below that is "
+                "not resolved.",
             ),
             tables=(
                 Table(

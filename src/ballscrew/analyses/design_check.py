@@ -31,6 +31,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
+from ballscrew.units import KIND_OF_UNIT, format_number, format_quantity
 
 __all__ = [
     "AMBER_BAND",
@@ -256,7 +257,7 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
             design.SPEED_SAFETY * check["critical_speed"],
             "rad/s",
         ),
-        Margin("dn", "d·n vs its limit", check["dn"], spec.dn_limit, "mm rpm"),
+        Margin("dn", "d·n vs its limit", check["dn"], spec.dn_limit, "mm·rpm"),
         Margin(
             "buckling",
             "axial load vs 0.5 × buckling load",
@@ -306,6 +307,13 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     return tuple(out)
 
 
+def _shown(value: float, unit: str) -> str:
+    """SI ``value`` in ``unit`` in engineering units (rpm, kN), four significant figures."""
+    if unit in KIND_OF_UNIT:
+        return format_quantity(value, unit)
+    return f"{format_number(value)} {unit}".rstrip()
+
+
 def _warn(
     margins: tuple[Margin, ...], values: dict, computed: tuple[str, ...], spec: DesignSpec
 ) -> None:
@@ -325,7 +333,7 @@ def _warn(
     for m in margins:
         if m.status == "red":
             warnings.warn(
-                f"{m.label}: {m.demand:.4g} against {m.capacity:.4g} {m.unit}".strip(),
+                f"{m.label}: {_shown(m.demand, m.unit)} against {_shown(m.capacity, m.unit)}",
                 DesignWarning,
                 stacklevel=3,
             )

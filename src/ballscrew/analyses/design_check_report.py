@@ -20,6 +20,7 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
 from ballscrew.plotting import legend_outside
+from ballscrew.units import KIND_OF_UNIT, to_display
 
 if TYPE_CHECKING:
     from ballscrew.analyses.design_check import DesignCheck
@@ -40,14 +41,14 @@ _VALUES: dict[str, tuple[str, str, float, str]] = {
     "critical_speed": ("rad/s", "critical speed (Euler beam)", 60.0 / (2.0 * math.pi), "rpm"),
     "buckling_load": ("N", "buckling load (Euler)", 1e-3, "kN"),
     "permissible_tension": ("N", "permissible tension/compression", 1e-3, "kN"),
-    "dn": ("", "d·n at the highest speed", 1.0, "mm rpm"),
+    "dn": ("", "d·n at the highest speed", 1.0, "mm·rpm"),
     "contact_stiffness": ("N/m", "nut stiffness, Hertz contacts only", 1e-6, "N/µm"),
     "nut_stiffness": ("N/m", "nut stiffness, contacts and bodies", 1e-6, "N/µm"),
     "catalogue_nut_stiffness": ("N/m", "nut stiffness, catalogue 0.8 K", 1e-6, "N/µm"),
     "shaft_stiffness": ("N/m", "shaft stiffness", 1e-6, "N/µm"),
     "axial_stiffness": ("N/m", "axial stiffness, nut and shaft", 1e-6, "N/µm"),
     "drive_stiffness": ("N/m", "drive stiffness with bearings", 1e-6, "N/µm"),
-    "preload_drag_torque": ("N*m", "preload drag torque", 1e3, "N mm"),
+    "preload_drag_torque": ("N*m", "preload drag torque", 1.0, "N·m"),
     "thermal_elongation": ("m", "thermal elongation", 1e6, "µm"),
     "thermal_pretension": ("N", "pretension for the temperature rise", 1e-3, "kN"),
 }
@@ -303,10 +304,21 @@ def _ratings_note(result: DesignCheck) -> str:
     )
 
 
+def _engineering(demand: float, capacity: float, unit: str) -> tuple[float, float, str]:
+    """(demand, capacity, unit) of a margin in one engineering unit: rpm, kN (SI in, as
+    ``summary.json`` keeps them)."""
+    kind = KIND_OF_UNIT.get(unit)
+    if kind is None:
+        return demand, capacity, unit
+    shown, symbol = to_display(np.array([demand, capacity]), kind)
+    return float(shown[0]), float(shown[1]), symbol
+
+
 def sections(result: DesignCheck) -> list[Section]:
     """Margins (green/amber/red), design values, stiffness curve and life."""
     margins = tuple(
-        (m.label, m.demand, m.capacity, m.unit, m.ratio, m.status.upper()) for m in result.margins
+        (m.label, *_engineering(m.demand, m.capacity, m.unit), m.ratio, m.status.upper())
+        for m in result.margins
     )
     s = result.spectrum
     spectrum = tuple(

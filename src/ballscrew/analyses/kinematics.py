@@ -49,6 +49,7 @@ from ballscrew.kinematics.sliding import SlidingField, sliding_field, sliding_fi
 from ballscrew.kinematics.torque import BallDrag, ball_drag
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication import AsperitySurface, LoadSharing, asperity_pressure
+from ballscrew.units import format_quantity
 from ballscrew.validation import case_with, positive
 
 __all__ = [
@@ -335,7 +336,7 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
     dn = dn_value(geometry.pitch_diameter, speed)
     if dn > spec.dn_limit:
         messages.append(
-            f"speed {speed:.4g} rad/s gives d·n = {dn:.0f} mm·rpm above the limit "
+            f"speed {format_quantity(speed, 'rad/s')} gives d·n = {dn:.0f} mm·rpm above the limit "
             f"{spec.dn_limit:.0f} ([kinematics] dn_limit)"
         )
     if spec.unsupported_length is not None:
@@ -346,9 +347,11 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
         )
         if speed > allowed:
             messages.append(
-                f"speed {speed:.4g} rad/s exceeds {spec.critical_speed_factor:g} × the whirling "
-                f"speed of the screw shaft = {allowed:.4g} rad/s ({spec.mounting}, "
-                f"l = {spec.unsupported_length:g} m, d_r = {root:g} m)"
+                f"speed {format_quantity(speed, 'rad/s')} exceeds "
+                f"{spec.critical_speed_factor:g} × the whirling speed of the screw shaft = "
+                f"{format_quantity(allowed, 'rad/s')} ({spec.mounting}, "
+                f"l = {format_quantity(spec.unsupported_length, 'm')}, "
+                f"d_r = {format_quantity(root, 'm')})"
             )
     return messages
 

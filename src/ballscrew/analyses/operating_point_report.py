@@ -49,12 +49,18 @@ def figures(result: OperatingPoint) -> list[Figure]:
     return thermal_report.figures(result.field)
 
 
+def _friction_part(result: OperatingPoint) -> float:
+    """T − F_a L/(2π) = Q/ω [N m]: the torque that becomes heat (0 at rest)."""
+    return result.heat / result.speed if result.speed > 0.0 else 0.0
+
+
 def sections(result: OperatingPoint) -> list[Section]:
     """The coupled state in engineering units, then the thermal model's own sections."""
     rows: list[tuple[Any, ...]] = [
         ("speed [rpm]", result.speed * 30.0 / 3.141592653589793),
         ("axial load [N]", result.axial_load),
-        ("friction torque [N·m]", result.friction_torque),
+        ("screw torque T, work F_a·L/2π included [N·m]", result.friction_torque),
+        ("friction part of T = heat / ω [N·m]", _friction_part(result)),
         ("friction heat [W]", result.heat),
         ("driving efficiency [-]", result.efficiency),
         ("nut temperature [°C]", result.nut_temperature - CELSIUS),

@@ -13,6 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
+from matplotlib.ticker import MaxNLocator
 from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.result import Figure, Section, Table
@@ -20,9 +21,10 @@ from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import label_box, legend_outside, plain
 from ballscrew.thermal.elongation import displacement_profile
 from ballscrew.thermal.mesh3d import circle_angles
+from ballscrew.units import format_number
 
 if TYPE_CHECKING:
-    from ballscrew.analyses.thermal import ThermalField
+    from ballscrew.analyses.thermal import SensorReading, ThermalField
 
 CELSIUS = 273.15
 
@@ -359,7 +361,9 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
         levels = np.linspace(temp.min(), temp.max() + 1e-9, 30)
         for ax in axes:
             image = ax.tricontourf(tri, temp, levels=levels, cmap="inferno")
-        fig.colorbar(image, ax=axes, label="steady temperature [°C]")
+        bar = fig.colorbar(image, ax=axes, label="steady temperature [°C]")
+        bar.locator = MaxNLocator(8)  # round ticks, not the 30 contour levels (29.859 °C)
+        bar.update_ticks()
     else:
         ex = disc.extra
         amb = result.ambient_temperature
@@ -424,22 +428,34 @@ def elongation_plot(result: ThermalField, path: Path) -> Path:
     """Thermal elongation over time and the steady axial profile of the screw."""
     sol = result.solution
     t = sol.transient
-    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6), layout="constrained")
-    if t is not None:
+    if t is None:  # steady only: the profile, the elongation in the title (no empty time axis)
+        fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
+        profile = ax
+        ax.set_title(f"steady elongation ΔL = α∫ΔT dz = {result.elongation * 1e6:.4g} µm")
+    else:
+        fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6), layout="constrained")
         axes[0].plot(t.time / 60.0, t.elongation * 1e6, "b-")
-    axes[0].axhline(result.elongation * 1e6, color="b", ls="--", lw=0.8, label="steady")
-    axes[0].set_xlabel("time [min]")
-    axes[0].set_ylabel("elongation ΔL = α∫ΔT dz [µm]")
-    legend_outside(axes[0], fontsize=7)
-    axes[0].grid(alpha=0.3)
+        axes[0].axhline(result.elongation * 1e6, color="b", ls="--", lw=0.8, label="steady")
+        axes[0].set_xlabel("time [min]")
+        axes[0].set_ylabel("elongation ΔL = α∫ΔT dz [µm]")
+        legend_outside(axes[0], fontsize=7)
+        axes[0].grid(alpha=0.3)
+        profile = axes[1]
     z = sol.discretisation.axis_z * 1e3
-    axes[1].plot(z, sol.axis, "r-")
-    axes[1].set_xlabel("z [mm]")
-    axes[1].set_ylabel("steady screw mean rise [K]", color="r")
-    axes[1].grid(alpha=0.3)
+    profile.plot(z, sol.axis, "r-")
+    profile.set_xlabel("z [mm]")
+    profile.set_ylabel("steady screw mean rise [K]", color="r")
+    profile.grid(alpha=0.3)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+def _transient(sensor: SensorReading) -> tuple[object, str]:
+    """(final [°C], time to 95 %) of a sensor; '–' for both without a transient."""
+    if not math.isfinite(sensor.final):
+        return "–", "–"
+    return _c(sensor.final), _fmt_s(sensor.time_to_95)
 
 
 def _fmt_s(seconds: float) -> str:
@@ -456,7 +472,9 @@ def figures(result: ThermalField) -> list[Figure]:
         ),
         Figure(
             "elongation",
-            "Thermal elongation over time and the steady axial temperature profile.",
+            "Thermal elongation over time and the steady axial temperature profile."
+            if result.solution.transient is not None
+            else "Steady axial temperature profile of the screw and its thermal elongation.",
             partial(elongation_plot, result),
         ),
     ]
@@ -544,19 +562,18 @@ def sections(result: ThermalField) -> list[Section]:
             ["time to 95 % of the steady elongation", _fmt_s(result.elongation_time_to_95)],
         ]
     sensor_rows = [
-        [s.name, s.body, s.r * 1e3, s.z * 1e3, _c(s.steady), _c(s.final), _fmt_s(s.time_to_95)]
-        for s in result.sensors
+        [s.name, s.body, s.r * 1e3, s.z * 1e3, _c(s.steady), *_transient(s)] for s in result.sensors
     ]
     balance = [
         ["heat input [W]", result.heat_input],
         ["steady convective loss [W]", sol.heat_loss],
-        ["steady relative error", f"{result.heat_balance_error:.2e}"],
+        ["steady relative error", format_number(result.heat_balance_error, 2)],
     ]
     if t is not None:
         balance += [
             ["transient: heat in [J]", t.heat_in],
             ["transient: stored + convected [J]", t.stored + t.convected],
-            ["transient relative error", f"{result.transient_heat_balance_error:.2e}"],
+            ["transient relative error", format_number(result.transient_heat_balance_error, 2)],
         ]
     return [
         Section(
@@ -633,13 +650,19 @@ def _coupling_text(result: ThermalField) -> tuple[str, ...]:
     """How the balls' heat was found: the coupled operating point, or the case's fixed heat."""
     c = result.coupling
     if c is None:
-        return ("The balls' heat is the fixed torque of [thermal.drag_torque] (not coupled).",)
+        source = result.case.thermal.drag_torque.source if result.case.thermal else "given"
+        return (
+            "The balls' heat is held fixed in this solve: [thermal.drag_torque] source = "
+            f"{source!r} (the method column).",
+        )
     viscosity = "a dry contact" if math.isnan(c.viscosity) else f"η = {1e3 * c.viscosity:.4g} mPa s"
     return (
         f"The balls' heat is that of the coupled operating point ({c.friction_model} friction "
-        f"model): {c.friction_torque:.4g} N·m, {c.heat:.4g} W ({c.heat_to_screw:.4g} W into the "
-        f"screw) with the lubricant at the contact temperature {_c(c.contact_temperature):.4g} °C "
-        f"({viscosity}), {c.iterations} fixed-point iterations on the {result.model} model.",
+        f"model): screw torque {c.friction_torque:.4g} N·m, heat {c.heat:.4g} W "
+        f"({c.heat_to_screw:.4g} W into the screw) with the lubricant at the contact "
+        f"temperature {_c(c.contact_temperature):.4g} °C "
+        f"({viscosity}), {c.iterations} fixed-point iteration{'s' * (c.iterations != 1)} on the "
+        f"{result.model} model.",
     )
 
 

@@ -21,7 +21,8 @@ import xarray as xr
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.case import Case
-from ballscrew.plotting import legend_outside
+from ballscrew.plotting import legend_outside, revolutions_axis
+from ballscrew.units import format_number
 from ballscrew.wear.history import WearLife
 
 if TYPE_CHECKING:
@@ -36,7 +37,7 @@ def _provenance(case: Case) -> str:
     if spec is not None and abs(spec.coefficient - default) > 1e-12:
         return "case file [wear] coefficient"
     return (
-        "calibrated so that h_max = 2.43 µm at 1.44e6 rev on the step-stress example screw "
+        "calibrated so that h_max = 2.43 µm at 1.44×10⁶ rev on the step-stress example screw "
         "(examples/wear_step_stress.toml: Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m)"
     )
 
@@ -153,22 +154,23 @@ def history(result: WearResult) -> xr.Dataset:
     )
 
 
-def _levels(ax: Any, life: WearLife) -> None:
+def _levels(ax: Any, life: WearLife, unit: float) -> None:
     for n in life.level_boundaries[:-1]:
-        ax.axvline(n, color="0.6", ls=":", lw=1)
+        ax.axvline(n / unit, color="0.6", ls=":", lw=1)
 
 
 def _torque_preload(life: WearLife, path: Path) -> Path:
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
     n, t = life.torque_samples
-    axes[0].plot(life.revolutions, life.friction_torque, "-", lw=1)
-    axes[0].plot(n, t, "o", ms=3, label="sampled")
+    unit, label = revolutions_axis(life.revolutions)
+    axes[0].plot(life.revolutions / unit, life.friction_torque, "-", lw=1)
+    axes[0].plot(np.asarray(n) / unit, t, "o", ms=3, label="samples (wear.torque_sampling)")
     axes[0].set_ylabel("drag torque [N·m]")
-    axes[1].plot(life.revolutions, life.preload, "-", lw=1)
+    axes[1].plot(life.revolutions / unit, life.preload, "-", lw=1)
     axes[1].set_ylabel("preload [N]")
     for ax in axes:
-        _levels(ax, life)
-        ax.set_xlabel("screw revolutions")
+        _levels(ax, life, unit)
+        ax.set_xlabel(label)
         ax.set_ylim(bottom=0)
     axes[0].legend(fontsize=8, loc="lower left")
     fig.savefig(path, dpi=110)
@@ -191,9 +193,10 @@ def _profiles(life: WearLife, path: Path) -> Path:
 
 def _depth(life: WearLife, path: Path) -> Path:
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
-    ax.plot(life.revolutions, 1e6 * life.max_wear_depth, "o-", ms=2)
-    _levels(ax, life)
-    ax.set_xlabel("screw revolutions")
+    unit, label = revolutions_axis(life.revolutions)
+    ax.plot(life.revolutions / unit, 1e6 * life.max_wear_depth, "o-", ms=2)
+    _levels(ax, life, unit)
+    ax.set_xlabel(label)
     ax.set_ylabel("largest wear depth h_max [µm]")
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -236,7 +239,7 @@ def sections(result: WearResult) -> list[Section]:
         Section(
             "Raceway wear and preload degradation",
             paragraphs=(
-                f"Fractal wear Model {life.model}, K = {life.coefficient:.4g} "
+                f"Fractal wear Model {life.model}, K = {format_number(life.coefficient)} "
                 f"({data['wear_coefficient']['source']}); L_w = "
                 f"{life.raceway_length:.4g} m; {life.steps} steps, "
                 f"{life.contact_solves} contact solutions in {life.wall_time:.1f} s.",
@@ -260,7 +263,7 @@ def sections(result: WearResult) -> list[Section]:
                             f"{life.preload[0]:.1f} / {life.preload[-1]:.1f}",
                         ),
                         (
-                            "torque, initial / final [N m]",
+                            "torque, initial / final [N·m]",
                             f"{life.friction_torque[0]:.4f} / {life.friction_torque[-1]:.4f}",
                         ),
                     ),

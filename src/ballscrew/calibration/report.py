@@ -238,7 +238,12 @@ def sections(result: CalibrationResult) -> list[Section]:
         for name, e in result.errors.items()
         if name not in ("wear_coefficient", "torque_scale")
     ]
-    rows += [(f"correlation ({pair})", r) for pair, r in result.correlations.items()]
+    shown = {"wear_coefficient,torque_scale"} if result.torque_scale_error is not None else set()
+    rows += [
+        (f"correlation ({pair.replace(',', ', ')})", r)
+        for pair, r in result.correlations.items()
+        if pair not in shown  # (ln K, torque scale) has its row above
+    ]
     if result.prediction_rmse is not None:
         rows.append((f"held-out RMS error [{unit}]", result.prediction_rmse * factor))
     if result.diagnostics:

@@ -64,7 +64,11 @@ class FrictionSpec(Model):
     ) = None
     hysteresis: Annotated[
         float,
-        Field(ge=0.0, le=1.0, description="hysteresis loss fraction α of the Hertz contacts"),
+        Field(
+            ge=0.0,
+            le=1.0,
+            description="hysteresis loss fraction α of the Hertz contacts [GUESS 0.01]",
+        ),
     ] = DEFAULT_HYSTERESIS
     recirculation_torque: quantity(
         "torque", "ball-return (recirculation) loss; no published model, default 0", ge=0, le=1e3

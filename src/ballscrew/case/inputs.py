@@ -7,7 +7,10 @@ from typing import Any, get_args
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
-__all__ = ["field_unit", "input_rows", "resolved_inputs"]
+__all__ = ["GUESS_MARKS", "field_unit", "guessed_defaults", "input_rows", "resolved_inputs"]
+
+#: Words of a field description that label its default a guess.
+GUESS_MARKS = ("GUESS", "ASSUMED")
 
 
 def field_unit(info: FieldInfo) -> str | None:
@@ -65,3 +68,25 @@ def input_rows(inputs: dict[str, Any], prefix: str = "") -> list[tuple[str, Any,
         elif value is not None:
             rows.append((dotted, value, ""))
     return rows
+
+
+def guessed_defaults(model: BaseModel, prefix: str = "") -> dict[str, str]:
+    """Dotted key → description of every field of ``model`` (a validated case) that was left
+    at a default its description labels a guess (:data:`GUESS_MARKS`), nested sections
+    included; a value the user wrote, or None, is no guess."""
+    found: dict[str, str] = {}
+    for name, info in type(model).model_fields.items():
+        value, key = getattr(model, name), f"{prefix}{name}"
+        if isinstance(value, BaseModel):
+            found |= guessed_defaults(value, key + ".")
+        elif isinstance(value, list | tuple):
+            for k, item in enumerate(value):
+                if isinstance(item, BaseModel):
+                    found |= guessed_defaults(item, f"{key}[{k}].")
+        elif (
+            value is not None
+            and name not in model.model_fields_set
+            and any(mark in (info.description or "") for mark in GUESS_MARKS)
+        ):
+            found[key] = info.description or ""
+    return found

@@ -17,9 +17,17 @@ import math
 import tomllib
 from dataclasses import dataclass
 
-from ballscrew.design import MAX_PRELOAD_SHARE, circuit_ball_count, dynamic_load_rating
+from ballscrew.case.design_spec import DesignSpec
+from ballscrew.design import (
+    MAX_PRELOAD_SHARE,
+    accuracy_factor,
+    circuit_ball_count,
+    dynamic_load_rating,
+    hardness_factor,
+)
 from ballscrew.errors import InputError
 from ballscrew.geometry import ScrewGeometry
+from ballscrew.materials import material
 
 __all__ = ["CatalogueSheet", "parse_turns", "starter_case"]
 
@@ -103,6 +111,17 @@ def _check_fits(sheet: CatalogueSheet) -> float:
     return nut
 
 
+_GRADE = DesignSpec.model_fields["accuracy_grade"].default
+"""The accuracy grade of the starter's ``[design]`` (the case's default)."""
+
+
+def _rating_factor() -> float:
+    """f_H f_ac by which ``ballscrew check`` scales the geometric ratings of the starter's
+    steels (the softer raceway, the 42CrMo4 shaft) and :data:`_GRADE`."""
+    softer = min(material(name).hardness for name in ("42CrMo4", "100Cr6"))
+    return hardness_factor(softer) * accuracy_factor(_GRADE)
+
+
 def _mm(value: float) -> str:
     return f'"{value * 1e3:.6g} mm"'
 
@@ -133,8 +152,11 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         conformity=CONFORMITY,
         preload=f'"{preload:.6g} N"',
         ca_kn=f"{ca * 1e-3:.3g}",
+        ca_rated_kn=f"{_rating_factor() * ca * 1e-3:.3g}",
+        rating_factor=f"{_rating_factor():.2f}",
+        grade=_GRADE,
         preload_note="given" if sheet.preload is not None else (
-            f"{DEFAULT_PRELOAD_SHARE[sheet.nuts]:.0%} of the computed C_a [GUESS]"
+            f"{DEFAULT_PRELOAD_SHARE[sheet.nuts]:.0%} of the geometric C_a [GUESS]"
         ),
         max_share=f"{MAX_PRELOAD_SHARE[sheet.nuts]:.0%} of C_a",
         length=_mm(sheet.length),
@@ -250,7 +272,9 @@ duration = "1 h"
 time_step = "60 s"
 
 # Design check (`ballscrew check`). Without the maker's ratings the check computes C_a and C_0a
-# from the geometry (here C_a = {ca_kn} kN) and says so; add the sheet's values when known:
+# from the geometry (here C_a = {ca_rated_kn} kN: {ca_kn} kN of the geometry times the hardness
+# and accuracy factors f_H f_ac = {rating_factor} of the 42CrMo4 shaft and grade {grade}) and says
+# so; add the sheet's values when known:
 #   dynamic_load_rating = "... kN"
 #   static_load_rating = "... kN"
 [design]
@@ -259,7 +283,7 @@ unsupported_length = {unsupported}   # 90 % of the shaft between the bearings [A
 required_life = "20000 h"
 
 # A working cycle for `ballscrew duty` and the life of `ballscrew check` [ASSUMED, illustrative:
-# write your machine's]: strokes at 1000 rpm under 8 % of the computed C_a, then rest.
+# write your machine's]: strokes at 1000 rpm under 8 % of the geometric C_a, then rest.
 [[duty]]
 speed = "1000 rpm"
 axial_load = {duty_load}

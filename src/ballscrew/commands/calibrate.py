@@ -8,6 +8,7 @@ from typing import Annotated, Any
 import typer
 
 from ballscrew.commands._common import CaseArg, Output, log, writes_results
+from ballscrew.units import format_number
 
 MeasuredOpt = Annotated[
     list[Path],
@@ -74,8 +75,9 @@ def calibrate(
     *,
     output: Output,
 ) -> None:
-    """Fit the wear model (K, torque scale, torque offset, …) to one measured history, or
-    jointly to several (repeat --measured)."""
+    """Fit the wear model (K, torque scale, offset, …) to measured histories (--measured).
+
+    One history, or several jointly (repeat --measured)."""
     from dataclasses import replace
 
     from ballscrew.calibration import DEFAULT_FIT, read_measured
@@ -110,22 +112,29 @@ def calibrate(
         log.info("fitting to %d %s points of %s", len(data[0]), data[0].quantity, data[0].source)
         result = calibrate_case(case, data[0], fit=names, fit_until=fit_until)
         log.info(
-            "K = %.4e ± %.2e, torque scale %.4g, RMS residual %.3g %s (%d model runs)",
-            result.wear_coefficient,
-            result.standard_error,
+            "K = %s ± %s, torque scale %.4g, RMS residual %s (%d model runs)",
+            format_number(result.wear_coefficient),
+            format_number(result.standard_error, 3),
             result.torque_scale,
-            result.rms_residual,
-            result.unit,
+            _si(result.rms_residual, result.unit),
             result.evaluations,
         )
         if result.prediction_rmse is not None:
-            log.info("held-out RMS error %.3g %s", result.prediction_rmse, result.unit)
+            log.info("held-out RMS error %s", _si(result.prediction_rmse, result.unit))
         options = _options(case_file, measured, case, fit_until)
         options["fit_torque_scale"] = "torque_scale" in result.values
         options["fit"] = list(result.values)
         result = replace(result, case=case, options=options)
         fit_csv = fit_table(result).encode("utf-8")  # the fit table for spreadsheets
         output.write(result, case_file, {"fit.csv": fit_csv})
+
+
+def _si(value: float, unit: str) -> str:
+    """An SI ``value`` in ``unit`` (N*m, N, m) in engineering units: 0.005094 N·m, 2.43 µm."""
+    from ballscrew.results.display import engineering
+
+    shown, symbol = engineering(value, unit, "wear_depth" if unit == "m" else "")
+    return f"{format_number(shown)} {symbol}".rstrip()
 
 
 def _options(
@@ -165,8 +174,8 @@ def _joint(
         log.info("joint fit of %d histories: shared %s", len(data), ", ".join(names))
         result = calibrate_joint(case, data, shared=names, separate=separate, fit_until=fit_until)
         log.info(
-            "K = %.4e, RMS residual %.3g (%d model runs)",
-            result.wear_coefficient,
+            "K = %s, RMS residual %.3g (%d model runs)",
+            format_number(result.wear_coefficient),
             result.rms_residual,
             result.evaluations,
         )

@@ -40,7 +40,10 @@ def init(
     nuts: Annotated[int, typer.Option(help="1 (single nut) or 2 (preloaded double nut)")] = 2,
     preload: Annotated[
         str | None,
-        typer.Option(help="preload in N (or '2 kN'); default 5 % of the computed C_a"),
+        typer.Option(
+            help="preload in N (or '2 kN'); default 5 % (double nut) or 2 % (single nut) of "
+            "the geometric C_a [GUESS]"
+        ),
     ] = None,
     length: Annotated[str, typer.Option(help=f"screw shaft length, {_MM}")] = "1000",
     nut_length: Annotated[

@@ -17,7 +17,9 @@ from ballscrew.commands._common import (
 AxialLoadOpt = Annotated[
     str | None,
     typer.Option(
-        "--axial-load", help='axial load, e.g. "2 kN"; default: the case\'s', metavar="FORCE"
+        "--axial-load",
+        help='axial load, e.g. "2 kN" or 2000 (N); default: the case\'s',
+        metavar="FORCE",
     ),
 ]
 

@@ -21,13 +21,17 @@ ProfileArg = Annotated[
 SpacingOpt = Annotated[
     str | None,
     typer.Option(
-        help="sampling interval of a one-column text file, e.g. '0.5 µm'", metavar="LENGTH"
+        help="sampling interval of a one-column text file, e.g. '0.5 µm' (a bare number is "
+        "in m); CSV with x and SDF files carry their own",
+        metavar="LENGTH",
     ),
 ]
 ResolutionOpt = Annotated[
     str | None,
     typer.Option(
-        help="instrument lateral resolution if coarser than the spacing", metavar="LENGTH"
+        help="instrument lateral resolution if coarser than the spacing, e.g. '2 µm' "
+        "(default: the spacing)",
+        metavar="LENGTH",
     ),
 ]
 GammaOpt = Annotated[float, typer.Option(help="W-M frequency ratio γ", metavar="NUMBER")]

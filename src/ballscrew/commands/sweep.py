@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
 from ballscrew.commands._common import Output, finish, writes_results
+from ballscrew.sweep.registry import SWEEPABLE
 
 SweepCaseArg = Annotated[
     Path,
@@ -27,7 +29,9 @@ VaryOpt = Annotated[
 ]
 AnalysisOpt = Annotated[
     str | None,
-    typer.Option(help="analysis run at each point (default: tcr)", metavar="NAME"),
+    typer.Option(
+        help=f"analysis run at each point: {', '.join(SWEEPABLE)} (default: tcr)", metavar="NAME"
+    ),
 ]
 SchedulerOpt = Annotated[
     str | None,
@@ -79,4 +83,8 @@ def sweep(
         dataset, computed = run_sweep(
             case, axes, function, name, folder, scheduler, workers, progress, retry_failed
         )
-        finish(write_sweep(dataset, folder, computed, case, axes, export=output.formats))
+        written = write_sweep(dataset, folder, computed, case, axes, export=output.formats)
+        summary = json.loads((written / "summary.json").read_text(encoding="utf-8"))
+        for message in summary["warnings"]:  # the points' warnings, said on the workers
+            typer.echo(f"warning: {message}", err=True)
+        finish(written)

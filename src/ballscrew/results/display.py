@@ -70,8 +70,10 @@ def readable(name: str) -> str:
     """A field name or dotted summary key as words, for tables, plot axes and the console:
     ``nuts.nut1.orbital_speed`` → ``nut 1: orbital speed``, ``operating.axial_load`` →
     ``axial load``, ``contacts.screw.numerical.peak_pressure`` → ``screw: peak pressure``,
-    ``F1`` → ``F1``."""
+    ``margins.speed.ratio`` → ``speed margin (capacity/demand)``, ``F1`` → ``F1``."""
     parts = [p for p in name.split(".") if p]
+    if len(parts) == 3 and parts[0] == "margins" and parts[2] == "ratio":
+        return f"{readable(parts[1])} margin (capacity/demand)"
     if len(parts) > 1 and parts[0] in _SECTIONS:
         parts = parts[1:]
     parts = [p for p in parts if p not in _GROUPS] or parts[-1:]

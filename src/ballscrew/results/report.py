@@ -10,10 +10,12 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ballscrew import __version__
 from ballscrew.case.inputs import input_rows
 from ballscrew.results.about import ABOUT, theory_link
-from ballscrew.results.display import engineering
+from ballscrew.results.display import engineering, engineering_array
 from ballscrew.units import format_number
 
 _STYLE = """
@@ -43,15 +45,26 @@ class Section:
 
 
 def _input_row(key: str, value: Any, unit: str) -> list[object]:
+    if isinstance(value, list) and value and all(_is_number(v) for v in value):
+        shown, shown_unit = engineering_array(np.asarray(value, dtype=float), unit, key)
+        return [key, ", ".join(format_number(v) for v in shown), shown_unit]
     shown, shown_unit = engineering(value, unit, key)
     return [key, shown, shown_unit]
 
 
+def _is_number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
 def inputs_warnings_sections(
-    inputs: Mapping[str, Any], warnings: Sequence[str], analysis: str | None = None
+    inputs: Mapping[str, Any],
+    warnings: Sequence[str],
+    analysis: str | None = None,
+    guesses: Mapping[str, str] | None = None,
 ) -> list[Section]:
-    """The first sections of every report: the inputs as they ran, the warnings and, for a
-    known ``analysis``, what was computed and how (linked to the theory manual)."""
+    """The first sections of every report: the inputs as they ran, the warnings, the
+    ``guesses`` (dotted input key → description, :func:`ballscrew.case.inputs.guessed_defaults`)
+    and, for a known ``analysis``, what was computed and how (linked to the theory manual)."""
     rows = [_input_row(key, value, unit) for key, value, unit in input_rows(dict(inputs))]
     sections = [
         Section(
@@ -64,6 +77,23 @@ def inputs_warnings_sections(
         ),
         Section("Warnings", paragraphs=list(warnings) or ["No warnings."]),
     ]
+    if guesses:
+        guessed = [
+            [*_input_row(key, value, unit), guesses[key]]
+            for key, value, unit in input_rows(dict(inputs))
+            if key in guesses
+        ]
+        sections.append(
+            Section(
+                "Defaults that are guesses",
+                paragraphs=[
+                    "Inputs the case left at a default that is only a guess (GUESS or ASSUMED in "
+                    "its description); each counts only where the analysis uses it. Write the "
+                    "value into the case when it is known."
+                ],
+                tables=[(["input", "value", "unit", "what and why"], guessed)],
+            )
+        )
     if analysis in ABOUT:
         text, page = ABOUT[analysis]
         title = page.removesuffix(".md").replace("-", " ")

@@ -20,9 +20,9 @@ import numpy as np
 import xarray as xr
 
 from ballscrew.case import Case
-from ballscrew.case.inputs import resolved_inputs
+from ballscrew.case.inputs import guessed_defaults, resolved_inputs
 from ballscrew.plotting import legend_outside, line_styles, zero_noise
-from ballscrew.results.display import engineering_array, readable
+from ballscrew.results.display import engineering, engineering_array, readable
 from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import (
     SUMMARY_NAME,
@@ -35,7 +35,7 @@ from ballscrew.results.folder import (
 from ballscrew.results.report import Section, inputs_warnings_sections, write_report
 from ballscrew.results.summary import write_summary
 from ballscrew.sweep.axes import SweepAxis
-from ballscrew.units import KIND_OF_UNIT, NOISE_FLOOR
+from ballscrew.units import KIND_OF_UNIT, NOISE_FLOOR, format_number
 
 
 def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
@@ -159,16 +159,79 @@ def write_sweep(
     folder = Path(folder)
     export = parse_formats(export)
     with writing(folder):
-        _write_files(ds, folder, computed, sweep_inputs(ds, case, axes))
+        guesses = guessed_defaults(case, "case.") if case is not None else {}
+        _write_files(ds, folder, computed, sweep_inputs(ds, case, axes), guesses)
         if export:
             export_results(folder, export)
         write_marker(folder, "sweep", SWEEP_PATTERNS)
     return folder
 
 
-def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any]) -> None:
+def _shown_axes(inputs: dict[str, Any]) -> dict[str, Any]:
+    """``inputs`` with each axis's values as one quantity, so the report shows them in
+    engineering units (500, 1750, 3000 rpm), not as SI lists."""
+    axes = {
+        key: {"values": {"value": axis["values"], "unit": axis["unit"]}}
+        | {k: v for k, v in axis.items() if k not in ("values", "unit")}
+        for key, axis in inputs["axes"].items()
+    }
+    return inputs | {"axes": axes}
+
+
+def _point(ds: xr.Dataset, dim: str, index: int) -> str:
+    """``key=value unit`` of one swept value in engineering units (``operating.speed=3000 rpm``)."""
+    value, unit = engineering(float(ds[dim].values[index]), ds[dim].attrs.get("units", ""), dim)
+    return f"{dim}={format_number(value)} {unit}".rstrip()
+
+
+def _point_warnings(ds: xr.Dataset) -> list[str]:
+    """Each distinct warning of the points with the first point that gave it and how many."""
+    if "warnings" not in ds:
+        return []
+    dims = list(ds["warnings"].dims)
+    first: dict[str, str] = {}
+    count: dict[str, int] = {}
+    for idx in np.ndindex(ds["warnings"].shape):
+        for message in filter(None, str(ds["warnings"].values[idx]).split("\n")):
+            point = ", ".join(_point(ds, d, i) for d, i in zip(dims, idx, strict=True))
+            first.setdefault(message, point)
+            count[message] = count.get(message, 0) + 1
+    return [
+        f"point {first[m]}" + (f" (and {count[m] - 1} more)" if count[m] > 1 else "") + f": {m}"
+        for m in first
+    ]
+
+
+#: Most rows of the report's table of every point (the rest are in sweep.nc and the exports).
+MAX_TABLE_ROWS = 200
+
+
+def _value_section(ds: xr.Dataset, names: Sequence[str]) -> Section:
+    """Every point's swept values and results in engineering units, one row each."""
+    dims = list(ds["failed"].dims)
+    axes = [_axis(ds, d) for d in dims]
+    results = [_axis(ds, n) for n in names]
+    rows = [
+        [float(values[i]) for (values, _), i in zip(axes, idx, strict=True)]
+        + [float(values[idx]) for values, _ in results]
+        for idx in np.ndindex(ds["failed"].shape)
+    ]
+    shown = "" if len(rows) <= MAX_TABLE_ROWS else f" The first {MAX_TABLE_ROWS} are shown."
+    return Section(
+        "Values at every point",
+        paragraphs=[
+            f"{len(rows)} points in engineering units; nan: a failed point or a value the "
+            f"analysis does not give there. All of them: sweep.nc or --export csv.{shown}"
+        ],
+        tables=[([label for _, label in axes + results], rows[:MAX_TABLE_ROWS])],
+    )
+
+
+def _write_files(
+    ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, Any], guesses: dict[str, str]
+) -> None:
     write_netcdf(ds, folder / "sweep.nc")
-    names = [n for n in ds.data_vars if n not in ("error", "failed")]
+    names = [n for n in ds.data_vars if n not in ("error", "failed", "warnings")]
     forces = {"F1", "F2"} <= set(names) and ds["F1"].ndim == 1
     figures = []
     if forces:
@@ -187,12 +250,13 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, 
     dims = list(ds["failed"].dims)
     failures = [
         [
-            ", ".join(f"{d}={ds[d].values[i]:.4g}" for d, i in zip(dims, idx, strict=True)),
+            ", ".join(_point(ds, d, i) for d, i in zip(dims, idx, strict=True)),
             str(ds["error"].values[tuple(idx)]),
         ]
         for idx in failed
     ]
     warnings = [f"point {point} failed: {error}" for point, error in failures]
+    warnings += _point_warnings(ds)
     summary = {
         "analysis": ds.attrs["analysis"],
         "case": ds.attrs["case"],
@@ -202,12 +266,13 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, 
         "axes": {d: {"values": ds[d].values, "unit": ds[d].attrs.get("units", "")} for d in dims},
         "failures": failures,
         "warnings": warnings,
+        "guessed_defaults": sorted(guesses),
         "inputs": inputs,
     }
     with atomic_file(folder / SUMMARY_NAME) as tmp:
         write_summary(tmp, summary)
     sections = [
-        *inputs_warnings_sections(inputs, warnings, "sweep"),
+        *inputs_warnings_sections(_shown_axes(inputs), warnings, "sweep", guesses),
         Section(
             "Sweep",
             paragraphs=[
@@ -217,6 +282,7 @@ def _write_files(ds: xr.Dataset, folder: Path, computed: int, inputs: dict[str, 
             tables=[(["point", "error"], failures)] if failures else [],
             figures=figures,
         ),
+        _value_section(ds, [n for n in ds.data_vars if n not in ("error", "failed", "warnings")]),
     ]
     with atomic_file(folder / "report.html") as tmp:
         write_report(

@@ -2,8 +2,9 @@
 
 A results folder holds
 
-* ``summary.json`` — the result's scalars (SI, each with its unit), its warnings and the
-  resolved inputs;
+* ``summary.json`` — the result's scalars (SI, each with its unit), its warnings, the keys of
+  the inputs left at a default that is only a guess (``guessed_defaults``) and the resolved
+  inputs;
 * ``<stem>.nc`` — the result's xarray datasets (NetCDF, ``units`` attributes);
 * ``<figure>.png`` — its figures;
 * ``report.html`` — one self-contained page: the inputs, the warnings, then the result's own
@@ -28,6 +29,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.case import Case
+from ballscrew.case.inputs import guessed_defaults
 from ballscrew.case.plausibility import implausible_values
 from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import results_folder, write_netcdf
@@ -75,12 +77,15 @@ def write_results(
     ``xlsx``, ``mat``) written into the folder before it appears.
     """
     warnings = result_warnings(result)
+    case = getattr(result, "case", None)
+    guesses = guessed_defaults(case) if isinstance(case, Case) else {}
     export = parse_formats(export)
     with results_folder(out) as folder:
         summary = {
             "analysis": result.analysis,
             **result.summary(),
             "warnings": warnings,
+            "guessed_defaults": sorted(guesses),
             "inputs": dict(result.inputs),
         }
         write_summary(folder / "summary.json", summary)
@@ -92,7 +97,7 @@ def write_results(
         for stem, dataset in _datasets(result).items():
             write_netcdf(dataset, folder / f"{stem}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
-        sections = inputs_warnings_sections(result.inputs, warnings, result.analysis)
+        sections = inputs_warnings_sections(result.inputs, warnings, result.analysis, guesses)
         sections += _headline_section(summary)
         for s in result.report():
             sections.append(

@@ -18,6 +18,7 @@ import logging
 import math
 import time
 import traceback
+import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -46,6 +47,8 @@ class PointRecord:
     results: dict[str, tuple[float, str]] | None
     error: str | None
     seconds: float
+    warnings: tuple[str, ...] = ()
+    """The warnings the analysis gave at this point (d·n above its limit, …), each once."""
 
 
 def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> PointRecord:
@@ -54,14 +57,17 @@ def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> Po
     FFTs run single-threaded: the sweep's parallelism is its workers, one per core.
     """
     start = time.perf_counter()
-    try:
-        with limited_fft_threads(1):
-            results = {k: (float(v), u) for k, (v, u) in analysis(case).items()}
-        error = None
-    except Exception as exc:  # a failed point must not kill the sweep
-        results, error = None, f"{type(exc).__name__}: {exc}"
-        log.debug("point %s failed:\n%s", overrides, traceback.format_exc())
-    return PointRecord(overrides, results, error, time.perf_counter() - start)
+    with warnings.catch_warnings(record=True) as caught:  # one thread per worker process
+        warnings.simplefilter("always")
+        try:
+            with limited_fft_threads(1):
+                results = {k: (float(v), u) for k, (v, u) in analysis(case).items()}
+            error = None
+        except Exception as exc:  # a failed point must not kill the sweep
+            results, error = None, f"{type(exc).__name__}: {exc}"
+            log.debug("point %s failed:\n%s", overrides, traceback.format_exc())
+    messages = tuple(dict.fromkeys(str(w.message) for w in caught))
+    return PointRecord(overrides, results, error, time.perf_counter() - start, messages)
 
 
 def run_chunk(
@@ -126,7 +132,8 @@ def _save(path: Path, record: PointRecord) -> None:
 def _load(path: Path) -> PointRecord:
     raw = json.loads(path.read_text())
     results = {k: (v[0], v[1]) for k, v in raw["results"].items()} if raw["results"] else None
-    return PointRecord(raw["overrides"], results, raw["error"], raw["seconds"])
+    found = tuple(raw.get("warnings", ()))  # points stored before warnings were kept have none
+    return PointRecord(raw["overrides"], results, raw["error"], raw["seconds"], found)
 
 
 def _needs_run(path: Path, retry_failed: bool) -> bool:
@@ -243,6 +250,12 @@ def assemble(
         {"long_name": "error of a failed point"},
     )
     variables["failed"] = (dims, (errors != "").reshape(shape), {"long_name": "point failed"})
+    said = np.array(["\n".join(r.warnings) for r in records], dtype=object)
+    variables["warnings"] = (
+        dims,
+        said.reshape(shape).astype(str),
+        {"long_name": "warnings of the point, one a line"},
+    )
     coords = {
         axis.key: (
             axis.key,

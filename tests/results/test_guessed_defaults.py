@@ -1,0 +1,61 @@
+"""A default that is only a guess is reported in results: summary.json lists its key and the
+report has a section with its value and why (the folder used to list it among every default,
+unmarked)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import xarray as xr
+
+from ballscrew import load_case
+from ballscrew.case import Case
+from ballscrew.case.inputs import guessed_defaults, resolved_inputs
+from ballscrew.results import write_results
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
+
+
+def test_guesses_are_the_defaults_labelled_so_that_the_case_left_alone():
+    case = load_case(EXAMPLE)
+    guesses = guessed_defaults(case)
+    assert "friction.circuits" in guesses and "GUESS" in guesses["friction.circuits"]
+    assert "medium.density_15" in guesses  # ASSUMED
+    assert "friction.hysteresis" in guesses
+    assert "friction.rolling_friction" not in guesses  # a default, but not labelled a guess
+    given = load_case(EXAMPLE, {"friction.circuits": 3})
+    assert "friction.circuits" not in guessed_defaults(given)
+
+
+@dataclass(frozen=True)
+class _Result:
+    case: Case
+    analysis: str = "tcr"
+    title: str = "guesses"
+    warnings: tuple[str, ...] = ()
+    inputs: dict = field(default_factory=dict)
+
+    def summary(self) -> dict:
+        return {"resistance": {"value": 0.02, "unit": "K/W"}}
+
+    def to_xarray(self) -> xr.Dataset:
+        return xr.Dataset()
+
+    def figures(self) -> list:
+        return []
+
+    def report(self) -> list:
+        return []
+
+
+def test_the_folder_reports_the_guesses(tmp_path):
+    case = load_case(EXAMPLE, {"friction.circuits": 3})
+    folder = write_results(_Result(case, inputs=resolved_inputs(case)), tmp_path / "out")
+    summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
+    assert "friction.seal_force" in summary["guessed_defaults"]
+    assert "friction.circuits" not in summary["guessed_defaults"]
+    report = (folder / "report.html").read_text(encoding="utf-8")
+    assert "<h2>Defaults that are guesses</h2>" in report
+    assert "<td>friction.seal_force</td><td>5</td><td>N</td>" in report
