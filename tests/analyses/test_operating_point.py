@@ -171,6 +171,34 @@ def test_the_report_tells_the_screw_torque_from_its_friction_part(case):
     assert part == pytest.approx(point.friction_torque - work, rel=1e-9)
 
 
+def test_the_torque_is_reported_by_part_with_its_regime(case):
+    """The summary and report gave only the total torque: neither its parts nor the film
+    parameter and traction coefficient the ball model ran at."""
+    from ballscrew.analyses import operating_point_report
+
+    point = operating_point(
+        ballscrew.load_case(EXAMPLE, {"numerics.cells_across": 16, **LIBRARY_OIL}),
+        speed=100 * RPM,
+        axial_load=1000.0,
+    )
+    summary = point.summary()
+    parts = {k: q["value"] for k, q in summary["torque_parts"].items()}
+    assert sum(parts.values()) == pytest.approx(point.friction_torque, rel=1e-12)
+    assert parts["sliding"] > 0.0 and parts["ball_ball"] > 0.0
+    assert summary["friction_part"]["value"] == pytest.approx(point.heat / point.speed, rel=1e-9)
+    assert 0.0 < summary["film_parameter"]["value"] < 100.0
+    assert summary["lubrication_regime"] in ("boundary", "mixed", "EHL")
+    assert 0.0 < summary["traction_coefficient"]["value"] < 0.2
+    section = operating_point_report.sections(point)[1]
+    assert section.title == "Torque by part"
+    assert dict(section.tables[0].rows)["ball–ball friction"] == pytest.approx(
+        1e3 * parts["ball_ball"]
+    )
+    assert "Λ = " in section.paragraphs[0] and "μ = " in section.paragraphs[0]
+    catalogue = operating_point(case, speed=100 * RPM).summary()
+    assert "preload" in catalogue["torque_parts"] and "film_parameter" not in catalogue
+
+
 def test_a_steady_field_draws_no_empty_time_axis(case, tmp_path, monkeypatch):
     """Without a transient the elongation figure had an empty 0–1 min time axis."""
     import matplotlib.pyplot as plt

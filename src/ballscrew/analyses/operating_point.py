@@ -99,6 +99,9 @@ class OperatingPoint(Presented):
     iterations: int
     field: ThermalField
     warnings: tuple[str, ...] = ()
+    friction: FrictionTorque | None = None
+    """The friction model's torque at the fixed point: its parts, film parameter Λ and traction
+    coefficient (None only for points built without it)."""
 
     analysis: ClassVar[str] = "operating-point"
     presentation: ClassVar[ModuleType] = operating_point_report
@@ -290,6 +293,7 @@ def operating_point(
         iterations=iterations,
         field=field,
         warnings=tuple(messages),
+        friction=friction,
     )
 
 

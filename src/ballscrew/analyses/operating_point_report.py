@@ -36,6 +36,16 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
     outlet = result.field.coolant_outlet_temperature
     if outlet is not None:
         scalars["coolant_outlet_temperature"] = quantity(outlet, "K")
+    friction = result.friction
+    if friction is not None:
+        scalars["friction_model"] = friction.model
+        scalars["friction_part"] = quantity(friction.friction, "N*m")
+        scalars["torque_parts"] = {k: quantity(v, "N*m") for k, v in friction.parts.items()}
+        if friction.film_parameter is not None:
+            scalars["film_parameter"] = quantity(friction.film_parameter, "")
+            scalars["lubrication_regime"] = friction.regime
+        if friction.traction_coefficient is not None:
+            scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
     return scalars
 
 
@@ -47,6 +57,43 @@ def fields(result: OperatingPoint) -> xr.Dataset:
 def figures(result: OperatingPoint) -> list[Figure]:
     """The steady temperature field and the screw's elongation."""
     return thermal_report.figures(result.field)
+
+
+#: Readable names of the torque parts of :class:`~ballscrew.friction.torque.FrictionTorque`.
+PART_NAMES = {
+    "work": "work on the load F_a·L/2π",
+    "load": "friction of the working load",
+    "preload": "preload drag (catalogue)",
+    "sliding": "sliding and spin at the screw contacts",
+    "groove_slip": "differential slip at the nut contacts",
+    "ehl_rolling": "EHL rolling resistance",
+    "hysteresis": "elastic hysteresis",
+    "ball_ball": "ball–ball friction",
+    "drag": "viscous drag on the balls",
+    "seals": "seals and wipers",
+    "recirculation": "ball returns",
+}
+
+
+def _torque_section(result: OperatingPoint) -> list[Section]:
+    """The friction model's torque by part, with the regime it ran in (none without it)."""
+    friction = result.friction
+    if friction is None:
+        return []
+    rows = [(PART_NAMES.get(k, k), 1e3 * v) for k, v in friction.parts.items()]
+    notes = [f"Friction model {friction.model!r}; the parts add up to the screw torque T."]
+    if friction.film_parameter is not None:
+        notes.append(
+            f"Film parameter Λ = {friction.film_parameter:.3g} at the screw contact of the "
+            f"loaded nut ({friction.regime} lubrication)"
+            + (
+                f", traction coefficient μ = {friction.traction_coefficient:.3g}."
+                if friction.traction_coefficient is not None
+                else "."
+            )
+        )
+    table = Table(("part", "torque [mN·m]"), tuple(rows))
+    return [Section("Torque by part", paragraphs=(" ".join(notes),), tables=(table,))]
 
 
 def _friction_part(result: OperatingPoint) -> float:
@@ -80,4 +127,4 @@ def sections(result: OperatingPoint) -> list[Section]:
         ),
         tables=(Table(("quantity", "value"), tuple(rows)),),
     )
-    return [coupled, *thermal_report.sections(result.field)]
+    return [coupled, *_torque_section(result), *thermal_report.sections(result.field)]
