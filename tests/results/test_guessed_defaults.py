@@ -59,3 +59,17 @@ def test_the_folder_reports_the_guesses(tmp_path):
     report = (folder / "report.html").read_text(encoding="utf-8")
     assert "<h2>Defaults that are guesses</h2>" in report
     assert "<td>friction.seal_force</td><td>5</td><td>N</td>" in report
+
+
+def test_a_guessed_rule_behind_none_is_a_guess_too(tmp_path):
+    """The nut body d_m + 5 D_b that an unset ``loads.nut_outer_diameter`` stands for was used
+    without appearing among the guesses (None counted as no value)."""
+    case = load_case(EXAMPLE)
+    guesses = guessed_defaults(case)
+    assert case.loads.nut_outer_diameter is None and "loads.nut_outer_diameter" in guesses
+    assert "thermal.shaft_diameter" not in guesses  # None = d_m: a definition, not a guess
+    given = load_case(EXAMPLE, {"loads.nut_outer_diameter": "70 mm"})
+    assert "loads.nut_outer_diameter" not in guessed_defaults(given)
+    folder = write_results(_Result(case, inputs=resolved_inputs(case)), tmp_path / "out")
+    report = (folder / "report.html").read_text(encoding="utf-8")
+    assert "loads.nut_outer_diameter</td><td>by its rule" in report.replace("\n", "")

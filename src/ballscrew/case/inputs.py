@@ -2,36 +2,50 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Any, get_args
 
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
-__all__ = ["GUESS_MARKS", "field_unit", "guessed_defaults", "input_rows", "resolved_inputs"]
+__all__ = [
+    "GUESS_MARKS",
+    "field_description",
+    "field_unit",
+    "guessed_defaults",
+    "input_rows",
+    "resolved_inputs",
+]
 
 #: Words of a field description that label its default a guess.
 GUESS_MARKS = ("GUESS", "ASSUMED")
 
 
+def _field_infos(info: FieldInfo) -> Iterator[FieldInfo]:
+    """``info`` and the field infos inside its annotation (a quantity inside ``X | None``)."""
+    yield info
+    stack = [info.annotation]
+    while stack:
+        annotation = stack.pop()
+        for item in (*getattr(annotation, "__metadata__", ()), *get_args(annotation)):
+            if isinstance(item, FieldInfo):
+                yield from _field_infos(item)
+            elif item is not annotation and (get_args(item) or hasattr(item, "__metadata__")):
+                stack.append(item)
+
+
 def field_unit(info: FieldInfo) -> str | None:
     """SI unit of a quantity field (also inside ``X | None``), None for a plain field."""
-    extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
-    if "unit" in extra:
-        return str(extra["unit"])
-    return _annotation_unit(info.annotation)
-
-
-def _annotation_unit(annotation: Any) -> str | None:
-    for item in (*getattr(annotation, "__metadata__", ()), *get_args(annotation)):
-        if isinstance(item, FieldInfo):
-            unit = field_unit(item)
-            if unit is not None:
-                return unit
-        elif item is not annotation and (get_args(item) or hasattr(item, "__metadata__")):
-            unit = _annotation_unit(item)
-            if unit is not None:
-                return unit
+    for item in _field_infos(info):
+        extra = item.json_schema_extra if isinstance(item.json_schema_extra, dict) else {}
+        if "unit" in extra:
+            return str(extra["unit"])
     return None
+
+
+def field_description(info: FieldInfo) -> str:
+    """Description of a field (also of a quantity inside ``X | None``); empty if none."""
+    return next((item.description for item in _field_infos(info) if item.description), "")
 
 
 def _resolve(value: Any, unit: str | None) -> Any:
@@ -73,7 +87,8 @@ def input_rows(inputs: dict[str, Any], prefix: str = "") -> list[tuple[str, Any,
 def guessed_defaults(model: BaseModel, prefix: str = "") -> dict[str, str]:
     """Dotted key → description of every field of ``model`` (a validated case) that was left
     at a default its description labels a guess (:data:`GUESS_MARKS`), nested sections
-    included; a value the user wrote, or None, is no guess."""
+    included; a value the user wrote is no guess, nor is None unless the description gives the
+    guessed rule that None stands for (``None = d_m + 5 D_b [GUESS]``)."""
     found: dict[str, str] = {}
     for name, info in type(model).model_fields.items():
         value, key = getattr(model, name), f"{prefix}{name}"
@@ -83,10 +98,8 @@ def guessed_defaults(model: BaseModel, prefix: str = "") -> dict[str, str]:
             for k, item in enumerate(value):
                 if isinstance(item, BaseModel):
                     found |= guessed_defaults(item, f"{key}[{k}].")
-        elif (
-            value is not None
-            and name not in model.model_fields_set
-            and any(mark in (info.description or "") for mark in GUESS_MARKS)
-        ):
-            found[key] = info.description or ""
+        elif name not in model.model_fields_set:
+            text = field_description(info)
+            if (value is not None or "None = " in text) and any(m in text for m in GUESS_MARKS):
+                found[key] = text
     return found

@@ -39,7 +39,13 @@ class LoadsSpec(Model):
         "tabulated once with [numerics])",
     )
     nut_outer_diameter: (
-        quantity("length", "outer diameter of the nut body; None = d_m + 5 D_b", gt=0, le=10.0)
+        quantity(
+            "length",
+            "outer diameter of the nut body; None = d_m + 5 D_b [GUESS: DIN 69051 flanged "
+            "nuts of 6.35 mm balls on 32–63 mm screws]",
+            gt=0,
+            le=10.0,
+        )
         | None
     ) = None
     spacer: (

@@ -68,7 +68,8 @@ class LubricationSpec(Model):
                 ge=1.0,
                 le=1e3,
                 description="inlet meniscus distance from the contact centre / Hertz semi-axis "
-                "along rolling, m >= 1 (starved: required; grease: default 1.5 [GUESS])",
+                "along rolling, m >= 1; None = 1.5 in the grease state [GUESS] (starved: "
+                "required)",
             ),
         ]
         | None

@@ -415,10 +415,16 @@ class ThermalSpec(Model):
         | None
     ) = None
     nut_outer_diameter: (
-        quantity("length", "nut outer diameter; None = 1.75 d_m", gt=0, le=5.0) | None
+        quantity(
+            "length",
+            "nut outer diameter; None = 1.75 d_m [GUESS: a flanged nut body]",
+            gt=0,
+            le=5.0,
+        )
+        | None
     ) = None
     nut_length: (
-        quantity("length", "length of each nut; None = 2.5 d_m", gt=0, le=MAX_LENGTH) | None
+        quantity("length", "length of each nut; None = 2.5 d_m [GUESS]", gt=0, le=MAX_LENGTH) | None
     ) = None
     spacer_length: quantity("length", "spacer length between two nuts", ge=0, le=MAX_LENGTH) = 0.01
     spacer_outer_diameter: (

@@ -83,6 +83,10 @@ def inputs_warnings_sections(
             for key, value, unit in input_rows(dict(inputs))
             if key in guesses
         ]
+        shown = {row[0] for row in guessed}
+        guessed += [
+            [key, "by its rule", "", text] for key, text in guesses.items() if key not in shown
+        ]
         sections.append(
             Section(
                 "Defaults that are guesses",
