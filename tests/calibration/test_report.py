@@ -125,3 +125,33 @@ def test_the_report_states_each_correlation_once() -> None:
     assert [label for label in labels if label.startswith("correlation")] == [
         "correlation (ln K, torque scale)"
     ]
+
+
+def test_the_plot_scales_its_revolution_axis_to_the_data(tmp_path: Path, monkeypatch) -> None:
+    """The revolution axis was always divided by 10⁶: a 14 400-revolution bench read as
+    0.000–0.014; it now takes the power of 10³ of the data (:func:`revolutions_axis`)."""
+    import dataclasses
+
+    import matplotlib.axes
+
+    from ballscrew.calibration.report import fit_plot
+
+    from .test_fit import bench
+
+    data = bench("friction_torque", seed=3, scale=1.25)
+    fitted = fit_wear_coefficient(SyntheticModel(), data, fit_torque_scale=True)
+    result = dataclasses.replace(  # the same history on a 14 400-revolution bench
+        fitted,
+        revolutions=fitted.revolutions / 100.0,
+        model_revolutions=fitted.model_revolutions / 100.0,
+    )
+    labels: list[str] = []
+    original = matplotlib.axes.Axes.set_xlabel
+    monkeypatch.setattr(
+        matplotlib.axes.Axes,
+        "set_xlabel",
+        lambda self, text, *a, **k: labels.append(text) or original(self, text, *a, **k),
+    )
+    fit_plot(result, "bench", tmp_path / "fit.png")
+    assert [t for t in labels if t] == ["screw revolutions [10³ rev]"]
+    assert (tmp_path / "fit.png").exists()

@@ -10,11 +10,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain
+from ballscrew.plotting import plain, revolutions_axis
 
 if TYPE_CHECKING:
     from ballscrew.calibration.result import CalibrationResult
@@ -129,8 +130,11 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
         height_ratios=(3, 1),
         layout="constrained",
     )
+    rev_scale, rev_label = revolutions_axis(
+        np.concatenate([result.model_revolutions, result.revolutions])
+    )
     ax.plot(
-        result.model_revolutions * 1e-6,
+        result.model_revolutions / rev_scale,
         result.model_values * factor,
         "-",
         color="tab:blue",
@@ -144,7 +148,7 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     if result.prediction_sigma is not None:
         half = 1.96 * result.prediction_sigma * factor
         ax.fill_between(
-            result.model_revolutions * 1e-6,
+            result.model_revolutions / rev_scale,
             result.model_values * factor - half,
             result.model_values * factor + half,
             color="tab:blue",
@@ -154,10 +158,10 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
         )
     if result.fit_until is not None:
         for axis in (ax, axr):
-            axis.axvline(result.fit_until * 1e-6, color="0.3", linestyle="--", linewidth=0.8)
-        ax.text(result.fit_until * 1e-6, ax.get_ylim()[1], " held out →", va="top", fontsize=8)
+            axis.axvline(result.fit_until / rev_scale, color="0.3", linestyle="--", linewidth=0.8)
+        ax.text(result.fit_until / rev_scale, ax.get_ylim()[1], " held out →", va="top", fontsize=8)
     ax.plot(
-        result.revolutions * 1e-6,
+        result.revolutions / rev_scale,
         result.measured * factor,
         "o",
         color="tab:red",
@@ -168,8 +172,8 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     ax.set_title(plain(title), fontsize=10)
     ax.legend(fontsize=8)
     axr.axhline(0.0, color="0.5", linewidth=0.8)
-    axr.plot(result.revolutions * 1e-6, result.residuals * factor, "o", color="tab:red", ms=3)
-    axr.set_xlabel("screw revolutions [10⁶ rev]")
+    axr.plot(result.revolutions / rev_scale, result.residuals * factor, "o", color="tab:red", ms=3)
+    axr.set_xlabel(rev_label)
     axr.set_ylabel(f"model − measured [{unit}]", fontsize=8)
     path = Path(path)
     fig.savefig(path, dpi=110)
