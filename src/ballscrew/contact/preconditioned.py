@@ -28,13 +28,14 @@ preconditioner symbols). A contact that has converged leaves the batch.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import lru_cache
 from types import ModuleType
 from typing import Any
 
 import numpy as np
 import scipy.fft
 
-from ballscrew.backend import array_module, fft_threads
+from ballscrew.backend import array_module, fft_pool, fft_threads, limited_fft_threads
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 
 __all__ = [
@@ -202,14 +203,13 @@ def _pcg(
         xp.add(u, hw, out=q)
         xp.greater(pw, 0.0, out=c)
         n_c = np.maximum(_host(_sums(c)), 1.0)
-        g_mean = _host(_dot(q, c)) / n_c if load_control else np.zeros(len(work))
-        g_bar = _col(xp.asarray(g_mean))
-        xp.subtract(q, g_bar, out=s)
-        s *= c
+        if load_control:  # q = u + h − ḡ from here on
+            q -= _col(xp.asarray(_host(_dot(q, c)) / n_c))
+        xp.multiply(q, c, out=s)
         z = preconditioner.apply(s, dtype)
         z *= c
-        if load_control:
-            z -= _col(xp.asarray(_host(_dot(z, c)) / n_c))
+        if load_control:  # z = 0 off the contact set, so Σ z is its sum there
+            z -= _col(xp.asarray(_host(_sums(z)) / n_c))
             z *= c
         rho = _host(_dot(s, z))
         beta = np.where(conjugate & (rho_old > 0.0), rho / np.where(rho_old > 0.0, rho_old, 1.0), 0)
@@ -224,14 +224,13 @@ def _pcg(
         moving = (curvature > 0.0) & (rho > 0.0)
         tau = np.where(moving, _host(_dot(s, t)) / np.where(moving, curvature, 1.0), 0.0)
         tau_b = _col(xp.asarray(tau))
-        xp.copyto(p_old, pw)
         xp.multiply(t, tau_b, out=z)
-        pw -= z
+        p_old, pw = pw, p_old  # the buffers swap instead of a copy
+        xp.subtract(p_old, z, out=pw)
         clipped = _host(pw.min(axis=(1, 2))) < 0.0
         xp.maximum(pw, 0.0, out=pw)
-        xp.subtract(q, g_bar, out=s)  # cells with p = 0 and a negative gap re-enter (Eq. 37)
-        xp.less_equal(pw, 0.0, out=c)
-        s *= c
+        xp.less_equal(pw, 0.0, out=c)  # cells with p = 0 and a negative gap re-enter (Eq. 37)
+        xp.multiply(q, c, out=s)
         xp.minimum(s, 0.0, out=s)
         readmitted = _host(s.min(axis=(1, 2))) < 0.0
         if readmitted.any():
@@ -394,8 +393,9 @@ class _Setting:
     max_iterations: int
     dtype: type[np.floating]
 
-    def take(self, rows: list[int]) -> _Setting:
-        """The setting of the contacts ``rows``: their entries of the per-contact arrays."""
+    def take(self, rows: Any) -> _Setting:
+        """The setting of the contacts ``rows`` (indices or a slice): their entries of the
+        per-contact arrays."""
         return replace(
             self, **{k: _take(getattr(self, k), rows) for k in ("dx", "dy", "e_star", "total")}
         )
@@ -428,9 +428,47 @@ def solve_batch(
 
     When the start's pressure covers a small part of the grid, the CG runs on a window around it
     (:func:`_window`) and the result is checked on the whole grid (:func:`_outside_clear`).
+    On the CPU the contacts are shared between :func:`~ballscrew.backend.fft_threads` threads
+    (:func:`_solve_shared`).
     """
     setting = _Setting(dx, dy, e_star, total, tol, max_iterations, dtype)
+    threads = min(fft_threads(4 * h.size), len(h)) if array_module(h) is np else 1
+    if threads > 1:
+        return _solve_shared(h, setting, initial, nested, operator, threads)
     return _solve(h, setting, initial, nested, operator, check=True)
+
+
+def _solve_shared(
+    h: Any,
+    setting: _Setting,
+    initial: Any,
+    nested: bool,
+    operator: DCFFTOperator | DCFFTStack | None,
+    threads: int,
+) -> BatchIterate:
+    """:func:`_solve` on ``threads`` runs of consecutive contacts at once, each in a pool thread of
+    one FFT thread. The contacts of a stack are independent CGs, so each result is the one of its
+    contact alone; sharing whole solves, not only their transforms, also puts the element-wise
+    work and the coarse grids on both cores (measured on 2 cores at 32 × 128²:
+    ``docs/benchmarks.md``)."""
+    runs = [slice(c[0], c[-1] + 1) for c in np.array_split(np.arange(len(h)), threads)]
+
+    def run(rows: slice) -> BatchIterate:
+        with limited_fft_threads(1):
+            return _solve(
+                h[rows], setting.take(rows), None if initial is None else initial[rows], nested,
+                None if operator is None else operator.take(rows), check=True,
+            )  # fmt: skip
+
+    parts = list(fft_pool().map(run, runs))
+    xp = array_module(h)
+    whole = [xp.concatenate([part.pressure for part in parts])] + [
+        np.concatenate([getattr(part, name) for part in parts])
+        for name in ("iterations", "coarse_work", "residual", "converged")
+    ]
+    exact = all(part.displacement is not None for part in parts)
+    u = xp.concatenate([part.displacement for part in parts]) if exact else None
+    return BatchIterate(*whole, u)
 
 
 def _solve(
@@ -480,7 +518,7 @@ def _solve(
     return BatchIterate(p, iterations, coarse_work, residual, converged, u if exact else None)
 
 
-def _take(value: Any, rows: list[int]) -> Any:
+def _take(value: Any, rows: Any) -> Any:
     """The entries ``rows`` of a per-contact (B,) array; a shared scalar or None as it is."""
     return value if value is None or np.ndim(value) == 0 else value[rows]
 
@@ -600,7 +638,6 @@ def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> bo
     return bool((_host(q.min(axis=(1, 2))) >= g_bar).all())
 
 
-_PRECONDITIONERS: dict[tuple[Any, ...], SpectralPreconditioner] = {}
 _CACHED = 16
 """Preconditioners kept (as the operators: nested levels × both precisions × a few cells)."""
 
@@ -618,15 +655,16 @@ def _preconditioner(
     shape: tuple[int, int], dx: Any, dy: Any, e_star: Any, xp: ModuleType
 ) -> SpectralPreconditioner:
     """The preconditioner of this grid from a small cache (the last ``_CACHED`` grids and
-    windows; a plain dict, so one solving thread at a time), or the stack of them for
-    per-contact cells."""
+    windows), or the stack of them for per-contact cells."""
     if np.ndim(dx) != 0:
         return PreconditionerStack(
             [_preconditioner(shape, *cell, xp) for cell in zip(dx, dy, e_star, strict=True)]
         )
-    key = (shape, dx, dy, e_star, xp.__name__)
-    if key not in _PRECONDITIONERS:
-        if len(_PRECONDITIONERS) >= _CACHED:
-            _PRECONDITIONERS.pop(next(iter(_PRECONDITIONERS)))
-        _PRECONDITIONERS[key] = SpectralPreconditioner(shape, dx, dy, e_star, xp)
-    return _PRECONDITIONERS[key]
+    return _cached_preconditioner(shape, float(dx), float(dy), float(e_star), xp)
+
+
+@lru_cache(maxsize=_CACHED)
+def _cached_preconditioner(
+    shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType
+) -> SpectralPreconditioner:
+    return SpectralPreconditioner(shape, dx, dy, e_star, xp)
