@@ -2,6 +2,8 @@
 every size, an iteration count that does not grow with the grid, batched = one at a time, and the
 mixed-precision option."""
 
+import threading
+
 import numpy as np
 import pytest
 
@@ -10,6 +12,7 @@ from ballscrew.contact import (
     NORMAL_SOLVERS,
     convolution,
     hertz,
+    preconditioned,
     solve_normal,
     solve_normal_batch,
     solve_normal_displacement,
@@ -276,3 +279,27 @@ def test_hertz_start_is_the_hertz_pressure_of_a_paraboloid():
     assert np.abs(r[p > 0].max() - reference.a) < dx
     gap, dx, dy, load, _ = hertz_problem("sphere", 128)
     assert solve_normal(gap, dx, dy, E_STAR, load).coarse_work < 1.0
+
+
+def test_whole_solves_shared_between_threads_equal_one_at_a_time(monkeypatch):
+    """Two pool threads each solve a run of the stack's contacts (coarse grids, CG and check)."""
+    monkeypatch.setattr(preconditioned, "fft_threads", lambda points=None: 2)
+    names = set()
+    solve = preconditioned._solve
+
+    def recorded(*args, **kwargs):
+        if kwargs["check"]:
+            names.add(threading.current_thread().name)
+        return solve(*args, **kwargs)
+
+    monkeypatch.setattr(preconditioned, "_solve", recorded)
+    gaps, dx, dy, loads = ball_stack(5, n=64)
+    batch = solve_normal_batch(gaps, dx, dy, E_STAR, loads)
+    assert len(names) == 2 and all(name.startswith("ballscrew-fft") for name in names)
+    for gap, load, together in zip(gaps, loads, batch, strict=True):
+        alone = solve_normal(gap, dx, dy, E_STAR, load)
+        assert together.iterations == alone.iterations
+        scale = alone.peak_pressure
+        np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
+        u_scale = np.abs(alone.displacement).max()
+        np.testing.assert_allclose(together.displacement, alone.displacement, atol=1e-10 * u_scale)

@@ -77,3 +77,29 @@ def test_batch_of_contacts_with_windows_of_two_sizes_equals_one_at_a_time():
         alone = solve_normal(g, dx, dx, E_STAR, load, precision="mixed")
         assert together.iterations == alone.iterations
         np.testing.assert_array_equal(together.pressure, alone.pressure)
+
+
+def test_only_the_contact_that_outgrows_its_window_goes_on_on_the_whole_grid(monkeypatch):
+    """A batch of a contact seeded on a small patch (it outgrows its window) and one seeded with
+    its own solution (it does not): the check fails for the first only, and each result is the
+    one of its contact alone."""
+    gap, dx, reference = sphere()
+    settled = solve_normal(gap, dx, dx, E_STAR, 60.0).pressure
+    monkeypatch.setattr(preconditioned, "WINDOW_MARGIN", 0.0)
+    monkeypatch.setattr(preconditioned, "WINDOW_MIN_MARGIN", 0)
+    seed = np.zeros_like(gap)
+    seed[60:68, 60:68] = 1.0
+    cleared = []
+    check = preconditioned._outside_clear
+    monkeypatch.setattr(
+        preconditioned, "_outside_clear", lambda *a: cleared.append(check(*a)) or cleared[-1]
+    )
+    loads, initial = np.array([100.0, 60.0]), np.stack([seed, settled])
+    batch = solve_normal_batch(np.stack([gap, gap]), dx, dx, E_STAR, loads, initial=initial)
+    assert [list(c) for c in cleared] == [[False, True]]
+    for b, together in enumerate(batch):
+        alone = solve_normal(gap, dx, dx, E_STAR, loads[b], initial=initial[b])
+        assert together.converged and together.iterations == alone.iterations
+        np.testing.assert_allclose(together.pressure, alone.pressure, atol=1e-10 * reference.p0)
+        exact = DCFFTOperator(gap.shape, dx, dx, E_STAR).apply(together.pressure)
+        np.testing.assert_allclose(together.displacement, exact, rtol=0, atol=1e-12 * exact.max())

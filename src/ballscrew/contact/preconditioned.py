@@ -17,7 +17,7 @@ The constrained CG of Polonsky & Keer (1999) with three additions (``docs/theory
    margin (:data:`WINDOW_MARGIN`), when they hold at most :data:`WINDOW_MAX_FRACTION` of the grid.
    DC-FFT on the window is the exact displacement there of a pressure that vanishes outside it;
    the preconditioner is periodic on the window. A whole-grid u = K ∗ p at the end checks that
-   no cell outside penetrates (else the CG goes on on the whole grid).
+   no cell outside penetrates (else that contact's CG goes on on its whole grid).
 
 Every array carries a leading batch axis: B contacts on grids of the same cell counts, each with its
 own gap and load, step length, conjugacy and stop, and either one operator for all (shared dx, dy,
@@ -498,24 +498,45 @@ def _solve(
     groups: dict[Any, list[int]] = {}
     for b, window in enumerate(windows):
         groups.setdefault(None if window is None else _extent(window), []).append(b)
-    if len(groups) == 1:
-        p, iterations, residual, converged, u = _solve_on(h, p, setting, operator, check, windows)
-        return BatchIterate(p, iterations, coarse_work, residual, converged, u)
-    # Contacts whose windows differ in size are solved apart: each as it would be alone.
+    # Contacts whose windows differ in size are iterated apart: each as it would be alone.
     iterations, residual = np.zeros(len(p), dtype=int), np.zeros(len(p))
-    converged, exact = np.zeros(len(p), dtype=bool), True
-    u = xp.empty_like(p)
-    for rows in groups.values():
-        part = _solve_on(
-            h[rows], p[rows], setting.take(rows), None if operator is None else operator.take(rows),
-            check, [windows[b] for b in rows],
-        )  # fmt: skip
-        p[rows], iterations[rows], residual[rows], converged[rows] = part[:4]
-        if part[4] is None:
-            exact = False
-        else:
-            u[rows] = part[4]
-    return BatchIterate(p, iterations, coarse_work, residual, converged, u if exact else None)
+    converged = np.zeros(len(p), dtype=bool)
+    for extent, rows in groups.items():
+        every = len(rows) == len(p)
+        part = setting if every else setting.take(rows)
+        if extent is None:
+            whole = operator if every or operator is None else operator.take(rows)
+            if every:
+                p, iterations, residual, converged = _iterate(h, p, part, whole)
+            else:
+                p[rows], iterations[rows], residual[rows], converged[rows] = _iterate(
+                    h[rows], p[rows], part, whole
+                )
+            continue
+        inner, iterations[rows], residual[rows], converged[rows] = _iterate(
+            xp.stack([h[b][windows[b]] for b in rows]),
+            xp.stack([p[b][windows[b]] for b in rows]),
+            part,
+            None,
+        )
+        for k, b in enumerate(rows):
+            p[b].fill(0.0)
+            p[b][windows[b]] = inner[k]
+    if not check:
+        return BatchIterate(p, iterations, coarse_work, residual, converged)
+    if operator is None:
+        operator = _operator((nx, ny), setting.dx, setting.dy, setting.e_star, xp, np.float64)
+    u = operator.apply_batch(p, xp.empty_like(p))
+    out = np.flatnonzero(~_outside_clear(h, u, p, windows, total is not None))
+    if out.size:  # a cell outside its window penetrates: on from here on the whole grids
+        rows, whole = xp.asarray(out), operator.take(out)
+        budget = max(setting.max_iterations - int(iterations[out].max()), 1)
+        p[rows], more, residual[out], converged[out] = _iterate(
+            h[rows], p[rows], replace(setting.take(out), max_iterations=budget), whole
+        )
+        iterations[out] += more
+        u[rows] = whole.apply_batch(p[rows], xp.empty_like(p[rows]))
+    return BatchIterate(p, iterations, coarse_work, residual, converged, u)
 
 
 def _take(value: Any, rows: Any) -> Any:
@@ -526,43 +547,6 @@ def _take(value: Any, rows: Any) -> Any:
 def _extent(window: tuple[slice, slice]) -> tuple[int, int]:
     """Cells of a window along each axis."""
     return tuple(part.stop - part.start for part in window)  # type: ignore[return-value]
-
-
-def _solve_on(
-    h: Any,
-    p: Any,
-    setting: _Setting,
-    operator: DCFFTOperator | DCFFTStack | None,
-    check: bool,
-    windows: list[tuple[slice, slice] | None],
-) -> tuple[Any, Any, Any, Any, Any]:
-    """:func:`_iterate` on the whole grids, or on the ``windows`` (one per contact, all of one
-    size) with the whole-grid check; returns p, iterations, residual, converged, u = K ∗ p (None
-    if not computed)."""
-    xp = array_module(h)
-    shape = h.shape[1:]
-    if windows[0] is None:
-        return (*_iterate(h, p, setting, operator), None)
-    inner, iterations, residual, converged = _iterate(
-        xp.stack([h[b][w] for b, w in enumerate(windows)]),
-        xp.stack([p[b][w] for b, w in enumerate(windows)]),
-        setting,
-        None,
-    )
-    p = xp.zeros_like(h)
-    for b, w in enumerate(windows):
-        p[b][w] = inner[b]
-    if not check:
-        return p, iterations, residual, converged, None
-    if operator is None:
-        operator = _operator(shape, setting.dx, setting.dy, setting.e_star, xp, np.float64)
-    u = operator.apply_batch(p, xp.empty_like(p))
-    if _outside_clear(h, u, p, windows, setting.total is not None):
-        return p, iterations, residual, converged, u
-    # A cell outside its window penetrates: go on from here on the whole grids.
-    left = max(setting.max_iterations - int(iterations.max()), 1)
-    p, more, residual, converged = _iterate(h, p, replace(setting, max_iterations=left), operator)
-    return p, iterations + more, residual, converged, None
 
 
 def _iterate(
@@ -625,17 +609,23 @@ def _window(p: Any) -> tuple[slice, slice] | None:
     return rows, cols
 
 
-def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> bool:
-    """Whether no cell outside its contact's window penetrates: u + h ≥ ḡ there (ḡ = mean of
-    u + h over the contact set under load control, 0 under displacement control), so each
-    window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits no cell)."""
+def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> np.ndarray:
+    """(B,) whether no cell outside its contact's window penetrates: u + h ≥ ḡ there (ḡ = mean of
+    u + h over the contact set, all in the window, under load control; 0 under displacement
+    control), so each window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits
+    no cell)."""
     xp = array_module(h)
-    q = u + h
-    c = (p > 0.0).astype(q.dtype)
-    g_bar = _host(_dot(q, c)) / np.maximum(_host(_sums(c)), 1.0) if load else np.zeros(len(h))
+    clear = np.ones(len(h), dtype=bool)  # a contact without a window was solved on its grid
     for b, window in enumerate(windows):
-        q[b][window] = xp.inf
-    return bool((_host(q.min(axis=(1, 2))) >= g_bar).all())
+        if window is None:
+            continue
+        q = xp.add(u[b], h[b])
+        inside = q[window]
+        contact = p[b][window] > 0.0
+        g_bar = float(inside[contact].sum()) / max(int(contact.sum()), 1) if load else 0.0
+        inside.fill(xp.inf)
+        clear[b] = float(q.min()) >= g_bar
+    return clear
 
 
 _CACHED = 16
