@@ -180,7 +180,9 @@ def _pcg(
     t = z + β t;  r = K ∗ t;  τ = (g·t)/(r·t − r̄ Σt);  p ← max(p − τ t, 0);
     cells with p = 0 and u + h < ḡ re-enter with p = (ḡ − u − h)/K(0, 0);  p ← p·total/Σp.
     u ← (u − τ r)·total/Σp, recomputed as K ∗ p after an iteration that clipped or re-entered a
-    cell (skipping that, and letting u drift, was measured to multiply the iterations by 1.3-40).
+    cell (skipping that, and letting u drift, was measured to multiply the iterations by 1.3-40),
+    or, if that changed at most :data:`DIRECT_CELLS` cells, corrected by the direct sum of their
+    change Δp: u ← u + (total/Σp)·K ∗ Δp, the same u to rounding.
     Converged contacts leave the working stack; ``p`` is modified in place.
     """
     xp = array_module(h)
@@ -237,6 +239,7 @@ def _pcg(
             s *= lone_step
             pw -= s
         conjugate = ~readmitted
+        changes = _changed_cells(pw, p_old, z, np.flatnonzero(clipped | readmitted))
         current = _host(_sums(pw))
         alive = current > 0.0
         scale = totw / np.where(alive, current, 1.0) if load_control else np.ones(len(work))
@@ -250,8 +253,14 @@ def _pcg(
         u -= r
         u *= scale_b
         stopped = (res < tol) | ~alive
-        exact = np.flatnonzero((clipped | readmitted) & ~stopped)
-        if exact.size:  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
+        exact = []  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
+        for b in np.flatnonzero((clipped | readmitted) & ~stopped):
+            if b in changes:  # u += scale·K ∗ Δp on the few cells that changed
+                cells, values = changes[b]
+                operator.row(b).add_cells(cells, scale[b] * values, u[b])
+            else:
+                exact.append(b)
+        if exact:
             rows = xp.asarray(exact)
             u[rows] = operator.take(exact).apply_batch(pw[rows], xp.empty_like(pw[rows]))
         residual[work], iterations[work] = res, iteration
@@ -271,6 +280,27 @@ def _pcg(
     else:
         p[xp.asarray(work)] = pw
     return p, iterations, residual, done
+
+
+def _changed_cells(p: Any, p_old: Any, step: Any, rows: Any) -> dict[int, tuple[Any, Any]]:
+    """Of the contacts ``rows``, those whose pressure ``p`` differs from p_old − step on at most
+    :data:`DIRECT_CELLS` cells: contact → (flat cells, p − (p_old − step) there). NumPy only (an
+    empty dict on other array modules); the other cells of p are p_old − step bit for bit."""
+    changes = {}
+    if array_module(p) is not np:
+        return changes
+    for b in rows.tolist():
+        delta = p[b] - (p_old[b] - step[b])
+        cells = np.flatnonzero(delta)
+        if cells.size <= DIRECT_CELLS:
+            changes[b] = (cells, delta.ravel()[cells])
+    return changes
+
+
+DIRECT_CELLS = 16
+"""Cells a clipping or re-entry step may change for u to be corrected by the direct sum over them
+(:meth:`~ballscrew.contact.convolution.DCFFTOperator.add_cells`) instead of a new u = K ∗ p by
+DC-FFT (GUESS from the crossover measured on 60 × 60 windows: see ``docs/benchmarks.md``)."""
 
 
 def _per_contact(value: Any, xp: ModuleType) -> Any:
