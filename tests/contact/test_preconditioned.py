@@ -260,6 +260,29 @@ def test_nested_grid_transfers_match_cell_by_cell_formulas():
             np.testing.assert_allclose(fine[:, i, j], expected, rtol=1e-14, atol=1e-24)
 
 
+def test_refinement_of_the_pressures_support_equals_that_of_the_whole_grid():
+    """Refining only the rows and columns that hold a pressure (widened by a cell) gives the
+    refinement of the whole grid bit for bit, with a support inside and one at the grid's edge."""
+    from ballscrew.contact.preconditioned import _refine_axis, _support
+
+    rng = np.random.default_rng(5)
+    for corner in (False, True):
+        coarse = np.zeros((2, 16, 20))
+        coarse[0, 5:9, 6:12] = rng.random((4, 6))
+        coarse[1, 4:7, 8:15] = rng.random((3, 7))
+        if corner:
+            coarse[1, 13:, 17:] = rng.random((3, 3))
+        rows, cols = _support(coarse)
+        assert (rows.start, cols.start) == (3, 5)
+        assert (rows.stop, cols.stop) == ((16, 20) if corner else (10, 16))
+        whole = _refine_axis(_refine_axis(coarse, 1), 2)
+        part = np.zeros_like(whole)
+        part[:, 2 * rows.start : 2 * rows.stop, 2 * cols.start : 2 * cols.stop] = _refine_axis(
+            _refine_axis(coarse[:, rows, cols], 1), 2
+        )
+        assert np.array_equal(part, whole)
+
+
 def test_hertz_start_is_the_hertz_pressure_of_a_paraboloid():
     """The coarsest grid's start: Hertz's p0·√(1 − r²/a²) on a sphere's gap (peak and contact
     radius within the cell size), the load kept, and it cuts the coarse work of the 128² sphere

@@ -378,9 +378,25 @@ def _nested_start(h: Any, setting: _Setting, coarse: bool) -> tuple[Any, Any]:
         setting, dx=2 * setting.dx, dy=2 * setting.dy, total=total / 4.0, tol=COARSE_TOLERANCE
     )
     state = _solve(_coarsen(h), halved, None, True, None, check=False)
-    p = _refine_axis(_refine_axis(state.pressure, 1), 2)
-    p *= _col(xp.asarray(total) / _sums(p))
+    rows, cols = _support(state.pressure)
+    p = xp.zeros(h.shape)
+    fine = p[:, 2 * rows.start : 2 * rows.stop, 2 * cols.start : 2 * cols.stop]
+    fine[...] = _refine_axis(_refine_axis(state.pressure[:, rows, cols], 1), 2)
+    fine *= _col(xp.asarray(total) / _sums(fine))
     return p, (state.iterations + state.coarse_work) / 4.0
+
+
+def _support(p: Any) -> tuple[slice, slice]:
+    """Rows and columns of the (B, nx, ny) stack ``p`` that hold a pressure in any grid, widened by
+    a cell on each side: outside them the interpolated pressure of :func:`_refine_axis` is zero,
+    inside it is that of the whole grids (a zero border cell stands for the repeated edge)."""
+    xp = array_module(p)
+    spans = []
+    for axis, n in ((2, p.shape[1]), (1, p.shape[2])):
+        hit = xp.flatnonzero((p > 0.0).any(axis=(0, axis)))
+        lo, hi = (int(hit[0]), int(hit[-1]) + 1) if hit.size else (0, n)
+        spans.append(slice(max(lo - 1, 0), min(hi + 1, n)))
+    return spans[0], spans[1]
 
 
 def _hertz_start(h: Any, setting: _Setting) -> Any:
