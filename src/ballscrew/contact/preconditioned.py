@@ -284,23 +284,30 @@ def _pcg(
 
 def _changed_cells(p: Any, p_old: Any, step: Any, rows: Any) -> dict[int, tuple[Any, Any]]:
     """Of the contacts ``rows``, those whose pressure ``p`` differs from p_old − step on at most
-    :data:`DIRECT_CELLS` cells: contact → (flat cells, p − (p_old − step) there). NumPy only (an
-    empty dict on other array modules); the other cells of p are p_old − step bit for bit."""
+    :data:`DIRECT_CELLS` cells (one per :data:`DIRECT_GRID_CELLS` cells of the grid on smaller
+    grids): contact → (flat cells, p − (p_old − step) there). NumPy only (an empty dict on other
+    array modules); the other cells of p are p_old − step bit for bit."""
+    limit = min(DIRECT_CELLS, p[0].size // DIRECT_GRID_CELLS)
+    if array_module(p) is not np or not rows.size or limit < 1:
+        return {}
+    delta = p[rows] - (p_old[rows] - step[rows])
+    few = np.count_nonzero(delta, axis=(1, 2)) <= limit
     changes = {}
-    if array_module(p) is not np:
-        return changes
-    for b in rows.tolist():
-        delta = p[b] - (p_old[b] - step[b])
-        cells = np.flatnonzero(delta)
-        if cells.size <= DIRECT_CELLS:
-            changes[b] = (cells, delta.ravel()[cells])
+    for k in np.flatnonzero(few).tolist():
+        cells = np.flatnonzero(delta[k])
+        changes[int(rows[k])] = (cells, delta[k].ravel()[cells])
     return changes
 
 
 DIRECT_CELLS = 16
-"""Cells a clipping or re-entry step may change for u to be corrected by the direct sum over them
-(:meth:`~ballscrew.contact.convolution.DCFFTOperator.add_cells`) instead of a new u = K ∗ p by
-DC-FFT (GUESS from the crossover measured on 60 × 60 windows: see ``docs/benchmarks.md``)."""
+"""Most cells a clipping or re-entry step may change for u to be corrected by the direct sum over
+them (:meth:`~ballscrew.contact.convolution.DCFFTOperator.add_cells`) instead of a new
+u = K ∗ p by DC-FFT (GUESS, from the crossover measured on one core: a cell costs about
+3 µs + 1.2 ns per grid cell, a DC-FFT pair 13 µs at 8², 62 µs at 32² and 85-160 µs at 60², so
+the direct sum wins below about 4, 10 and 20-30 cells)."""
+DIRECT_GRID_CELLS = 256
+"""Grid cells per changed cell allowed on grids below 64 × 64 (GUESS, as :data:`DIRECT_CELLS`:
+none on 8², 1 on 16², 4 on 32²)."""
 
 
 def _per_contact(value: Any, xp: ModuleType) -> Any:
