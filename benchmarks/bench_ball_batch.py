@@ -52,8 +52,9 @@ def _best(func, calls: int = 50) -> float:
     return best
 
 
-def _floor(gaps, dx, loads) -> float:
-    """FFT time per contact [s]: the pairs of one solve, counted, each timed alone (one core)."""
+def _floor(gaps, dx, loads) -> tuple[float, dict[str, float]]:
+    """FFT time per contact [s]: the pairs of one solve, counted, each timed alone (one core);
+    and the pairs per contact by kind and size."""
     import numpy as np
     import scipy.fft
 
@@ -92,7 +93,9 @@ def _floor(gaps, dx, loads) -> float:
             g = np.random.default_rng(2).random((16, *shape))
             pair = _best(lambda g=g, s=shape: scipy.fft.irfft2(scipy.fft.rfft2(g), s=s), 10) / 16
             total += count * pair
-    return total / BATCH
+    counts = {f"padded {m}x{n}": k / BATCH for (m, n), k in sorted(padded.items())}
+    counts |= {f"periodic {m}x{n}": k / BATCH for (m, n), k in sorted(periodic.items())}
+    return total / BATCH, counts
 
 
 def _child(repeats: int) -> None:
@@ -112,8 +115,8 @@ def _child(repeats: int) -> None:
         cpu.append(time.process_time() - start_cpu)
     work = [np.mean([r.iterations for r in results]), np.mean([r.coarse_work for r in results])]
     load = os.getloadavg()[0]
-    fft = _floor(gaps, dx, loads)
-    print(json.dumps({"wall": wall, "cpu": cpu, "work": work, "load": load, "fft": fft}))
+    fft, counts = _floor(gaps, dx, loads)
+    print(json.dumps({"wall": wall, "cpu": cpu, "work": work, "load": load, "fft": fft, **counts}))
 
 
 def main() -> None:
@@ -149,6 +152,9 @@ def main() -> None:
             f"{1e3 * statistics.median(cpu) / BATCH:.2f} | {work} | "
             f"{1e3 * fft:.2f} ms, {2.0 / fft:.0f}/s |"
         )
+    for tree, done in runs.items():
+        pairs = ", ".join(f"{k} {v:.2f}" for k, v in done[0].items() if k.startswith("p"))
+        print(f"FFT pairs per contact, {tree}: {pairs}")
 
 
 if __name__ == "__main__":
