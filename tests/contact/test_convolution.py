@@ -108,19 +108,3 @@ def test_stack_convolution_equals_each_grid_alone(batch, n):
         if n <= 8:
             direct = direct_convolution(p[b], dx[b], 2.0 * dx[b], E_STAR)
             np.testing.assert_allclose(u_stack[b], direct, rtol=1e-12, atol=0.0)
-
-
-@pytest.mark.parametrize("shape", [(9, 7), (1, 5), (6, 6)])
-def test_direct_sum_over_a_few_cells_equals_the_direct_convolution(shape):
-    """u added by ``add_cells`` for pressures on a few cells (corners and edges included) is
-    (K5) summed directly, on top of what ``out`` held."""
-    rng = np.random.default_rng(3)
-    cells = rng.choice(shape[0] * shape[1], size=min(4, shape[0] * shape[1]), replace=False)
-    cells[0] = shape[0] * shape[1] - 1  # the last corner
-    pressure = np.zeros(shape)
-    pressure.flat[cells] = 1e6 * rng.random(cells.size)
-    operator = DCFFTOperator(shape, 1e-6, 2e-6, 1e11)
-    start = rng.random(shape) * 1e-6
-    out = operator.add_cells(cells, pressure.flat[cells], start.copy())
-    expected = start + direct_convolution(pressure, 1e-6, 2e-6, 1e11)
-    np.testing.assert_allclose(out, expected, rtol=1e-13, atol=0)

@@ -326,23 +326,3 @@ def test_whole_solves_shared_between_threads_equal_one_at_a_time(monkeypatch):
         np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
         u_scale = np.abs(alone.displacement).max()
         np.testing.assert_allclose(together.displacement, alone.displacement, atol=1e-10 * u_scale)
-
-
-def test_direct_correction_of_a_few_changed_cells_gives_the_solve_of_a_new_convolution(
-    monkeypatch,
-):
-    """u corrected by the direct sum over the cells a clipping step changed (the default) and u
-    recomputed by DC-FFT after every such step give the same iterations and pressures."""
-    gaps, dx, dy, loads = ball_stack(3, n=64)
-    corrected = solve_normal_batch(gaps, dx, dy, E_STAR, loads)
-    added = []
-    add = convolution.DCFFTOperator.add_cells
-    monkeypatch.setattr(
-        convolution.DCFFTOperator, "add_cells", lambda *a: added.append(1) or add(*a)
-    )
-    assert solve_normal_batch(gaps, dx, dy, E_STAR, loads) and added  # the direct sum is used
-    monkeypatch.setattr(preconditioned, "DIRECT_CELLS", -1)
-    recomputed = solve_normal_batch(gaps, dx, dy, E_STAR, loads)
-    for a, b in zip(corrected, recomputed, strict=True):
-        assert a.iterations == b.iterations and a.coarse_work == b.coarse_work
-        np.testing.assert_allclose(a.pressure, b.pressure, rtol=0, atol=1e-10 * b.peak_pressure)

@@ -78,7 +78,6 @@ class DCFFTOperator:
         pairs[: nx + 1] = spectrum[:, :, None]
         pairs[nx + 1 :] = spectrum[nx - 1 : 0 : -1, :, None]
         self._kernel_pairs = xp.asarray(pairs.reshape(2 * nx, 2 * ny + 2))
-        self._table: NDArray[np.float64] | None = None
 
     @classmethod
     def for_grid(
@@ -138,30 +137,6 @@ class DCFFTOperator:
         """The operator of the grids ``rows`` of a stack: this one (it is shared by all)."""
         return self
 
-    def row(self, b: int) -> DCFFTOperator:
-        """The operator of grid ``b`` of a stack: this one."""
-        return self
-
-    def add_cells(self, cells: Any, values: Any, out: Any) -> Any:
-        """out += u of the pressures ``values`` [Pa] on the flat ``cells`` alone, by the direct sum
-        (K5): out[i, j] += Σ_n values[n]·K[|i − k_n|, |j − l_n|], one table slice per cell
-        (O(cells · nx · ny), cheaper than a DC-FFT pair for a few cells). NumPy only."""
-        nx, ny = self.shape
-        table = self._full_table()
-        for cell, value in zip(cells.tolist(), values.tolist(), strict=True):
-            i, j = divmod(cell, ny)
-            out += value * table[nx - 1 - i : 2 * nx - 1 - i, ny - 1 - j : 2 * ny - 1 - j]
-        return out
-
-    def _full_table(self) -> NDArray[np.float64]:
-        """K[|a|, |b|] (K4) at offsets −nx < a < nx, −ny < b < ny: a (2nx − 1, 2ny − 1) array,
-        built on first use."""
-        if self._table is None:
-            quadrant = love_coefficients(*self.shape, self.dx, self.dy, self.e_star)
-            rows = np.concatenate([quadrant[:0:-1], quadrant])
-            self._table = np.concatenate([rows[:, :0:-1], rows], axis=1)
-        return self._table
-
 
 class DCFFTStack:
     """u_b = K_b ∗ p_b: one DC-FFT operator per grid of a (B, nx, ny) stack (own dx, dy, E*).
@@ -204,10 +179,6 @@ class DCFFTStack:
         rows = np.arange(len(self.operators))[rows]
         pairs = None if self._kernel_pairs is None else self._kernel_pairs[self.xp.asarray(rows)]
         return DCFFTStack([self.operators[i] for i in rows], pairs)
-
-    def row(self, b: int) -> DCFFTOperator:
-        """The operator of grid ``b`` of the stack."""
-        return self.operators[b]
 
     def apply_batch(self, pressures: Any, out: Any) -> Any:
         """u_b = K_b ∗ p_b of each grid of the (B, nx, ny) stack, written to ``out``."""

@@ -180,9 +180,7 @@ def _pcg(
     t = z + β t;  r = K ∗ t;  τ = (g·t)/(r·t − r̄ Σt);  p ← max(p − τ t, 0);
     cells with p = 0 and u + h < ḡ re-enter with p = (ḡ − u − h)/K(0, 0);  p ← p·total/Σp.
     u ← (u − τ r)·total/Σp, recomputed as K ∗ p after an iteration that clipped or re-entered a
-    cell (skipping that, and letting u drift, was measured to multiply the iterations by 1.3-40),
-    or, if that changed at most :data:`DIRECT_CELLS` cells, corrected by the direct sum of their
-    change Δp: u ← u + (total/Σp)·K ∗ Δp, the same u to rounding.
+    cell (skipping that, and letting u drift, was measured to multiply the iterations by 1.3-40).
     Converged contacts leave the working stack; ``p`` is modified in place.
     """
     xp = array_module(h)
@@ -239,7 +237,6 @@ def _pcg(
             s *= lone_step
             pw -= s
         conjugate = ~readmitted
-        changes = _changed_cells(pw, p_old, z, np.flatnonzero(clipped | readmitted))
         current = _host(_sums(pw))
         alive = current > 0.0
         scale = totw / np.where(alive, current, 1.0) if load_control else np.ones(len(work))
@@ -253,14 +250,8 @@ def _pcg(
         u -= r
         u *= scale_b
         stopped = (res < tol) | ~alive
-        exact = []  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
-        for b in np.flatnonzero((clipped | readmitted) & ~stopped):
-            if b in changes:  # u += scale·K ∗ Δp on the few cells that changed
-                cells, values = changes[b]
-                operator.row(b).add_cells(cells, scale[b] * values, u[b])
-            else:
-                exact.append(b)
-        if exact:
+        exact = np.flatnonzero((clipped | readmitted) & ~stopped)
+        if exact.size:  # a clipped or re-entered cell breaks p = scale·(p_old − τ t)
             rows = xp.asarray(exact)
             u[rows] = operator.take(exact).apply_batch(pw[rows], xp.empty_like(pw[rows]))
         residual[work], iterations[work] = res, iteration
@@ -280,34 +271,6 @@ def _pcg(
     else:
         p[xp.asarray(work)] = pw
     return p, iterations, residual, done
-
-
-def _changed_cells(p: Any, p_old: Any, step: Any, rows: Any) -> dict[int, tuple[Any, Any]]:
-    """Of the contacts ``rows``, those whose pressure ``p`` differs from p_old − step on at most
-    :data:`DIRECT_CELLS` cells (one per :data:`DIRECT_GRID_CELLS` cells of the grid on smaller
-    grids): contact → (flat cells, p − (p_old − step) there). NumPy only (an empty dict on other
-    array modules); the other cells of p are p_old − step bit for bit."""
-    limit = min(DIRECT_CELLS, p[0].size // DIRECT_GRID_CELLS)
-    if array_module(p) is not np or not rows.size or limit < 1:
-        return {}
-    delta = p[rows] - (p_old[rows] - step[rows])
-    few = np.count_nonzero(delta, axis=(1, 2)) <= limit
-    changes = {}
-    for k in np.flatnonzero(few).tolist():
-        cells = np.flatnonzero(delta[k])
-        changes[int(rows[k])] = (cells, delta[k].ravel()[cells])
-    return changes
-
-
-DIRECT_CELLS = 16
-"""Most cells a clipping or re-entry step may change for u to be corrected by the direct sum over
-them (:meth:`~ballscrew.contact.convolution.DCFFTOperator.add_cells`) instead of a new
-u = K ∗ p by DC-FFT (GUESS, from the crossover measured on one core: a cell costs about
-3 µs + 1.2 ns per grid cell, a DC-FFT pair 13 µs at 8², 62 µs at 32² and 85-160 µs at 60², so
-the direct sum wins below about 4, 10 and 20-30 cells)."""
-DIRECT_GRID_CELLS = 256
-"""Grid cells per changed cell allowed on grids below 64 × 64 (GUESS, as :data:`DIRECT_CELLS`:
-none on 8², 1 on 16², 4 on 32²)."""
 
 
 def _per_contact(value: Any, xp: ModuleType) -> Any:
