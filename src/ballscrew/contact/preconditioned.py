@@ -85,7 +85,8 @@ class BatchIterate:
     converged: Any
     """(B,) whether the residual reached the tolerance."""
     displacement: Any = None
-    """(B, nx, ny) u = K ∗ p of the final pressures [m], when the solve computed it exactly."""
+    """(B, nx, ny) u = K ∗ p of the final pressures [m] (None on the coarse grids of a nested
+    start)."""
 
 
 class SpectralPreconditioner:
@@ -477,14 +478,19 @@ def _solve_shared(
             )  # fmt: skip
 
     parts = list(fft_pool().map(run, runs))
+
+    def joined(name: str) -> Any:
+        return np.concatenate([getattr(part, name) for part in parts])
+
     xp = array_module(h)
-    whole = [xp.concatenate([part.pressure for part in parts])] + [
-        np.concatenate([getattr(part, name) for part in parts])
-        for name in ("iterations", "coarse_work", "residual", "converged")
-    ]
-    exact = all(part.displacement is not None for part in parts)
-    u = xp.concatenate([part.displacement for part in parts]) if exact else None
-    return BatchIterate(*whole, u)
+    return BatchIterate(
+        xp.concatenate([part.pressure for part in parts]),
+        joined("iterations"),
+        joined("coarse_work"),
+        joined("residual"),
+        joined("converged"),
+        xp.concatenate([part.displacement for part in parts]),
+    )
 
 
 def _solve(
