@@ -37,6 +37,7 @@ import threading
 import time
 from collections import OrderedDict
 from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
 from functools import cache
 from types import ModuleType
 from typing import Any, Protocol
@@ -58,6 +59,7 @@ __all__ = [
     "PaddedRealFFT",
     "array_module",
     "blas_single_thread",
+    "fft_pool",
     "fft_threads",
     "limited_fft_threads",
     "padded_rfft",
@@ -108,6 +110,13 @@ def _cpu_count() -> int:
 
 
 _thread_limit = threading.local()
+
+
+@cache
+def fft_pool() -> ThreadPoolExecutor:
+    """Threads that share out the grids or contacts of a stack (FFTW, pocketfft and NumPy's
+    element-wise loops release the GIL while they run); each runs with one FFT thread."""
+    return ThreadPoolExecutor(MAX_FFT_THREADS, thread_name_prefix="ballscrew-fft")
 
 
 @contextlib.contextmanager

@@ -2,6 +2,8 @@
 every size, an iteration count that does not grow with the grid, batched = one at a time, and the
 mixed-precision option."""
 
+import threading
+
 import numpy as np
 import pytest
 
@@ -10,6 +12,7 @@ from ballscrew.contact import (
     NORMAL_SOLVERS,
     convolution,
     hertz,
+    preconditioned,
     solve_normal,
     solve_normal_batch,
     solve_normal_displacement,
@@ -257,6 +260,29 @@ def test_nested_grid_transfers_match_cell_by_cell_formulas():
             np.testing.assert_allclose(fine[:, i, j], expected, rtol=1e-14, atol=1e-24)
 
 
+def test_refinement_of_the_pressures_support_equals_that_of_the_whole_grid():
+    """Refining only the rows and columns that hold a pressure (widened by a cell) gives the
+    refinement of the whole grid bit for bit, with a support inside and one at the grid's edge."""
+    from ballscrew.contact.preconditioned import _refine_axis, _support
+
+    rng = np.random.default_rng(5)
+    for corner in (False, True):
+        coarse = np.zeros((2, 16, 20))
+        coarse[0, 5:9, 6:12] = rng.random((4, 6))
+        coarse[1, 4:7, 8:15] = rng.random((3, 7))
+        if corner:
+            coarse[1, 13:, 17:] = rng.random((3, 3))
+        rows, cols = _support(coarse)
+        assert (rows.start, cols.start) == (3, 5)
+        assert (rows.stop, cols.stop) == ((16, 20) if corner else (10, 16))
+        whole = _refine_axis(_refine_axis(coarse, 1), 2)
+        part = np.zeros_like(whole)
+        part[:, 2 * rows.start : 2 * rows.stop, 2 * cols.start : 2 * cols.stop] = _refine_axis(
+            _refine_axis(coarse[:, rows, cols], 1), 2
+        )
+        assert np.array_equal(part, whole)
+
+
 def test_hertz_start_is_the_hertz_pressure_of_a_paraboloid():
     """The coarsest grid's start: Hertz's p0·√(1 − r²/a²) on a sphere's gap (peak and contact
     radius within the cell size), the load kept, and it cuts the coarse work of the 128² sphere
@@ -276,3 +302,27 @@ def test_hertz_start_is_the_hertz_pressure_of_a_paraboloid():
     assert np.abs(r[p > 0].max() - reference.a) < dx
     gap, dx, dy, load, _ = hertz_problem("sphere", 128)
     assert solve_normal(gap, dx, dy, E_STAR, load).coarse_work < 1.0
+
+
+def test_whole_solves_shared_between_threads_equal_one_at_a_time(monkeypatch):
+    """Two pool threads each solve a run of the stack's contacts (coarse grids, CG and check)."""
+    monkeypatch.setattr(preconditioned, "fft_threads", lambda points=None: 2)
+    names = set()
+    solve = preconditioned._solve
+
+    def recorded(*args, **kwargs):
+        if kwargs["check"]:
+            names.add(threading.current_thread().name)
+        return solve(*args, **kwargs)
+
+    monkeypatch.setattr(preconditioned, "_solve", recorded)
+    gaps, dx, dy, loads = ball_stack(5, n=64)
+    batch = solve_normal_batch(gaps, dx, dy, E_STAR, loads)
+    assert len(names) == 2 and all(name.startswith("ballscrew-fft") for name in names)
+    for gap, load, together in zip(gaps, loads, batch, strict=True):
+        alone = solve_normal(gap, dx, dy, E_STAR, load)
+        assert together.iterations == alone.iterations
+        scale = alone.peak_pressure
+        np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
+        u_scale = np.abs(alone.displacement).max()
+        np.testing.assert_allclose(together.displacement, alone.displacement, atol=1e-10 * u_scale)

@@ -47,11 +47,9 @@ def test_window_is_used_on_a_large_box_only():
     assert preconditioned._window(np.ones_like(gap)) is None
 
 
-def test_a_contact_that_outgrows_its_window_is_finished_on_the_whole_grid(monkeypatch):
-    """A warm start on a patch of a quarter of the contact radius, no margin: the window's solution
-    leaves cells outside it penetrating, so the solve goes on on the whole grid, and ends where
-    a solve without a window does."""
-    gap, dx, reference = sphere()
+def outgrown_seed(monkeypatch, gap):
+    """No window margin, a warm start on an 8 × 8 patch of the 128² sphere (a quarter of the
+    contact radius: the contact outgrows its window), and the list of the window checks' answers."""
     monkeypatch.setattr(preconditioned, "WINDOW_MARGIN", 0.0)
     monkeypatch.setattr(preconditioned, "WINDOW_MIN_MARGIN", 0)
     seed = np.zeros_like(gap)
@@ -61,6 +59,15 @@ def test_a_contact_that_outgrows_its_window_is_finished_on_the_whole_grid(monkey
     monkeypatch.setattr(
         preconditioned, "_outside_clear", lambda *a: cleared.append(check(*a)) or cleared[-1]
     )
+    return seed, cleared
+
+
+def test_a_contact_that_outgrows_its_window_is_finished_on_the_whole_grid(monkeypatch):
+    """A warm start on a patch of a quarter of the contact radius, no margin: the window's solution
+    leaves cells outside it penetrating, so the solve goes on on the whole grid, and ends where
+    a solve without a window does."""
+    gap, dx, reference = sphere()
+    seed, cleared = outgrown_seed(monkeypatch, gap)
     result = solve_normal(gap, dx, dx, E_STAR, 100.0, initial=seed)
     assert cleared == [False]
     whole = solve_normal(gap, dx, dx, E_STAR, 100.0, nested=False, method="pk")
@@ -77,3 +84,21 @@ def test_batch_of_contacts_with_windows_of_two_sizes_equals_one_at_a_time():
         alone = solve_normal(g, dx, dx, E_STAR, load, precision="mixed")
         assert together.iterations == alone.iterations
         np.testing.assert_array_equal(together.pressure, alone.pressure)
+
+
+def test_only_the_contact_that_outgrows_its_window_goes_on_on_the_whole_grid(monkeypatch):
+    """A batch of a contact seeded on a small patch (it outgrows its window) and one seeded with
+    its own solution (it does not): the check fails for the first only, and each result is the
+    one of its contact alone."""
+    gap, dx, reference = sphere()
+    settled = solve_normal(gap, dx, dx, E_STAR, 60.0).pressure
+    seed, cleared = outgrown_seed(monkeypatch, gap)
+    loads, initial = np.array([100.0, 60.0]), np.stack([seed, settled])
+    batch = solve_normal_batch(np.stack([gap, gap]), dx, dx, E_STAR, loads, initial=initial)
+    assert [list(c) for c in cleared] == [[False, True]]
+    for b, together in enumerate(batch):
+        alone = solve_normal(gap, dx, dx, E_STAR, loads[b], initial=initial[b])
+        assert together.converged and together.iterations == alone.iterations
+        np.testing.assert_allclose(together.pressure, alone.pressure, atol=1e-10 * reference.p0)
+        exact = DCFFTOperator(gap.shape, dx, dx, E_STAR).apply(together.pressure)
+        np.testing.assert_allclose(together.displacement, exact, rtol=0, atol=1e-12 * exact.max())

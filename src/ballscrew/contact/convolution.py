@@ -9,8 +9,7 @@ equal to the exact linear (aperiodic) convolution (K5) of the half-space.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
-from functools import cache, lru_cache
+from functools import lru_cache
 from types import ModuleType
 from typing import Any
 
@@ -18,7 +17,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
-from ballscrew.backend import MAX_FFT_THREADS, fft_threads, limited_fft_threads, padded_rfft
+from ballscrew.backend import fft_pool, fft_threads, limited_fft_threads, padded_rfft
 from ballscrew.contact._validation import finite_grid
 from ballscrew.contact.influence import love_coefficients
 
@@ -210,7 +209,7 @@ def _apply_each(operator: Callable[[int], DCFFTOperator], pressures: Any, out: A
         with limited_fft_threads(1):
             each(chunk)
 
-    list(_pool().map(rows, np.array_split(np.arange(len(pressures)), threads)))
+    list(fft_pool().map(rows, np.array_split(np.arange(len(pressures)), threads)))
     return out
 
 
@@ -222,12 +221,6 @@ def _apply_stacked(op: Any, kernel_pairs: Any, pressures: Any, out: Any) -> Any:
     xp.multiply(pairs, kernel_pairs, out=pairs)
     out[...] = xp.fft.irfft2(spectrum, s=(2 * m, 2 * n), norm="forward")[:, :m, :n]
     return out
-
-
-@cache
-def _pool() -> ThreadPoolExecutor:
-    """Threads that share out the grids of a stack (FFTW releases the GIL while it runs)."""
-    return ThreadPoolExecutor(MAX_FFT_THREADS, thread_name_prefix="ballscrew-fft")
 
 
 @lru_cache(maxsize=16)

@@ -17,7 +17,7 @@ The constrained CG of Polonsky & Keer (1999) with three additions (``docs/theory
    margin (:data:`WINDOW_MARGIN`), when they hold at most :data:`WINDOW_MAX_FRACTION` of the grid.
    DC-FFT on the window is the exact displacement there of a pressure that vanishes outside it;
    the preconditioner is periodic on the window. A whole-grid u = K ∗ p at the end checks that
-   no cell outside penetrates (else the CG goes on on the whole grid).
+   no cell outside penetrates (else that contact's CG goes on on its whole grid).
 
 Every array carries a leading batch axis: B contacts on grids of the same cell counts, each with its
 own gap and load, step length, conjugacy and stop, and either one operator for all (shared dx, dy,
@@ -28,13 +28,14 @@ preconditioner symbols). A contact that has converged leaves the batch.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import lru_cache
 from types import ModuleType
 from typing import Any
 
 import numpy as np
 import scipy.fft
 
-from ballscrew.backend import array_module, fft_threads
+from ballscrew.backend import array_module, fft_pool, fft_threads, limited_fft_threads
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 
 __all__ = [
@@ -84,7 +85,8 @@ class BatchIterate:
     converged: Any
     """(B,) whether the residual reached the tolerance."""
     displacement: Any = None
-    """(B, nx, ny) u = K ∗ p of the final pressures [m], when the solve computed it exactly."""
+    """(B, nx, ny) u = K ∗ p of the final pressures [m] (None on the coarse grids of a nested
+    start)."""
 
 
 class SpectralPreconditioner:
@@ -202,14 +204,13 @@ def _pcg(
         xp.add(u, hw, out=q)
         xp.greater(pw, 0.0, out=c)
         n_c = np.maximum(_host(_sums(c)), 1.0)
-        g_mean = _host(_dot(q, c)) / n_c if load_control else np.zeros(len(work))
-        g_bar = _col(xp.asarray(g_mean))
-        xp.subtract(q, g_bar, out=s)
-        s *= c
+        if load_control:  # q = u + h − ḡ from here on
+            q -= _col(xp.asarray(_host(_dot(q, c)) / n_c))
+        xp.multiply(q, c, out=s)
         z = preconditioner.apply(s, dtype)
         z *= c
-        if load_control:
-            z -= _col(xp.asarray(_host(_dot(z, c)) / n_c))
+        if load_control:  # z = 0 off the contact set, so Σ z is its sum there
+            z -= _col(xp.asarray(_host(_sums(z)) / n_c))
             z *= c
         rho = _host(_dot(s, z))
         beta = np.where(conjugate & (rho_old > 0.0), rho / np.where(rho_old > 0.0, rho_old, 1.0), 0)
@@ -224,14 +225,13 @@ def _pcg(
         moving = (curvature > 0.0) & (rho > 0.0)
         tau = np.where(moving, _host(_dot(s, t)) / np.where(moving, curvature, 1.0), 0.0)
         tau_b = _col(xp.asarray(tau))
-        xp.copyto(p_old, pw)
         xp.multiply(t, tau_b, out=z)
-        pw -= z
+        p_old, pw = pw, p_old  # the buffers swap instead of a copy
+        xp.subtract(p_old, z, out=pw)
         clipped = _host(pw.min(axis=(1, 2))) < 0.0
         xp.maximum(pw, 0.0, out=pw)
-        xp.subtract(q, g_bar, out=s)  # cells with p = 0 and a negative gap re-enter (Eq. 37)
-        xp.less_equal(pw, 0.0, out=c)
-        s *= c
+        xp.less_equal(pw, 0.0, out=c)  # cells with p = 0 and a negative gap re-enter (Eq. 37)
+        xp.multiply(q, c, out=s)
         xp.minimum(s, 0.0, out=s)
         readmitted = _host(s.min(axis=(1, 2))) < 0.0
         if readmitted.any():
@@ -349,9 +349,25 @@ def _nested_start(h: Any, setting: _Setting, coarse: bool) -> tuple[Any, Any]:
         setting, dx=2 * setting.dx, dy=2 * setting.dy, total=total / 4.0, tol=COARSE_TOLERANCE
     )
     state = _solve(_coarsen(h), halved, None, True, None, check=False)
-    p = _refine_axis(_refine_axis(state.pressure, 1), 2)
-    p *= _col(xp.asarray(total) / _sums(p))
+    rows, cols = _support(state.pressure)
+    p = xp.zeros(h.shape)
+    fine = p[:, 2 * rows.start : 2 * rows.stop, 2 * cols.start : 2 * cols.stop]
+    fine[...] = _refine_axis(_refine_axis(state.pressure[:, rows, cols], 1), 2)
+    fine *= _col(xp.asarray(total) / _sums(fine))
     return p, (state.iterations + state.coarse_work) / 4.0
+
+
+def _support(p: Any) -> tuple[slice, slice]:
+    """Rows and columns of the (B, nx, ny) stack ``p`` that hold a pressure in any grid, widened by
+    a cell on each side: outside them the interpolated pressure of :func:`_refine_axis` is zero,
+    inside it is that of the whole grids (a zero border cell stands for the repeated edge)."""
+    xp = array_module(p)
+    spans = []
+    for axis, n in ((2, p.shape[1]), (1, p.shape[2])):
+        hit = xp.flatnonzero((p > 0.0).any(axis=(0, axis)))
+        lo, hi = (int(hit[0]), int(hit[-1]) + 1) if hit.size else (0, n)
+        spans.append(slice(max(lo - 1, 0), min(hi + 1, n)))
+    return spans[0], spans[1]
 
 
 def _hertz_start(h: Any, setting: _Setting) -> Any:
@@ -394,8 +410,9 @@ class _Setting:
     max_iterations: int
     dtype: type[np.floating]
 
-    def take(self, rows: list[int]) -> _Setting:
-        """The setting of the contacts ``rows``: their entries of the per-contact arrays."""
+    def take(self, rows: Any) -> _Setting:
+        """The setting of the contacts ``rows`` (indices or a slice): their entries of the
+        per-contact arrays."""
         return replace(
             self, **{k: _take(getattr(self, k), rows) for k in ("dx", "dy", "e_star", "total")}
         )
@@ -428,9 +445,52 @@ def solve_batch(
 
     When the start's pressure covers a small part of the grid, the CG runs on a window around it
     (:func:`_window`) and the result is checked on the whole grid (:func:`_outside_clear`).
+    On the CPU the contacts are shared between :func:`~ballscrew.backend.fft_threads` threads
+    (:func:`_solve_shared`).
     """
     setting = _Setting(dx, dy, e_star, total, tol, max_iterations, dtype)
+    threads = min(fft_threads(4 * h.size), len(h)) if array_module(h) is np else 1
+    if threads > 1:
+        return _solve_shared(h, setting, initial, nested, operator, threads)
     return _solve(h, setting, initial, nested, operator, check=True)
+
+
+def _solve_shared(
+    h: Any,
+    setting: _Setting,
+    initial: Any,
+    nested: bool,
+    operator: DCFFTOperator | DCFFTStack | None,
+    threads: int,
+) -> BatchIterate:
+    """:func:`_solve` on ``threads`` runs of consecutive contacts at once, each in a pool thread of
+    one FFT thread. The contacts of a stack are independent CGs, so each result is the one of its
+    contact alone; sharing whole solves, not only their transforms, also puts the element-wise
+    work and the coarse grids on both cores (measured on 2 cores at 32 × 128²:
+    ``docs/benchmarks.md``)."""
+    runs = [slice(c[0], c[-1] + 1) for c in np.array_split(np.arange(len(h)), threads)]
+
+    def run(rows: slice) -> BatchIterate:
+        with limited_fft_threads(1):
+            return _solve(
+                h[rows], setting.take(rows), None if initial is None else initial[rows], nested,
+                None if operator is None else operator.take(rows), check=True,
+            )  # fmt: skip
+
+    parts = list(fft_pool().map(run, runs))
+
+    def joined(name: str) -> Any:
+        return np.concatenate([getattr(part, name) for part in parts])
+
+    xp = array_module(h)
+    return BatchIterate(
+        xp.concatenate([part.pressure for part in parts]),
+        joined("iterations"),
+        joined("coarse_work"),
+        joined("residual"),
+        joined("converged"),
+        xp.concatenate([part.displacement for part in parts]),
+    )
 
 
 def _solve(
@@ -460,27 +520,48 @@ def _solve(
     groups: dict[Any, list[int]] = {}
     for b, window in enumerate(windows):
         groups.setdefault(None if window is None else _extent(window), []).append(b)
-    if len(groups) == 1:
-        p, iterations, residual, converged, u = _solve_on(h, p, setting, operator, check, windows)
-        return BatchIterate(p, iterations, coarse_work, residual, converged, u)
-    # Contacts whose windows differ in size are solved apart: each as it would be alone.
+    # Contacts whose windows differ in size are iterated apart: each as it would be alone.
     iterations, residual = np.zeros(len(p), dtype=int), np.zeros(len(p))
-    converged, exact = np.zeros(len(p), dtype=bool), True
-    u = xp.empty_like(p)
-    for rows in groups.values():
-        part = _solve_on(
-            h[rows], p[rows], setting.take(rows), None if operator is None else operator.take(rows),
-            check, [windows[b] for b in rows],
-        )  # fmt: skip
-        p[rows], iterations[rows], residual[rows], converged[rows] = part[:4]
-        if part[4] is None:
-            exact = False
-        else:
-            u[rows] = part[4]
-    return BatchIterate(p, iterations, coarse_work, residual, converged, u if exact else None)
+    converged = np.zeros(len(p), dtype=bool)
+    for extent, rows in groups.items():
+        every = len(rows) == len(p)
+        part = setting if every else setting.take(rows)
+        if extent is None:
+            whole = operator if every or operator is None else operator.take(rows)
+            if every:
+                p, iterations, residual, converged = _iterate(h, p, part, whole)
+            else:
+                p[rows], iterations[rows], residual[rows], converged[rows] = _iterate(
+                    h[rows], p[rows], part, whole
+                )
+            continue
+        inner, iterations[rows], residual[rows], converged[rows] = _iterate(
+            xp.stack([h[b][windows[b]] for b in rows]),
+            xp.stack([p[b][windows[b]] for b in rows]),
+            part,
+            None,
+        )
+        for k, b in enumerate(rows):
+            p[b].fill(0.0)
+            p[b][windows[b]] = inner[k]
+    if not check:
+        return BatchIterate(p, iterations, coarse_work, residual, converged)
+    if operator is None:
+        operator = _operator((nx, ny), setting.dx, setting.dy, setting.e_star, xp, np.float64)
+    u = operator.apply_batch(p, xp.empty_like(p))
+    out = np.flatnonzero(~_outside_clear(h, u, p, windows, total is not None))
+    if out.size:  # a cell outside its window penetrates: on from here on the whole grids
+        rows, whole = xp.asarray(out), operator.take(out)
+        budget = max(setting.max_iterations - int(iterations[out].max()), 1)
+        p[rows], more, residual[out], converged[out] = _iterate(
+            h[rows], p[rows], replace(setting.take(out), max_iterations=budget), whole
+        )
+        iterations[out] += more
+        u[rows] = whole.apply_batch(p[rows], xp.empty_like(p[rows]))
+    return BatchIterate(p, iterations, coarse_work, residual, converged, u)
 
 
-def _take(value: Any, rows: list[int]) -> Any:
+def _take(value: Any, rows: Any) -> Any:
     """The entries ``rows`` of a per-contact (B,) array; a shared scalar or None as it is."""
     return value if value is None or np.ndim(value) == 0 else value[rows]
 
@@ -488,43 +569,6 @@ def _take(value: Any, rows: list[int]) -> Any:
 def _extent(window: tuple[slice, slice]) -> tuple[int, int]:
     """Cells of a window along each axis."""
     return tuple(part.stop - part.start for part in window)  # type: ignore[return-value]
-
-
-def _solve_on(
-    h: Any,
-    p: Any,
-    setting: _Setting,
-    operator: DCFFTOperator | DCFFTStack | None,
-    check: bool,
-    windows: list[tuple[slice, slice] | None],
-) -> tuple[Any, Any, Any, Any, Any]:
-    """:func:`_iterate` on the whole grids, or on the ``windows`` (one per contact, all of one
-    size) with the whole-grid check; returns p, iterations, residual, converged, u = K ∗ p (None
-    if not computed)."""
-    xp = array_module(h)
-    shape = h.shape[1:]
-    if windows[0] is None:
-        return (*_iterate(h, p, setting, operator), None)
-    inner, iterations, residual, converged = _iterate(
-        xp.stack([h[b][w] for b, w in enumerate(windows)]),
-        xp.stack([p[b][w] for b, w in enumerate(windows)]),
-        setting,
-        None,
-    )
-    p = xp.zeros_like(h)
-    for b, w in enumerate(windows):
-        p[b][w] = inner[b]
-    if not check:
-        return p, iterations, residual, converged, None
-    if operator is None:
-        operator = _operator(shape, setting.dx, setting.dy, setting.e_star, xp, np.float64)
-    u = operator.apply_batch(p, xp.empty_like(p))
-    if _outside_clear(h, u, p, windows, setting.total is not None):
-        return p, iterations, residual, converged, u
-    # A cell outside its window penetrates: go on from here on the whole grids.
-    left = max(setting.max_iterations - int(iterations.max()), 1)
-    p, more, residual, converged = _iterate(h, p, replace(setting, max_iterations=left), operator)
-    return p, iterations + more, residual, converged, None
 
 
 def _iterate(
@@ -587,20 +631,25 @@ def _window(p: Any) -> tuple[slice, slice] | None:
     return rows, cols
 
 
-def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> bool:
-    """Whether no cell outside its contact's window penetrates: u + h ≥ ḡ there (ḡ = mean of
-    u + h over the contact set under load control, 0 under displacement control), so each
-    window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits no cell)."""
+def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> np.ndarray:
+    """(B,) whether no cell outside its contact's window penetrates: u + h ≥ ḡ there (ḡ = mean of
+    u + h over the contact set, all in the window, under load control; 0 under displacement
+    control), so each window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits
+    no cell)."""
     xp = array_module(h)
-    q = u + h
-    c = (p > 0.0).astype(q.dtype)
-    g_bar = _host(_dot(q, c)) / np.maximum(_host(_sums(c)), 1.0) if load else np.zeros(len(h))
+    clear = np.ones(len(h), dtype=bool)  # a contact without a window was solved on its grid
     for b, window in enumerate(windows):
-        q[b][window] = xp.inf
-    return bool((_host(q.min(axis=(1, 2))) >= g_bar).all())
+        if window is None:
+            continue
+        q = xp.add(u[b], h[b])
+        inside = q[window]
+        contact = p[b][window] > 0.0
+        g_bar = float(inside[contact].sum()) / max(int(contact.sum()), 1) if load else 0.0
+        inside.fill(xp.inf)
+        clear[b] = float(q.min()) >= g_bar
+    return clear
 
 
-_PRECONDITIONERS: dict[tuple[Any, ...], SpectralPreconditioner] = {}
 _CACHED = 16
 """Preconditioners kept (as the operators: nested levels × both precisions × a few cells)."""
 
@@ -618,15 +667,16 @@ def _preconditioner(
     shape: tuple[int, int], dx: Any, dy: Any, e_star: Any, xp: ModuleType
 ) -> SpectralPreconditioner:
     """The preconditioner of this grid from a small cache (the last ``_CACHED`` grids and
-    windows; a plain dict, so one solving thread at a time), or the stack of them for
-    per-contact cells."""
+    windows), or the stack of them for per-contact cells."""
     if np.ndim(dx) != 0:
         return PreconditionerStack(
             [_preconditioner(shape, *cell, xp) for cell in zip(dx, dy, e_star, strict=True)]
         )
-    key = (shape, dx, dy, e_star, xp.__name__)
-    if key not in _PRECONDITIONERS:
-        if len(_PRECONDITIONERS) >= _CACHED:
-            _PRECONDITIONERS.pop(next(iter(_PRECONDITIONERS)))
-        _PRECONDITIONERS[key] = SpectralPreconditioner(shape, dx, dy, e_star, xp)
-    return _PRECONDITIONERS[key]
+    return _cached_preconditioner(shape, float(dx), float(dy), float(e_star), xp)
+
+
+@lru_cache(maxsize=_CACHED)
+def _cached_preconditioner(
+    shape: tuple[int, int], dx: float, dy: float, e_star: float, xp: ModuleType
+) -> SpectralPreconditioner:
+    return SpectralPreconditioner(shape, dx, dy, e_star, xp)
