@@ -78,6 +78,7 @@ bench: $(STAMP) $(PEERS_STAMP)
 	$(PY) benchmarks/bench_design_check.py
 	$(PY) benchmarks/bench_duty.py
 	$(PY) benchmarks/bench_batch.py
+	$(PY) benchmarks/bench_ball_batch.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
