@@ -46,11 +46,6 @@ import numpy as np
 import scipy.fft
 
 try:
-    import pyfftw
-except ImportError:  # pragma: no cover - pyfftw is a hard dependency, the fallback is for safety
-    pyfftw = None
-
-try:
     import cupy
 except ImportError:
     cupy = None
@@ -65,6 +60,25 @@ __all__ = [
     "padded_rfft",
     "single_thread_pools",
 ]
+
+
+@cache
+def _pyfftw() -> ModuleType | None:
+    """pyFFTW, imported on first use: it imports dask.array (about 1 s), which a command that
+    solves no contact (``--help``, ``init``, ``check``) should not wait for."""
+    try:
+        import pyfftw
+    except ImportError:  # pragma: no cover - a hard dependency, the fallback is for safety
+        return None
+    return pyfftw
+
+
+def __getattr__(name: str) -> Any:
+    """``backend.pyfftw``: the lazily imported module (None where it is not installed)."""
+    if name == "pyfftw":
+        return _pyfftw()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 MAX_FFT_THREADS = 8
 """Upper bound of the FFT threads: beyond this the 2-D transforms of contact grids stop scaling."""
@@ -219,6 +233,7 @@ class _FFTWPadded(_Padded):
     ) -> None:
         super().__init__(shape, threads, dtype)
         m, n = shape
+        pyfftw = self._fftw = _pyfftw()
         self._rows_in = pyfftw.zeros_aligned((m, 2 * n), dtype=dtype)
         self._rows_out = pyfftw.empty_aligned((m, 2 * n), dtype=dtype)
         self._spectrum = pyfftw.zeros_aligned((2 * m, n + 1), dtype=np.result_type(dtype, 1j))
@@ -233,7 +248,7 @@ class _FFTWPadded(_Padded):
         if flag == "FFTW_MEASURE":  # each of the 4 plans within a quarter of the estimated cost
             kw["planning_timelimit"] = 0.25 * self._planning_cost_estimate()
         # In-place column transforms: measured up to 2x faster than out-of-place at 2048 x 1025.
-        spectrum = self._spectrum
+        spectrum, pyfftw = self._spectrum, self._fftw
         self._rfft_rows = pyfftw.FFTW(self._rows_in, spectrum[:m], axes=(1,), **kw)
         self._fft_cols = pyfftw.FFTW(spectrum, spectrum, axes=(0,), **kw)
         self._ifft_cols = pyfftw.FFTW(
@@ -364,7 +379,7 @@ def padded_rfft(
     if transform is None:
         if xp is not np:
             transform = _CupyPadded(shape, dtype=dtype)
-        elif pyfftw is not None:
+        elif _pyfftw() is not None:
             transform = _FFTWPadded(shape, threads, dtype)
         else:
             transform = _ScipyPadded(shape, threads, dtype)

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.stats import norm
+from scipy.special import ndtr, ndtri
 
 __all__ = ["ALPHA", "ResidualDiagnostics", "residual_diagnostics"]
 
@@ -42,7 +42,7 @@ class ResidualDiagnostics:
     @property
     def systematic(self) -> bool:
         """True when either test rejects independent noise at :data:`ALPHA`."""
-        return self.runs_p_value < ALPHA or self.lag1_z > float(norm.ppf(1.0 - ALPHA))
+        return self.runs_p_value < ALPHA or self.lag1_z > float(ndtri(1.0 - ALPHA))
 
     def message(self) -> str:
         """One line describing the evidence."""
@@ -73,7 +73,7 @@ def residual_diagnostics(residuals: ArrayLike) -> ResidualDiagnostics:
     neg = n - pos
     expected = 2.0 * pos * neg / n + 1.0 if n else 0.0
     variance = 2.0 * pos * neg * (2.0 * pos * neg - n) / (n * n * (n - 1.0)) if n > 1 else 0.0
-    p = float(norm.cdf((runs - expected) / math.sqrt(variance))) if variance > 0.0 else 1.0
+    p = float(ndtr((runs - expected) / math.sqrt(variance))) if variance > 0.0 else 1.0
     m = e.size
     total = float(e @ e)
     r1 = float(e[:-1] @ e[1:]) / total if m > 1 and total > 0.0 else 0.0
