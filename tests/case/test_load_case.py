@@ -92,6 +92,27 @@ def test_bad_values_name_field_value_and_range(gao_case_path, key, value, expect
     assert len(info.value.problems) == 1
 
 
+@pytest.mark.parametrize(
+    ("key", "value", "expected"),
+    [
+        ("design.required_life", "1e20 h", "(0, 1e+11] s; in h: (0, 2.77778e+07]"),
+        ("operating.speed", "1e9 rpm", "[0, 100000] rad/s (screw speed"),
+        ("operating.speed", "1e9 rpm", "; in rpm: [0, 954930]"),
+        ("screw.lead", "2 m", "(0, 1] m (lead"),
+    ],
+)
+def test_a_range_is_also_given_in_the_unit_the_value_was_written_in(
+    gao_case_path, key, value, expected
+):
+    """'design.required_life = 1e20 h … allowed range is (0, 1e+11] s' left the user to convert
+    seconds to hours; a value written in SI (2 m) gets no second range."""
+    with pytest.raises(CaseError) as info:
+        load_case(gao_case_path, {key: value})
+    assert expected in str(info.value)
+    if value.endswith(" m"):
+        assert "; in m:" not in str(info.value)
+
+
 def test_unknown_key_is_an_error_with_suggestion(gao_case_path):
     with pytest.raises(CaseError, match=r"screw.leed: unknown key \(did you mean 'lead'\?\)"):
         load_case(gao_case_path, {"screw.leed": 0.01})

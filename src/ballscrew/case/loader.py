@@ -19,6 +19,7 @@ from pydantic import BaseModel, ValidationError
 
 from ballscrew.case.models import Case
 from ballscrew.errors import BallscrewError
+from ballscrew.units import parse_quantity, to_si
 
 
 class CaseError(BallscrewError, ValueError):
@@ -310,17 +311,18 @@ def _bound_attrs(item: Any) -> dict[str, float]:
     }
 
 
-def _allowed_range(loc: tuple[Any, ...]) -> str:
-    """The interval a numeric field accepts, from its constraints, e.g. ``(0, 1.5708)``."""
+def _allowed_range(loc: tuple[Any, ...], unit: float = 1.0) -> str:
+    """The interval a numeric field accepts, from its constraints, e.g. ``(0, 1.5708)``; in
+    multiples of ``unit`` (its size in SI)."""
     low, high = "(-inf", "inf)"
     for constraint in field_spec(loc).constraints:
         bounds = _bound_attrs(constraint)
         for attr, fmt in (("gt", "({:.6g}"), ("ge", "[{:.6g}")):
             if attr in bounds:
-                low = fmt.format(bounds[attr])
+                low = fmt.format(bounds[attr] / unit)
         for attr, fmt in (("lt", "{:.6g})"), ("le", "{:.6g}]")):
             if attr in bounds:
-                high = fmt.format(bounds[attr])
+                high = fmt.format(bounds[attr] / unit)
     return f"{low}, {high}"
 
 
@@ -361,6 +363,21 @@ def _range_text(loc: tuple[Any, ...], spec: FieldSpec) -> str:
     return f"allowed range is {_allowed_range(loc)}{unit_text}{meaning}"
 
 
+def _range_in_given_unit(loc: tuple[Any, ...], spec: FieldSpec, given: Any) -> str:
+    """For a value given with a unit other than the SI one (``'1e20 h'``): the allowed range in
+    that unit, ``; in h: (0, 2.77778e+07]`` (none for temperatures, whose units are offset)."""
+    if not isinstance(given, str) or not spec.kind or spec.kind == "temperature":
+        return ""
+    try:
+        _, unit = parse_quantity(given)
+        factor = to_si(f"1 {unit:~}", spec.kind) if unit is not None else 1.0
+    except (ValueError, TypeError):
+        return ""
+    if unit is None or factor <= 0.0 or math.isclose(factor, 1.0):
+        return ""
+    return f"; in {unit:~}: {_allowed_range(loc, factor)}"
+
+
 def _unit_hint(loc: tuple[Any, ...], spec: FieldSpec, given: Any) -> str:
     """For a number given without a unit: the unit in which it would be in range, if any."""
     from ballscrew.case.plausibility import unit_hint
@@ -397,7 +414,7 @@ def _describe(err: dict[str, Any]) -> str:
         allowed = list(model.model_fields) if model else []
         return unknown_key_message(dotted, str(loc[-1]), allowed, parent.dotted or "the case")
     if kind in _BOUNDS:
-        hint = _unit_hint(loc, spec, err["input"])
+        hint = _unit_hint(loc, spec, err["input"]) + _range_in_given_unit(loc, spec, err["input"])
         return f"{dotted} = {err['input']!r} is not allowed: {_range_text(loc, spec)}{hint}"
     if kind == "literal_error":
         expected = err["ctx"]["expected"]
