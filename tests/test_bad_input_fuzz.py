@@ -162,3 +162,25 @@ def test_measured_schedule_beyond_the_case_ranges(tmp_path: Path) -> None:
     path.write_text(head + "20000,0.47,-100,2000\n40000,0.46,100,2000\n")
     with pytest.raises(InputError, match=r"^sched.csv: speed \(point 2\) = -10.47\d+ is not"):
         read_measured(path)
+
+
+@pytest.mark.parametrize(
+    ("args", "start"),
+    [
+        (("sweep", "{case}", "--vary", "surface.D=1.5,1.6", "--workers", "0"), "'--workers'"),
+        (("kinematics", "{case}", "--level", "abc"), "'--level'"),
+        (("surface", "{tmp}"), "'PROFILE_FILE': file '"),
+        (("init", "--d0", "40"), "Missing option '--lead'"),
+        (("kinematics",), "Missing argument 'CASE_FILE'"),
+        (("kinematic", "{case}"), "No such command 'kinematic'"),
+        (("--bogus",), "No such option: --bogus"),
+    ],
+)
+def test_usage_errors_are_one_line(tmp_path: Path, gao_case_path, args, start) -> None:
+    """A value click cannot parse (``--workers 0``, ``--level abc``, a folder for a file, a
+    missing option) printed click's three-line usage box instead of one ``error:`` line."""
+    out = tmp_path / "out"
+    given = [a.format(case=gao_case_path, tmp=tmp_path) for a in args]
+    line = refused(*given, *(["--out", out] if given[0] == "sweep" else []))
+    assert start in line
+    assert not out.exists()
