@@ -184,3 +184,18 @@ def test_usage_errors_are_one_line(tmp_path: Path, gao_case_path, args, start) -
     line = refused(*given, *(["--out", out] if given[0] == "sweep" else []))
     assert start in line
     assert not out.exists()
+
+
+def test_sweep_workers_beyond_the_memory_budget(tmp_path: Path, gao_case_path) -> None:
+    """``--workers 1000000000`` started a local Dask cluster of 10⁹ processes (a hang); the
+    count is now held against the memory budget before any work."""
+    from ballscrew.sweep.cluster import check_workers
+
+    out = tmp_path / "out"
+    args = ("sweep", gao_case_path, "--vary", "surface.D=1.5,1.6", "--out", out)
+    line = refused(*args, "--workers", "1000000000")
+    assert line.startswith("error: --workers = 1000000000 is not allowed: 1000000000 local")
+    assert not out.exists()
+    with pytest.raises(InputError, match=r"^--workers = 0 is not allowed: an integer ≥ 1"):
+        check_workers(0)
+    check_workers(2)

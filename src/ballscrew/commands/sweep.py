@@ -56,6 +56,7 @@ def sweep(
     from ballscrew.results.folder import prepare_sweep_folder
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
+    from ballscrew.sweep.cluster import check_workers
     from ballscrew.sweep.registry import get_analysis
     from ballscrew.sweep.spec import check_sweep_size, is_sweep_file, load_sweep, merge_axes
 
@@ -69,6 +70,8 @@ def sweep(
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     check_sweep_size(axes)
+    if not scheduler:
+        check_workers(workers)
     function = get_analysis(name)
 
     def progress(done: int, total: int) -> None:
