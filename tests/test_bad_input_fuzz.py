@@ -199,3 +199,16 @@ def test_sweep_workers_beyond_the_memory_budget(tmp_path: Path, gao_case_path) -
     with pytest.raises(InputError, match=r"^--workers = 0 is not allowed: an integer ≥ 1"):
         check_workers(0)
     check_workers(2)
+
+
+def test_surface_gamma_next_to_one(tmp_path: Path) -> None:
+    """``--gamma 1.0000001`` (allowed: > 1) binned the spectrum into ln γ/16-wide sub-bins:
+    a 9 GiB allocation and a MemoryError traceback. γ now starts at 1.01."""
+    profile = MEASURED.parent.parent / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
+    out = tmp_path / "out"
+    line = refused("surface", profile, "--gamma", "1.0000001", "--out", out)
+    assert (
+        line
+        == "error: gamma = 1.0000001 is not allowed: W-M frequency ratio γ ≥ 1.01 (usually 1.5)"
+    )
+    assert not out.exists()
