@@ -212,3 +212,23 @@ def test_surface_gamma_next_to_one(tmp_path: Path) -> None:
         == "error: gamma = 1.0000001 is not allowed: W-M frequency ratio γ ≥ 1.01 (usually 1.5)"
     )
     assert not out.exists()
+
+
+def test_tracebacks_of_odd_text(tmp_path: Path, gao_case_path) -> None:
+    """Three texts that ended in a traceback: ``init --name 'a"b'`` wrote an unquoted name into
+    the TOML it checks (TOMLDecodeError); an integer of 5000 digits in a case file or a
+    ``--set`` (Python's int-conversion limit, a ValueError); ``--set duty.².stroke=1`` (a
+    digit ``int()`` cannot read)."""
+    result = CliRunner().invoke(app, [*INIT, "--name", 'a"b\\c\nd'])
+    assert result.exit_code == 0, result.output
+    assert 'name = "a\\"b\\\\c\\nd"\n' in result.output
+    case = tmp_path / "case.toml"
+    case.write_text("name = " + "9" * 5000 + "\n")
+    out = tmp_path / "out"
+    line = refused("tcr", case, "--out", out)
+    assert "case.toml: TOML syntax error: Exceeds the limit (4300 digits)" in line
+    line = refused("tcr", gao_case_path, "--out", out, "--set", "operating.speed=" + "9" * 5000)
+    assert line.startswith(f"error: {gao_case_path}: operating.speed: cannot read '9999")
+    line = refused("tcr", gao_case_path, "--out", out, "--set", "duty.².stroke=1")
+    assert line.endswith("duty.².stroke: duty is a list; name an entry, e.g. duty.0")
+    assert not out.exists()

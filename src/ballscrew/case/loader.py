@@ -87,7 +87,7 @@ def _parse_toml(text: str, path: Path, what: str) -> dict[str, Any]:
     too_deep = CaseError([f"the {what} is nested deeper than {MAX_NESTING} levels"], str(path))
     try:
         raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+    except ValueError as exc:  # a syntax error, or an integer of more than 4300 digits
         raise CaseError([f"TOML syntax error: {exc}"], str(path)) from None
     except RecursionError:
         raise too_deep from None
@@ -179,7 +179,7 @@ def check_field_path(keys: list[str], source: str = "case") -> None:
         where = ".".join(keys[:depth]) or "the case"
         if listed:
             listed = False
-            if not key.isdigit():
+            if not (key.isascii() and key.isdigit()):
                 problem = f"{'.'.join(keys)}: {where} is a list; name an entry, e.g. {where}.0"
                 raise CaseError([problem], source)
             continue
