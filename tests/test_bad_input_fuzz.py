@@ -232,3 +232,13 @@ def test_tracebacks_of_odd_text(tmp_path: Path, gao_case_path) -> None:
     line = refused("tcr", gao_case_path, "--out", out, "--set", "duty.².stroke=1")
     assert line.endswith("duty.².stroke: duty is a list; name an entry, e.g. duty.0")
     assert not out.exists()
+
+
+def test_tcr_without_rebinning_writes_its_folder(tmp_path: Path, gao_case_path) -> None:
+    """``--set tcr.rebin=false`` (a documented option) ended in a TypeError traceback: the
+    NetCDF writer refused the attribute cell_size_m = None."""
+    out = tmp_path / "out"
+    args = ("--set", "tcr.rebin=false", "--set", "numerics.cells_across=8", "-q")
+    result = CliRunner().invoke(app, ["tcr", str(gao_case_path), "--out", str(out), *args])
+    assert result.exit_code == 0, result.output
+    assert (out / "summary.json").exists()
