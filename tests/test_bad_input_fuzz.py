@@ -7,6 +7,7 @@ validity, a message naming the wrong field); the tests hold the one-line refusal
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -242,3 +243,18 @@ def test_tcr_without_rebinning_writes_its_folder(tmp_path: Path, gao_case_path) 
     result = CliRunner().invoke(app, ["tcr", str(gao_case_path), "--out", str(out), *args])
     assert result.exit_code == 0, result.output
     assert (out / "summary.json").exists()
+
+
+def test_friction_torque_arguments_beyond_the_case_ranges(gao_case_path) -> None:
+    """``friction_torque(case, axial_load=1e30)`` gave 1.7e27 N m (operating.axial_load stops
+    at 1e8 N), and a viscosity of NaN, −1 or inf was ignored without a word by the catalogue
+    model."""
+    from ballscrew import friction_torque
+
+    case = load_case(gao_case_path)
+    with pytest.raises(InputError, match=r"^axial_load = 1e\+30 is not allowed: a force in \[0,"):
+        friction_torque(case, axial_load=1e30)
+    for bad in (math.nan, -1.0, math.inf):
+        with pytest.raises(InputError, match=r"^viscosity = .* is not allowed: a finite number"):
+            friction_torque(case, viscosity=bad)
+    assert friction_torque(case, axial_load=1e8, viscosity=0.06).total > 0.0
