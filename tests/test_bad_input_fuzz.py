@@ -258,3 +258,14 @@ def test_friction_torque_arguments_beyond_the_case_ranges(gao_case_path) -> None
         with pytest.raises(InputError, match=r"^viscosity = .* is not allowed: a finite number"):
             friction_torque(case, viscosity=bad)
     assert friction_torque(case, axial_load=1e8, viscosity=0.06).total > 0.0
+
+
+def test_empty_model_names_are_refused(tmp_path: Path, gao_case_path) -> None:
+    """``tcr --variant ''`` and ``sweep --analysis ''`` ran the case's variant and the tcr
+    analysis: an empty name was taken for no name."""
+    out = tmp_path / "out"
+    line = refused("tcr", gao_case_path, "--variant", "", "--out", out)
+    assert line == "error: tcr.variant = '' is not allowed: one of V2, MT, V1"
+    args = ("sweep", gao_case_path, "--vary", "surface.D=1.5,1.6", "--out", out)
+    assert "'' is not allowed" in refused(*args, "--analysis", "")
+    assert not out.exists()

@@ -64,9 +64,10 @@ def sweep(
     if is_sweep_file(case_file):
         spec = load_sweep(case_file)
         case, axes = with_overrides(spec.case, output.overrides), merge_axes(spec.axes, extra)
-        name = analysis or spec.analysis or "tcr"
+        name = analysis if analysis is not None else spec.analysis or "tcr"
     else:
-        case, axes, name = output.load_case(case_file), tuple(extra), analysis or "tcr"
+        case, axes = output.load_case(case_file), tuple(extra)
+        name = "tcr" if analysis is None else analysis
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     check_sweep_size(axes)
