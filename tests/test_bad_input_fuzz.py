@@ -269,3 +269,19 @@ def test_empty_model_names_are_refused(tmp_path: Path, gao_case_path) -> None:
     args = ("sweep", gao_case_path, "--vary", "surface.D=1.5,1.6", "--out", out)
     assert "'' is not allowed" in refused(*args, "--analysis", "")
     assert not out.exists()
+
+
+def test_public_functions_refuse_what_is_no_case(gao_case_path) -> None:
+    """``ball_loads``, ``operating_point`` and ``design_check`` given a path instead of a case
+    raised AttributeError, ``load_case(None)`` a TypeError and ``operating_point(case,
+    speed="abc")`` a ValueError; each is now the one-line error the other functions give."""
+    import ballscrew
+
+    for function in (ballscrew.ball_loads, ballscrew.operating_point, ballscrew.design_check):
+        with pytest.raises(InputError, match=r"^case = 'x.toml' is not allowed: a case from"):
+            function("x.toml")
+    with pytest.raises(CaseError, match=r"path = None: expected the path of a case file"):
+        load_case(None)
+    case = load_case(gao_case_path)
+    with pytest.raises(CaseError, match=r"operating.speed: cannot read 'abc' as a quantity"):
+        ballscrew.operating_point(case, speed="abc")

@@ -31,6 +31,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
+from ballscrew.validation import case_with
 
 __all__ = [
     "AMBER_BAND",
@@ -333,7 +334,7 @@ def _warn(
 
 def design_check(case: Case) -> DesignCheck:
     """Every design value of the case's screw with its margin (needs ``[design]``)."""
-    spec = case.design
+    spec = case_with(case, "screw", "operating", "design").design  # type: ignore[attr-defined]
     if spec is None:
         raise InputError("design", None, "a [design] section (at least unsupported_length)")
     params = ScrewParameters.from_case(case)

@@ -37,6 +37,8 @@ def load_case(path: str | Path, overrides: Mapping[str, Any] | None = None) -> C
     ``{"surface.D": 1.5, "operating.axial_load": 3000.0}``. Raises :class:`CaseError` with one
     line per problem, each naming the field, the value and the allowed range.
     """
+    if not isinstance(path, str | os.PathLike):
+        raise CaseError([f"path = {path!r}: expected the path of a case file (str or Path)"])
     path = Path(path)
     raw = read_toml(path, "case file")
     raw.setdefault("name", path.stem)
