@@ -285,3 +285,13 @@ def test_public_functions_refuse_what_is_no_case(gao_case_path) -> None:
     case = load_case(gao_case_path)
     with pytest.raises(CaseError, match=r"operating.speed: cannot read 'abc' as a quantity"):
         ballscrew.operating_point(case, speed="abc")
+
+
+def test_spacer_far_shorter_than_an_axial_cell(tmp_path: Path, gao_case_path) -> None:
+    """``thermal.spacer_length = 1e-30`` (allowed: ≥ 0) failed an assert of the axial grid,
+    whose ring spacings could give the spacer no cell: an AssertionError traceback."""
+    out = tmp_path / "out"
+    sets = ("--set", "thermal.spacer_length=1e-30", "--set", "numerics.cells_across=16")
+    line = refused("thermal", gao_case_path, "--out", out, *sets)
+    assert line.startswith("error: thermal.spacer_length = 1e-30 is not allowed: 0 (none) or at")
+    assert not out.exists()
