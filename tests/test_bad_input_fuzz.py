@@ -295,3 +295,14 @@ def test_spacer_far_shorter_than_an_axial_cell(tmp_path: Path, gao_case_path) ->
     line = refused("thermal", gao_case_path, "--out", out, *sets)
     assert line.startswith("error: thermal.spacer_length = 1e-30 is not allowed: 0 (none) or at")
     assert not out.exists()
+
+
+def test_control_characters_in_case_text(gao_case_path) -> None:
+    """``name = "a\\u0000b"`` ran ``ballscrew contact`` to the end and failed writing the NetCDF
+    attribute (h5py ValueError traceback); an ESC would drive the terminal. Tab and line
+    breaks still pass."""
+    with pytest.raises(CaseError, match=r"name = 'a\\x00b' is not allowed: text without control"):
+        load_case(gao_case_path, {"name": "a\x00b"})
+    with pytest.raises(CaseError, match=r"thermal.sensors.0.name = 'x\\x1b\[31m' is not allowed"):
+        load_case(gao_case_path, {"thermal.sensors.0.name": "x\x1b[31m"})
+    assert load_case(gao_case_path, {"description": "a\tb\nc"}).description == "a\tb\nc"
