@@ -7,6 +7,7 @@ validity, a message naming the wrong field); the tests hold the one-line refusal
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -162,3 +163,146 @@ def test_measured_schedule_beyond_the_case_ranges(tmp_path: Path) -> None:
     path.write_text(head + "20000,0.47,-100,2000\n40000,0.46,100,2000\n")
     with pytest.raises(InputError, match=r"^sched.csv: speed \(point 2\) = -10.47\d+ is not"):
         read_measured(path)
+
+
+@pytest.mark.parametrize(
+    ("args", "start"),
+    [
+        (("sweep", "{case}", "--vary", "surface.D=1.5,1.6", "--workers", "0"), "'--workers'"),
+        (("kinematics", "{case}", "--level", "abc"), "'--level'"),
+        (("surface", "{tmp}"), "'PROFILE_FILE': file '"),
+        (("init", "--d0", "40"), "Missing option '--lead'"),
+        (("kinematics",), "Missing argument 'CASE_FILE'"),
+        (("kinematic", "{case}"), "No such command 'kinematic'"),
+        (("--bogus",), "No such option: --bogus"),
+    ],
+)
+def test_usage_errors_are_one_line(tmp_path: Path, gao_case_path, args, start) -> None:
+    """A value click cannot parse (``--workers 0``, ``--level abc``, a folder for a file, a
+    missing option) printed click's three-line usage box instead of one ``error:`` line."""
+    out = tmp_path / "out"
+    given = [a.format(case=gao_case_path, tmp=tmp_path) for a in args]
+    line = refused(*given, *(["--out", out] if given[0] == "sweep" else []))
+    assert start in line
+    assert not out.exists()
+
+
+def test_sweep_workers_beyond_the_memory_budget(tmp_path: Path, gao_case_path) -> None:
+    """``--workers 1000000000`` started a local Dask cluster of 10⁹ processes (a hang); the
+    count is now held against the memory budget before any work."""
+    from ballscrew.sweep.cluster import check_workers
+
+    out = tmp_path / "out"
+    args = ("sweep", gao_case_path, "--vary", "surface.D=1.5,1.6", "--out", out)
+    line = refused(*args, "--workers", "1000000000")
+    assert line.startswith("error: --workers = 1000000000 is not allowed: 1000000000 local")
+    assert not out.exists()
+    with pytest.raises(InputError, match=r"^--workers = 0 is not allowed: an integer ≥ 1"):
+        check_workers(0)
+    check_workers(2)
+
+
+def test_surface_gamma_next_to_one(tmp_path: Path) -> None:
+    """``--gamma 1.0000001`` (allowed: > 1) binned the spectrum into ln γ/16-wide sub-bins:
+    a 9 GiB allocation and a MemoryError traceback. γ now starts at 1.01."""
+    profile = MEASURED.parent.parent / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
+    out = tmp_path / "out"
+    line = refused("surface", profile, "--gamma", "1.0000001", "--out", out)
+    assert (
+        line
+        == "error: gamma = 1.0000001 is not allowed: W-M frequency ratio γ ≥ 1.01 (usually 1.5)"
+    )
+    assert not out.exists()
+
+
+def test_tracebacks_of_odd_text(tmp_path: Path, gao_case_path) -> None:
+    """Three texts that ended in a traceback: ``init --name 'a"b'`` wrote an unquoted name into
+    the TOML it checks (TOMLDecodeError); an integer of 5000 digits in a case file or a
+    ``--set`` (Python's int-conversion limit, a ValueError); ``--set duty.².stroke=1`` (a
+    digit ``int()`` cannot read)."""
+    result = CliRunner().invoke(app, [*INIT, "--name", 'a"b\\c\nd'])
+    assert result.exit_code == 0, result.output
+    assert 'name = "a\\"b\\\\c\\nd"\n' in result.output
+    case = tmp_path / "case.toml"
+    case.write_text("name = " + "9" * 5000 + "\n")
+    out = tmp_path / "out"
+    line = refused("tcr", case, "--out", out)
+    assert "case.toml: TOML syntax error: Exceeds the limit (4300 digits)" in line
+    line = refused("tcr", gao_case_path, "--out", out, "--set", "operating.speed=" + "9" * 5000)
+    assert line.startswith(f"error: {gao_case_path}: operating.speed: cannot read '9999")
+    line = refused("tcr", gao_case_path, "--out", out, "--set", "duty.².stroke=1")
+    assert line.endswith("duty.².stroke: duty is a list; name an entry, e.g. duty.0")
+    assert not out.exists()
+
+
+def test_tcr_without_rebinning_writes_its_folder(tmp_path: Path, gao_case_path) -> None:
+    """``--set tcr.rebin=false`` (a documented option) ended in a TypeError traceback: the
+    NetCDF writer refused the attribute cell_size_m = None."""
+    out = tmp_path / "out"
+    args = ("--set", "tcr.rebin=false", "--set", "numerics.cells_across=8", "-q")
+    result = CliRunner().invoke(app, ["tcr", str(gao_case_path), "--out", str(out), *args])
+    assert result.exit_code == 0, result.output
+    assert (out / "summary.json").exists()
+
+
+def test_friction_torque_arguments_beyond_the_case_ranges(gao_case_path) -> None:
+    """``friction_torque(case, axial_load=1e30)`` gave 1.7e27 N m (operating.axial_load stops
+    at 1e8 N), and a viscosity of NaN, −1 or inf was ignored without a word by the catalogue
+    model."""
+    from ballscrew import friction_torque
+
+    case = load_case(gao_case_path)
+    with pytest.raises(InputError, match=r"^axial_load = 1e\+30 is not allowed: a force in \[0,"):
+        friction_torque(case, axial_load=1e30)
+    for bad in (math.nan, -1.0, math.inf):
+        with pytest.raises(InputError, match=r"^viscosity = .* is not allowed: a finite number"):
+            friction_torque(case, viscosity=bad)
+    assert friction_torque(case, axial_load=1e8, viscosity=0.06).total > 0.0
+
+
+def test_empty_model_names_are_refused(tmp_path: Path, gao_case_path) -> None:
+    """``tcr --variant ''`` and ``sweep --analysis ''`` ran the case's variant and the tcr
+    analysis: an empty name was taken for no name."""
+    out = tmp_path / "out"
+    line = refused("tcr", gao_case_path, "--variant", "", "--out", out)
+    assert line == "error: tcr.variant = '' is not allowed: one of V2, MT, V1"
+    args = ("sweep", gao_case_path, "--vary", "surface.D=1.5,1.6", "--out", out)
+    assert "'' is not allowed" in refused(*args, "--analysis", "")
+    assert not out.exists()
+
+
+def test_public_functions_refuse_what_is_no_case(gao_case_path) -> None:
+    """``ball_loads``, ``operating_point`` and ``design_check`` given a path instead of a case
+    raised AttributeError, ``load_case(None)`` a TypeError and ``operating_point(case,
+    speed="abc")`` a ValueError; each is now the one-line error the other functions give."""
+    import ballscrew
+
+    for function in (ballscrew.ball_loads, ballscrew.operating_point, ballscrew.design_check):
+        with pytest.raises(InputError, match=r"^case = 'x.toml' is not allowed: a case from"):
+            function("x.toml")
+    with pytest.raises(CaseError, match=r"path = None: expected the path of a case file"):
+        load_case(None)
+    case = load_case(gao_case_path)
+    with pytest.raises(CaseError, match=r"operating.speed: cannot read 'abc' as a quantity"):
+        ballscrew.operating_point(case, speed="abc")
+
+
+def test_spacer_far_shorter_than_an_axial_cell(tmp_path: Path, gao_case_path) -> None:
+    """``thermal.spacer_length = 1e-30`` (allowed: ≥ 0) failed an assert of the axial grid,
+    whose ring spacings could give the spacer no cell: an AssertionError traceback."""
+    out = tmp_path / "out"
+    sets = ("--set", "thermal.spacer_length=1e-30", "--set", "numerics.cells_across=16")
+    line = refused("thermal", gao_case_path, "--out", out, *sets)
+    assert line.startswith("error: thermal.spacer_length = 1e-30 is not allowed: 0 (none) or at")
+    assert not out.exists()
+
+
+def test_control_characters_in_case_text(gao_case_path) -> None:
+    """``name = "a\\u0000b"`` ran ``ballscrew contact`` to the end and failed writing the NetCDF
+    attribute (h5py ValueError traceback); an ESC would drive the terminal. Tab and line
+    breaks still pass."""
+    with pytest.raises(CaseError, match=r"name = 'a\\x00b' is not allowed: text without control"):
+        load_case(gao_case_path, {"name": "a\x00b"})
+    with pytest.raises(CaseError, match=r"thermal.sensors.0.name = 'x\\x1b\[31m' is not allowed"):
+        load_case(gao_case_path, {"thermal.sensors.0.name": "x\x1b[31m"})
+    assert load_case(gao_case_path, {"description": "a\tb\nc"}).description == "a\tb\nc"

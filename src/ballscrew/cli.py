@@ -12,16 +12,58 @@ import inspect
 import logging
 import pkgutil
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from importlib import import_module
-from typing import Annotated, TextIO
+from typing import Annotated, Any, TextIO
 
 import typer
+from typer.core import TyperGroup
+
+try:  # newer typer carries its own copy of click
+    from typer._click import Context, exceptions
+except ImportError:  # pragma: no cover - typer on the installed click
+    from click import Context, exceptions
 
 from ballscrew import __version__, commands
 from ballscrew.commands._common import QuietOpt, VerboseOpt, set_verbosity
 
+
+class _OneLineUsageError(exceptions.ClickException):
+    """A command line click cannot parse (a wrong option value, a missing argument), shown as
+    one ``error:`` line with exit status 2 like every other bad input."""
+
+    exit_code = 2
+
+    def show(self, file: TextIO | None = None) -> None:
+        typer.echo(f"error: {self.format_message()}", err=True)
+
+
+@contextmanager
+def _one_line_usage_errors() -> Iterator[None]:
+    try:
+        yield
+    except exceptions.NoArgsIsHelpError:
+        raise
+    except exceptions.UsageError as exc:
+        raise _OneLineUsageError(exc.format_message()) from None
+
+
+class _Commands(TyperGroup):
+    """The subcommands, with their usage errors as one line instead of click's usage box."""
+
+    def make_context(self, *args: Any, **kwargs: Any) -> Context:
+        with _one_line_usage_errors():
+            return super().make_context(*args, **kwargs)
+
+    def invoke(self, ctx: Context) -> Any:
+        with _one_line_usage_errors():
+            return super().invoke(ctx)
+
+
 app = typer.Typer(
     name="ballscrew",
+    cls=_Commands,
     help="Precision ball-screw simulation: contact, thermal contact resistance, temperatures, "
     "kinematics and wear.",
     no_args_is_help=True,

@@ -32,6 +32,7 @@ from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
 from ballscrew.units import KIND_OF_UNIT, format_number, format_quantity
+from ballscrew.validation import case_with
 
 __all__ = [
     "AMBER_BAND",
@@ -341,7 +342,7 @@ def _warn(
 
 def design_check(case: Case) -> DesignCheck:
     """Every design value of the case's screw with its margin (needs ``[design]``)."""
-    spec = case.design
+    spec = case_with(case, "screw", "operating", "design").design  # type: ignore[attr-defined]
     if spec is None:
         raise InputError("design", None, "a [design] section (at least unsupported_length)")
     params = ScrewParameters.from_case(case)

@@ -42,6 +42,7 @@ from ballscrew.friction.torque import FrictionTorque
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LibraryLubricant
 from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
+from ballscrew.validation import case_with
 from ballscrew.wear.step import entrainment_speed
 
 __all__ = [
@@ -226,13 +227,13 @@ def operating_point(
     ``start_temperature`` [K]: where the iteration starts (default: ambient); the answer does
     not depend on it.
     """
-    op = case.operating
-    omega = op.speed if speed is None else float(speed)
-    load = op.axial_load if axial_load is None else float(axial_load)
-    base = with_overrides(
-        case,
-        {"operating.speed": omega, "operating.axial_load": load, "operating.coupled": False},
-    )
+    op = case_with(case, "screw", "operating").operating  # type: ignore[attr-defined]
+    given = {
+        "operating.speed": op.speed if speed is None else speed,
+        "operating.axial_load": op.axial_load if axial_load is None else axial_load,
+    }
+    base = with_overrides(case, {**given, "operating.coupled": False})
+    omega, load = base.operating.speed, base.operating.axial_load
     law = _viscosity_law(base)
     ambient = base.thermal.ambient_temperature if base.thermal is not None else 293.15
     contact = ambient if start_temperature is None else float(start_temperature)

@@ -34,6 +34,7 @@ from ballscrew.lubrication.lubricant_library import (
 )
 from ballscrew.lubrication.supply import supplied_film_model
 from ballscrew.materials import Material
+from ballscrew.validation import case_with
 
 __all__ = [
     "SIDES",
@@ -172,6 +173,7 @@ class ScrewParameters:
     @classmethod
     def from_case(cls, case: Case) -> ScrewParameters:
         """The parameters of a validated case."""
+        case_with(case, "screw", "operating", "materials", "surface", "medium", "numerics")
         spec, op = case.screw, case.operating
         geometry = ScrewGeometry.from_spec(spec)
         medium = case.medium

@@ -150,7 +150,7 @@ def tcr_model(
         lambda_1=params.ball.thermal_conductivity,
         lambda_2=params.material(side).thermal_conductivity,
         lambda_f=params.lubrication.thermal_conductivity,
-        variant=variant or options.variant,
+        variant=options.variant if variant is None else variant,
         cutoff_area=options.cutoff_area,
         gap_model=options.gap_model,
         gap_factor=options.gap_factor,

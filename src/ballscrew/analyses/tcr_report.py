@@ -154,7 +154,8 @@ def fields(result: ScrewTCR) -> xr.Dataset:
         attrs={
             "case": result.case_name,
             "variant": result.variant,
-            "cell_size_m": result.cell_size,
+            # no re-binning (tcr.rebin = false): the solver's cells, and no attribute
+            **({} if result.cell_size is None else {"cell_size_m": result.cell_size}),
         },
     )
 

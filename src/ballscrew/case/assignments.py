@@ -16,7 +16,7 @@ def parse_value(text: str) -> Any:
     ``"1500 rpm"``) or else the text itself (``1500 rpm``, ``network``)."""
     try:
         return tomllib.loads(f"value = {text}")["value"]
-    except tomllib.TOMLDecodeError:
+    except ValueError:  # a TOML syntax error, or an integer of more than 4300 digits
         return text.strip()
 
 

@@ -2,10 +2,18 @@
 
 from __future__ import annotations
 
+import unicodedata
 from functools import partial
 from typing import Annotated, Any
 
-from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    field_validator,
+)
 
 from ballscrew.registry import Registry
 from ballscrew.units import SI_UNITS, to_si
@@ -48,3 +56,14 @@ class Model(BaseModel):
     model_config = ConfigDict(
         extra="forbid", frozen=True, validate_default=True, allow_inf_nan=False
     )
+
+    @field_validator("*", mode="after")
+    @classmethod
+    def _no_control_characters(cls, value: Any) -> Any:
+        """Refuse text with control characters (NUL, ESC, …; tab and line breaks pass): a NUL
+        cannot be stored in a NetCDF attribute, an escape sequence would drive the terminal."""
+        if isinstance(value, str) and any(
+            unicodedata.category(c) == "Cc" and c not in "\t\n\r" for c in value
+        ):
+            raise ValueError("is not allowed: text without control characters (NUL, ESC, …)")
+        return value

@@ -38,6 +38,8 @@ def load_case(path: str | Path, overrides: Mapping[str, Any] | None = None) -> C
     ``{"surface.D": 1.5, "operating.axial_load": 3000.0}``. Raises :class:`CaseError` with one
     line per problem, each naming the field, the value and the allowed range.
     """
+    if not isinstance(path, str | os.PathLike):
+        raise CaseError([f"path = {path!r}: expected the path of a case file (str or Path)"])
     path = Path(path)
     raw = read_toml(path, "case file")
     raw.setdefault("name", path.stem)
@@ -88,7 +90,7 @@ def _parse_toml(text: str, path: Path, what: str) -> dict[str, Any]:
     too_deep = CaseError([f"the {what} is nested deeper than {MAX_NESTING} levels"], str(path))
     try:
         raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+    except ValueError as exc:  # a syntax error, or an integer of more than 4300 digits
         raise CaseError([f"TOML syntax error: {exc}"], str(path)) from None
     except RecursionError:
         raise too_deep from None
@@ -180,7 +182,7 @@ def check_field_path(keys: list[str], source: str = "case") -> None:
         where = ".".join(keys[:depth]) or "the case"
         if listed:
             listed = False
-            if not key.isdigit():
+            if not (key.isascii() and key.isdigit()):
                 problem = f"{'.'.join(keys)}: {where} is a list; name an entry, e.g. {where}.0"
                 raise CaseError([problem], source)
             continue

@@ -13,6 +13,7 @@ Ball count: a circuit of t turns holds floor(t π d_m/(D_w cos λ)) − 1 balls
 
 from __future__ import annotations
 
+import json
 import math
 import tomllib
 from dataclasses import dataclass
@@ -138,7 +139,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     if preload is None:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     text = _TEMPLATE.format(
-        name=name,
+        name=json.dumps(name, ensure_ascii=False),  # a TOML basic string, escapes and all
         d0=_mm(d0),
         d0_mm=f"{d0 * 1e3:.6g}",
         lead_mm=f"{lead * 1e3:.6g}",
@@ -214,7 +215,7 @@ _TEMPLATE = """\
 # standard or typical one, labelled; replace it with the maker's value when you have it.
 # Units are written in strings ("40 mm"); bare numbers are SI.
 
-name = "{name}"
+name = {name}
 description = "{d0_mm} x {lead_mm} mm ball screw, {turns} turns x {circuits} circuits, {nuts} nuts"
 
 [screw]

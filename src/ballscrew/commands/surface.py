@@ -34,7 +34,7 @@ ResolutionOpt = Annotated[
         metavar="LENGTH",
     ),
 ]
-GammaOpt = Annotated[float, typer.Option(help="W-M frequency ratio γ", metavar="NUMBER")]
+GammaOpt = Annotated[float, typer.Option(help="W-M frequency ratio γ (≥ 1.01)", metavar="NUMBER")]
 
 
 @writes_results(sets=False)

@@ -60,6 +60,7 @@ def sweep(
     from ballscrew.results.folder import prepare_sweep_folder
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
+    from ballscrew.sweep.cluster import check_workers
     from ballscrew.sweep.registry import get_analysis
     from ballscrew.sweep.spec import check_sweep_size, is_sweep_file, load_sweep, merge_axes
 
@@ -67,12 +68,15 @@ def sweep(
     if is_sweep_file(case_file):
         spec = load_sweep(case_file)
         case, axes = with_overrides(spec.case, output.overrides), merge_axes(spec.axes, extra)
-        name = analysis or spec.analysis or "tcr"
+        name = analysis if analysis is not None else spec.analysis or "tcr"
     else:
-        case, axes, name = output.load_case(case_file), tuple(extra), analysis or "tcr"
+        case, axes = output.load_case(case_file), tuple(extra)
+        name = "tcr" if analysis is None else analysis
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     check_sweep_size(axes)
+    if not scheduler:
+        check_workers(workers)
     function = get_analysis(name)
 
     def progress(done: int, total: int) -> None:

@@ -16,9 +16,15 @@ import logging
 import os
 from typing import Any
 
+from ballscrew.budget import check_memory
 from ballscrew.errors import InputError
+from ballscrew.validation import integer_at_least
 
 log = logging.getLogger(__name__)
+
+#: Memory of one local worker process with numpy, scipy, Dask and ballscrew loaded [bytes]
+#: (about what the command line itself takes, 0.25 GB; GUESS for the points' own arrays).
+WORKER_BYTES = 0.3e9
 
 #: How long connecting to a scheduler given by address may take.
 CONNECT_TIMEOUT = "5s"
@@ -62,6 +68,13 @@ def _connect(scheduler: str) -> Any:
         ) from None
 
 
+def check_workers(workers: int | None) -> None:
+    """Refuse a local worker count below 1 or whose processes exceed the memory budget."""
+    if workers is not None:
+        integer_at_least("--workers", workers, 1)
+        check_memory("--workers", workers, workers * WORKER_BYTES, f"{workers} local workers")
+
+
 def _local(workers: int | None) -> tuple[Any, Any]:
     import dask
     from distributed import Client, LocalCluster
@@ -95,6 +108,8 @@ def shared_client(scheduler: str | None = None, workers: int | None = None) -> A
     if cached is not None and cached[0].status == "running":
         return cached[0]
     _quiet_dask()
+    if not scheduler:
+        check_workers(workers)
     entry = (_connect(scheduler), None) if scheduler else _local(workers)
     _CLIENTS[key] = entry
     return entry[0]

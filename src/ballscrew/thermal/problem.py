@@ -339,8 +339,9 @@ class AxialGrid:
         return inside.astype(float) @ w
 
 
-def _ring_spacing(lengths: list[float], size: float) -> tuple[int, NDArray[np.int64]]:
-    """Ring cells n and part boundary indices: the n ≥ L/size that best fits every part."""
+def _ring_spacing(lengths: list[float], size: float) -> tuple[int, NDArray[np.int64]] | None:
+    """Ring cells n and part boundary indices: the n ≥ L/size that best fits every part (None
+    when no n up to 2 L/size gives every part a cell)."""
     total = sum(lengths)
     cum = np.cumsum(lengths)
     n0 = max(len(lengths), math.ceil(total / size - 1e-9))
@@ -354,8 +355,7 @@ def _ring_spacing(lengths: list[float], size: float) -> tuple[int, NDArray[np.in
             best = (err, n, idx)
         if err <= 1e-9 * total:
             break
-    assert best is not None  # n = 2 n0 always gives every part a cell
-    return best[1], best[2]
+    return None if best is None else (best[1], best[2])
 
 
 def _uniform(a: float, b: float, size: float) -> NDArray[np.float64]:
@@ -375,7 +375,13 @@ def axial_grid(problem: ThermalProblem, size: float) -> AxialGrid:
     if not size > 0.0:
         raise InputError("mesh.size", size, "a length > 0 m")
     lengths = [p.length for p in problem.parts]
-    n_ring, idx = _ring_spacing(lengths, size)
+    spacing = _ring_spacing(lengths, size)
+    if spacing is None:  # a part far shorter than a cell; one cell long always fits
+        short = min(problem.parts, key=lambda part: part.length)
+        field = "thermal.nut_length" if short.balls else "thermal.spacer_length"
+        cell = f"at least one axial cell of the thermal model's mesh ({size:g} m, [thermal.mesh])"
+        raise InputError(field, short.length, cell if short.balls else f"0 (none) or {cell}")
+    n_ring, idx = spacing
     dz = problem.ring_length / n_ring
     m_max = round(0.5 * problem.stroke / dz)
     lo = problem.ring_centre - 0.5 * problem.ring_length - m_max * dz
