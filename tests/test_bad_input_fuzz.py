@@ -306,3 +306,10 @@ def test_control_characters_in_case_text(gao_case_path) -> None:
     with pytest.raises(CaseError, match=r"thermal.sensors.0.name = 'x\\x1b\[31m' is not allowed"):
         load_case(gao_case_path, {"thermal.sensors.0.name": "x\x1b[31m"})
     assert load_case(gao_case_path, {"description": "a\tb\nc"}).description == "a\tb\nc"
+
+
+def test_true_or_false_for_a_number_is_refused(gao_case_path) -> None:
+    """``balls_per_nut = true`` was read as 1 ball; a boolean field still takes one."""
+    with pytest.raises(CaseError, match=r"screw.balls_per_nut = True is not allowed: a number"):
+        load_case(gao_case_path, {"screw.balls_per_nut": True})
+    assert load_case(gao_case_path, {"operating.coupled": True}).operating.coupled is True

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import unicodedata
 from functools import partial
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal, get_args, get_origin
 
 from pydantic import (
     AfterValidator,
@@ -12,6 +12,7 @@ from pydantic import (
     BeforeValidator,
     ConfigDict,
     Field,
+    ValidationInfo,
     field_validator,
 )
 
@@ -47,6 +48,16 @@ def model_choice(registry: Registry[Any], description: str) -> Any:
     ]
 
 
+def _accepts_bool(annotation: Any) -> bool:
+    """Whether a field of type ``annotation`` takes a boolean (``bool``, ``bool | None``, a
+    ``Literal`` of booleans, ``Any``)."""
+    if annotation is bool or annotation is Any:
+        return True
+    if get_origin(annotation) is Literal:
+        return any(isinstance(v, bool) for v in get_args(annotation))
+    return any(_accepts_bool(a) for a in get_args(annotation) if a is not annotation)
+
+
 class Model(BaseModel):
     """Base of every case section: unknown keys are rejected, instances are immutable.
 
@@ -56,6 +67,16 @@ class Model(BaseModel):
     model_config = ConfigDict(
         extra="forbid", frozen=True, validate_default=True, allow_inf_nan=False
     )
+
+    @field_validator("*", mode="before")
+    @classmethod
+    def _no_bool_for_a_number(cls, value: Any, info: ValidationInfo) -> Any:
+        """Refuse ``true``/``false`` where the field takes no boolean (pydantic would read
+        ``balls_per_nut = true`` as 1)."""
+        if isinstance(value, bool) and info.field_name is not None:
+            if not _accepts_bool(cls.model_fields[info.field_name].annotation):
+                raise ValueError("is not allowed: a number or text, not true/false")
+        return value
 
     @field_validator("*", mode="after")
     @classmethod
