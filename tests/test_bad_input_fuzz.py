@@ -313,3 +313,14 @@ def test_true_or_false_for_a_number_is_refused(gao_case_path) -> None:
     with pytest.raises(CaseError, match=r"screw.balls_per_nut = True is not allowed: a number"):
         load_case(gao_case_path, {"screw.balls_per_nut": True})
     assert load_case(gao_case_path, {"operating.coupled": True}).operating.coupled is True
+
+
+def test_a_value_given_twice_on_a_sweep_axis_is_refused() -> None:
+    """``--vary surface.D=1.5,1.5`` ran the same point twice."""
+    from ballscrew.sweep import parse_axis
+
+    with pytest.raises(CaseError, match=r"surface.D=1.5,1.6,1.5'?: the value 1.5 \(SI\) is given"):
+        parse_axis("surface.D=1.5,1.6,1.5")
+    with pytest.raises(CaseError, match=r"given twice"):
+        parse_axis("operating.speed=100 rpm:100 rpm:3")
+    assert parse_axis("surface.D=1.5:1.5:1").values == (1.5,)

@@ -10,7 +10,7 @@ import numpy as np
 
 from ballscrew.case import Case, CaseError, with_overrides
 from ballscrew.case.loader import check_field_path, field_spec
-from ballscrew.units import to_si
+from ballscrew.units import format_number, to_si
 
 
 @dataclass(frozen=True)
@@ -69,6 +69,11 @@ def parse_axis(text: str) -> SweepAxis:
         raise CaseError([f"--vary {text!r}: the range is empty"], "sweep")
     if values.size > MAX_AXIS_POINTS:
         raise CaseError([f"--vary {text!r}: more than {MAX_AXIS_POINTS} values"], "sweep")
+    unique, counts = np.unique(values, return_counts=True)
+    if np.any(counts > 1):
+        twice = format_number(float(unique[np.argmax(counts > 1)]), 6)
+        problem = f"--vary {text!r}: the value {twice} (SI) is given twice; give each value once"
+        raise CaseError([problem], "sweep")
     return SweepAxis(key, tuple(float(v) for v in values))
 
 
