@@ -247,3 +247,15 @@ def test_python_dash_m_runs_the_command_line(monkeypatch, capsys):
         runpy.run_module("ballscrew", run_name="__main__")
     assert exit_.value.code == 0
     assert capsys.readouterr().out.startswith("ballscrew ")
+
+
+def test_importing_the_main_module_runs_nothing(monkeypatch):
+    """``import ballscrew.__main__`` (pydoc, doctest collection, API-doc tools) ran the command
+    line on the importer's argv and exited."""
+    import importlib
+    import sys
+
+    monkeypatch.setattr(sys, "argv", ["importer", "--version"])
+    monkeypatch.delitem(sys.modules, "ballscrew.__main__", raising=False)
+    module = importlib.import_module("ballscrew.__main__")
+    assert module.app is not None

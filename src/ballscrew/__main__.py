@@ -2,4 +2,5 @@
 
 from ballscrew.cli import app
 
-app(prog_name="ballscrew")
+if __name__ == "__main__":  # importing the module (pydoc, doctests) runs nothing
+    app(prog_name="ballscrew")

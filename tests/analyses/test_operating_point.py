@@ -214,3 +214,14 @@ def test_a_steady_field_draws_no_empty_time_axis(case, tmp_path, monkeypatch):
     thermal_report.elongation_plot(point.field, tmp_path / "e.png")
     [ax] = drawn[0].axes
     assert ax.get_xlabel() == "z [mm]" and "µm" in ax.get_title()
+
+
+def test_the_friction_part_at_rest_is_no_zero(case):
+    """At rest the report's 'friction part of T = heat / ω' read 0 N·m (no heat) while the
+    summary's friction_part gave T − F_a·L/2π = 0.54 N·m: the torque to start the screw."""
+    from ballscrew.analyses import operating_point_report
+
+    point = operating_point(case, speed=0.0, axial_load=2000.0)
+    rows = dict(operating_point_report.sections(point)[0].tables[0].rows)
+    part = point.summary()["friction_part"]["value"]
+    assert part > 0.1 and rows["friction part of T = heat / ω [N·m]"] == pytest.approx(part)

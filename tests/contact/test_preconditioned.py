@@ -326,3 +326,28 @@ def test_whole_solves_shared_between_threads_equal_one_at_a_time(monkeypatch):
         np.testing.assert_allclose(together.pressure, alone.pressure, rtol=0, atol=1e-10 * scale)
         u_scale = np.abs(alone.displacement).max()
         np.testing.assert_allclose(together.displacement, alone.displacement, atol=1e-10 * u_scale)
+
+
+def test_batches_solved_from_several_threads_at_once_match_serial(monkeypatch):
+    """Stress: six Python threads solve stacks at once, each stack shared out to the FFT pool
+    (runs of whole solves, per-thread transforms, the shared operator and preconditioner
+    caches); every pressure and displacement matches the serial solve to round-off (a plan
+    re-made with FFTW_MEASURE meanwhile changes the last bits, a race would change far more)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    monkeypatch.setattr(preconditioned, "fft_threads", lambda points=None: 2)
+    stacks = [ball_stack(3, n=48, seed=seed) for seed in range(3)]
+
+    def solved(k):
+        gaps, dx, dy, loads = stacks[k]
+        return [
+            (r.pressure, r.displacement) for r in solve_normal_batch(gaps, dx, dy, E_STAR, loads)
+        ]
+
+    serial = [solved(k) for k in range(len(stacks))]
+    with ThreadPoolExecutor(6) as threads:
+        together = list(threads.map(solved, [k % len(stacks) for k in range(12)]))
+    for k, results in enumerate(together):
+        for (p, u), (p_serial, u_serial) in zip(results, serial[k % len(stacks)], strict=True):
+            np.testing.assert_allclose(p, p_serial, rtol=0, atol=1e-9 * p_serial.max())
+            np.testing.assert_allclose(u, u_serial, rtol=0, atol=1e-9 * np.abs(u_serial).max())

@@ -73,3 +73,22 @@ def test_a_guessed_rule_behind_none_is_a_guess_too(tmp_path):
     folder = write_results(_Result(case, inputs=resolved_inputs(case)), tmp_path / "out")
     report = (folder / "report.html").read_text(encoding="utf-8")
     assert "loads.nut_outer_diameter</td><td>by its rule" in report.replace("\n", "")
+
+
+def test_overrides_keep_the_defaults_the_case_left_alone():
+    """``with_overrides`` re-validated the full dump, which marked every field as written: a
+    sweep's base case (always passed through it) and every analysis that resolves its case
+    (coupled thermal, operating point) reported no guesses at all."""
+    from ballscrew.case import with_overrides
+
+    case = load_case(EXAMPLE)
+    overridden = with_overrides(case, {"surface.D": 1.5, "friction.hysteresis": 0.01})
+    assert set(guessed_defaults(overridden)) == set(guessed_defaults(case)) - {
+        "friction.hysteresis"
+    }
+    assert overridden.surface.D == 1.5 and overridden.friction.hysteresis == 0.01
+    assert set(guessed_defaults(with_overrides(overridden, {}))) == set(
+        guessed_defaults(overridden)
+    )
+    given = with_overrides(case, {"friction": {"seal_force": 5.0, "circuits": 2}})
+    assert "friction.circuits" not in guessed_defaults(given)  # a written section is written

@@ -86,3 +86,46 @@ def test_the_report_tabulates_every_point_in_engineering_units(coarse_case, tmp_
     assert "<h2>Values at every point</h2>" in report
     assert "<th>speed [rpm]</th><th>heat [W]</th>" in report
     assert "<td>1000</td><td>104.7</td>" in report  # the stand-in's heat is ω in W
+
+
+def test_a_swept_guess_is_no_guess(coarse_case, tmp_path):
+    """The sweep listed the base case's guessed defaults, the swept one among them: its default
+    is never used, every point writes its own value."""
+    axis = parse_axis("friction.hysteresis=0.001:0.01:2")
+    records = [PointRecord({axis.key: v}, {"heat": (v, "W")}, None, 0.0) for v in axis.values]
+    ds = assemble([axis], records, "test", coarse_case)
+    (tmp_path / "sweep").mkdir()
+    folder = write_sweep(ds, tmp_path / "sweep", 2, coarse_case, [axis])
+    guessed = json.loads((folder / "summary.json").read_text(encoding="utf-8"))["guessed_defaults"]
+    assert "case.friction.seal_force" in guessed
+    assert "case.friction.hysteresis" not in guessed
+
+
+def test_points_run_in_threads_keep_their_own_warnings(coarse_case):
+    """A worker with several threads (``--scheduler`` at a ``dask worker --nthreads 2``) runs
+    points at once: ``warnings.catch_warnings`` swaps the process's warning hook, so one point's
+    warnings landed in the other's record and the other's were lost."""
+    import threading
+
+    both = threading.Barrier(2)
+
+    def named(name):
+        def analysis(case):
+            both.wait(timeout=5)  # both points inside their capture
+            warnings.warn(f"from {name}", UserWarning, stacklevel=1)
+            both.wait(timeout=5)
+            return {"heat": (1.0, "W")}
+
+        return analysis
+
+    records = {}
+
+    def run(name):
+        records[name] = run_point(named(name), coarse_case, {})
+
+    threads = [threading.Thread(target=run, args=(name,)) for name in ("a", "b")]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert records["a"].warnings == ("from a",) and records["b"].warnings == ("from b",)

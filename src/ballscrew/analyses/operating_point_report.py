@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 import xarray as xr
@@ -97,14 +98,17 @@ def _torque_section(result: OperatingPoint) -> list[Section]:
 
 
 def _friction_part(result: OperatingPoint) -> float:
-    """T − F_a L/(2π) = Q/ω [N m]: the torque that becomes heat (0 at rest)."""
-    return result.heat / result.speed if result.speed > 0.0 else 0.0
+    """T − F_a L/(2π) [N m], = Q/ω in motion: the torque that becomes heat (at rest, the one
+    that starts the screw, not 0)."""
+    if result.friction is not None:
+        return result.friction.friction
+    return result.heat / result.speed if result.speed > 0.0 else math.nan
 
 
 def sections(result: OperatingPoint) -> list[Section]:
     """The coupled state in engineering units, then the thermal model's own sections."""
     rows: list[tuple[Any, ...]] = [
-        ("speed [rpm]", result.speed * 30.0 / 3.141592653589793),
+        ("speed [rpm]", result.speed * 30.0 / math.pi),
         ("axial load [N]", result.axial_load),
         ("screw torque T, work F_a·L/2π included [N·m]", result.friction_torque),
         ("friction part of T = heat / ω [N·m]", _friction_part(result)),

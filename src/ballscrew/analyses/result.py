@@ -30,6 +30,7 @@ import xarray as xr
 
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.registry import Registry
+from ballscrew.thread_warnings import record_warnings
 
 __all__ = [
     "ANALYSES",
@@ -57,8 +58,7 @@ def recorded_warnings() -> Iterator[list[str]]:
     still reach the console or the caller's filters.
     """
     messages: list[str] = []
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+    with record_warnings() as caught:  # this thread's alone (sweep points run in threads)
         yield messages
     for w in caught:
         text = " ".join(str(w.message).split())

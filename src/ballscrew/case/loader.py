@@ -133,8 +133,32 @@ def case_from_dict(
 
 
 def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:
-    """A new validated case: ``case`` with dotted-key ``overrides`` applied."""
-    return case_from_dict(case.model_dump(), overrides, source=case.name)
+    """A new validated case: ``case`` with dotted-key ``overrides`` applied.
+
+    The fields ``case`` left at their defaults stay marked unset (``model_fields_set``) unless
+    an override writes them, so the defaults that are guesses are still reported as such."""
+    new = case_from_dict(case.model_dump(), overrides, source=case.name)
+    _keep_unset(case, new, [str(key).split(".") for key in overrides])
+    return new
+
+
+def _keep_unset(old: Any, new: Any, written: list[list[str]]) -> None:
+    """Give each model of ``new`` (validated from the full dump of ``old``) the written fields
+    of its counterpart in ``old`` plus those the ``written`` key paths end on; a path that ends
+    on a section leaves that section as it was validated."""
+    if isinstance(old, BaseModel) and type(old) is type(new):
+        ends = {path[0] for path in written if len(path) == 1}
+        fields = (set(old.model_fields_set) | ends) & set(type(new).model_fields)
+        object.__setattr__(new, "__pydantic_fields_set__", fields)
+        parts = [(name, getattr(old, name), getattr(new, name)) for name in type(new).model_fields]
+    elif isinstance(old, list | tuple) and isinstance(new, list | tuple) and len(old) == len(new):
+        ends = {path[0] for path in written if len(path) == 1}
+        parts = [(str(k), a, b) for k, (a, b) in enumerate(zip(old, new, strict=True))]
+    else:
+        return
+    for name, a, b in parts:
+        if name not in ends:
+            _keep_unset(a, b, [path[1:] for path in written if len(path) > 1 and path[0] == name])
 
 
 def apply_overrides(

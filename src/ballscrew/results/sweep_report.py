@@ -159,7 +159,9 @@ def write_sweep(
     folder = Path(folder)
     export = parse_formats(export)
     with writing(folder):
-        guesses = guessed_defaults(case, "case.") if case is not None else {}
+        swept = {f"case.{d}" for d in ds["failed"].dims}  # each point writes its own value
+        guessed = guessed_defaults(case, "case.") if case is not None else {}
+        guesses = {key: text for key, text in guessed.items() if key not in swept}
         _write_files(ds, folder, computed, sweep_inputs(ds, case, axes), guesses)
         if export:
             export_results(folder, export)

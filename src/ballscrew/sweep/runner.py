@@ -18,7 +18,6 @@ import logging
 import math
 import time
 import traceback
-import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -32,6 +31,7 @@ from ballscrew.files import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
 from ballscrew.sweep.cluster import shared_client
 from ballscrew.sweep.spec import check_sweep_size
+from ballscrew.thread_warnings import record_warnings
 
 log = logging.getLogger(__name__)
 
@@ -57,8 +57,7 @@ def run_point(analysis: Analysis, case: Case, overrides: dict[str, float]) -> Po
     FFTs run single-threaded: the sweep's parallelism is its workers, one per core.
     """
     start = time.perf_counter()
-    with warnings.catch_warnings(record=True) as caught:  # one thread per worker process
-        warnings.simplefilter("always")
+    with record_warnings() as caught:  # this point's own, with other points in other threads
         try:
             with limited_fft_threads(1):
                 results = {k: (float(v), u) for k, (v, u) in analysis(case).items()}
