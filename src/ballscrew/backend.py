@@ -26,7 +26,7 @@ Both directions are unnormalised (as in FFTW): ``inverse(forward(a))`` is ``a / 
 ``scale = 1 / (4 m n)`` held by the transform, so a caller can fold ``scale`` into its kernel once.
 
 Plans and buffers are cached per shape and per thread, so transforms are safe to use from several
-threads at once.
+threads at once; the caches of all threads together hold at most :func:`fft_cache_budget` bytes.
 """
 
 from __future__ import annotations
@@ -35,6 +35,7 @@ import contextlib
 import os
 import threading
 import time
+import weakref
 from collections import OrderedDict
 from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
@@ -45,6 +46,8 @@ from typing import Any, Protocol
 import numpy as np
 import scipy.fft
 
+from ballscrew.budget import memory_budget
+
 try:
     import cupy
 except ImportError:
@@ -54,6 +57,8 @@ __all__ = [
     "PaddedRealFFT",
     "array_module",
     "blas_single_thread",
+    "cached_fft_bytes",
+    "fft_cache_budget",
     "fft_pool",
     "fft_threads",
     "limited_fft_threads",
@@ -217,6 +222,8 @@ class _Padded:
         self.scale = 1.0 / (4 * m * n)
         self._threads = threads
         self._dtype = dtype
+        self.nbytes = 0
+        """Host memory held between calls [bytes]: 0 unless the backend keeps buffers."""
 
     def plan_measured(self) -> None:
         """Nothing to plan: the library plans on its own."""
@@ -237,6 +244,7 @@ class _FFTWPadded(_Padded):
         self._rows_in = pyfftw.zeros_aligned((m, 2 * n), dtype=dtype)
         self._rows_out = pyfftw.empty_aligned((m, 2 * n), dtype=dtype)
         self._spectrum = pyfftw.zeros_aligned((2 * m, n + 1), dtype=np.result_type(dtype, 1j))
+        self.nbytes = self._rows_in.nbytes + self._rows_out.nbytes + self._spectrum.nbytes
         self._plan("FFTW_ESTIMATE")
         self._exec_time = self._time_pair()
         self._spent = 0.0
@@ -351,13 +359,77 @@ class _CupyPadded(_Padded):
         return out
 
 
-_local = threading.local()
-
 CACHED_SHAPES = 16
 """Transforms kept per thread (plans + buffers: ~66 MB at 1024 x 1024), least recently used out.
 
 A nested-grid solve uses one per grid level (5-6), twice over with mixed precision: with fewer
 slots the two hierarchies evicted each other and every solve planned its transforms anew."""
+
+CACHE_SHARE = 0.125
+"""GUESS: share of :func:`ballscrew.budget.memory_budget` that the cached transforms of all threads
+may hold together. A nested-grid solve of 1024 x 1024 holds ~130 MB of transforms (both
+precisions); with the default budget (half the RAM) a 16 GiB machine caches 1 GiB, enough for
+eight such solves at once (:func:`fft_pool`), instead of up to 8 threads x 16 x 66 MB."""
+
+
+class _ThreadCache:
+    """One thread's transforms, least recently used first, and the bytes they hold."""
+
+    def __init__(self) -> None:
+        self.transforms: OrderedDict[tuple, Any] = OrderedDict()
+        self.nbytes = 0
+
+    def pop_oldest(self) -> None:
+        self.nbytes -= self.transforms.popitem(last=False)[1].nbytes
+
+
+_local = threading.local()
+_caches: weakref.WeakSet[_ThreadCache] = weakref.WeakSet()
+"""The caches of the live threads (a thread's cache goes with the thread)."""
+_caches_lock = threading.Lock()
+
+
+def fft_cache_budget() -> int:
+    """Bytes the cached transforms of all threads may hold: :data:`CACHE_SHARE` of the budget."""
+    return int(CACHE_SHARE * memory_budget())
+
+
+def cached_fft_bytes() -> int:
+    """Bytes held by the cached transforms of all threads of the process."""
+    with _caches_lock:
+        return sum(cache.nbytes for cache in list(_caches))
+
+
+def _thread_cache() -> _ThreadCache:
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = _ThreadCache()
+        with _caches_lock:
+            _caches.add(cache)
+    return cache
+
+
+def _make_room(own: _ThreadCache, budget: int) -> None:
+    """Evict least recently used transforms until all caches hold at most ``budget`` bytes: the
+    calling thread's first, then those of the fullest other thread. Each thread keeps its most
+    recently used transform (likely in use: evicting it would plan it anew at every call), so the
+    caches exceed ``budget`` by at most one transform per thread, no more than the threads' last
+    solves held at once (a solve checks its memory, these buffers included, against the budget:
+    :func:`ballscrew.budget.contact_grid_bytes`)."""
+    with _caches_lock:
+        caches = list(_caches)
+        total = sum(cache.nbytes for cache in caches)
+        while total > budget:
+            if len(own.transforms) > 1:
+                victim = own
+            else:
+                others = [c for c in caches if len(c.transforms) > 1]
+                if not others:
+                    return
+                victim = max(others, key=lambda c: c.nbytes)
+            before = victim.nbytes
+            victim.pop_oldest()
+            total -= before - victim.nbytes
 
 
 def padded_rfft(
@@ -366,26 +438,30 @@ def padded_rfft(
     """The :class:`PaddedRealFFT` of ``shape`` for array module ``xp``, cached per thread.
 
     ``dtype`` (``numpy.float64`` or ``numpy.float32``) is the precision of the transform: its
-    spectrum is complex of the same precision and its input is cast to it.
+    spectrum is complex of the same precision and its input is cast to it. Each thread keeps up to
+    :data:`CACHED_SHAPES` transforms; all threads together hold at most :func:`fft_cache_budget`
+    bytes (least recently used out, see :func:`_make_room`).
     """
     shape = (int(shape[0]), int(shape[1]))
     dtype = np.dtype(dtype).type
-    transforms = getattr(_local, "transforms", None)
-    if transforms is None:
-        transforms = _local.transforms = OrderedDict()
+    cache = _thread_cache()
     threads = fft_threads(4 * shape[0] * shape[1])
     key = (shape, xp.__name__, threads, dtype.__name__)
-    transform = transforms.get(key)
-    if transform is None:
-        if xp is not np:
-            transform = _CupyPadded(shape, dtype=dtype)
-        elif _pyfftw() is not None:
-            transform = _FFTWPadded(shape, threads, dtype)
-        else:
-            transform = _ScipyPadded(shape, threads, dtype)
-        transforms[key] = transform
-        if len(transforms) > CACHED_SHAPES:
-            transforms.popitem(last=False)
+    with _caches_lock:  # another thread may evict from this cache
+        transform = cache.transforms.get(key)
+        if transform is not None:
+            cache.transforms.move_to_end(key)
+            return transform
+    if xp is not np:
+        transform = _CupyPadded(shape, dtype=dtype)
+    elif _pyfftw() is not None:
+        transform = _FFTWPadded(shape, threads, dtype)
     else:
-        transforms.move_to_end(key)
+        transform = _ScipyPadded(shape, threads, dtype)
+    with _caches_lock:
+        cache.transforms[key] = transform
+        cache.nbytes += transform.nbytes
+        if len(cache.transforms) > CACHED_SHAPES:
+            cache.pop_oldest()
+    _make_room(cache, fft_cache_budget())
     return transform
