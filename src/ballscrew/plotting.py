@@ -2,14 +2,28 @@
 
 from __future__ import annotations
 
+from functools import cache
 from pathlib import Path
+from types import ModuleType
+from typing import TYPE_CHECKING
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.patches import Ellipse
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+
+@cache
+def pyplot() -> ModuleType:
+    """:mod:`matplotlib.pyplot` on the non-interactive Agg backend, imported at the first figure
+    (not at the import of ``ballscrew``: it takes ~0.4 s that a command without figures would
+    pay)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
 
 
 def plain(text: object) -> str:
@@ -35,6 +49,9 @@ def pressure_map(
     ``pressure[i, j]`` at ``(x[i], y[j])``, ``hertz_semi_axes`` = (semi-axis along x, along y).
     Axes are drawn in µm and pressure in GPa.
     """
+    from matplotlib.patches import Ellipse
+
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 4.2), layout="constrained")
     extent = (y[0] * 1e6, y[-1] * 1e6, x[0] * 1e6, x[-1] * 1e6)
     image = ax.imshow(pressure * 1e-9, origin="lower", extent=extent, aspect="auto", cmap="inferno")
@@ -71,6 +88,7 @@ def pressure_profiles(
     path: str | Path,
 ) -> Path:
     """Centre-line pressure profiles along x and y against the Hertz ellipsoidal profile."""
+    plt = pyplot()
     i0, j0 = np.unravel_index(np.argmax(pressure), pressure.shape)
     fig, axes = plt.subplots(1, 2, figsize=(8.0, 3.2), layout="constrained")
     for ax, coord, profile, semi, label in (
@@ -95,6 +113,7 @@ def resistance_map(
     x: np.ndarray, y: np.ndarray, resistance: np.ndarray, title: str, path: str | Path
 ) -> Path:
     """Element thermal contact resistance R_ij on the fractal cells (log colour scale, K/W)."""
+    plt = pyplot()
     from matplotlib.colors import LogNorm
 
     finite = np.where(np.isfinite(resistance), resistance, np.nan)
@@ -125,6 +144,7 @@ _MARKERS = ("o", "s", "^", "v", "D", "P", "X", "*")
 def line_styles(n: int) -> list[dict[str, object]]:
     """``n`` distinguishable line styles: colours of a perceptually ordered map, and for more
     than ten curves also line styles and markers, so no two curves look alike."""
+    plt = pyplot()
     colours = (
         plt.get_cmap("tab10").colors
         if n <= 10
@@ -140,7 +160,7 @@ def line_styles(n: int) -> list[dict[str, object]]:
     ]
 
 
-def legend_outside(ax: plt.Axes, **kwargs: object) -> None:
+def legend_outside(ax: Axes, **kwargs: object) -> None:
     """A legend to the right of the axes, never over the data."""
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, **kwargs)
 

@@ -7,10 +7,6 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
@@ -19,7 +15,7 @@ from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
-from ballscrew.plotting import legend_outside
+from ballscrew.plotting import legend_outside, pyplot
 from ballscrew.units import KIND_OF_UNIT, to_display
 
 if TYPE_CHECKING:
@@ -183,6 +179,7 @@ def fields(result: DesignCheck) -> xr.Dataset:
 
 
 def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
+    plt = pyplot()
     curve = stiffness_curve(result)
     loads = curve["axial_load"].values * 1e-3
     body = curve["body_load"].values * 1e-3
@@ -211,6 +208,7 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
 
 
 def _ball_figure(result: DesignCheck, path: Path) -> Path:
+    plt = pyplot()
     dist = ball_distribution(result)
     q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
@@ -229,6 +227,7 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
 
 
 def _life_figure(result: DesignCheck, path: Path) -> Path:
+    plt = pyplot()
     spec, s = result.spec, result.spectrum
     top = max(max(result.equivalent_loads), max(s.loads), 1.0) * 2.0
     loads = np.linspace(top / 100.0, top, 100)

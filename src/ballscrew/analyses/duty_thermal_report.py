@@ -6,15 +6,11 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table, quantity
-from ballscrew.plotting import legend_outside, line_styles, plain
+from ballscrew.plotting import legend_outside, line_styles, plain, pyplot
 
 if TYPE_CHECKING:
     from ballscrew.analyses.duty_thermal import DutyThermal
@@ -78,6 +74,7 @@ def fields(result: DutyThermal) -> xr.Dataset:
 
 def day_plot(result: DutyThermal, path: Path) -> Path:
     """Elongation and temperatures against time, the moving segments shaded."""
+    plt = pyplot()
     hours = result.time / 3600.0
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.5, 5.5), sharex=True, layout="constrained")
     for ax in (top, bottom):

@@ -7,19 +7,14 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
-from matplotlib.patches import Ellipse
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
-from ballscrew.plotting import legend_outside, plain, zero_noise
+from ballscrew.plotting import legend_outside, plain, pyplot, zero_noise
 
 if TYPE_CHECKING:
     from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
@@ -150,6 +145,9 @@ def fields(run: KinematicsRun) -> xr.Dataset:
 
 def sliding_map(fields: ContactFields, title: str, path: str | Path, arrows: int = 14) -> Path:
     """Sliding-velocity arrows over the pressure map, like Figure 4 of the wear paper."""
+    from matplotlib.patches import Ellipse
+
+    plt = pyplot()
     x, y = np.asarray(fields.contact.x), np.asarray(fields.contact.y)
     pressure = np.asarray(fields.contact.solution.pressure)
     fig, ax = plt.subplots(figsize=(6.6, 4.4), layout="constrained")
@@ -178,6 +176,7 @@ def sliding_map(fields: ContactFields, title: str, path: str | Path, arrows: int
 
 
 def _loads_angles(run: KinematicsRun, path: Path) -> Path:
+    plt = pyplot()
     s = run.sweep
     rpm = s.speed * _RPM
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
@@ -197,6 +196,7 @@ def _loads_angles(run: KinematicsRun, path: Path) -> Path:
 
 
 def _torques(run: KinematicsRun, path: Path) -> Path:
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
     rpm = run.drag_speeds * _RPM
     axes[0].plot(rpm, run.no_load_torque, "o-", ms=3, label="ball model (E3.7), F_a = 0")

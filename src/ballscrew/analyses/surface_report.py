@@ -6,21 +6,19 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain
+from ballscrew.plotting import plain, pyplot
 from ballscrew.surface.fit import FractalFit, SurfaceFit
 from ballscrew.surface.profile import Profile
 from ballscrew.surface.structure_function import band_limited_ratio
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
     from ballscrew.analyses.surface import SurfaceCharacterisation
 
 __all__ = [
@@ -100,7 +98,7 @@ def _log_sample(x: np.ndarray, count: int = 600) -> np.ndarray:
     return index
 
 
-def _fit_lines(ax: plt.Axes, r: FractalFit, x: np.ndarray, label: str) -> None:
+def _fit_lines(ax: Axes, r: FractalFit, x: np.ndarray, label: str) -> None:
     """The shaded fit range, the fitted line over the whole of ``x`` (dashed) and over the
     range (solid)."""
     ax.axvspan(*r.fit_range, color="C2", alpha=0.12, label="fit range")
@@ -111,6 +109,7 @@ def _fit_lines(ax: plt.Axes, r: FractalFit, x: np.ndarray, label: str) -> None:
 
 def psd_plot(fit: SurfaceFit, path: Path) -> Path:
     """Periodogram, log-smoothed spectrum, fitted (F2) line and the shaded fit range."""
+    plt = pyplot()
     assert fit.psd is not None and fit.spectrum is not None
     f, s = fit.spectrum
     r = fit.psd
@@ -131,6 +130,7 @@ def psd_plot(fit: SurfaceFit, path: Path) -> Path:
 
 def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
     """Structure function, band-corrected points, fitted (F4) line and the shaded fit range."""
+    plt = pyplot()
     assert fit.structure_function is not None and fit.structure is not None
     lag, sf = fit.structure
     r = fit.structure_function
@@ -158,6 +158,7 @@ def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
 
 def profile_plot(profile: Profile, path: Path) -> Path:
     """The first complete profile, heights in µm against x in mm."""
+    plt = pyplot()
     rows = profile.rows
     good = np.flatnonzero(np.all(np.isfinite(rows), axis=1))
     z = rows[good[0]] if good.size else rows[0]

@@ -7,23 +7,20 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
-from matplotlib.ticker import MaxNLocator
-from matplotlib.tri import Triangulation
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import label_box, legend_outside, plain
+from ballscrew.plotting import label_box, legend_outside, plain, pyplot
 from ballscrew.thermal.elongation import displacement_profile
 from ballscrew.thermal.mesh3d import circle_angles
 from ballscrew.units import format_number
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.tri import Triangulation
+
     from ballscrew.analyses.thermal import SensorReading, ThermalField
 
 CELSIUS = 273.15
@@ -278,7 +275,7 @@ def fields(result: ThermalField) -> xr.Dataset:
     )
 
 
-def _sensor_markers(ax: plt.Axes, result: ThermalField, z_scale: float = 1e3) -> None:
+def _sensor_markers(ax: Axes, result: ThermalField, z_scale: float = 1e3) -> None:
     """Sensor points circled in black and white, named in dark text on a white box."""
     for k, s in enumerate(result.problem.sensors):
         ax.plot(s.z * z_scale, s.r * 1e3, "o", ms=7, mfc="none", mec="white", mew=2.4)
@@ -307,6 +304,9 @@ def field_3d(result: ThermalField, path: Path) -> Path:
     """The 3-D model's steady field: the meridional section (z, r) at the mesh angle nearest
     θ = 0 (θ = 0 itself when the divisions are a multiple of 8) and the screw surface unrolled
     over (z, θ), where the helical ball-contact heat shows."""
+    from matplotlib.tri import Triangulation
+
+    plt = pyplot()
     disc = result.solution.discretisation
     m3 = disc.extra["mesh"]
     x, y, z = m3.mesh.p
@@ -343,6 +343,10 @@ def field_3d(result: ThermalField, path: Path) -> Path:
 
 def temperature_map(result: ThermalField, path: Path) -> Path:
     """Steady temperature over the (z, r) section (whole screw and a zoom on the nut)."""
+    from matplotlib.ticker import MaxNLocator
+    from matplotlib.tri import Triangulation
+
+    plt = pyplot()
     sol = result.solution
     disc = sol.discretisation
     problem = result.problem
@@ -401,6 +405,7 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
 
 def temperature_rise(result: ThermalField, path: Path) -> Path:
     """Temperature rise over time: the maximum and every sensor, steady values dashed."""
+    plt = pyplot()
     t = result.solution.transient
     assert t is not None
     fig, ax = plt.subplots(figsize=(6.8, 4.0), layout="constrained")
@@ -426,6 +431,7 @@ def temperature_rise(result: ThermalField, path: Path) -> Path:
 
 def elongation_plot(result: ThermalField, path: Path) -> Path:
     """Thermal elongation over time and the steady axial profile of the screw."""
+    plt = pyplot()
     sol = result.solution
     t = sol.transient
     if t is None:  # steady only: the profile, the elongation in the title (no empty time axis)

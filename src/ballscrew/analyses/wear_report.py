@@ -11,17 +11,13 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.case import Case
-from ballscrew.plotting import legend_outside, revolutions_axis
+from ballscrew.plotting import legend_outside, pyplot, revolutions_axis
 from ballscrew.units import format_number
 from ballscrew.wear.history import WearLife
 
@@ -160,6 +156,7 @@ def _levels(ax: Any, life: WearLife, unit: float) -> None:
 
 
 def _torque_preload(life: WearLife, path: Path) -> Path:
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
     n, t = life.torque_samples
     unit, label = revolutions_axis(life.revolutions)
@@ -179,6 +176,7 @@ def _torque_preload(life: WearLife, path: Path) -> Path:
 
 
 def _profiles(life: WearLife, path: Path) -> Path:
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
     for k, end in enumerate(life.level_boundaries):
         i = int(np.argmin(np.abs(life.revolutions - end)))
@@ -192,6 +190,7 @@ def _profiles(life: WearLife, path: Path) -> Path:
 
 
 def _depth(life: WearLife, path: Path) -> Path:
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
     unit, label = revolutions_axis(life.revolutions)
     ax.plot(life.revolutions / unit, 1e6 * life.max_wear_depth, "o-", ms=2)

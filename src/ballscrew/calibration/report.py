@@ -6,16 +6,12 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain, revolutions_axis
+from ballscrew.plotting import plain, pyplot, revolutions_axis
 
 if TYPE_CHECKING:
     from ballscrew.calibration.result import CalibrationResult
@@ -121,6 +117,7 @@ def fit_table(result: CalibrationResult) -> str:
 
 def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     """Measured points and the fitted model curve against revolutions, residuals below."""
+    plt = pyplot()
     label, unit, factor = DISPLAY[result.quantity]
     fig, (ax, axr) = plt.subplots(
         2,

@@ -10,18 +10,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import xarray as xr
 
 from ballscrew.case import Case
 from ballscrew.case.inputs import guessed_defaults, resolved_inputs
-from ballscrew.plotting import legend_outside, line_styles, zero_noise
+from ballscrew.plotting import legend_outside, line_styles, pyplot, zero_noise
 from ballscrew.results.display import engineering, engineering_array, readable
 from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import (
@@ -37,6 +33,9 @@ from ballscrew.results.summary import write_summary
 from ballscrew.sweep.axes import SweepAxis
 from ballscrew.units import KIND_OF_UNIT, NOISE_FLOOR, format_number
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 
 def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
     """Values of ``name`` in engineering units (round-off speeds as 0) and its axis label."""
@@ -46,7 +45,8 @@ def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
     return values, f"{readable(name)} [{unit}]" if unit else readable(name)
 
 
-def _save(fig: plt.Figure, path: Path) -> Path:
+def _save(fig: Figure, path: Path) -> Path:
+    plt = pyplot()
     with atomic_file(path) as tmp:
         fig.savefig(tmp, dpi=110, format="png")
     plt.close(fig)
@@ -57,6 +57,7 @@ def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
     """One result over the sweep (PNG): a line over a 1-D sweep; over a 2-D sweep a contour map
     of the first two swept keys, or one distinct line per value of the second key when it has
     fewer than three values. Engineering units and readable names on the axes."""
+    plt = pyplot()
     da = ds[name]
     dims = list(da.dims)
     x, xlabel = _axis(ds, dims[0])
@@ -95,6 +96,7 @@ def plot_variable(ds: xr.Dataset, name: str, path: Path) -> Path:
 
 def plot_nut_forces(ds: xr.Dataset, path: Path) -> Path:
     """The nut forces F1 and F2 over a 1-D sweep, the lift-off of nut 2 marked (PNG)."""
+    plt = pyplot()
     dim = ds["F1"].dims[0]
     x, xlabel = _axis(ds, dim)
     fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
