@@ -324,3 +324,12 @@ def test_a_value_given_twice_on_a_sweep_axis_is_refused() -> None:
     with pytest.raises(CaseError, match=r"given twice"):
         parse_axis("operating.speed=100 rpm:100 rpm:3")
     assert parse_axis("surface.D=1.5:1.5:1").values == (1.5,)
+
+
+def test_out_folder_that_cannot_be_created_says_so() -> None:
+    """``--out /proc/xx`` (a folder no one can create) said 'another run holds the lock'."""
+    line = refused(
+        "tcr", Path(__file__).parent.parent / "examples" / "gao2019_tcr.toml", "--out", "/proc/xx"
+    )
+    assert line.startswith("error: --out = '/proc/xx' is not allowed: a folder that can be")
+    assert "another run" not in line and "/proc/.xx.lock" in line
