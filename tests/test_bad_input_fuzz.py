@@ -208,10 +208,8 @@ def test_surface_gamma_next_to_one(tmp_path: Path) -> None:
     profile = MEASURED.parent.parent / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
     out = tmp_path / "out"
     line = refused("surface", profile, "--gamma", "1.0000001", "--out", out)
-    assert (
-        line
-        == "error: gamma = 1.0000001 is not allowed: W-M frequency ratio γ ≥ 1.01 (usually 1.5)"
-    )
+    allowed = "W-M frequency ratio 1.01 ≤ γ ≤ 10 (usually 1.5)"
+    assert line == f"error: gamma = 1.0000001 is not allowed: {allowed}"
     assert not out.exists()
 
 
@@ -333,3 +331,25 @@ def test_out_folder_that_cannot_be_created_says_so() -> None:
     )
     assert line.startswith("error: --out = '/proc/xx' is not allowed: a folder that can be")
     assert "another run" not in line and "/proc/.xx.lock" in line
+
+
+@pytest.mark.parametrize(
+    ("option", "value", "start", "allowed"),
+    [
+        ("--spacing", "1e30 m", "error: spacing = '1e30 m' is not allowed: ", "≤ 1 m / 64 points"),
+        ("--spacing", "1e-30 m", "error: spacing = '1e-30 m' is not allowed: ", "1e-11 m ≤ Δx"),
+        ("--gamma", "1e30", "error: gamma = 1e+30 is not allowed: ", "1.01 ≤ γ ≤ 10"),
+    ],
+)
+def test_surface_spacing_and_gamma_far_outside_a_profile(
+    tmp_path: Path, option: str, value: str, start: str, allowed: str
+) -> None:
+    """``--spacing '1e30 m'`` (a 6·10³¹ m record) and ``--gamma 1e30`` (W–M lines 30 decades
+    apart, none inside the measured band) ran and gave finite but meaningless D and G."""
+    profile = tmp_path / "z.txt"
+    profile.write_text("\n".join(f"{math.sin(0.7 * i) * 1e-7:.6g}" for i in range(64)))
+    spacing = () if option == "--spacing" else ("--spacing", "1 um")
+    out = tmp_path / "out"
+    line = refused("surface", profile, option, value, *spacing, "--out", out)
+    assert line.startswith(start) and allowed in line
+    assert not out.exists()
