@@ -7,6 +7,7 @@ validity, a message naming the wrong field); the tests hold the one-line refusal
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -353,3 +354,41 @@ def test_surface_spacing_and_gamma_far_outside_a_profile(
     line = refused("surface", profile, option, value, *spacing, "--out", out)
     assert line.startswith(start) and allowed in line
     assert not out.exists()
+
+
+def test_bearing_band_far_narrower_than_an_axial_cell(tmp_path: Path, gao_case_path) -> None:
+    """``thermal.bearings.0.width = 1e-30`` (allowed: > 0) gave the band no length in any cell
+    of the network: 0/0 heat shares and an error naming ``temperature_difference = nan``."""
+    out = tmp_path / "out"
+    sets = ("--set", "thermal.bearings.0.width=1e-30", "--set", "numerics.cells_across=16")
+    line = refused("thermal", gao_case_path, "--out", out, *sets)
+    assert line.startswith("error: thermal.bearings.0.width = 1e-30 is not allowed: at least")
+    assert "thermal.mesh.network_cell" in line and "nan" not in line
+    assert not out.exists()
+
+
+def test_sweep_console_caps_the_failed_points(
+    tmp_path: Path, gao_case_path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``ballscrew sweep`` printed one console line per failed point (thousands on a big
+    sweep); now at most ten, then a count. summary.json and the report keep every point."""
+    import ballscrew.sweep as sweep_package
+    from ballscrew.sweep import PointRecord, assemble, grid_points
+
+    def every_point_fails(case, axes, function, name, folder, *args):
+        points = grid_points(axes)
+        records = [PointRecord(p, None, "RuntimeError: injected", 0.0) for p in points]
+        return assemble(axes, records, name, case), len(points)
+
+    monkeypatch.setattr(sweep_package, "run_sweep", every_point_fails)
+    out = tmp_path / "out"
+    vary = ("--vary", "surface.D=1.4:1.6:25")
+    result = CliRunner().invoke(app, ["sweep", str(gao_case_path), *vary, "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    said = [line for line in result.output.splitlines() if line.startswith("warning: ")]
+    assert len(said) == 11, result.output
+    assert said[-1] == "warning: … and 15 more failed points (see summary.json / report.html)"
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    assert summary["failed"] == 25
+    assert sum("failed: RuntimeError" in w for w in summary["warnings"]) == 25
+    assert (out / "report.html").read_text(encoding="utf-8").count("RuntimeError: injected") >= 25
