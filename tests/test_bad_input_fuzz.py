@@ -392,3 +392,12 @@ def test_sweep_console_caps_the_failed_points(
     assert summary["failed"] == 25
     assert sum("failed: RuntimeError" in w for w in summary["warnings"]) == 25
     assert (out / "report.html").read_text(encoding="utf-8").count("RuntimeError: injected") >= 25
+
+
+def test_init_ball_too_small_for_the_thread_names_the_ball() -> None:
+    """``init --ball 1e-30`` (6·10³² balls per nut) blamed ``--d0 = '40 mm'``."""
+    args = [*INIT]
+    args[args.index("--ball") + 1] = "1e-30"
+    line = refused(*args)
+    assert line.startswith("error: --ball = '1e-30 mm' is not allowed: a value that gives")
+    assert "screw.balls_per_nut" in line and "[1, 10000]" in line
