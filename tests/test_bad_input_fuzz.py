@@ -7,6 +7,7 @@ validity, a message naming the wrong field); the tests hold the one-line refusal
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -208,10 +209,8 @@ def test_surface_gamma_next_to_one(tmp_path: Path) -> None:
     profile = MEASURED.parent.parent / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
     out = tmp_path / "out"
     line = refused("surface", profile, "--gamma", "1.0000001", "--out", out)
-    assert (
-        line
-        == "error: gamma = 1.0000001 is not allowed: W-M frequency ratio γ ≥ 1.01 (usually 1.5)"
-    )
+    allowed = "W-M frequency ratio 1.01 ≤ γ ≤ 10 (usually 1.5)"
+    assert line == f"error: gamma = 1.0000001 is not allowed: {allowed}"
     assert not out.exists()
 
 
@@ -324,3 +323,81 @@ def test_a_value_given_twice_on_a_sweep_axis_is_refused() -> None:
     with pytest.raises(CaseError, match=r"given twice"):
         parse_axis("operating.speed=100 rpm:100 rpm:3")
     assert parse_axis("surface.D=1.5:1.5:1").values == (1.5,)
+
+
+def test_out_folder_that_cannot_be_created_says_so() -> None:
+    """``--out /proc/xx`` (a folder no one can create) said 'another run holds the lock'."""
+    line = refused(
+        "tcr", Path(__file__).parent.parent / "examples" / "gao2019_tcr.toml", "--out", "/proc/xx"
+    )
+    assert line.startswith("error: --out = '/proc/xx' is not allowed: a folder that can be")
+    assert "another run" not in line and "/proc/.xx.lock" in line
+
+
+@pytest.mark.parametrize(
+    ("option", "value", "start", "allowed"),
+    [
+        ("--spacing", "1e30 m", "error: spacing = '1e30 m' is not allowed: ", "≤ 1 m / 64 points"),
+        ("--spacing", "1e-30 m", "error: spacing = '1e-30 m' is not allowed: ", "1e-11 m ≤ Δx"),
+        ("--gamma", "1e30", "error: gamma = 1e+30 is not allowed: ", "1.01 ≤ γ ≤ 10"),
+    ],
+)
+def test_surface_spacing_and_gamma_far_outside_a_profile(
+    tmp_path: Path, option: str, value: str, start: str, allowed: str
+) -> None:
+    """``--spacing '1e30 m'`` (a 6·10³¹ m record) and ``--gamma 1e30`` (W–M lines 30 decades
+    apart, none inside the measured band) ran and gave finite but meaningless D and G."""
+    profile = tmp_path / "z.txt"
+    profile.write_text("\n".join(f"{math.sin(0.7 * i) * 1e-7:.6g}" for i in range(64)))
+    spacing = () if option == "--spacing" else ("--spacing", "1 um")
+    out = tmp_path / "out"
+    line = refused("surface", profile, option, value, *spacing, "--out", out)
+    assert line.startswith(start) and allowed in line
+    assert not out.exists()
+
+
+def test_bearing_band_far_narrower_than_an_axial_cell(tmp_path: Path, gao_case_path) -> None:
+    """``thermal.bearings.0.width = 1e-30`` (allowed: > 0) gave the band no length in any cell
+    of the network: 0/0 heat shares and an error naming ``temperature_difference = nan``."""
+    out = tmp_path / "out"
+    sets = ("--set", "thermal.bearings.0.width=1e-30", "--set", "numerics.cells_across=16")
+    line = refused("thermal", gao_case_path, "--out", out, *sets)
+    assert line.startswith("error: thermal.bearings.0.width = 1e-30 is not allowed: at least")
+    assert "thermal.mesh.network_cell" in line and "nan" not in line
+    assert not out.exists()
+
+
+def test_sweep_console_caps_the_failed_points(
+    tmp_path: Path, gao_case_path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``ballscrew sweep`` printed one console line per failed point (thousands on a big
+    sweep); now at most ten, then a count. summary.json and the report keep every point."""
+    import ballscrew.sweep as sweep_package
+    from ballscrew.sweep import PointRecord, assemble, grid_points
+
+    def every_point_fails(case, axes, function, name, folder, *args):
+        points = grid_points(axes)
+        records = [PointRecord(p, None, "RuntimeError: injected", 0.0) for p in points]
+        return assemble(axes, records, name, case), len(points)
+
+    monkeypatch.setattr(sweep_package, "run_sweep", every_point_fails)
+    out = tmp_path / "out"
+    vary = ("--vary", "surface.D=1.4:1.6:25")
+    result = CliRunner().invoke(app, ["sweep", str(gao_case_path), *vary, "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    said = [line for line in result.output.splitlines() if line.startswith("warning: ")]
+    assert len(said) == 11, result.output
+    assert said[-1] == "warning: … and 15 more failed points (see summary.json / report.html)"
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    assert summary["failed"] == 25
+    assert sum("failed: RuntimeError" in w for w in summary["warnings"]) == 25
+    assert (out / "report.html").read_text(encoding="utf-8").count("RuntimeError: injected") >= 25
+
+
+def test_init_ball_too_small_for_the_thread_names_the_ball() -> None:
+    """``init --ball 1e-30`` (6·10³² balls per nut) blamed ``--d0 = '40 mm'``."""
+    args = [*INIT]
+    args[args.index("--ball") + 1] = "1e-30"
+    line = refused(*args)
+    assert line.startswith("error: --ball = '1e-30 mm' is not allowed: a value that gives")
+    assert "screw.balls_per_nut" in line and "[1, 10000]" in line

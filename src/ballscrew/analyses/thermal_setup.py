@@ -480,7 +480,8 @@ def _surface_rises(solution: Solution, probes: tuple[Sensor, ...]) -> tuple[floa
 
 
 def check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
-    """Refuse (naming the mesh key) a mesh whose matrices would not fit the memory budget.
+    """Refuse (naming the mesh key) a mesh whose matrices would not fit the memory budget, and
+    (naming the bearing) a bearing band narrower than an axial cell of the network or 2-D mesh.
 
     Unknowns: the shaft length and the largest outer radius over the element size (times the
     element order) for the axisymmetric model, axial planes × divisions × (layers + 6) for the
@@ -501,6 +502,12 @@ def check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
         radius = max(part.outer_radius for part in problem.parts)
         unknowns = (ms.order * length / ms.size + 1.0) * (ms.order * radius / ms.size + 1.0)
     check_memory(field, value, unknowns * per, f"a {model} mesh of about {unknowns:.3g} unknowns")
+    if model == "3d":  # its band loads refuse a band that holds no facet (bearing_loads)
+        return
+    cell = f"at least one axial cell of the {model} model's mesh ({value:g} m, {field})"
+    for k, bearing in enumerate(spec.bearings):
+        if not bearing.width >= value:  # a narrower band may hold no cell length or node
+            raise InputError(f"thermal.bearings.{k}.width", bearing.width, cell)
 
 
 def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = None) -> tuple:

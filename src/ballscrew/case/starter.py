@@ -175,6 +175,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
 _OPTION_OF = (
     ("screw.lead", "--lead"),
     ("screw.ball_diameter", "--ball"),
+    ("screw.balls_per_nut", "--ball"),  # π d0 × turns × circuits / ball: a ball far too small
     ("operating.preload", "--preload"),
     ("thermal.nut_length", "--nut-length"),
     ("thermal.shaft_length", "--length"),

@@ -22,7 +22,8 @@ SpacingOpt = Annotated[
     str | None,
     typer.Option(
         help="sampling interval of a one-column text file, e.g. '0.5 µm' (a bare number is "
-        "in m); CSV with x and SDF files carry their own",
+        "in m); from 1e-11 m (a tenth of an atomic distance) to 1 m / points (a record of at "
+        "most 1 m); CSV with x and SDF files carry their own",
         metavar="LENGTH",
     ),
 ]
@@ -34,7 +35,15 @@ ResolutionOpt = Annotated[
         metavar="LENGTH",
     ),
 ]
-GammaOpt = Annotated[float, typer.Option(help="W-M frequency ratio γ (≥ 1.01)", metavar="NUMBER")]
+GammaOpt = Annotated[
+    float,
+    typer.Option(
+        help="W-M frequency ratio γ, 1.01 ≤ γ ≤ 10 (1.5 after Majumdar & Tien 1990): below, the "
+        "spectral sub-bins ln γ/16 become too many; above, the W-M lines are more than a decade "
+        "apart and too few fall inside the measured band for D and G to mean anything",
+        metavar="NUMBER",
+    ),
+]
 
 
 @writes_results(sets=False)

@@ -43,6 +43,20 @@ RetryFailedOpt = Annotated[
 ]
 
 
+#: Failed points named on the console; summary.json and the report list them all.
+SHOWN_FAILURES = 10
+
+
+def console_warnings(warnings: list[str], failed: int) -> list[str]:
+    """The sweep's warnings for the console: the first :data:`SHOWN_FAILURES` of the ``failed``
+    points (which lead ``warnings``) and a count of the rest, then the points' own warnings."""
+    shown = warnings[: min(failed, SHOWN_FAILURES)]
+    if failed > SHOWN_FAILURES:
+        more = failed - SHOWN_FAILURES
+        shown.append(f"… and {more} more failed points (see summary.json / report.html)")
+    return shown + warnings[failed:]
+
+
 @writes_results
 def sweep(
     case_file: SweepCaseArg,
@@ -89,6 +103,6 @@ def sweep(
         )
         written = write_sweep(dataset, folder, computed, case, axes, export=output.formats)
         summary = json.loads((written / "summary.json").read_text(encoding="utf-8"))
-        for message in summary["warnings"]:  # the points' warnings, said on the workers
+        for message in console_warnings(summary["warnings"], summary["failed"]):
             typer.echo(f"warning: {message}", err=True)
         finish(written)

@@ -233,6 +233,19 @@ def _tidy(out: Path) -> None:
             shutil.rmtree(aside, ignore_errors=True)
 
 
+def _lock_refusal(lock: Path) -> str:
+    """Why the lock file ``lock`` could not be taken: held by another run, or not creatable
+    (filelock reports both as a timeout)."""
+    try:
+        os.close(os.open(lock, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))
+    except FileExistsError:
+        return f"a folder no other ballscrew run is writing (another run holds {lock})"
+    except OSError as exc:
+        return f"a folder that can be created and written (cannot create {lock}: {exc.strerror})"
+    lock.unlink(missing_ok=True)  # released meanwhile
+    return f"a folder no other ballscrew run is writing (another run held {lock})"
+
+
 @contextmanager
 def claim_output(
     out: str | Path,
@@ -257,11 +270,7 @@ def claim_output(
         lock.acquire()
     except Timeout:
         _remove_empty(created)
-        raise InputError(
-            "--out",
-            str(path),
-            f"a folder no other ballscrew run is writing (another run holds {lock_path(path)})",
-        ) from None
+        raise InputError("--out", str(path), _lock_refusal(lock_path(path))) from None
     except OSError as exc:
         _remove_empty(created)
         raise InputError("--out", str(path), f"a writable location ({exc.strerror})") from None

@@ -17,10 +17,27 @@ from numpy.typing import ArrayLike, NDArray
 from ballscrew.errors import InputError
 from ballscrew.validation import real_array
 
-__all__ = ["MIN_POINTS", "Profile", "as_rows", "check_spacing"]
+__all__ = [
+    "MAX_SAMPLING_LENGTH",
+    "MIN_POINTS",
+    "MIN_SPACING",
+    "Profile",
+    "as_rows",
+    "check_spacing",
+    "sampling_range",
+]
 
 #: Fewest points per profile that the estimators accept.
 MIN_POINTS = 16
+
+#: Finest sampling interval of a measured profile, m: a tenth of the interatomic distance
+#: (about 0.1 nm); no profilometer or AFM samples finer.
+MIN_SPACING = 1e-11
+
+#: Longest record n·Δx of a measured profile, m. Roughness records are millimetres long (ISO
+#: 4288 evaluation lengths ≤ 40 mm) and a ball-screw thread is at most a few metres; a longer
+#: record is a wrong spacing or unit, and its D and G would be meaningless.
+MAX_SAMPLING_LENGTH = 1.0
 
 FloatArray = NDArray[np.float64]
 
@@ -34,6 +51,18 @@ def check_spacing(spacing: object, field_name: str = "spacing") -> float:
     if not (math.isfinite(value) and value > 0.0):
         raise InputError(field_name, spacing, "a sampling interval in m, finite and > 0")
     return value
+
+
+def sampling_range(spacing: float, n_points: int) -> str | None:
+    """None if a sampling interval ``spacing`` [m] of ``n_points`` lies in
+    [:data:`MIN_SPACING`, :data:`MAX_SAMPLING_LENGTH` / n]; otherwise the allowed range."""
+    top = MAX_SAMPLING_LENGTH / n_points
+    if MIN_SPACING <= spacing <= top:
+        return None
+    return (
+        f"a sampling interval {MIN_SPACING:g} m ≤ Δx ≤ {MAX_SAMPLING_LENGTH:g} m / {n_points} "
+        f"points = {top:.3g} m (a record of at most {MAX_SAMPLING_LENGTH:g} m)"
+    )
 
 
 def as_rows(heights: ArrayLike, field_name: str = "heights") -> FloatArray:

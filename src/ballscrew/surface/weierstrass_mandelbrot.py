@@ -27,7 +27,13 @@ from ballscrew.fractal.domain_extension import validate_dimension
 from ballscrew.surface.profile import MIN_POINTS, Profile, check_spacing
 from ballscrew.validation import positive
 
-__all__ = ["check_gamma", "weierstrass_mandelbrot_profile", "wm_frequency_indices"]
+__all__ = [
+    "MAX_GAMMA",
+    "MIN_GAMMA",
+    "check_gamma",
+    "weierstrass_mandelbrot_profile",
+    "wm_frequency_indices",
+]
 
 #: x-block size of the vectorised sum (bounds the memory of the cos/sin matrices).
 _BLOCK = 1 << 15
@@ -38,15 +44,23 @@ _BLOCK = 1 << 15
 #: of 10⁷ points has about 26 000 sub-bins; at γ = 1 + 10⁻⁷ it needed 9 GB.
 MIN_GAMMA = 1.01
 
+#: Largest W–M frequency ratio γ accepted. (F1) stands for a continuous spectrum only while its
+#: lines are dense on a log scale: γ = 1.5 (Majumdar & Tien, 1990) puts about 17 lines in the
+#: three decades a typical profile spans; at γ = 10 there are three, one per decade, and the
+#: ln γ-wide smoothing of the fits covers a third of the band. Beyond it no line need fall inside
+#: the measured band and D and G lose their meaning.
+MAX_GAMMA = 10.0
+
 
 def check_gamma(gamma: float) -> float:
-    """Return the W–M frequency ratio γ as a float after checking γ ≥ :data:`MIN_GAMMA`."""
-    allowed = f"W-M frequency ratio γ ≥ {MIN_GAMMA:g} (usually 1.5)"
+    """Return the W–M frequency ratio γ as a float after checking
+    :data:`MIN_GAMMA` ≤ γ ≤ :data:`MAX_GAMMA`."""
+    allowed = f"W-M frequency ratio {MIN_GAMMA:g} ≤ γ ≤ {MAX_GAMMA:g} (usually 1.5)"
     try:
         value = float(gamma)
     except (TypeError, ValueError):
         raise InputError("gamma", gamma, allowed) from None
-    if not (math.isfinite(value) and value >= MIN_GAMMA):
+    if not (math.isfinite(value) and MIN_GAMMA <= value <= MAX_GAMMA):
         raise InputError("gamma", gamma, allowed)
     return value
 

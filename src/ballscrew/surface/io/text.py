@@ -26,7 +26,7 @@ import numpy as np
 
 from ballscrew.errors import InputError
 from ballscrew.surface.io._common import checked_profile, file_error, file_path, length_factor
-from ballscrew.surface.profile import MIN_POINTS, Profile
+from ballscrew.surface.profile import MIN_POINTS, Profile, sampling_range
 
 __all__ = ["read_text_profile", "write_text_profile"]
 
@@ -208,6 +208,12 @@ def read_text_profile(
             raise file_error(path, "spacing", source, "a sampling interval > 0") from None
         if not (math.isfinite(dx) and dx > 0.0):
             raise file_error(path, "spacing", source, "a sampling interval > 0")
+    allowed = sampling_range(dx, z.size)
+    if allowed is not None:
+        if n_cols == 1 and spacing is not None:
+            raise InputError("spacing", spacing, allowed)
+        what = f"column {names[0]!r} (spacing)" if n_cols == 2 else "spacing"
+        raise file_error(path, what, dx if n_cols == 2 else source, allowed)
     meta.update(
         {
             "format": "text",
