@@ -401,3 +401,23 @@ def test_init_ball_too_small_for_the_thread_names_the_ball() -> None:
     line = refused(*args)
     assert line.startswith("error: --ball = '1e-30 mm' is not allowed: a value that gives")
     assert "screw.balls_per_nut" in line and "[1, 10000]" in line
+
+
+def test_a_bearing_band_without_a_facet_is_named_by_its_case_key(tmp_path: Path, gao_case_path):
+    """On the 3-D model a band too narrow to hold a facet was refused as 'bearings.fixed.width',
+    a name the case does not have; it is the list entry thermal.bearings.0.width (a 6 mm band
+    passes the network check, 5 mm cells, but holds no facet of the 60 mm far 3-D mesh)."""
+    case = tmp_path / "case.toml"
+    case.write_text(
+        gao_case_path.read_text().replace(
+            'size = "5 mm"',
+            'size = "5 mm"\nsize_3d = "20 mm"\nfar_size_3d = "60 mm"\ndivisions_3d = 16\n'
+            "layers_3d = 2",
+        )
+    )
+    out = tmp_path / "out"
+    line = refused(
+        "thermal", case, "--model", "3d", "--set", "thermal.bearings.0.width=6 mm", "--out", out
+    )
+    assert line.startswith("error: thermal.bearings.0.width = 0.006 is not allowed: a band")
+    assert not out.exists()

@@ -33,7 +33,12 @@ from ballscrew.analyses.operating_point import (
 )
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import _mesh_options
-from ballscrew.analyses.thermal_setup import build_problem, check_mesh, thermal_spec
+from ballscrew.analyses.thermal_setup import (
+    bearings_named_by_key,
+    build_problem,
+    check_mesh,
+    thermal_spec,
+)
 from ballscrew.backend import blas_single_thread
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import InputError
@@ -151,9 +156,10 @@ def _segment(
         )
     check_mesh(spec, problem, model)
     options = _mesh_options(spec)
-    disc = (reuse.rebound(problem) if reuse is not None else None) or build_model(
-        model, problem, options
-    )
+    with bearings_named_by_key(spec):
+        disc = (reuse.rebound(problem) if reuse is not None else None) or build_model(
+            model, problem, options
+        )
     conductance, load = disc.assemble(disc.grid.weights)
     bearings = load
     if heat > 0.0:

@@ -33,6 +33,7 @@ from ballscrew.analyses.thermal_setup import (
     HeatSource,
     NutInterface,
     ball_patches,
+    bearings_named_by_key,
     build_problem,
     check_mesh,
     thermal_spec,
@@ -334,9 +335,10 @@ def solve_field(
         else:
             if reuse is None and steady is not None:
                 reuse = steady.discretisation
-            disc = _rebound(reuse, model, problem, patches, mesh) or build_model(
-                model, problem, mesh, patches
-            )
+            with bearings_named_by_key(spec):
+                disc = _rebound(reuse, model, problem, patches, mesh) or build_model(
+                    model, problem, mesh, patches
+                )
         disc.extra["patches"], disc.extra["mesh_options"] = patches, mesh
         solution = _simulate(disc, spec, transient, speed, None if known is None else known.steady)
         elastic = _thermoelastic(case, spec, solution) if thermoelastic else None

@@ -8,6 +8,9 @@ chain (A1–A4) and, for the 3-D model, the helical ball patches (theory manual:
 from __future__ import annotations
 
 import math
+import re
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, replace
 from functools import partial
 from typing import Any
@@ -477,6 +480,21 @@ def _surface_rises(solution: Solution, probes: tuple[Sensor, ...]) -> tuple[floa
     weights = np.array([p.outer_radius * p.length for p in disc.problem.parts])
     nut = float(weights @ solution.sensors[: len(probes)] / weights.sum())
     return screw, nut
+
+
+@contextmanager
+def bearings_named_by_key(spec: ThermalSpec) -> Iterator[None]:
+    """Re-raise an :class:`InputError` of the thermal package about a bearing band, which names
+    it ``bearings.NAME.width``, under its case key ``thermal.bearings.K.width``."""
+    try:
+        yield
+    except InputError as exc:
+        names = [b.name for b in spec.bearings]
+        match = re.fullmatch(r"bearings\.(.+)\.(\w+)", exc.field)
+        if match is None or match[1] not in names:
+            raise
+        key = f"thermal.bearings.{names.index(match[1])}.{match[2]}"
+        raise InputError(key, exc.value, exc.allowed) from None
 
 
 def check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
