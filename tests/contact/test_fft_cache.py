@@ -47,7 +47,10 @@ def test_the_caches_of_all_threads_stay_under_the_byte_budget(monkeypatch):
     fill(9)
     for worker in workers:
         worker.join()
-    assert 0 < max(seen) <= BUDGET
+    # Every thread keeps its newest transform, so four threads inserting at once may overshoot
+    # the budget by at most one transform each (without eviction: about 860 kB here).
+    largest = backend.padded_rfft((23, 16)).nbytes
+    assert 0 < max(seen) <= BUDGET + 4 * largest
     assert all(newest_kept)
     gc.collect()
     assert backend.cached_fft_bytes() <= backend.padded_rfft((16, 16)).nbytes + max(seen)
