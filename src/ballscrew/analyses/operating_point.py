@@ -80,14 +80,9 @@ class OperatingPoint(Presented):
     """Screw speed ω [rad/s]."""
     axial_load: float
     """Axial load F_a [N]."""
-    friction_torque: float
-    """Friction torque of the nut(s) [N·m]."""
-    heat: float
-    """Friction heat of the nut(s) [W]."""
-    heat_to_screw: float
-    """Part of the heat that goes into the screw shaft [W]."""
-    efficiency: float
-    """Driving efficiency (work out / work in) [-]."""
+    friction: FrictionTorque
+    """The friction model's torque at the fixed point: its parts, heat, film parameter Λ and
+    traction coefficient."""
     nut_temperature: float
     """Mean temperature of the nut assembly at steady state [K]: its volume mean on the FE
     models, the mean of its cells on the network."""
@@ -100,12 +95,29 @@ class OperatingPoint(Presented):
     iterations: int
     field: ThermalField
     warnings: tuple[str, ...] = ()
-    friction: FrictionTorque | None = None
-    """The friction model's torque at the fixed point: its parts, film parameter Λ and traction
-    coefficient (None only for points built without it)."""
 
     analysis: ClassVar[str] = "operating-point"
     presentation: ClassVar[ModuleType] = operating_point_report
+
+    @property
+    def friction_torque(self) -> float:
+        """Screw torque T of the nut(s), work on the load included [N·m]."""
+        return self.friction.total
+
+    @property
+    def heat(self) -> float:
+        """Friction heat of the nut(s) [W]."""
+        return self.friction.heat
+
+    @property
+    def heat_to_screw(self) -> float:
+        """Part of the heat that goes into the screw shaft [W]."""
+        return self.friction.heat_to_screw
+
+    @property
+    def efficiency(self) -> float:
+        """Driving efficiency (work out / work in) [-]."""
+        return self.friction.efficiency_driving
 
     @property
     def max_temperature(self) -> float:
@@ -283,10 +295,7 @@ def operating_point(
         case=base,
         speed=omega,
         axial_load=load,
-        friction_torque=friction.total,
-        heat=friction.heat,
-        heat_to_screw=friction.heat_to_screw,
-        efficiency=friction.efficiency_driving,
+        friction=friction,
         nut_temperature=nut,
         screw_temperature=screw,
         viscosity=math.nan if eta is None else eta,
@@ -294,7 +303,6 @@ def operating_point(
         iterations=iterations,
         field=field,
         warnings=tuple(messages),
-        friction=friction,
     )
 
 

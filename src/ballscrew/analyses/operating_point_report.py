@@ -38,15 +38,14 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
     if outlet is not None:
         scalars["coolant_outlet_temperature"] = quantity(outlet, "K")
     friction = result.friction
-    if friction is not None:
-        scalars["friction_model"] = friction.model
-        scalars["friction_part"] = quantity(friction.friction, "N*m")
-        scalars["torque_parts"] = {k: quantity(v, "N*m") for k, v in friction.parts.items()}
-        if friction.film_parameter is not None:
-            scalars["film_parameter"] = quantity(friction.film_parameter, "")
-            scalars["lubrication_regime"] = friction.regime
-        if friction.traction_coefficient is not None:
-            scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
+    scalars["friction_model"] = friction.model
+    scalars["friction_part"] = quantity(friction.friction, "N*m")
+    scalars["torque_parts"] = {k: quantity(v, "N*m") for k, v in friction.parts.items()}
+    if friction.film_parameter is not None:
+        scalars["film_parameter"] = quantity(friction.film_parameter, "")
+        scalars["lubrication_regime"] = friction.regime
+    if friction.traction_coefficient is not None:
+        scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
     return scalars
 
 
@@ -76,11 +75,9 @@ PART_NAMES = {
 }
 
 
-def _torque_section(result: OperatingPoint) -> list[Section]:
-    """The friction model's torque by part, with the regime it ran in (none without it)."""
+def _torque_section(result: OperatingPoint) -> Section:
+    """The friction model's torque by part, with the regime it ran in."""
     friction = result.friction
-    if friction is None:
-        return []
     rows = [(PART_NAMES.get(k, k), 1e3 * v) for k, v in friction.parts.items()]
     notes = [f"Friction model {friction.model!r}; the parts add up to the screw torque T."]
     if friction.film_parameter is not None:
@@ -94,15 +91,7 @@ def _torque_section(result: OperatingPoint) -> list[Section]:
             )
         )
     table = Table(("part", "torque [mN·m]"), tuple(rows))
-    return [Section("Torque by part", paragraphs=(" ".join(notes),), tables=(table,))]
-
-
-def _friction_part(result: OperatingPoint) -> float:
-    """T − F_a L/(2π) [N m], = Q/ω in motion: the torque that becomes heat (at rest, the one
-    that starts the screw, not 0)."""
-    if result.friction is not None:
-        return result.friction.friction
-    return result.heat / result.speed if result.speed > 0.0 else math.nan
+    return Section("Torque by part", paragraphs=(" ".join(notes),), tables=(table,))
 
 
 def sections(result: OperatingPoint) -> list[Section]:
@@ -111,7 +100,7 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("speed [rpm]", result.speed * 30.0 / math.pi),
         ("axial load [N]", result.axial_load),
         ("screw torque T, work F_a·L/2π included [N·m]", result.friction_torque),
-        ("friction part of T = heat / ω [N·m]", _friction_part(result)),
+        ("friction part of T = heat / ω [N·m]", result.friction.friction),
         ("friction heat [W]", result.heat),
         ("driving efficiency [-]", result.efficiency),
         ("nut temperature [°C]", result.nut_temperature - CELSIUS),
@@ -131,4 +120,4 @@ def sections(result: OperatingPoint) -> list[Section]:
         ),
         tables=(Table(("quantity", "value"), tuple(rows)),),
     )
-    return [coupled, *_torque_section(result), *thermal_report.sections(result.field)]
+    return [coupled, _torque_section(result), *thermal_report.sections(result.field)]
