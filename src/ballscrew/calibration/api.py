@@ -19,6 +19,7 @@ from ballscrew.calibration.measured import read_measured as read_file
 from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
 from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.errors import InputError
+from ballscrew.thread_warnings import record_warnings
 
 __all__ = [
     "DEFAULT_FIT",
@@ -178,8 +179,7 @@ class CaseSetup:
         from ballscrew.case import with_overrides
 
         overrides = {**self.base, **{FIT_PARAMETERS[n].key: v for n, v in values.items()}}
-        with warnings.catch_warnings(record=True) as seen:
-            warnings.simplefilter("always")
+        with record_warnings() as seen:
             try:
                 history = self.model(with_overrides(self.case, overrides))
             except BudgetError as exc:

@@ -38,6 +38,7 @@ from ballscrew.calibration.multi import (
     CalibrationWarning,
     HistoryFit,
     correlations,
+    described,
     solve,
     start_values,
     too_few_points,
@@ -141,10 +142,15 @@ def fit_joint(
         missing = [n for n in shared if n not in part.names]
         if missing:
             raise InputError("shared", ", ".join(missing), "parameters every history fits")
-    scale = max(p.scale for p in parts)
+    n = sum(part.n_fit for part in parts)
+    p = len(shared) + sum(len(part.names) - len(shared) for part in parts)
+    if n <= p:  # before the start-value scans, each dozens of model runs
+        until = next((part.fit_until for part in parts if part.fit_until is not None), None)
+        raise too_few_points(source, n, p, until)
+    scale = max(part.scale for part in parts)
     for part in parts:  # one scale: the points of every history weigh alike
         part.scale = part.jacobian.scale = scale
-    starts = [start_values(p, scan_steps, refine_steps) for p in parts]
+    starts = [start_values(part, scan_steps, refine_steps) for part in parts]
     common = {
         n: math.exp(float(np.mean([math.log(s[0][n]) for s in starts])))
         for n in shared
@@ -170,11 +176,7 @@ def fit_joint(
                 upper.append(b)
             columns.append(names.index(label_j))
         index.append(np.array(columns))
-    rows = np.cumsum([0] + [p.n_fit for p in parts])
-    n, p = int(rows[-1]), len(names)
-    if n <= p:
-        until = next((part.fit_until for part in parts if part.fit_until is not None), None)
-        raise too_few_points(source, n, p, until)
+    rows = np.cumsum([0] + [part.n_fit for part in parts])
 
     def residuals(x: np.ndarray) -> np.ndarray:
         return np.concatenate([part.residuals(x[i]) for part, i in zip(parts, index, strict=True)])
@@ -204,7 +206,7 @@ def fit_joint(
     for part, i in zip(parts, index, strict=True):
         part.check_bracket(x[i], np.array(lower)[i], np.array(upper)[i])
     r = residuals(x)
-    what = " and ".join(names) + " together"
+    what = " and ".join(described(name) for name in names) + " together"
     cov = covariance(difference(x), r, n, p, source, what)
     warn_correlated(cov, names, source)
     noise = scale * math.sqrt(float(r @ r) / (n - p))

@@ -393,6 +393,7 @@ class HistoryFit:
         held = fitted_all[n_fit:] - data.values[n_fit:]
         diagnostics = residual_diagnostics(residual_fit)
         curve = m * model_val + c
+        pairs = correlations(cov, names)
         for arr in (fitted_all, curve, sigma):
             arr.setflags(write=False)
         return CalibrationResult(
@@ -403,7 +404,7 @@ class HistoryFit:
             standard_error=errors.get(_K, 0.0),
             torque_scale=values.get("torque_scale", self.torque_scale),
             torque_scale_error=errors.get("torque_scale"),
-            correlation=_correlation(cov, names),
+            correlation=pairs.get(f"{_K},torque_scale", pairs.get(f"torque_scale,{_K}")),
             rms_residual=math.sqrt(rss / n_fit),
             n_points=n_fit,
             parameters=len(names),
@@ -424,7 +425,7 @@ class HistoryFit:
             prediction_sigma=sigma,
             diagnostics=diagnostics.as_dict(),
             torque_offset=values.get("torque_offset", self.torque_offset),
-            correlations=correlations(cov, names),
+            correlations=pairs,
         )
 
 
@@ -462,7 +463,7 @@ def solve(
     return x, message
 
 
-def _described(name: str) -> str:
+def described(name: str) -> str:
     """A fit name in words; ``name[j]`` (a per-history parameter) as "… of history j"."""
     base, _, index = name.partition("[")
     words = FIT_PARAMETERS[base].description
@@ -474,7 +475,7 @@ def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
     :data:`CORRELATION_LIMIT` in magnitude (the data hardly separate them)."""
     for pair, r in correlations(cov, names).items():
         if abs(r) > CORRELATION_LIMIT:
-            a, b = (_described(n) for n in pair.split(","))
+            a, b = (described(n) for n in pair.split(","))
             warnings.warn(
                 f"{source}: the data hardly separate the {a} and the {b} ({pair}: correlation "
                 f"{r:+.3f} from the covariance): one trades off against the other, so each "
@@ -646,13 +647,6 @@ def _covariance(
     """RSS/(n − p) · (JᵀJ)⁻¹; CalibrationError naming the parameters when J is rank-deficient."""
     what = " and ".join(FIT_PARAMETERS[n].description for n in names)
     return covariance(jac, residuals, n, len(names), source, what + " together")
-
-
-def _correlation(cov: np.ndarray, names: list[str]) -> float | None:
-    if _K not in names or "torque_scale" not in names:
-        return None
-    i, j = names.index(_K), names.index("torque_scale")
-    return float(cov[i, j] / math.sqrt(cov[i, i] * cov[j, j]))
 
 
 def correlations(cov: np.ndarray, names: Sequence[str]) -> dict[str, float]:

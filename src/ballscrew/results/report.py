@@ -78,11 +78,7 @@ def inputs_warnings_sections(
         Section("Warnings", paragraphs=list(warnings) or ["No warnings."]),
     ]
     if guesses:
-        guessed = [
-            [*_input_row(key, value, unit), guesses[key]]
-            for key, value, unit in input_rows(dict(inputs))
-            if key in guesses
-        ]
+        guessed = [[*row, guesses[row[0]]] for row in rows if row[0] in guesses]
         shown = {row[0] for row in guessed}
         guessed += [
             [key, "by its rule", "", text] for key, text in guesses.items() if key not in shown

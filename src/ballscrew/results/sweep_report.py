@@ -197,8 +197,8 @@ def _point_warnings(ds: xr.Dataset) -> list[str]:
     count: dict[str, int] = {}
     for idx in np.ndindex(ds["warnings"].shape):
         for message in filter(None, str(ds["warnings"].values[idx]).split("\n")):
-            point = ", ".join(_point(ds, d, i) for d, i in zip(dims, idx, strict=True))
-            first.setdefault(message, point)
+            if message not in first:
+                first[message] = ", ".join(_point(ds, d, i) for d, i in zip(dims, idx, strict=True))
             count[message] = count.get(message, 0) + 1
     return [
         f"point {first[m]}" + (f" (and {count[m] - 1} more)" if count[m] > 1 else "") + f": {m}"
