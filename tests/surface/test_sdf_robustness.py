@@ -85,6 +85,12 @@ def test_bad_header_number_is_one_line_naming_the_field(tmp_path, key, value, fi
     assert "Traceback" not in result.output
 
 
+def test_a_spacing_no_instrument_samples_is_refused_as_in_text_files(tmp_path):
+    """Xscale = 1e30 m was refused from a text profile but read from an SDF file."""
+    with pytest.raises(InputError, match=r"bad.sdf: Xscale = 1e\+30 is not allowed: a sampling"):
+        read_profile(sdf(tmp_path, xscale="1e30"))
+
+
 def test_binary_header_with_infinite_scale(tmp_path):
     header = struct.pack(
         "<8s10s12s12sHHddddBBB", b"bBCR-1.0", b"x", b"", b"", 4, 1, np.inf, 0, 1e-9, 0, 0, 5, 0

@@ -13,6 +13,7 @@ from functools import partial
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
+from ballscrew.case.base import MAX_FORCE
 from ballscrew.errors import InputError
 from ballscrew.friction import (
     FrictionInputs,
@@ -26,8 +27,7 @@ from ballscrew.validation import nonnegative, positive
 __all__ = ["friction_torque", "nut_loss_parameters", "seal_torque"]
 
 #: Largest axial load accepted [N]: the upper end of ``operating.axial_load``.
-MAX_AXIAL_LOAD = 1e8
-_LOAD_RANGE = f"a force in [0, {MAX_AXIAL_LOAD:g}] N (the range of operating.axial_load)"
+_LOAD_RANGE = f"a force in [0, {MAX_FORCE:g}] N (the range of operating.axial_load)"
 
 
 def seal_torque(case: Case) -> float:
@@ -70,7 +70,7 @@ def friction_torque(
     force = nonnegative(
         "axial_load", case.operating.axial_load if axial_load is None else axial_load, "N"
     )
-    if force > MAX_AXIAL_LOAD:
+    if force > MAX_FORCE:
         raise InputError("axial_load", axial_load, _LOAD_RANGE)
     if viscosity is not None:  # checked even where the model does not use it
         positive("viscosity", viscosity, "Pa s")

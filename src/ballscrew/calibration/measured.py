@@ -39,7 +39,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.budget import check_memory, format_bytes
-from ballscrew.case.base import MAX_SPEED
+from ballscrew.case.base import MAX_FORCE, MAX_SPEED
 from ballscrew.errors import InputError
 from ballscrew.units import SI_UNITS, to_si
 
@@ -64,7 +64,7 @@ QUANTITIES: dict[str, str] = {
 SCHEDULE: dict[str, str] = {"speed": "angular_velocity", "axial_load": "force"}
 
 #: Largest value of each schedule column (SI): that of a ``wear.programme`` speed and load.
-SCHEDULE_RANGE = (("speed", MAX_SPEED, "rad/s"), ("axial_load", 1e8, "N"))
+SCHEDULE_RANGE = (("speed", MAX_SPEED, "rad/s"), ("axial_load", MAX_FORCE, "N"))
 
 #: Largest plausible measured value of each quantity (SI): a ball-screw drag torque, a preload
 #: and a raceway wear depth beyond these are a unit or data error.

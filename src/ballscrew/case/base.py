@@ -22,6 +22,9 @@ from ballscrew.units import SI_UNITS, to_si
 #: Highest screw speed a case accepts, rad/s (about 10⁶ rpm, far above any ball screw).
 MAX_SPEED = 1e5
 
+#: Largest force a case accepts (preload, axial loads), N.
+MAX_FORCE = 1e8
+
 
 def quantity(kind: str, description: str, **constraints: float) -> Any:
     """An annotated float field that accepts finite SI numbers or unit strings of ``kind``."""

@@ -23,7 +23,7 @@ from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from ballscrew.case.base import MAX_SPEED, Model, quantity
+from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, quantity
 
 __all__ = ["MAX_DUTY_TIME", "DutySegment", "require_time_shares"]
 
@@ -37,7 +37,9 @@ class DutySegment(Model):
     speed: quantity(
         "angular_velocity", 'screw speed ω (rad/s; "1500 rpm" also works)', ge=0, le=MAX_SPEED
     ) = 0.0
-    axial_load: quantity("force", "external axial load F_a during the segment", ge=0, le=1e8) = 0.0
+    axial_load: quantity(
+        "force", "external axial load F_a during the segment", ge=0, le=MAX_FORCE
+    ) = 0.0
     stroke: quantity("length", "stroke of the nut (0: the nut turns in place)", ge=0, le=100.0) = (
         0.0
     )

@@ -14,7 +14,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, model_choice, quantity
 from ballscrew.case.design_spec import DesignSpec
 from ballscrew.case.duty_spec import DutyRepeat, DutySegment, require_time_shares
 from ballscrew.case.friction_spec import FrictionSpec
@@ -176,9 +176,12 @@ class MediumSpec(Model):
 class OperatingSpec(Model):
     """Operating point: preload, external axial load and screw speed."""
 
-    preload: quantity("force", "preload F_p of the nut(s)", ge=0, le=1e8)
+    preload: quantity("force", "preload F_p of the nut(s)", ge=0, le=MAX_FORCE)
     axial_load: quantity(
-        "force", "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2)", ge=0, le=1e8
+        "force",
+        "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2)",
+        ge=0,
+        le=MAX_FORCE,
     ) = 0.0
     speed: quantity(
         "angular_velocity", 'screw speed ω (rad/s; "1000 rpm" also works)', ge=0, le=MAX_SPEED

@@ -27,7 +27,7 @@ from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from ballscrew.case.base import MAX_SPEED, Model, model_choice, quantity
+from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, model_choice, quantity
 from ballscrew.wear.rates import WEAR_LAWS
 
 #: Most screw revolutions of one level (a very long life test is about 1e9).
@@ -40,7 +40,9 @@ MAX_TORQUE_SAMPLES = 1e6
 class WearLevel(Model):
     """One level of the load programme: constant axial load and speed for some revolutions."""
 
-    axial_load: quantity("force", "external axial working load F_a of the level (N)", ge=0, le=1e8)
+    axial_load: quantity(
+        "force", "external axial working load F_a of the level (N)", ge=0, le=MAX_FORCE
+    )
     speed: quantity(
         "angular_velocity", 'screw speed ω_s (rad/s; "100 rpm" also works)', gt=0, le=MAX_SPEED
     )
@@ -80,8 +82,8 @@ class CalibratedRange(Model):
 
     speed_min: quantity("angular_velocity", "lowest calibrated screw speed", gt=0, le=MAX_SPEED)
     speed_max: quantity("angular_velocity", "highest calibrated screw speed", gt=0, le=MAX_SPEED)
-    load_min: quantity("force", "lowest calibrated axial load", ge=0, le=1e8)
-    load_max: quantity("force", "highest calibrated axial load", ge=0, le=1e8)
+    load_min: quantity("force", "lowest calibrated axial load", ge=0, le=MAX_FORCE)
+    load_max: quantity("force", "highest calibrated axial load", ge=0, le=MAX_FORCE)
 
     @model_validator(mode="after")
     def _ordered(self) -> CalibratedRange:

@@ -260,12 +260,12 @@ def ball_losses(
     loads = np.array([(state.load_screw, state.load_nut) for state in states])
     along, across = _semi_axes(model, loads)
     sums = np.zeros(6)
-    separations, shares = [], []
+    first: tuple[float, float] | None = None  # film separation and asperity share of the first
     for state, unit, a, b in zip(states, units, along[:, 1], across[:, 1], strict=True):
         torques, separation, psi = _contact_losses(model, state, unit, (float(a), float(b)), nut)
         sums += torques
-        separations.append(separation)
-        shares.append(psi)
+        first = first or (separation, psi)
+    separation, psi = first or (0.0, 0.0)
     sliding, rolling_a, rolling_b, balls, drag, groove = model.balls * sums
     # hysteresis of every ball at A and B in one batch, at its rolling speed per ω_s, |V|/ω_s
     ratio = np.array([abs(unit.ball_speed / unit.screw_speed) for unit in units])
@@ -276,7 +276,7 @@ def ball_losses(
     returns = sum(_recirculation_torque(model, state, nut) for state in states)
     film = 0.0
     if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
-        film = film_parameter(separations[0], model.surface.rms_height)
+        film = film_parameter(separation, model.surface.rms_height)
     return BallLosses(
         sliding=float(sliding),
         groove_slip=float(groove),
@@ -287,5 +287,5 @@ def ball_losses(
         recirculation=float(returns),
         screw_share=float(SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a)),
         film_parameter=film,
-        traction_coefficient=_traction_coefficient(model, states[0], shares[0]),
+        traction_coefficient=_traction_coefficient(model, states[0], psi),
     )

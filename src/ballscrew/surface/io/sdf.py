@@ -48,7 +48,7 @@ import numpy as np
 
 from ballscrew.errors import InputError
 from ballscrew.surface.io._common import checked_profile, file_error, file_path
-from ballscrew.surface.profile import Profile
+from ballscrew.surface.profile import Profile, sampling_range
 
 __all__ = ["SDF_MAGIC", "read_sdf", "write_sdf"]
 
@@ -237,6 +237,9 @@ def read_sdf(path: str | Path) -> Profile:
         raise file_error(
             path, "data", "an infinite height", "finite values × Zscale (numbers or BAD)"
         )
+    allowed = sampling_range(checked["Xscale"], n_points)  # once the data match NumPoints
+    if allowed is not None:
+        raise file_error(path, "Xscale", checked["Xscale"], allowed)
     if n_profiles == 1:
         heights = heights[0]
     metadata: dict[str, Any] = dict(header)
