@@ -49,3 +49,23 @@ def test_model_runs_per_fit(names, most) -> None:
     model = MultiModel()
     result = fit_parameters(model, noisy(names), names, start)
     assert result.evaluations == model.runs <= most
+
+
+def test_linear_fit_is_least_squares_against_numpy() -> None:
+    """The closed-form torque scale m and offset c of search.linear_fit against numpy's
+    polynomial and least-squares fits, for one model curve and a stack of them."""
+    from ballscrew.calibration.search import linear_fit
+
+    rng = np.random.default_rng(7)
+    models = rng.uniform(0.2, 1.0, (3, 20))
+    y = 1.3 * models[1] + 0.05 + rng.normal(0.0, 0.01, 20)
+    m, c = linear_fit(models, y, fit_scale=True, fit_offset=True)
+    for k in range(3):
+        slope, intercept = np.polyfit(models[k], y, 1)
+        assert m[k] == pytest.approx(slope, rel=1e-10)
+        assert c[k] == pytest.approx(intercept, rel=1e-10)
+    m, c = linear_fit(models[0], y, fit_scale=True, fit_offset=False, offset=0.02)
+    expected = np.linalg.lstsq(models[0][:, None], y - 0.02, rcond=None)[0][0]
+    assert (float(m), float(c)) == pytest.approx((expected, 0.02), rel=1e-10)
+    m, c = linear_fit(models[2], y, fit_scale=False, fit_offset=True)
+    assert (float(m), float(c)) == pytest.approx((1.0, np.mean(y - models[2])), rel=1e-10)

@@ -375,8 +375,10 @@ def _hertz_start(h: Any, setting: _Setting) -> Any:
     the sum ``total``: the Hertz pressure of a paraboloid gap, whose contact edge is the gap's
     level c = a²/(2R) (Johnson 1985, §4.2). The level solves W(c) = W with
     W(c) = (2√2 E*/π)·√(2πc/A(c))·Σ√(c − h')⁺ ΔA, A(c) the area where h' < c: exact for a
-    paraboloid (R = A/(2πc)), where W ∝ c^(3/2); :data:`HERTZ_STEPS` steps
-    c ← c·(W/W(c))^(2/3) from c = max h' (for other gaps only a start: GUESS)."""
+    paraboloid of revolution (R = A/(2πc)), where W ∝ c^(3/2); :data:`HERTZ_STEPS` steps
+    c ← c·(W/W(c))^(2/3) from c = max h'. For other gaps only a start (GUESS): on an elliptic
+    paraboloid its level set is the gap's ellipse, not Hertz's, and on the benchmark's slender
+    ellipse its peak is 13 % below Hertz's p0 (tested)."""
     xp = array_module(h)
     area = setting.dx * setting.dy
     h = h - h.min(axis=(1, 2), keepdims=True)
