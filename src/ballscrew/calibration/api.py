@@ -16,7 +16,11 @@ from ballscrew.analyses.result import recorded_warnings
 from ballscrew.budget import BudgetError
 from ballscrew.calibration.measured import QUANTITIES, MeasuredHistory, measured_history
 from ballscrew.calibration.measured import read_measured as read_file
-from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
+from ballscrew.calibration.multi import (
+    FIT_PARAMETERS,
+    fit_parameters,
+    warn_if_systematic,
+)
 from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.errors import InputError
 from ballscrew.thread_warnings import record_warnings
@@ -141,11 +145,7 @@ def calibrate(
     )
     with recorded_warnings() as messages:
         setup.reissue(result.values)
-        if result.diagnostics.get("systematic"):
-            from ballscrew.calibration.diagnostics import residual_diagnostics
-
-            text = residual_diagnostics(result.fitted[: result.n_fit] - data.values[: result.n_fit])
-            warnings.warn(text.message(), CalibrationWarning, stacklevel=2)
+        warn_if_systematic(result)
     return replace(
         result,
         case=setup.case,

@@ -21,7 +21,6 @@ s_r² (JᵀJ)⁻¹ of the stacked Jacobian, s_r² = RSS/(n − p) over every fit
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from types import ModuleType
@@ -35,7 +34,6 @@ from ballscrew.calibration import joint_report
 from ballscrew.calibration.api import CaseSetup, as_measured, case_setup, programme_range
 from ballscrew.calibration.multi import (
     FIT_PARAMETERS,
-    CalibrationWarning,
     HistoryFit,
     correlations,
     described,
@@ -43,6 +41,7 @@ from ballscrew.calibration.multi import (
     start_values,
     too_few_points,
     warn_correlated,
+    warn_if_systematic,
 )
 from ballscrew.calibration.result import CalibrationResult, WearHistory
 from ballscrew.calibration.search import DIFF_STEP, SCAN_STEPS, covariance
@@ -223,7 +222,7 @@ def fit_joint(
         errors={n: first.errors[n] for n in shared},
         correlations=correlations(cov, names),
         rms_residual=scale * math.sqrt(float(r @ r) / n),
-        evaluations=len({k for part in parts for k in part.runs.cache}),
+        evaluations=sum(part.runs.evaluations for part in parts),
         message=message,
         degrees_of_freedom=n - p,
     )
@@ -307,14 +306,7 @@ def calibrate_joint(
         for group in dict.fromkeys(runs.group):  # each distinct case ran (and warned) once
             setups[group].reissue(result.histories[group].values)
         for history in result.histories:
-            if history.diagnostics.get("systematic"):
-                warnings.warn(
-                    f"{history.source}: the residuals are systematic (runs-test p = "
-                    f"{history.diagnostics['runs_test_p_value']:.2g}): the model misses the "
-                    "shape of the data and the standard errors understate the uncertainty",
-                    CalibrationWarning,
-                    stacklevel=2,
-                )
+            warn_if_systematic(history)
     histories = tuple(_with_case(h, s.case) for h, s in zip(result.histories, setups, strict=True))
     return replace(
         result,

@@ -470,6 +470,15 @@ def described(name: str) -> str:
     return f"{words} of history {index.rstrip(']')}" if index else words
 
 
+def warn_if_systematic(result: CalibrationResult) -> None:
+    """CalibrationWarning naming the history when the residuals of its fitted points are
+    systematic (:func:`~ballscrew.calibration.diagnostics.residual_diagnostics`)."""
+    if result.diagnostics.get("systematic"):
+        fitted = slice(0, result.n_fit)
+        text = residual_diagnostics(result.fitted[fitted] - result.measured[fitted]).message()
+        warnings.warn(f"{result.source}: {text}", CalibrationWarning, stacklevel=3)
+
+
 def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
     """CalibrationWarning for each pair of fitted parameters whose correlation exceeds
     :data:`CORRELATION_LIMIT` in magnitude (the data hardly separate them)."""
