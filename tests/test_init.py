@@ -11,6 +11,7 @@ import pytest
 from typer.testing import CliRunner
 
 from ballscrew.case import case_from_dict
+from ballscrew.case.inputs import guessed_defaults
 from ballscrew.case.starter import parse_turns
 from ballscrew.cli import app
 
@@ -47,6 +48,17 @@ def test_every_value_not_on_the_sheet_is_labelled(generated) -> None:
         assert "#" in text, text
     assert "[TYPICAL" in generated and "[ASSUMED" in generated and "[GUESS]" in generated
     assert '"40 mm"' in generated and '"6.35 mm"' in generated
+
+
+def test_the_labelled_values_are_listed_with_the_guesses(generated) -> None:
+    """The [assumed] table the starter writes reaches guessed_defaults; a preload from the sheet
+    is not listed."""
+    guesses = guessed_defaults(case_from_dict(tomllib.loads(generated)))
+    for key in ("screw.pitch_diameter", "screw.contact_angle", "surface.G", "operating.preload"):
+        assert guesses[key].endswith("[ASSUMED in the case file]"), key
+    given = init(*SHEET, "--preload", "2 kN")
+    assert given.exit_code == 0, given.output
+    assert "operating.preload" not in tomllib.loads(given.stdout)["assumed"]
 
 
 @pytest.mark.parametrize(

@@ -88,7 +88,8 @@ def guessed_defaults(model: BaseModel, prefix: str = "") -> dict[str, str]:
     """Dotted key → description of every field of ``model`` (a validated case) that was left
     at a default its description labels a guess (:data:`GUESS_MARKS`), nested sections
     included; a value the user wrote is no guess, nor is None unless the description gives the
-    guessed rule that None stands for (``None = d_m + 5 D_b [GUESS]``)."""
+    guessed rule that None stands for (``None = d_m + 5 D_b [GUESS]``). The inputs a case
+    declares in its own ``[assumed]`` table are listed too, with the reason it gives."""
     found: dict[str, str] = {}
     for name, info in type(model).model_fields.items():
         value, key = getattr(model, name), f"{prefix}{name}"
@@ -102,4 +103,17 @@ def guessed_defaults(model: BaseModel, prefix: str = "") -> dict[str, str]:
             text = field_description(info)
             if (value is not None or "None = " in text) and any(m in text for m in GUESS_MARKS):
                 found[key] = text
+    declared = getattr(model, "assumed", None)  # the case's own [assumed] table
+    if isinstance(declared, dict):
+        for dotted, why in declared.items():
+            found[prefix + _row_key(dotted)] = f"{why} [ASSUMED in the case file]"
     return found
+
+
+def _row_key(dotted: str) -> str:
+    """An input key as :func:`input_rows` writes it: list indices in brackets
+    (``duty.0.stroke`` → ``duty[0].stroke``)."""
+    key = ""
+    for part in dotted.split("."):
+        key += f"[{part}]" if part.isdigit() else f".{part}" if key else part
+    return key

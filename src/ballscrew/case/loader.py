@@ -121,6 +121,7 @@ def case_from_dict(
     if not isinstance(raw, Mapping):
         raise CaseError([f"expected tables of keys, not {type(raw).__name__}"], source)
     data = apply_overrides(raw, overrides or {}, source)
+    check_assumed_keys(data.get("assumed"), source)
     try:
         case = Case.model_validate(data)
     except ValidationError as exc:
@@ -137,9 +138,26 @@ def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:
 
     The fields ``case`` left at their defaults stay marked unset (``model_fields_set``) unless
     an override writes them, so the defaults that are guesses are still reported as such."""
+    written = set(case.assumed) & set(overrides)
+    if written:  # a value written now is no longer an assumed one
+        kept = {key: why for key, why in case.assumed.items() if key not in written}
+        overrides = {**overrides, "assumed": kept}
     new = case_from_dict(case.model_dump(), overrides, source=case.name)
     _keep_unset(case, new, [str(key).split(".") for key in overrides])
     return new
+
+
+def check_assumed_keys(declared: Any, source: str = "case") -> None:
+    """Raise :class:`CaseError` unless every key of the ``[assumed]`` table names an input of
+    :class:`Case` (a list entry by its index, ``duty.0.stroke``)."""
+    for key in declared if isinstance(declared, Mapping) else ():
+        keys = str(key).split(".")
+        if keys[0] == "assumed":
+            raise CaseError([f'assumed."{key}": name an input, not the [assumed] table'], source)
+        try:
+            check_field_path(keys, source)
+        except CaseError as exc:
+            raise CaseError([f'assumed."{key}": {exc.problems[0]}'], source) from None
 
 
 def _keep_unset(old: Any, new: Any, written: list[list[str]]) -> None:

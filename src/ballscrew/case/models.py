@@ -319,6 +319,14 @@ class Case(Model):
         description="duty cycle: [[duty]] segments of speed, load, stroke, dwell and duration",
     )
     duty_repeat: DutyRepeat = 1
+    assumed: dict[str, str] = Field(
+        default_factory=dict,
+        max_length=1000,
+        description=(
+            "inputs written with an assumed or typical value, not a known one: [assumed] "
+            '"dotted.key" = "why"; every summary and report lists them with the guesses'
+        ),
+    )
 
     @model_validator(mode="before")
     @classmethod

@@ -160,6 +160,10 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
             f"{DEFAULT_PRELOAD_SHARE[sheet.nuts]:.0%} of the geometric C_a [GUESS]"
         ),
         max_share=f"{MAX_PRELOAD_SHARE[sheet.nuts]:.0%} of C_a",
+        assumed_preload="" if sheet.preload is not None else (
+            f'"operating.preload" = "{DEFAULT_PRELOAD_SHARE[sheet.nuts]:.0%} of the geometric '
+            'C_a, a typical preload"\n'
+        ),
         length=_mm(sheet.length),
         duty_load=f"\"{round(0.08 * ca, -1):.6g} N\"",
         stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
@@ -296,4 +300,19 @@ duration = "40 min"
 [[duty]]
 speed = 0
 duration = "20 min"
+
+# The values above that are not on the sheet: every summary and report lists them with the
+# guesses. Delete a line when you write the maker's or your measured value.
+[assumed]
+"screw.pitch_diameter" = "d_m taken as the nominal diameter d0"
+"screw.screw_conformity" = "typical Gothic-arch conformity 0.52-0.53"
+"screw.nut_conformity" = "typical Gothic-arch conformity 0.52-0.53"
+"screw.contact_angle" = "Gothic-arch standard 45 deg"
+"surface.D" = "typical ground raceway (Gao et al. 2019)"
+"surface.G" = "typical ground raceway (Gao et al. 2019)"
+"medium.thermal_conductivity" = "typical mineral oil or grease 0.13-0.15 W/(m K)"
+{assumed_preload}"thermal.nut_length" = "the loaded turns plus one lead at each end"
+"thermal.nut_outer_diameter" = "1.75 d0, a typical flange-nut body"
+"design.unsupported_length" = "90 % of the shaft between the bearings"
+"duty" = "an illustrative cycle, not your machine's"
 """
