@@ -9,9 +9,6 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-import ballscrew
-from ballscrew.analyses.friction import friction_torque
-from ballscrew.case import CaseError
 from ballscrew.errors import InputError
 from ballscrew.friction import BALL_TRAIN_MODELS
 from ballscrew.friction.ball_train import (
@@ -115,48 +112,3 @@ def test_return_push_scales_with_the_return_and_vanishes_without_one():
 def test_bad_train_inputs_name_the_field(change, field):
     with pytest.raises(InputError, match=rf"^{field} = "):
         ball_ball_force("return_push", replace(TRAIN, **change))
-
-
-@pytest.fixture
-def physics_case(wear_case_path):
-    return ballscrew.load_case(
-        wear_case_path, {"friction.model": "ball_model", "operating.axial_load": 0.0}
-    )
-
-
-def _with(case, **friction):
-    return case.model_copy(update={"friction": case.friction.model_copy(update=friction)})
-
-
-def test_return_push_in_the_ball_model(physics_case):
-    push = _with(physics_case, ball_train="return_push")
-    ratio = friction_torque(physics_case, speed=100.0)
-    slow = friction_torque(push, speed=100.0)
-    fast = friction_torque(push, speed=300.0)
-    rest = friction_torque(push, speed=0.0)
-    # the contact losses do not see the ball-train model
-    for part in ("sliding", "groove_slip", "ehl_rolling", "hysteresis", "drag"):
-        assert slow.parts[part] == ratio.parts[part]
-    # the bend's centripetal term grows with V²: more ball–ball torque per unit speed when faster
-    assert 0.0 < rest.parts["ball_ball"] < slow.parts["ball_ball"] < fast.parts["ball_ball"]
-    # pushing the return train is a loss of the returns (none at rest)
-    assert slow.parts["recirculation"] > ratio.parts["recirculation"]
-    assert rest.parts["recirculation"] == 0.0
-    # no return, no push: no ball–ball friction, the return loss of the ratio model
-    none = friction_torque(_with(push, return_fraction=0.0), speed=100.0)
-    assert none.parts["ball_ball"] == 0.0
-    assert none.parts["recirculation"] == pytest.approx(ratio.parts["recirculation"], rel=1e-12)
-
-
-@pytest.mark.parametrize(
-    ("key", "value"),
-    [
-        ("friction.ball_train", "nope"),
-        ("friction.return_friction", -0.1),
-        ("friction.return_fraction", 11.0),
-    ],
-)
-def test_bad_case_values_are_one_line_errors(wear_case_path, key, value):
-    with pytest.raises(CaseError) as err:
-        ballscrew.load_case(wear_case_path, {key: value})
-    assert key.split(".")[1] in str(err.value) and "\n" not in str(err.value).strip()
