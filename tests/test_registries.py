@@ -9,7 +9,7 @@ from ballscrew.case import CaseError
 from ballscrew.case.base import Model, model_choice
 from ballscrew.contact_resistance import ELEMENT_MODELS
 from ballscrew.errors import InputError
-from ballscrew.friction import FRICTION_MODELS
+from ballscrew.friction import BALL_TRAIN_MODELS, FRICTION_MODELS
 from ballscrew.geometry import GAP_MODELS
 from ballscrew.kinematics import TRACTION_LAWS
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs, preload_drag_torque
@@ -60,6 +60,7 @@ def test_a_case_field_accepts_exactly_the_registered_names():
         ("medium.film_model", FILM_MODELS),
         ("friction.model", FRICTION_MODELS),
         ("friction.traction", TRACTION_LAWS),
+        ("friction.ball_train", BALL_TRAIN_MODELS),
     ],
 )
 def test_case_files_refuse_unknown_model_names_with_the_list(gao_case_path, key, registry):

@@ -101,12 +101,35 @@ def test_given_recirculation_torque_adds_to_the_modelled_one(physics_case):
     assert more.parts["recirculation"] == pytest.approx(base.parts["recirculation"] + 0.01)
 
 
+def test_return_push_in_the_ball_model(physics_case):
+    push = _with(physics_case, ball_train="return_push")
+    ratio = friction_torque(physics_case, speed=100.0)
+    slow = friction_torque(push, speed=100.0)
+    fast = friction_torque(push, speed=300.0)
+    rest = friction_torque(push, speed=0.0)
+    # the contact losses do not see the ball-train model
+    for part in ("sliding", "groove_slip", "ehl_rolling", "hysteresis", "drag"):
+        assert slow.parts[part] == ratio.parts[part]
+    # the bend's centripetal term grows with V²: more ball–ball torque per unit speed when faster
+    assert 0.0 < rest.parts["ball_ball"] < slow.parts["ball_ball"] < fast.parts["ball_ball"]
+    # pushing the return train is a loss of the returns (none at rest)
+    assert slow.parts["recirculation"] > ratio.parts["recirculation"]
+    assert rest.parts["recirculation"] == 0.0
+    # no return, no push: no ball–ball friction, the return loss of the ratio model
+    none = friction_torque(_with(push, return_fraction=0.0), speed=100.0)
+    assert none.parts["ball_ball"] == 0.0
+    assert none.parts["recirculation"] == pytest.approx(ratio.parts["recirculation"], rel=1e-12)
+
+
 @pytest.mark.parametrize(
     ("key", "value"),
     [
         ("friction.ball_ball_load_ratio", -0.1),
         ("friction.lubricant_fill", 2.0),
         ("friction.circuits", 0),
+        ("friction.ball_train", "nope"),
+        ("friction.return_friction", -0.1),
+        ("friction.return_fraction", 11.0),
     ],
 )
 def test_bad_case_values_are_one_line_errors(wear_case_path, key, value):

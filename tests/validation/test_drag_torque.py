@@ -92,9 +92,20 @@ SKF_ASSUMPTIONS = (
 )
 
 
-def _physics_torque(case: Case, speed: float, traction: str = "film") -> float:
+RETURN_PUSH_MODEL = f"{PHYSICS_MODEL[:-1]}; ball train return_push)"
+RETURN_PUSH_ASSUMPTIONS = (
+    "force between adjacent balls from the return push (ball_train = return_push): the loaded "
+    "balls push the return balls, each held by wall friction 0.1 on its weight and the "
+    "centripetal force of a bend of the pitch radius, plus its drag; 0.2 return balls per "
+    "loaded ball (GUESS: the model's defaults, not fitted to this row); horizontal screw",
+)
+
+
+def _physics_torque(
+    case: Case, speed: float, traction: str = "film", ball_train: str = "ratio"
+) -> float:
     """The physics friction model's screw torque at ``speed`` without seals, level 2."""
-    friction = {"model": "ball_model", "seals": 0, "traction": traction}
+    friction = {"model": "ball_model", "seals": 0, "traction": traction, "ball_train": ball_train}
     physics = case.model_copy(
         update={
             "friction": case.friction.model_copy(update=friction),
@@ -141,6 +152,13 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
         "model should do at least as well (the same band as the film law's row)",
     ),
+    "friction_ball_model_return_push": (
+        RETURN_PUSH_MODEL,
+        lambda case: _physics_torque(case, 100.0 * RPM, ball_train="return_push"),
+        (*BALL_MODEL_ASSUMPTIONS, *PHYSICS_ASSUMPTIONS, *RETURN_PUSH_ASSUMPTIONS),
+        f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
+        "model should do at least as well (the same band as the ratio model's row)",
+    ),
 }
 
 
@@ -155,6 +173,15 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         pytest.param("friction_ball_model", "down", True, id="friction_ball_model-down"),
         pytest.param("friction_ball_model_skf", "up", True, id="friction_ball_model_skf-up"),
         pytest.param("friction_ball_model_skf", "down", True, id="friction_ball_model_skf-down"),
+        pytest.param(
+            "friction_ball_model_return_push", "up", True, id="friction_ball_model_return_push-up"
+        ),
+        pytest.param(
+            "friction_ball_model_return_push",
+            "down",
+            True,
+            id="friction_ball_model_return_push-down",
+        ),
     ],
 )
 def test_xjtu_as_new_torque(validation, dataset, base_raw, name, direction, known_miss) -> None:
@@ -203,19 +230,26 @@ def test_thk_driving_torque_example(validation, dataset, base_raw) -> None:
     )
 
 
-@pytest.mark.parametrize("traction", ["film", "skf"], ids=["film", "skf"])
+THK_PHYSICS_ROWS = {  # id suffix → (traction law, ball train, model label, extra assumptions)
+    "": ("film", "ratio", PHYSICS_MODEL, ()),
+    "_skf": ("skf", "ratio", SKF_MODEL, SKF_ASSUMPTIONS),
+    "_return_push": ("film", "return_push", RETURN_PUSH_MODEL, RETURN_PUSH_ASSUMPTIONS),
+}
+
+
+@pytest.mark.parametrize("suffix", list(THK_PHYSICS_ROWS), ids=["film", "skf", "return_push"])
 def test_thk_preload_torque_example_by_the_physics_model(
-    validation, dataset, base_raw, traction
+    validation, dataset, base_raw, suffix
 ) -> None:
     data = dataset("drag_torque", "thk_preload_torque_example")
+    traction, train, model, extra = THK_PHYSICS_ROWS[suffix]
     base_raw["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
     base_raw["operating"].update(preload=f"{data['preload_N']} N", axial_load="0 N")
-    torque = _physics_torque(case_from_dict(base_raw), 100.0 * RPM, traction)
-    skf = traction == "skf"
+    torque = _physics_torque(case_from_dict(base_raw), 100.0 * RPM, traction, train)
     validation.check(
-        "thk_preload_torque_example_physics" + ("_skf" if skf else ""),
+        "thk_preload_torque_example_physics" + suffix,
         kind="verification",
-        model=SKF_MODEL if skf else PHYSICS_MODEL,
+        model=model,
         source=THK_SOURCE,
         reference=data,
         quantity="preload drag torque, BNFN4010-5, F_p = 3000 N",
@@ -233,7 +267,7 @@ def test_thk_preload_torque_example_by_the_physics_model(
             "speed 100 rpm (ASSUMED: the usual preload-torque measuring speed)",
             *BALL_MODEL_ASSUMPTIONS[1:3],
             *PHYSICS_ASSUMPTIONS,
-            *(SKF_ASSUMPTIONS if skf else ()),
+            *extra,
         ),
         known_miss=True,
     )

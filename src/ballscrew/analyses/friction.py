@@ -47,6 +47,9 @@ def nut_loss_parameters(case: Case) -> NutLossParameters:
         ball_ball_friction=spec.ball_ball_friction,
         lubricant_fill=spec.lubricant_fill,
         circuits=spec.circuits,
+        ball_train=spec.ball_train,
+        return_friction=spec.return_friction,
+        return_fraction=spec.return_fraction,
     )
 
 

@@ -11,7 +11,10 @@ Example::
     seals = 2                   # contacting seals / wiper rings of the nut
     seal_force = "5 N"          # friction force of one seal lip [GUESS], at the radius d_m/2
     hysteresis = 0.01           # hysteresis loss fraction α of the Hertz contacts [GUESS]
-    ball_ball_load_ratio = 0.01 # force between adjacent balls / ball load [GUESS]
+    ball_train = "ratio"        # force between adjacent balls: "ratio" (default) or "return_push"
+    ball_ball_load_ratio = 0.01 # force between adjacent balls / ball load, ratio [GUESS]
+    return_friction = 0.1       # friction of a ball on the return wall, return_push [GUESS]
+    return_fraction = 0.2       # balls in the return per loaded ball, return_push [GUESS]
     circuits = 2                # ball circuits (returns) per nut [GUESS]
 """
 
@@ -23,6 +26,12 @@ from pydantic import Field
 
 from ballscrew.case.base import Model, model_choice, quantity
 from ballscrew.friction import CATALOGUE_ROLLING_FRICTION, DEFAULT_HYSTERESIS, FRICTION_MODELS
+from ballscrew.friction.ball_train import (
+    BALL_TRAIN_MODELS,
+    DEFAULT_BALL_TRAIN,
+    DEFAULT_RETURN_FRACTION,
+    DEFAULT_RETURN_FRICTION,
+)
 from ballscrew.friction.nut_losses import (
     DEFAULT_BALL_BALL_FRICTION,
     DEFAULT_BALL_BALL_LOAD_RATIO,
@@ -81,15 +90,38 @@ class FrictionSpec(Model):
         "traction law of the ball model at both contacts: film (JGP share, limiting shear) or "
         "skf (SKF sliding weighting φ_bl, μ_bl 0.15, μ_EHL 0.05)",
     ) = "film"
+    ball_train: model_choice(
+        BALL_TRAIN_MODELS,
+        "contact force between adjacent balls (ball model): ratio (a given fraction of the "
+        "ball load) or return_push (the loaded balls push the return balls)",
+    ) = DEFAULT_BALL_TRAIN
     ball_ball_load_ratio: Annotated[
         float,
         Field(
             ge=0.0,
             le=1.0,
-            description="contact force between adjacent balls / ball load, F_B/Q (ball model) "
-            "[GUESS 0.01]",
+            description="contact force between adjacent balls / ball load, F_B/Q (ball model, "
+            "ball_train = ratio) [GUESS 0.01]",
         ),
     ] = DEFAULT_BALL_BALL_LOAD_RATIO
+    return_friction: Annotated[
+        float,
+        Field(
+            ge=0.0,
+            le=1.0,
+            description="friction coefficient of a ball on the wall of the ball return "
+            "(ball_train = return_push) [GUESS 0.1]",
+        ),
+    ] = DEFAULT_RETURN_FRICTION
+    return_fraction: Annotated[
+        float,
+        Field(
+            ge=0.0,
+            le=10.0,
+            description="balls in the return per loaded ball of a circuit "
+            "(ball_train = return_push) [GUESS 0.2]",
+        ),
+    ] = DEFAULT_RETURN_FRACTION
     ball_ball_friction: Annotated[
         float,
         Field(ge=0.0, le=1.0, description="friction coefficient between balls μ_bb [GUESS 0.1]"),

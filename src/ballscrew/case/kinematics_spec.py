@@ -61,7 +61,13 @@ class KinematicsSpec(Model):
         "for medium values that are not given; the same as medium.lubricant; None = [medium] only",
     )
     boundary_friction: Annotated[
-        float, Field(ge=0.0, le=1.0, description="μ_b on the asperity-borne pressure (E3.3)")
+        float,
+        Field(
+            ge=0.0,
+            le=1.0,
+            description="μ_b on the asperity-borne pressure (E3.3) [GUESS 0.1: boundary friction "
+            "of lubricated steel; SKF's μ_bl is 0.15]",
+        ),
     ] = 0.1
     limiting_shear: Annotated[
         float,

@@ -7,7 +7,9 @@
 3. :mod:`~ballscrew.friction.groove_slip` — differential (Heathcote) slip of the ball in the
    conforming nut groove (Heathcote 1921; Johnson 1985 ch. 8).
 4. :mod:`~ballscrew.friction.nut_losses` — ball–ball friction (Olaru et al. 2005), drag of the
-   balls in the lubricant (Harris & Kotzalas 2007) and the ball-return loss.
+   balls in the lubricant (Harris & Kotzalas 2007) and the ball-return loss;
+   :mod:`~ballscrew.friction.ball_train` — the contact force between adjacent balls
+   (:data:`BALL_TRAIN_MODELS`).
 5. :mod:`~ballscrew.friction.torque` — the parts together, the rival total models
    (:data:`FRICTION_MODELS`) and :func:`nut_friction_torque`.
 
@@ -22,6 +24,7 @@ from ballscrew.friction.ball_losses import (
     hysteresis_force,
     regime,
 )
+from ballscrew.friction.ball_train import BALL_TRAIN_MODELS
 from ballscrew.friction.efficiency import (
     CATALOGUE_ROLLING_FRICTION,
     backdriving_efficiency,
@@ -38,6 +41,7 @@ from ballscrew.friction.torque import (
 )
 
 __all__ = [
+    "BALL_TRAIN_MODELS",
     "CATALOGUE_ROLLING_FRICTION",
     "DEFAULT_HYSTERESIS",
     "FRICTION_MODELS",

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ballscrew.friction.ball_train import BallTrain, TrainForces, ball_ball_force
 from ballscrew.friction.groove_slip import differential_slip_power, heathcote_rate
 from ballscrew.friction.nut_losses import (
     NutLossParameters,
@@ -139,13 +140,33 @@ def _semi_axes(model: BallModel, loads: FloatArray) -> tuple[FloatArray, FloatAr
     return np.column_stack([a for a, _ in axes]), np.column_stack([b for _, b in axes])
 
 
+def _train(
+    model: BallModel, state: BallState, nut: NutLossParameters, drag_force: float
+) -> TrainForces:
+    """Contact forces of the ball train of one circuit of the nut of ``state``
+    (:mod:`ballscrew.friction.ball_train`; the return path curves at the pitch radius, ASSUMED:
+    an internal deflector follows the screw's circumference)."""
+    train = BallTrain(
+        load=state.load_screw,
+        mass=model.mass,
+        speed=state.ball_speed,
+        path_radius=0.5 * model.geometry.pitch_diameter,
+        loaded_balls=model.balls / nut.circuits,
+        return_fraction=nut.return_fraction,
+        return_friction=nut.return_friction,
+        drag_force=drag_force,
+        load_ratio=nut.ball_ball_load_ratio,
+    )
+    return ball_ball_force(nut.ball_train, train)
+
+
 def _ball_ball_torque(
-    model: BallModel, state: BallState, unit: BallMotion, nut: NutLossParameters
+    model: BallModel, unit: BallMotion, nut: NutLossParameters, force: float
 ) -> float:
-    """Screw torque of the friction of one ball against its leading neighbour (P_bb/ω_s)."""
+    """Screw torque of the friction of one ball against its leading neighbour (P_bb/ω_s) at the
+    contact force F_B ``force``."""
     r_b = model.geometry.ball_radius
     surface = r_b * float(np.linalg.norm(np.cross(unit.angular_velocity, model.frame.t)))
-    force = nut.ball_ball_load_ratio * state.load_screw
     return ball_ball_power(force, nut.ball_ball_friction, surface) / unit.screw_speed
 
 
@@ -180,34 +201,42 @@ def _contact_losses(
     unit: BallMotion,
     semi_nut: tuple[float, float],
     nut: NutLossParameters,
-) -> tuple[tuple[float, ...], float, float]:
+) -> tuple[tuple[float, ...], float, float, float]:
     """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball, the
-    separation h at A [m] and the JGP asperity share ψ at A."""
+    torque of pushing the return train of one nut (ball returns), the separation h at A [m]
+    and the JGP asperity share ψ at A."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
     rolling = drag.dissipation_torque - sliding
     # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
     rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
-    viscous = 0.0
-    if model.lubricated and state.screw_speed != 0.0:
-        power = drag_power(
-            state.ball_speed,
-            model.geometry.ball_diameter,
-            model.lubricant_density,
-            model.viscosity,
-            nut.lubricant_fill,
+    speed = abs(state.ball_speed)
+    force = 0.0  # drag of one ball in the lubricant, F_v = P_v/V
+    if model.lubricated and state.screw_speed != 0.0 and speed > 0.0:
+        force = (
+            drag_power(
+                speed,
+                model.geometry.ball_diameter,
+                model.lubricant_density,
+                model.viscosity,
+                nut.lubricant_fill,
+            )
+            / speed
         )
-        viscous = power / state.screw_speed
+    viscous = force * speed / omega
+    train = _train(model, state, nut, force)
+    push = nut.circuits * train.return_push * speed / omega  # 0 at rest (V = 0)
     return (
         (
             sliding,
             rolling - rolling_b,
             rolling_b,
-            _ball_ball_torque(model, state, unit, nut),
+            _ball_ball_torque(model, unit, nut, train.contact),
             viscous,
             _groove_slip_torque(model, state, unit, semi_nut),
         ),
+        push,
         drag.separation,
         drag.psi,
     )
@@ -260,10 +289,14 @@ def ball_losses(
     loads = np.array([(state.load_screw, state.load_nut) for state in states])
     along, across = _semi_axes(model, loads)
     sums = np.zeros(6)
+    pushes = 0.0
     first: tuple[float, float] | None = None  # film separation and asperity share of the first
     for state, unit, a, b in zip(states, units, along[:, 1], across[:, 1], strict=True):
-        torques, separation, psi = _contact_losses(model, state, unit, (float(a), float(b)), nut)
+        torques, push, separation, psi = _contact_losses(
+            model, state, unit, (float(a), float(b)), nut
+        )
         sums += torques
+        pushes += push
         first = first or (separation, psi)
     separation, psi = first or (0.0, 0.0)
     sliding, rolling_a, rolling_b, balls, drag, groove = model.balls * sums
@@ -273,7 +306,7 @@ def ball_losses(
     hyst_a, hyst_b = model.balls * np.sum(
         hysteresis_force(loads, along, radii, hysteresis) * ratio[:, None], axis=0
     )
-    returns = sum(_recirculation_torque(model, state, nut) for state in states)
+    returns = pushes + sum(_recirculation_torque(model, state, nut) for state in states)
     film = 0.0
     if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
         film = film_parameter(separation, model.surface.rms_height)

@@ -9,7 +9,8 @@ model (:mod:`ballscrew.friction.ball_losses`) sums them over the loaded balls an
   "friction moment between the balls", M_B = μ_bb F_B d_w/2, among the ball-screw losses, and
   Lin, Duan & Okwudire (2019) show experimentally and by model that ball-to-ball friction is
   significant in ball screws and linear bearings. The contact force F_B has no closed form in
-  either source: it is a parameter here (:data:`DEFAULT_BALL_BALL_LOAD_RATIO`, a GUESS).
+  either source: it comes from a model of :mod:`ballscrew.friction.ball_train` (``ratio``, a
+  GUESSED fraction of the ball load, or ``return_push``).
 * :func:`drag_power` — hydrodynamic drag of a ball moving through the lubricant held in the nut
   (Harris & Kotzalas 2007, *Rolling Bearing Analysis*, Vol. 2:
   F_v = (π/32) C_D ρ_e d² (d_m ω_m)^1.95, the sphere drag ½ C_D ρ_e (π d²/4) V² with an exponent
@@ -25,6 +26,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ballscrew.friction.ball_train import (
+    DEFAULT_BALL_BALL_LOAD_RATIO,
+    DEFAULT_BALL_TRAIN,
+    DEFAULT_RETURN_FRACTION,
+    DEFAULT_RETURN_FRICTION,
+)
 from ballscrew.validation import nonnegative, positive
 
 __all__ = [
@@ -38,12 +45,6 @@ __all__ = [
     "recirculation_power",
     "sphere_drag_coefficient",
 ]
-
-DEFAULT_BALL_BALL_LOAD_RATIO = 0.01
-"""F_B/Q, contact force between adjacent balls per ball–raceway load. GUESS: 0 for identical
-balls rolling without slip (nothing pushes them together); up to the traction capacity μ_b Q when
-a ball of another size is pushed by its neighbours into sliding at the raceways. 1 % of Q is a
-tenth of that upper bound for μ_b = 0.1; no published value was found."""
 
 DEFAULT_BALL_BALL_FRICTION = 0.1
 """μ_bb at the ball–ball contact: boundary friction of lubricated hardened steel, the same GUESS
@@ -71,6 +72,12 @@ class NutLossParameters:
     """X, volume fraction of lubricant in the nut."""
     circuits: int = DEFAULT_CIRCUITS
     """Ball circuits per nut."""
+    ball_train: str = DEFAULT_BALL_TRAIN
+    """Model of F_B (:data:`ballscrew.friction.ball_train.BALL_TRAIN_MODELS`)."""
+    return_friction: float = DEFAULT_RETURN_FRICTION
+    """μ_r of a ball on the wall of the return path (``return_push``)."""
+    return_fraction: float = DEFAULT_RETURN_FRACTION
+    """n_r/n_l, balls in the return per loaded ball of a circuit (``return_push``)."""
 
 
 def ball_ball_power(contact_force: float, friction: float, surface_speed: float) -> float:
