@@ -61,20 +61,36 @@ def test_grease_film_across_clearance(validation, dataset, index) -> None:
     data = dataset("tcr", "moldflow_steel_grease_steel")
     clearance = data["clearance_um"][index] * UM
     h = gap_conductance(0.0, clearance, apparent_area=1.0, lambda_f=LAMBDA_GREASE)
-    validation.check(
+    _check_film(
+        validation,
+        data,
+        index,
         f"moldflow_steel_grease_steel_{data['clearance_um'][index]:g}um",
-        model="liquid film (T7, M = 0): the gap term of every element model and correlation",
+        "liquid film (T7, M = 0): the gap term of every element model and correlation",
+        GREASE_ASSUMPTIONS,
+        f"conductance across a {clearance / UM:g} µm grease film",
+        h,
+        0.25,
+        "±10 % stated in the table, widened to ±25 % because the grease's conductivity is not "
+        "given (0.13–0.2 W/mK for lubricating greases)",
+    )
+
+
+def _check_film(validation, data, index, row, model, notes, quantity, h, tolerance, basis):
+    """Record the film conductance ``h`` against row ``index`` of a vendor film entry."""
+    validation.check(
+        row,
+        model=model,
         source=data["citation"],
-        assumptions=GREASE_ASSUMPTIONS,
+        assumptions=notes,
         reference=data,
-        quantity=f"conductance across a {clearance / UM:g} µm grease film",
+        quantity=quantity,
         unit="W/(m² K)",
         measured=data["conductance_W_m2K"][index],
         predicted=float(h),
-        tolerance=0.25,
+        tolerance=tolerance,
         relative=True,
-        tolerance_basis="±10 % stated in the table, widened to ±25 % because the grease's "
-        "conductivity is not given (0.13–0.2 W/mK for lubricating greases)",
+        tolerance_basis=basis,
     )
 
 
@@ -93,21 +109,19 @@ def test_air_film_across_gap(validation, dataset, index) -> None:
     data = dataset("tcr", "moldflow_steel_air_gap_steel")
     gap = data["gap_mm"][index] * 1e-3
     h = gap_conductance(0.0, gap, apparent_area=1.0, lambda_f=0.026, rarefaction=AIR_M)
-    validation.check(
+    _check_film(
+        validation,
+        data,
+        index,
         f"moldflow_steel_air_gap_steel_{data['gap_mm'][index]:g}mm",
-        model="gas film (T7 with the air's rarefaction M, T10): the gap term of every model",
-        source=data["citation"],
-        assumptions=AIR_FILM_ASSUMPTIONS,
-        reference=data,
-        quantity=f"conductance across a {data['gap_mm'][index]:g} mm air gap",
-        unit="W/(m² K)",
-        measured=data["conductance_W_m2K"][index],
-        predicted=float(h),
-        tolerance=0.2,
-        relative=True,
-        tolerance_basis="±10 % stated in the table, widened to ±20 % because the air's "
-        "temperature (λ_f 0.026–0.030 W/mK from 20 to 80 °C) and the radiation across the gap "
-        "(about 3 % of h) are not given",
+        "gas film (T7 with the air's rarefaction M, T10): the gap term of every model",
+        AIR_FILM_ASSUMPTIONS,
+        f"conductance across a {data['gap_mm'][index]:g} mm air gap",
+        h,
+        0.2,
+        "±10 % stated in the table, widened to ±20 % because the air's temperature (λ_f "
+        "0.026–0.030 W/mK from 20 to 80 °C) and the radiation across the gap (about 3 % of h) "
+        "are not given",
     )
 
 

@@ -170,6 +170,13 @@ def _check(validation, data, row_id, model, medium, pressure, low, high, metal=N
     )
 
 
+def _lienhard(validation, data, model, index, name, medium, metal=None) -> None:
+    """Row ``index`` of a Lienhard table entry, at the middle of "about 1 to 10 atm"."""
+    low, high = data["conductance_low_W_m2K"][index], data["conductance_high_W_m2K"][index]
+    row = f"lienhard_{name}_{medium}"
+    _check(validation, data, row, model, medium, LIENHARD_PRESSURE, low, high, metal)
+
+
 # (row, model) → known miss, with the error found when the tolerance above was first applied.
 MISSES = {
     # vacuum, 0.1 MPa (range 400–1667): CMY −90 %, Mikic −96 %, V2 −86 %, V1 −90 %, MT +266 %
@@ -234,10 +241,7 @@ def test_fried_stainless_vacuum(validation, dataset, model, index) -> None:
 @pytest.mark.parametrize("index", [0, 1])
 def test_lienhard_stainless(validation, dataset, model, index) -> None:
     data = dataset("tcr", "lienhard_stainless")
-    medium = data["media"][index]
-    low, high = data["conductance_low_W_m2K"][index], data["conductance_high_W_m2K"][index]
-    row = f"lienhard_stainless_{medium}"
-    _check(validation, data, row, model, medium, LIENHARD_PRESSURE, low, high)
+    _lienhard(validation, data, model, index, "stainless", data["media"][index])
 
 
 @pytest.mark.parametrize("model", MODELS)
@@ -258,6 +262,4 @@ def test_fried_metals_vacuum(validation, dataset, model, index, metal) -> None:
 def test_lienhard_metals_air(validation, dataset, model, metal) -> None:
     data = dataset("tcr", "lienhard_metals_air")
     name = data["metals"][metal]
-    low, high = data["conductance_low_W_m2K"][metal], data["conductance_high_W_m2K"][metal]
-    row = f"lienhard_{name}_air"
-    _check(validation, data, row, model, "air", LIENHARD_PRESSURE, low, high, METALS[name])
+    _lienhard(validation, data, model, metal, name, "air", METALS[name])
