@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from functools import cache
 
 import pint
@@ -200,6 +201,14 @@ def to_si(value: object, kind: str) -> float:
     if not math.isfinite(result):
         raise ValueError(f"{_short(value)} cannot be expressed as a finite number of {unit_name}")
     return result
+
+
+def split_list(items: str | Sequence[str]) -> list[str]:
+    """The items of a comma list given on the command line or in Python: ``"a, b"`` or
+    ``["a", " b"]`` → ``["a", "b"]``. Each item is stripped; empty items (``"a,,b"``, a trailing
+    comma, ``""``) are dropped, so the caller decides whether an empty list is an error."""
+    parts = items.split(",") if isinstance(items, str) else list(items)
+    return [p.strip() for p in parts if p.strip()]
 
 
 # --- Display in engineering units ---------------------------------------------------------------

@@ -47,6 +47,7 @@ from ballscrew.calibration.result import CalibrationResult, WearHistory
 from ballscrew.calibration.search import DIFF_STEP, SCAN_STEPS, covariance
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import InputError
+from ballscrew.units import split_list
 
 __all__ = ["JointCalibrationResult", "calibrate_joint", "fit_joint"]
 
@@ -265,11 +266,11 @@ def calibrate_joint(
     quantities = sorted({d.quantity for d in data})
     if len(quantities) > 1:
         raise InputError("--measured", ", ".join(quantities), "histories of one quantity")
-    shared_names = _split_names(shared)
+    shared_names = split_list(shared)
     if separate is None:
         separate_names = ["torque_offset"] if quantities[0] == "friction_torque" else []
     else:
-        separate_names = _split_names(separate)
+        separate_names = split_list(separate)
     both = set(shared_names) & set(separate_names)
     if both:
         raise InputError("--separate", ", ".join(sorted(both)), "names not also shared")
@@ -319,11 +320,6 @@ def calibrate_joint(
 
 def _with_case(result: CalibrationResult, case: Any) -> CalibrationResult:
     return replace(result, case=case, calibrated_range=programme_range(case))
-
-
-def _split_names(names: Sequence[str] | str) -> list[str]:
-    items = names.split(",") if isinstance(names, str) else list(names)
-    return [n.strip() for n in items if n.strip()]
 
 
 class _SharedRuns:

@@ -57,6 +57,7 @@ from ballscrew.calibration.search import (
     solve_least_squares,
 )
 from ballscrew.errors import InputError
+from ballscrew.units import split_list
 
 __all__ = [
     "CORRELATION_LIMIT",
@@ -484,7 +485,7 @@ def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
     :data:`CORRELATION_LIMIT` in magnitude (the data hardly separate them)."""
     for pair, r in correlations(cov, names).items():
         if abs(r) > CORRELATION_LIMIT:
-            a, b = (described(n) for n in pair.split(","))
+            a, b = (described(n) for n in split_list(pair))
             warnings.warn(
                 f"{source}: the data hardly separate the {a} and the {b} ({pair}: correlation "
                 f"{r:+.3f} from the covariance): one trades off against the other, so each "
