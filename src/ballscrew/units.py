@@ -369,6 +369,18 @@ def to_display(values: object, kind: str, magnitude: float | None = None) -> tup
     return array / scale, symbol
 
 
+def in_display_units(values: Sequence[float], unit: str) -> tuple[tuple[float, ...], str]:
+    """SI ``values`` of one quantity, in their ``summary.json`` unit spelling (``"N"``,
+    ``"rad/s"``), in ONE engineering unit picked by the largest, so values set side by side
+    (a demand and its capacity) read alike: ``((800.0, 1.2e4), "N")`` → ``((0.8, 12.0), "kN")``.
+    A unit with no engineering display (``"h"``, ``"mm·rpm"``) is kept, the values as given."""
+    kind = KIND_OF_UNIT.get(unit)
+    if kind is None:
+        return tuple(float(v) for v in values), unit
+    shown, symbol = to_display(values, kind)
+    return tuple(float(v) for v in shown), symbol  # type: ignore[union-attr]
+
+
 def format_quantity(
     value: float, kind: str, digits: int = 4, zero_below: float | None = None
 ) -> str:
