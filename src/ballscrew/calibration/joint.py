@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
+from functools import partial
 from types import ModuleType
 from typing import Any, ClassVar
 
@@ -207,7 +208,8 @@ def fit_joint(
         part.check_bracket(x[i], np.array(lower)[i], np.array(upper)[i])
     r = residuals(x)
     what = " and ".join(described(name) for name in names) + " together"
-    cov = covariance(difference(x), r, n, p, source, what)
+    central = stacked(lambda part: partial(part.jacobian.difference, central=True))
+    cov = covariance(central(x), r, n, p, source, what)
     warn_correlated(cov, names, source)
     noise = scale * math.sqrt(float(r @ r) / (n - p))
     histories = tuple(
