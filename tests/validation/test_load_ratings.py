@@ -8,7 +8,7 @@ next to C_a and C_0a; none prints conformity or pitch diameter, so the same assu
 return-tube circuits but no ball diameter, which is assigned from the printed ball-centre offset
 (:data:`THK_GEOMETRY_ASSUMPTIONS`).
 
-* HIWIN: C_a −10 %…−1 %, C_0a ±17 %. The double-nut table prints C_0a = 16.42 kN for
+* HIWIN: C_a −10 %…−1 %, C_0a −17 %…−1 %. The double-nut table prints C_0a = 16.42 kN for
   R20-05K4 (1.10 C_a, a third of its neighbours' ratio); the same catalogue's single-nut table
   (Table 6.4, p. 48) prints 36.4 kN for that size, and the two tables print the same C_a and
   C_0a for each of the 31 other sizes compared: a misprint, so the row takes 36.4 kN (−10.8 %;
@@ -36,8 +36,8 @@ Harris & Kotzalas 2006) is compared with the same rows (``<maker>_C0a_palmgren_<
 12–19 % below the 4200 MPa rating at these ball-screw contacts, so it meets 10 of 12 NBS rows
 (+15…+37 %), moves Rexroth from +45…+60 % to +26…+33 % (every row still a miss) and HIWIN from
 −17…−1 % to −26…−18 % (half its rows then miss). The makers disagree with one another by more than
-either reading separates: for the same geometry Rexroth's C_0 is 0.61 of HIWIN's (model errors
-+54 % and −6 %, medians) while their C agree within 5 % (−10 % and −5 %).
+either reading separates: for the same geometry Rexroth's C_0 is 0.60 of HIWIN's (model errors
++54 % and −7 %, medians) while their C agree within 5 % (−10 % and −5 %).
 """
 
 from __future__ import annotations
