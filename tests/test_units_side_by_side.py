@@ -22,9 +22,11 @@ from ballscrew.units import in_display_units
         ((1.5, 70.55), "", (1.5, 70.55), ""),
         ((1.0e6, 72890.0), "h", (1.0e6, 72890.0), "h"),
         ((40000.0, 70000.0), "mm·rpm", (40000.0, 70000.0), "mm·rpm"),
+        ((math.inf, 2.0e3), "N", (math.inf, 2.0), "kN"),
     ],
 )
 def test_one_unit_picked_by_the_largest_value(values, unit, shown, symbol) -> None:
+    """The largest finite value picks the unit (a non-finite one is shown as it is)."""
     got, got_symbol = in_display_units(values, unit)
     assert got_symbol == symbol
     assert got == pytest.approx(shown, rel=1e-12)

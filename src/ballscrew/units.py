@@ -374,11 +374,13 @@ def in_display_units(values: Sequence[float], unit: str) -> tuple[tuple[float, .
     ``"rad/s"``), in ONE engineering unit picked by the largest, so values set side by side
     (a demand and its capacity) read alike: ``((800.0, 1.2e4), "N")`` → ``((0.8, 12.0), "kN")``.
     A unit with no engineering display (``"h"``, ``"mm·rpm"``) is kept, the values as given."""
+    numbers = tuple(float(v) for v in values)
     kind = KIND_OF_UNIT.get(unit)
     if kind is None:
-        return tuple(float(v) for v in values), unit
-    shown, symbol = to_display(values, kind)
-    return tuple(float(v) for v in shown), symbol  # type: ignore[union-attr]
+        return numbers, unit
+    largest = max((abs(v) for v in numbers if math.isfinite(v)), default=1.0)
+    symbol, scale = display_unit(kind, largest)
+    return tuple(v / scale for v in numbers), symbol
 
 
 def format_quantity(
