@@ -223,11 +223,12 @@ def test_load_rating_against_catalogue(validation, dataset, maker, model, rating
         row.get("turns_per_circuit", 1.0),
     )
     static = static_model is not None
+    correction = reference.get("corrections", {}).get(model) if static else None
     validation.check(
         f"{maker}_{rating}_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
         kind="comparison with a maker's calculation",
         model=description,
-        source=source,
+        source=f"{source}; {correction}" if correction else source,
         reference=reference | {"row": row},
         quantity=f"{'static' if static else 'dynamic'} axial load rating of {model}",
         unit="kN",
