@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from functools import cache
 
 import pint
@@ -202,6 +203,14 @@ def to_si(value: object, kind: str) -> float:
     return result
 
 
+def split_list(items: str | Sequence[str]) -> list[str]:
+    """The items of a comma list given on the command line or in Python: ``"a, b"`` or
+    ``["a", " b"]`` → ``["a", "b"]``. Each item is stripped; empty items (``"a,,b"``, a trailing
+    comma, ``""``) are dropped, so the caller decides whether an empty list is an error."""
+    parts = items.split(",") if isinstance(items, str) else list(items)
+    return [p.strip() for p in parts if p.strip()]
+
+
 # --- Display in engineering units ---------------------------------------------------------------
 
 
@@ -358,6 +367,20 @@ def to_display(values: object, kind: str, magnitude: float | None = None) -> tup
         magnitude = float(finite.max()) if finite.size else 1.0
     symbol, scale = display_unit(kind, magnitude)
     return array / scale, symbol
+
+
+def in_display_units(values: Sequence[float], unit: str) -> tuple[tuple[float, ...], str]:
+    """SI ``values`` of one quantity, in their ``summary.json`` unit spelling (``"N"``,
+    ``"rad/s"``), in ONE engineering unit picked by the largest, so values set side by side
+    (a demand and its capacity) read alike: ``((800.0, 1.2e4), "N")`` → ``((0.8, 12.0), "kN")``.
+    A unit with no engineering display (``"h"``, ``"mm·rpm"``) is kept, the values as given."""
+    numbers = tuple(float(v) for v in values)
+    kind = KIND_OF_UNIT.get(unit)
+    if kind is None:
+        return numbers, unit
+    largest = max((abs(v) for v in numbers if math.isfinite(v)), default=1.0)
+    symbol, scale = display_unit(kind, largest)
+    return tuple(v / scale for v in numbers), symbol
 
 
 def format_quantity(

@@ -202,3 +202,18 @@ def test_the_headlines_give_the_life_in_hours() -> None:
     summary = design_check(case_from_dict(raw_case())).summary()
     rows = dict(headline_rows(summary, headline_keys("check")))
     assert rows["life hours"].endswith(" h") and rows["rating life"].endswith(" rev")
+
+
+def test_a_red_margin_reads_demand_and_capacity_in_one_unit() -> None:
+    """The warning read '2 kN against 881 N' (each value in its own unit) while the margins
+    table showed one unit a row; both now pick the unit by the larger value."""
+    raw = raw_case()
+    raw["design"]["unsupported_length"] = "12 m"
+    with pytest.warns(UserWarning):
+        result = design_check(case_from_dict(raw))
+    buckling = next(w for w in result.warnings if w.startswith("axial load vs 0.5"))
+    demand, capacity = buckling.split(": ", 1)[1].split(" against ")
+    assert demand == "2 kN" and capacity.endswith(" kN") and capacity.startswith("0.")
+    table = next(s for s in result.report() if s.title == "Margins").tables[0]
+    row = next(r for r in table.rows if r[0].startswith("axial load vs 0.5"))
+    assert row[3] == "kN" and capacity == f"{row[2]:.3f} kN"

@@ -31,7 +31,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
-from ballscrew.units import KIND_OF_UNIT, format_number, format_quantity
+from ballscrew.units import format_number, in_display_units
 from ballscrew.validation import case_with
 
 __all__ = [
@@ -308,13 +308,6 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     return tuple(out)
 
 
-def _shown(value: float, unit: str) -> str:
-    """SI ``value`` in ``unit`` in engineering units (rpm, kN), four significant figures."""
-    if unit in KIND_OF_UNIT:
-        return format_quantity(value, unit)
-    return f"{format_number(value)} {unit}".rstrip()
-
-
 def _warn(
     margins: tuple[Margin, ...], values: dict, computed: tuple[str, ...], spec: DesignSpec
 ) -> None:
@@ -333,8 +326,10 @@ def _warn(
         )
     for m in margins:
         if m.status == "red":
+            values, unit = in_display_units((m.demand, m.capacity), m.unit)
+            demand, capacity = (f"{format_number(v)} {unit}".rstrip() for v in values)
             warnings.warn(
-                f"{m.label}: {_shown(m.demand, m.unit)} against {_shown(m.capacity, m.unit)}",
+                f"{m.label}: {demand} against {capacity}",
                 DesignWarning,
                 stacklevel=3,
             )

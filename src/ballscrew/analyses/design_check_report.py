@@ -16,10 +16,10 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
 from ballscrew.plotting import legend_outside, pyplot
-from ballscrew.units import KIND_OF_UNIT, to_display
+from ballscrew.units import in_display_units
 
 if TYPE_CHECKING:
-    from ballscrew.analyses.design_check import DesignCheck
+    from ballscrew.analyses.design_check import DesignCheck, Margin
 
 __all__ = ["ball_distribution", "fields", "figures", "sections", "stiffness_curve", "summary"]
 
@@ -303,22 +303,16 @@ def _ratings_note(result: DesignCheck) -> str:
     )
 
 
-def _engineering(demand: float, capacity: float, unit: str) -> tuple[float, float, str]:
-    """(demand, capacity, unit) of a margin in one engineering unit: rpm, kN (SI in, as
+def _margin_row(m: Margin) -> tuple[str, float, float, str, float, str]:
+    """A margin's table row, demand and capacity in one engineering unit (rpm, kN; SI in, as
     ``summary.json`` keeps them)."""
-    kind = KIND_OF_UNIT.get(unit)
-    if kind is None:
-        return demand, capacity, unit
-    shown, symbol = to_display(np.array([demand, capacity]), kind)
-    return float(shown[0]), float(shown[1]), symbol
+    (demand, capacity), unit = in_display_units((m.demand, m.capacity), m.unit)
+    return (m.label, demand, capacity, unit, m.ratio, m.status.upper())
 
 
 def sections(result: DesignCheck) -> list[Section]:
     """Margins (green/amber/red), design values, stiffness curve and life."""
-    margins = tuple(
-        (m.label, *_engineering(m.demand, m.capacity, m.unit), m.ratio, m.status.upper())
-        for m in result.margins
-    )
+    margins = tuple(_margin_row(m) for m in result.margins)
     s = result.spectrum
     spectrum = tuple(
         (k + 1, f, share) for k, (f, share) in enumerate(zip(s.loads, s.shares, strict=True))

@@ -24,6 +24,7 @@ from ballscrew.calibration.multi import (
 from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.errors import InputError
 from ballscrew.thread_warnings import record_warnings
+from ballscrew.units import split_list
 
 __all__ = [
     "DEFAULT_FIT",
@@ -281,7 +282,7 @@ def _names(
 ) -> list[str]:
     if fit_torque_scale is not None:
         return ["wear_coefficient"] + (["torque_scale"] if fit_torque_scale else [])
-    names = [n.strip() for n in fit.split(",")] if isinstance(fit, str) else list(fit)
+    names = split_list(fit)
     if tuple(names) == DEFAULT_FIT and data.quantity != "friction_torque":
         names = ["wear_coefficient"]
     return names

@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
+from functools import partial
 from types import ModuleType
 from typing import Any, ClassVar
 
@@ -47,6 +48,7 @@ from ballscrew.calibration.result import CalibrationResult, WearHistory
 from ballscrew.calibration.search import DIFF_STEP, SCAN_STEPS, covariance
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import InputError
+from ballscrew.units import split_list
 
 __all__ = ["JointCalibrationResult", "calibrate_joint", "fit_joint"]
 
@@ -206,7 +208,8 @@ def fit_joint(
         part.check_bracket(x[i], np.array(lower)[i], np.array(upper)[i])
     r = residuals(x)
     what = " and ".join(described(name) for name in names) + " together"
-    cov = covariance(difference(x), r, n, p, source, what)
+    central = stacked(lambda part: partial(part.jacobian.difference, central=True))
+    cov = covariance(central(x), r, n, p, source, what)
     warn_correlated(cov, names, source)
     noise = scale * math.sqrt(float(r @ r) / (n - p))
     histories = tuple(
@@ -265,11 +268,11 @@ def calibrate_joint(
     quantities = sorted({d.quantity for d in data})
     if len(quantities) > 1:
         raise InputError("--measured", ", ".join(quantities), "histories of one quantity")
-    shared_names = _split_names(shared)
+    shared_names = split_list(shared)
     if separate is None:
         separate_names = ["torque_offset"] if quantities[0] == "friction_torque" else []
     else:
-        separate_names = _split_names(separate)
+        separate_names = split_list(separate)
     both = set(shared_names) & set(separate_names)
     if both:
         raise InputError("--separate", ", ".join(sorted(both)), "names not also shared")
@@ -319,11 +322,6 @@ def calibrate_joint(
 
 def _with_case(result: CalibrationResult, case: Any) -> CalibrationResult:
     return replace(result, case=case, calibrated_range=programme_range(case))
-
-
-def _split_names(names: Sequence[str] | str) -> list[str]:
-    items = names.split(",") if isinstance(names, str) else list(names)
-    return [n.strip() for n in items if n.strip()]
 
 
 class _SharedRuns:

@@ -57,6 +57,7 @@ from ballscrew.calibration.search import (
     solve_least_squares,
 )
 from ballscrew.errors import InputError
+from ballscrew.units import split_list
 
 __all__ = [
     "CORRELATION_LIMIT",
@@ -199,15 +200,22 @@ class _SecantJacobian:
         h = self.diff_step
         return [-h if x[i] + h > top else h for i, top in enumerate(self.upper)]
 
-    def difference(self, x: np.ndarray) -> np.ndarray:
-        """The Jacobian at ``x`` by forward differences (p model runs, cached)."""
+    def difference(self, x: np.ndarray, central: bool = False) -> np.ndarray:
+        """The Jacobian at ``x`` by forward differences (p model runs, cached), or by central
+        ones (2p runs; one-sided at an upper bound) for the covariance: a forward column's
+        O(h) error e biases the standard errors by about e/(1 − ρ²) where parameters correlate
+        by ρ (2 % at h = 0.01 and ρ ≈ 0.99), a central column's error is O(h²)."""
         x = np.array(x, dtype=float)
         here = self.model_at(x)
         columns = []
         for i, h in enumerate(self.steps(x)):
-            shifted = x.copy()
-            shifted[i] += h
-            columns.append((self.model_at(shifted) - here) / h)
+            ahead, behind = x.copy(), x.copy()
+            ahead[i] += h
+            if central and h > 0.0:
+                behind[i] -= h
+                columns.append((self.model_at(ahead) - self.model_at(behind)) / (2.0 * h))
+            else:
+                columns.append((self.model_at(ahead) - here) / h)
         self.x, self.values = x, here
         self.columns = np.column_stack(columns) if columns else np.zeros((here.size, 0))
         return self._full(x)
@@ -484,7 +492,7 @@ def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
     :data:`CORRELATION_LIMIT` in magnitude (the data hardly separate them)."""
     for pair, r in correlations(cov, names).items():
         if abs(r) > CORRELATION_LIMIT:
-            a, b = (described(n) for n in pair.split(","))
+            a, b = (described(n) for n in split_list(pair))
             warnings.warn(
                 f"{source}: the data hardly separate the {a} and the {b} ({pair}: correlation "
                 f"{r:+.3f} from the covariance): one trades off against the other, so each "
@@ -559,7 +567,8 @@ def fit_parameters(
     )
     part.check_bracket(x, lower, upper)
     r = part.residuals(x)
-    cov = _covariance(part.jacobian.difference(x), r, n_fit, part.names, data.source)
+    jac = part.jacobian.difference(x, central=True)
+    cov = _covariance(jac, r, n_fit, part.names, data.source)
     warn_correlated(cov, part.names, data.source)
     noise = part.scale * math.sqrt(float(r @ r) / (n_fit - p))
     return part.result(x, cov, noise, message, scanned)

@@ -8,7 +8,7 @@ from typing import Annotated, Any
 import typer
 
 from ballscrew.commands._common import CaseArg, Output, log, writes_results
-from ballscrew.units import format_number
+from ballscrew.units import format_number, split_list
 
 MeasuredOpt = Annotated[
     list[Path],
@@ -90,7 +90,7 @@ def calibrate(
         raise InputError("--measured", "", "one or more CSV files")
     names: tuple[str, ...] = DEFAULT_FIT if len(measured) == 1 else ("wear_coefficient",)
     if fit is not None:
-        names = tuple(n.strip() for n in fit.split(",") if n.strip())
+        names = tuple(split_list(fit))
     if fit_torque_scale and "torque_scale" not in names:
         names = (*names, "torque_scale")
     data = [read_measured(m, min_points=2) for m in measured]
@@ -102,7 +102,7 @@ def calibrate(
 
     check_names(names, data[0])
     if separate:
-        check_names([n.strip() for n in separate.split(",") if n.strip()], data[0], "--separate")
+        check_names(split_list(separate), data[0], "--separate")
     if len(data) > 1:
         _joint(case_file, case, measured, data, names, separate, fit_until, output)
         return

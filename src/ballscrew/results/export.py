@@ -31,6 +31,7 @@ from ballscrew.case.inputs import input_rows
 from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
 from ballscrew.results.folder import MARKER_NAME, SUMMARY_NAME, writing
+from ballscrew.units import split_list
 
 __all__ = ["FORMATS", "export_results", "parse_formats"]
 
@@ -45,8 +46,7 @@ _MATLAB_NAME = 63  # namelengthmax of MATLAB
 
 def parse_formats(text: str | Sequence[str]) -> list[str]:
     """``"csv,xlsx"`` or ``["csv", "xlsx"]`` → the formats, checked; unknown → InputError."""
-    items = text.split(",") if isinstance(text, str) else list(text)
-    formats = [f.strip().lower() for f in items if f.strip()]
+    formats = [f.lower() for f in split_list(text)]
     for name in formats:
         if name not in FORMATS:
             raise InputError("--export", name, f"one of {', '.join(FORMATS)}")

@@ -10,7 +10,7 @@ import numpy as np
 
 from ballscrew.case import Case, CaseError, with_overrides
 from ballscrew.case.loader import check_field_path, field_spec
-from ballscrew.units import format_number, to_si
+from ballscrew.units import format_number, split_list, to_si
 
 
 @dataclass(frozen=True)
@@ -56,7 +56,7 @@ def parse_axis(text: str) -> SweepAxis:
                 raise ValueError(f"NUM = {count} is not in [1, {MAX_AXIS_POINTS}]")
             values = np.linspace(to_si(start.strip(), kind), to_si(stop.strip(), kind), count)
         else:
-            values = np.array([to_si(v.strip(), kind) for v in spec.split(",") if v.strip()])
+            values = np.array([to_si(v, kind) for v in split_list(spec)])
     except ValueError as exc:
         raise CaseError(
             [
