@@ -654,8 +654,9 @@ def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> np
     inside = _inside([windows[b] for b in windowed], h.shape[1:], xp)
     g_bar = np.zeros(len(windowed))
     if load:
-        contact = inside & (p[rows] > 0.0)
-        g_bar = _host(_sums(xp.where(contact, q, 0.0))) / np.maximum(_host(_sums(contact)), 1.0)
+        contact = p[rows] > 0.0
+        contact &= inside
+        g_bar = _host(_dot(q, contact)) / np.maximum(_host(_sums(contact)), 1.0)
     xp.copyto(q, xp.inf, where=inside)
     clear[windowed] = _host(q.min(axis=(1, 2))) >= g_bar
     return clear
