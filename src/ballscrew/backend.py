@@ -37,11 +37,11 @@ import threading
 import time
 import weakref
 from collections import OrderedDict
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 from functools import cache
 from types import ModuleType
-from typing import Any, Protocol
+from typing import Any, Protocol, TypeVar
 
 import numpy as np
 import scipy.fft
@@ -62,6 +62,7 @@ __all__ = [
     "fft_pool",
     "fft_threads",
     "limited_fft_threads",
+    "map_chunks",
     "padded_rfft",
     "single_thread_pools",
 ]
@@ -136,6 +137,32 @@ def fft_pool() -> ThreadPoolExecutor:
     """Threads that share out the grids or contacts of a stack (FFTW, pocketfft and NumPy's
     element-wise loops release the GIL while they run); each runs with one FFT thread."""
     return ThreadPoolExecutor(MAX_FFT_THREADS, thread_name_prefix="ballscrew-fft")
+
+
+_T = TypeVar("_T")
+
+
+def map_chunks(function: Callable[[slice], _T], size: int, threads: int) -> list[_T]:
+    """``function(rows)`` for ``threads`` runs of consecutive rows of a leading batch axis of
+    ``size``, at once in :func:`fft_pool` threads of one FFT thread each; the results in the order
+    of the rows.
+
+    The runs are those of ``numpy.array_split`` (sizes differ by at most one; an empty run is
+    skipped). With ``threads`` ≤ 1 (or one row) ``function(slice(0, size))`` runs in the calling
+    thread under its own FFT thread limit. An exception of a run is raised here. Inside a run
+    :func:`fft_threads` is 1, so a nested call that takes its ``threads`` from it stays in its
+    thread and never waits on the pool it runs in.
+    """
+    if threads <= 1 or size <= 1:
+        return [function(slice(0, size))]
+    split = np.array_split(np.arange(size), threads)
+    runs = [slice(int(c[0]), int(c[-1]) + 1) for c in split if c.size]
+
+    def run(rows: slice) -> _T:
+        with limited_fft_threads(1):
+            return function(rows)
+
+    return list(fft_pool().map(run, runs))
 
 
 @contextlib.contextmanager

@@ -157,3 +157,40 @@ def test_batched_solver_with_per_contact_cells_runs_on_cupy_arrays():
         np.testing.assert_allclose(
             cupy.asnumpy(gpu.pressure), cpu.pressure, atol=1e-9 * cpu.peak_pressure
         )
+
+
+def _rows_seen(rows):
+    """What a run of map_chunks saw: its rows, its thread and its FFT threads."""
+    return list(range(rows.start, rows.stop)), threading.current_thread(), backend.fft_threads()
+
+
+def test_map_chunks_keeps_the_order_of_the_rows_in_pool_threads_of_one_fft_thread(monkeypatch):
+    monkeypatch.setenv("BALLSCREW_FFT_THREADS", "4")
+    runs = backend.map_chunks(_rows_seen, 10, 3)
+    assert [rows for rows, _, _ in runs] == [[0, 1, 2, 3], [4, 5, 6], [7, 8, 9]]
+    assert all(t.name.startswith("ballscrew-fft") and fft == 1 for _, t, fft in runs)
+    # More threads than rows: one row a run, no empty run.
+    assert [rows for rows, _, _ in backend.map_chunks(_rows_seen, 3, 8)] == [[0], [1], [2]]
+
+
+def test_map_chunks_on_one_thread_runs_in_the_caller_under_its_limit(monkeypatch):
+    monkeypatch.setenv("BALLSCREW_FFT_THREADS", "4")
+    for size, threads in ((10, 1), (1, 4), (0, 4)):
+        [(rows, thread, fft)] = backend.map_chunks(_rows_seen, size, threads)
+        assert rows == list(range(size)) and thread is threading.current_thread() and fft == 4
+
+
+def test_map_chunks_raises_the_exception_of_a_run():
+    def fail_on_seven(rows):
+        if rows.start <= 7 < rows.stop:
+            raise ValueError("row 7")
+        return rows
+
+    with pytest.raises(ValueError, match="row 7"):
+        backend.map_chunks(fail_on_seven, 10, 4)
+    assert backend.map_chunks(fail_on_seven, 7, 4) == [
+        slice(0, 2),
+        slice(2, 4),
+        slice(4, 6),
+        slice(6, 7),
+    ]

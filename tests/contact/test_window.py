@@ -102,3 +102,72 @@ def test_only_the_contact_that_outgrows_its_window_goes_on_on_the_whole_grid(mon
         np.testing.assert_allclose(together.pressure, alone.pressure, atol=1e-10 * reference.p0)
         exact = DCFFTOperator(gap.shape, dx, dx, E_STAR).apply(together.pressure)
         np.testing.assert_allclose(together.displacement, exact, rtol=0, atol=1e-12 * exact.max())
+
+
+def brute_spans(mask):
+    """First and last + 1 row and column holding a true cell, cell by cell (None if none)."""
+    nx, ny = mask.shape[-2:]
+    rows = [i for i in range(nx) if mask[..., i, :].any()]
+    cols = [j for j in range(ny) if mask[..., :, j].any()]
+    return ((rows[0], rows[-1] + 1), (cols[0], cols[-1] + 1)) if rows else None
+
+
+def test_spans_of_a_mask_equal_a_brute_force_search():
+    """Random masks of one grid and of a stack, empty, full, a single cell in each corner and
+    the middle (the grids are not periodic: no span wraps around an edge)."""
+    rng = np.random.default_rng(11)
+    masks = [rng.random(shape) < density for shape in ((9, 13), (3, 7, 5), (1, 1), (4, 16, 16))
+             for density in (0.0, 0.02, 0.3, 1.0)]  # fmt: skip
+    for i, j in ((0, 0), (0, 12), (8, 0), (8, 12), (4, 6)):
+        single = np.zeros((9, 13), dtype=bool)
+        single[i, j] = True
+        masks += [single, np.stack([np.zeros_like(single), single])]
+    for mask in masks:
+        assert preconditioned._spans(mask) == brute_spans(mask), mask.shape
+
+
+def outside_clear_reference(h, u, p, windows, load):
+    """The window check contact by contact: ḡ = mean of u + h over the contact cells of the window
+    (0 under displacement control), and whether every cell outside the window has u + h ≥ ḡ."""
+    clear = []
+    for b, window in enumerate(windows):
+        if window is None:
+            clear.append(True)
+            continue
+        q = u[b] + h[b]
+        contact = np.zeros(q.shape, dtype=bool)
+        contact[window] = p[b][window] > 0.0
+        g_bar = q[contact].mean() if load and contact.any() else 0.0
+        outside = np.ones(q.shape, dtype=bool)
+        outside[window] = False
+        clear.append(bool(q[outside].min() >= g_bar))
+    return clear
+
+
+def test_outside_clear_of_a_batch_equals_the_check_contact_by_contact():
+    """Windows of different sizes and places (one at an edge, one missing), pressures with and
+    without cells in the window, under load and displacement control; both answers occur."""
+    rng = np.random.default_rng(5)
+    batch, shape = 7, (24, 20)
+    windows = [(slice(2, 10), slice(3, 15)), None, (slice(0, 24), slice(12, 20)),
+               (slice(5, 6), slice(5, 6)), (slice(10, 22), slice(0, 8)),
+               (slice(4, 12), slice(4, 12)), (slice(8, 16), slice(2, 18))]  # fmt: skip
+    h = rng.random((batch, *shape))
+    u = rng.random((batch, *shape)) - 0.5
+    p = np.where(rng.random((batch, *shape)) < 0.4, rng.random((batch, *shape)), 0.0)
+    p[5] = 0.0  # no contact cell: ḡ = 0
+    for b, window in enumerate(windows):  # outside the window u + h from about ḡ − 0.4 upwards
+        if window is not None:
+            outside = np.ones(shape, dtype=bool)
+            outside[window] = False
+            h[b][outside] += 0.3 * b - 0.6
+    answers = []
+    for load in (True, False):
+        clear = preconditioned._outside_clear(h, u, p, windows, load)
+        assert clear.dtype == bool and list(clear) == outside_clear_reference(
+            h, u, p, windows, load
+        )
+        answers += list(clear)
+    assert True in answers and False in answers
+    none = preconditioned._outside_clear(h, u, p, [None] * batch, True)
+    assert none.all()

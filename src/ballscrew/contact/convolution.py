@@ -17,7 +17,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
-from ballscrew.backend import fft_pool, fft_threads, limited_fft_threads, padded_rfft
+from ballscrew.backend import fft_threads, map_chunks, padded_rfft
 from ballscrew.contact._validation import finite_grid
 from ballscrew.contact.influence import love_coefficients
 
@@ -191,25 +191,18 @@ def _apply_each(operator: Callable[[int], DCFFTOperator], pressures: Any, out: A
     """NumPy: u = K ∗ p of grid b by ``operator(b)``, grid after grid (measured on 2 cores as fast
     as or faster than scipy's batched transform of the stack at 32 × 128², and each u is then
     bit-identical to a single solve's), the stack split between
-    :func:`~ballscrew.backend.fft_threads` threads of one FFT thread each (grids of fewer than
-    512² padded points get one FFT thread, so one core, otherwise)."""
+    :func:`~ballscrew.backend.fft_threads` threads of one FFT thread each by
+    :func:`~ballscrew.backend.map_chunks` (grids of fewer than 512² padded points get one FFT
+    thread, so one core, otherwise)."""
     threads = min(fft_threads(4 * pressures.size), len(pressures))
     first = operator(0)  # every grid of the stack has the same shape and precision
 
-    def each(chunk: Any) -> None:  # one transform lookup per chunk, not per grid
+    def each(rows: slice) -> None:  # one transform lookup per run, not per grid
         transform = padded_rfft(first.shape, first.xp, first.dtype)
-        for b in chunk:
+        for b in range(rows.start, rows.stop):
             operator(b)._apply_with(transform, pressures[b], out[b])
 
-    if threads == 1:
-        each(range(len(pressures)))
-        return out
-
-    def rows(chunk: Any) -> None:  # in a pool thread, one FFT thread
-        with limited_fft_threads(1):
-            each(chunk)
-
-    list(fft_pool().map(rows, np.array_split(np.arange(len(pressures)), threads)))
+    map_chunks(each, len(pressures), threads)
     return out
 
 

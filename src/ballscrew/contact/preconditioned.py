@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 import scipy.fft
 
-from ballscrew.backend import array_module, fft_pool, fft_threads, limited_fft_threads
+from ballscrew.backend import array_module, fft_threads, map_chunks
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 
 __all__ = [
@@ -361,13 +361,24 @@ def _support(p: Any) -> tuple[slice, slice]:
     """Rows and columns of the (B, nx, ny) stack ``p`` that hold a pressure in any grid, widened by
     a cell on each side: outside them the interpolated pressure of :func:`_refine_axis` is zero,
     inside it is that of the whole grids (a zero border cell stands for the repeated edge)."""
-    xp = array_module(p)
-    spans = []
-    for axis, n in ((2, p.shape[1]), (1, p.shape[2])):
-        hit = xp.flatnonzero((p > 0.0).any(axis=(0, axis)))
-        lo, hi = (int(hit[0]), int(hit[-1]) + 1) if hit.size else (0, n)
-        spans.append(slice(max(lo - 1, 0), min(hi + 1, n)))
-    return spans[0], spans[1]
+    spans = _spans(p > 0.0) or ((0, p.shape[1]), (0, p.shape[2]))
+    rows, cols = (
+        slice(max(lo - 1, 0), min(hi + 1, n))
+        for (lo, hi), n in zip(spans, p.shape[1:], strict=True)
+    )
+    return rows, cols
+
+
+def _spans(mask: Any) -> tuple[tuple[int, int], tuple[int, int]] | None:
+    """The rows and the columns ``(first, last + 1)`` that hold a true cell of the (..., nx, ny)
+    ``mask`` in any of its grids; None if no cell is true."""
+    xp = array_module(mask)
+    lead = tuple(range(mask.ndim - 2))
+    rows = xp.flatnonzero(mask.any(axis=(*lead, mask.ndim - 1)))
+    if not rows.size:
+        return None
+    cols = xp.flatnonzero(mask.any(axis=(*lead, mask.ndim - 2)))
+    return (int(rows[0]), int(rows[-1]) + 1), (int(cols[0]), int(cols[-1]) + 1)
 
 
 def _hertz_start(h: Any, setting: _Setting) -> Any:
@@ -466,20 +477,18 @@ def _solve_shared(
     threads: int,
 ) -> BatchIterate:
     """:func:`_solve` on ``threads`` runs of consecutive contacts at once, each in a pool thread of
-    one FFT thread. The contacts of a stack are independent CGs, so each result is the one of its
-    contact alone; sharing whole solves, not only their transforms, also puts the element-wise
-    work and the coarse grids on both cores (measured on 2 cores at 32 × 128²:
-    ``docs/benchmarks.md``)."""
-    runs = [slice(c[0], c[-1] + 1) for c in np.array_split(np.arange(len(h)), threads)]
+    one FFT thread (:func:`~ballscrew.backend.map_chunks`). The contacts of a stack are
+    independent CGs, so each result is the one of its contact alone; sharing whole solves, not
+    only their transforms, also puts the element-wise work and the coarse grids on both cores
+    (measured on 2 cores at 32 × 128²: ``docs/benchmarks.md``)."""
 
     def run(rows: slice) -> BatchIterate:
-        with limited_fft_threads(1):
-            return _solve(
-                h[rows], setting.take(rows), None if initial is None else initial[rows], nested,
-                None if operator is None else operator.take(rows), check=True,
-            )  # fmt: skip
+        return _solve(
+            h[rows], setting.take(rows), None if initial is None else initial[rows], nested,
+            None if operator is None else operator.take(rows), check=True,
+        )  # fmt: skip
 
-    parts = list(fft_pool().map(run, runs))
+    parts = map_chunks(run, len(h), threads)
 
     def joined(name: str) -> Any:
         return np.concatenate([getattr(part, name) for part in parts])
@@ -615,14 +624,11 @@ and a whole-grid check at the end)."""
 def _window(p: Any) -> tuple[slice, slice] | None:
     """Rows and columns around the pressure ``p`` (nx, ny), with a margin, sized to fast FFT
     lengths; None if that is more than :data:`WINDOW_MAX_FRACTION` of the grid."""
-    xp = array_module(p)
-    support = p > 0.0
+    support = _spans(p > 0.0)
+    if support is None:
+        return None
     spans = []
-    for axis, n in ((1, p.shape[0]), (0, p.shape[1])):
-        hit = xp.flatnonzero(support.any(axis=axis))
-        if not hit.size:
-            return None
-        lo, hi = int(hit[0]), int(hit[-1]) + 1
+    for (lo, hi), n in zip(support, p.shape, strict=True):
         margin = max(WINDOW_MIN_MARGIN, int(np.ceil(WINDOW_MARGIN * (hi - lo))))
         size = min(scipy.fft.next_fast_len(hi - lo + 2 * margin, real=True), n)
         first = min(max((lo + hi - size) // 2, 0), n - size)
@@ -638,18 +644,32 @@ def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> np
     u + h over the contact set, all in the window, under load control; 0 under displacement
     control), so each window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits
     no cell)."""
-    xp = array_module(h)
+    windowed = [b for b, window in enumerate(windows) if window is not None]
     clear = np.ones(len(h), dtype=bool)  # a contact without a window was solved on its grid
-    for b, window in enumerate(windows):
-        if window is None:
-            continue
-        q = xp.add(u[b], h[b])
-        inside = q[window]
-        contact = p[b][window] > 0.0
-        g_bar = float(inside[contact].sum()) / max(int(contact.sum()), 1) if load else 0.0
-        inside.fill(xp.inf)
-        clear[b] = float(q.min()) >= g_bar
+    if not windowed:
+        return clear
+    xp = array_module(h)
+    rows = slice(None) if len(windowed) == len(h) else xp.asarray(windowed)
+    q = u[rows] + h[rows]
+    inside = _inside([windows[b] for b in windowed], h.shape[1:], xp)
+    g_bar = np.zeros(len(windowed))
+    if load:
+        contact = p[rows] > 0.0
+        contact &= inside
+        g_bar = _host(_dot(q, contact)) / np.maximum(_host(_sums(contact)), 1.0)
+    xp.copyto(q, xp.inf, where=inside)
+    clear[windowed] = _host(q.min(axis=(1, 2))) >= g_bar
     return clear
+
+
+def _inside(windows: list[tuple[slice, slice]], shape: tuple[int, int], xp: ModuleType) -> Any:
+    """(B, nx, ny) mask of the cells of each grid in its window."""
+    bounds = np.array([[w.start, w.stop] for window in windows for w in window])
+    bounds = xp.asarray(bounds.reshape(len(windows), 2, 2))  # (B, axis, start/stop)
+    rows, cols = (xp.arange(n) for n in shape)
+    in_rows = (bounds[:, 0, :1] <= rows) & (rows < bounds[:, 0, 1:])
+    in_cols = (bounds[:, 1, :1] <= cols) & (cols < bounds[:, 1, 1:])
+    return in_rows[:, :, None] & in_cols[:, None, :]
 
 
 _CACHED = 16

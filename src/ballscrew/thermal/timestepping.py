@@ -79,32 +79,66 @@ def factorize(
     csr = sp.csr_matrix(matrix)
     amg: list[pyamg.MultilevelSolver] = []  # built at the first solve that needs it
     jacobi = sp.diags(1.0 / csr.diagonal()) if jacobi_first else None
-    previous: list[NDArray[np.float64]] = []  # the last two solutions
-
-    def residual(b: NDArray[np.float64], x: NDArray[np.float64]) -> float:
-        return float(np.linalg.norm(b - csr @ x)) / (float(np.linalg.norm(b)) or 1.0)
+    steps = _WarmStarts(csr, rtol)
 
     def solve(b: NDArray[np.float64]) -> NDArray[np.float64]:
         nonlocal jacobi
-        # Successive solves are time steps: start from the linear extrapolation of the last two.
-        x0 = 2.0 * previous[1] - previous[0] if len(previous) == 2 else (previous or [None])[-1]
+        x0 = steps.start()
         if jacobi is not None:
             x, _ = cg(csr, b, x0=x0, rtol=rtol, maxiter=JACOBI_MAXITER, M=jacobi)
-            if residual(b, x) <= 10 * rtol:
-                previous[:] = [*previous[-1:], x]
+            if steps.accepts(b, x):
                 return x
             jacobi = None  # too slow a contraction for Jacobi: AMG from now on
         if not amg:
             amg.append(pyamg.smoothed_aggregation_solver(csr, symmetry="symmetric"))
         residuals: list[float] = []
         x = amg[0].solve(b, x0=x0, tol=rtol, accel="cg", maxiter=500, residuals=residuals)
-        res = residual(b, x)
-        if not res <= 10 * rtol:
-            raise ConvergenceError("pyamg smoothed-aggregation CG", len(residuals), res, rtol)
-        previous[:] = [*previous[-1:], x]
-        return x
+        return steps.accept("pyamg smoothed-aggregation CG", b, x, len(residuals))
 
     return solve
+
+
+class _WarmStarts:
+    """What the iterative solves of one matrix share: the warm start and the acceptance.
+
+    Successive solves are time steps, so each starts from the linear extrapolation
+    2xₙ₋₁ − xₙ₋₂ of the last two accepted solutions (the last one after the first solve). A
+    solution is accepted when ‖b − Ax‖ ≤ 10 rtol‖b‖: the iterative solvers stop on their own
+    (preconditioned or restarted) residual estimate, which may differ from the true one.
+    """
+
+    def __init__(self, matrix: sp.csr_matrix, rtol: float) -> None:
+        self.matrix = matrix
+        self.rtol = rtol
+        self.previous: list[NDArray[np.float64]] = []  # the last two accepted solutions
+
+    def start(self) -> NDArray[np.float64] | None:
+        """Initial guess of the next solve (None before the first)."""
+        previous = self.previous
+        return 2.0 * previous[1] - previous[0] if len(previous) == 2 else (previous or [None])[-1]
+
+    def residual(self, b: NDArray[np.float64], x: NDArray[np.float64]) -> float:
+        """‖b − Ax‖ / ‖b‖ (‖b − Ax‖ for b = 0)."""
+        return float(np.linalg.norm(b - self.matrix @ x)) / (float(np.linalg.norm(b)) or 1.0)
+
+    def accepts(self, b: NDArray[np.float64], x: NDArray[np.float64]) -> bool:
+        """Whether ``x`` solves A x = b within 10 rtol; if so, it is kept for the warm start."""
+        return self._kept(x, self.residual(b, x))
+
+    def accept(
+        self, method: str, b: NDArray[np.float64], x: NDArray[np.float64], iterations: int
+    ) -> NDArray[np.float64]:
+        """``x`` if :meth:`accepts` it, else a :class:`ConvergenceError` of ``method``."""
+        residual = self.residual(b, x)
+        if not self._kept(x, residual):
+            raise ConvergenceError(method, iterations, residual, self.rtol)
+        return x
+
+    def _kept(self, x: NDArray[np.float64], residual: float) -> bool:
+        if not residual <= 10 * self.rtol:
+            return False
+        self.previous[:] = [*self.previous[-1:], x]
+        return True
 
 
 def solve_steady(
@@ -185,8 +219,8 @@ def _bordered(matrix: sp.csr_matrix, border: int, rtol: float) -> Solve:
     Wathen 2005, *Finite Elements and Fast Iterative Solvers*; preconditioned GMRES:
     Saad 2003, *Iterative Methods for Sparse Linear Systems*, Sec. 9.3). With an exact
     K⁻¹ the preconditioned matrix is the identity plus a rank of the border, so GMRES needs
-    about as many iterations as AMG-CG on K. Stops at ‖b − Ax‖ ≤ rtol‖b‖; the result is
-    accepted within 10 rtol (checked), like the AMG path.
+    about as many iterations as AMG-CG on K. Stops at ‖b − Ax‖ ≤ rtol‖b‖; warm start and
+    acceptance (within 10 rtol, checked) are those of the AMG path (:class:`_WarmStarts`).
     """
     import pyamg
 
@@ -201,10 +235,9 @@ def _bordered(matrix: sp.csr_matrix, border: int, rtol: float) -> Solve:
         return np.concatenate([x1, g.solve(b[border:] - f @ x1)])
 
     preconditioner = LinearOperator((n, n), matvec=apply, dtype=float)
-    previous: list[NDArray[np.float64]] = []
+    steps = _WarmStarts(matrix, rtol)
 
     def solve(b: NDArray[np.float64]) -> NDArray[np.float64]:
-        x0 = 2.0 * previous[1] - previous[0] if len(previous) == 2 else (previous or [None])[-1]
         count = [0]
 
         def counted(_: object) -> None:
@@ -213,7 +246,7 @@ def _bordered(matrix: sp.csr_matrix, border: int, rtol: float) -> Solve:
         x, _ = gmres(
             matrix,
             b,
-            x0=x0,
+            x0=steps.start(),
             rtol=rtol,
             atol=0.0,
             restart=GMRES_RESTART,
@@ -222,10 +255,6 @@ def _bordered(matrix: sp.csr_matrix, border: int, rtol: float) -> Solve:
             callback=counted,
             callback_type="pr_norm",
         )
-        res = float(np.linalg.norm(b - matrix @ x)) / (float(np.linalg.norm(b)) or 1.0)
-        if not res <= 10 * rtol:
-            raise ConvergenceError("AMG block-preconditioned GMRES", count[0], res, rtol)
-        previous[:] = [*previous[-1:], x]
-        return x
+        return steps.accept("AMG block-preconditioned GMRES", b, x, count[0])
 
     return solve
