@@ -21,6 +21,7 @@ import math
 import re
 from collections.abc import Sequence
 from functools import cache
+from typing import Any
 
 import pint
 
@@ -203,12 +204,14 @@ def to_si(value: object, kind: str) -> float:
     return result
 
 
-def split_list(items: str | Sequence[str]) -> list[str]:
+def split_list(items: str | Sequence[Any]) -> list[Any]:
     """The items of a comma list given on the command line or in Python: ``"a, b"`` or
-    ``["a", " b"]`` → ``["a", "b"]``. Each item is stripped; empty items (``"a,,b"``, a trailing
-    comma, ``""``) are dropped, so the caller decides whether an empty list is an error."""
+    ``["a", " b"]`` → ``["a", "b"]``. Each text item is stripped; empty ones (``"a,,b"``, a
+    trailing comma, ``""``) are dropped, so the caller decides whether an empty list is an
+    error. Items that are not text pass unchanged, for the caller's check to name them."""
     parts = items.split(",") if isinstance(items, str) else list(items)
-    return [p.strip() for p in parts if p.strip()]
+    stripped = [p.strip() if isinstance(p, str) else p for p in parts]
+    return [p for p in stripped if p != ""]
 
 
 # --- Display in engineering units ---------------------------------------------------------------

@@ -121,7 +121,13 @@ def case_from_dict(
     if not isinstance(raw, Mapping):
         raise CaseError([f"expected tables of keys, not {type(raw).__name__}"], source)
     data = apply_overrides(raw, overrides or {}, source)
-    check_assumed_keys(data.get("assumed"), source)
+    check_assumed_keys(data, source)
+    if overrides and isinstance(data.get("assumed"), dict):  # a value written now is chosen
+        data["assumed"] = {
+            key: why
+            for key, why in data["assumed"].items()
+            if not any(key == k or key.startswith(f"{k}.") for k in map(str, overrides))
+        }
     try:
         case = Case.model_validate(data)
     except ValidationError as exc:
@@ -138,26 +144,55 @@ def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:
 
     The fields ``case`` left at their defaults stay marked unset (``model_fields_set``) unless
     an override writes them, so the defaults that are guesses are still reported as such."""
-    written = set(case.assumed) & set(overrides)
-    if written:  # a value written now is no longer an assumed one
-        kept = {key: why for key, why in case.assumed.items() if key not in written}
-        overrides = {**overrides, "assumed": kept}
     new = case_from_dict(case.model_dump(), overrides, source=case.name)
     _keep_unset(case, new, [str(key).split(".") for key in overrides])
     return new
 
 
-def check_assumed_keys(declared: Any, source: str = "case") -> None:
-    """Raise :class:`CaseError` unless every key of the ``[assumed]`` table names an input of
-    :class:`Case` (a list entry by its index, ``duty.0.stroke``)."""
-    for key in declared if isinstance(declared, Mapping) else ():
+def check_assumed_keys(data: Mapping[str, Any], source: str = "case") -> None:
+    """Raise :class:`CaseError` unless the ``[assumed]`` table of the raw case ``data`` maps
+    quoted dotted keys that name inputs of :class:`Case` (a list entry by an index that
+    exists, ``duty.0.stroke``) to reasons in quotes."""
+    declared = data.get("assumed", {})
+    example = '"screw.lead" = "why"'
+    if not isinstance(declared, Mapping):
+        problem = f"assumed = {declared!r} is not allowed: a table of {example} lines"
+        raise CaseError([problem], source)
+    for key, why in declared.items():
         keys = str(key).split(".")
+        where = f'assumed."{key}"'
+        if isinstance(why, Mapping):
+            problem = f"assumed.{key}: write the dotted key in quotes, e.g. {example}"
+            raise CaseError([problem], source)
+        if not all(keys):
+            problem = f"{where}: name an input by its dotted key, e.g. {example}"
+            raise CaseError([problem], source)
         if keys[0] == "assumed":
-            raise CaseError([f'assumed."{key}": name an input, not the [assumed] table'], source)
+            raise CaseError([f"{where}: name an input, not the [assumed] table"], source)
         try:
             check_field_path(keys, source)
         except CaseError as exc:
-            raise CaseError([f'assumed."{key}": {exc.problems[0]}'], source) from None
+            raise CaseError([f"{where}: {exc.problems[0]}"], source) from None
+        _check_entries_exist(keys, data, where, source)
+        if not (isinstance(why, str) and why.strip()):
+            problem = f"{where} = {why!r} is not allowed: a reason in quotes, e.g. {example}"
+            raise CaseError([problem], source)
+
+
+def _check_entries_exist(keys: list[str], data: Any, where: str, source: str) -> None:
+    """Raise :class:`CaseError` when a list index of ``keys`` names no entry of ``data``."""
+    node = data
+    for depth, key in enumerate(keys):
+        if isinstance(node, list):
+            if int(key) >= len(node):
+                entries = f"0 to {len(node) - 1}" if node else "none"
+                problem = f"{where}: {'.'.join(keys[:depth])} has no entry {key} ({entries})"
+                raise CaseError([problem], source)
+            node = node[int(key)]
+        elif isinstance(node, Mapping):
+            node = node.get(key)
+        else:
+            return
 
 
 def _keep_unset(old: Any, new: Any, written: list[list[str]]) -> None:

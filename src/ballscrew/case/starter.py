@@ -169,6 +169,12 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
         unsupported=_mm(0.9 * sheet.length),
         nut_length=_mm(nut_length),
+        nut_length_note="given" if sheet.nut_length is not None else (
+            "the loaded turns plus one lead at each end [ASSUMED]"
+        ),
+        assumed_nut_length="" if sheet.nut_length is not None else (
+            '"thermal.nut_length" = "the loaded turns plus one lead at each end"\n'
+        ),
         nut_od=_mm(1.75 * d0),
     )  # fmt: skip
     _check_case(text, sheet)
@@ -269,7 +275,7 @@ cells_across = 32                # grid cells across each Hertz contact (64 for 
 [thermal]
 model = "network"                # fast; "axisymmetric" for the finite-element model
 shaft_length = {length}
-nut_length = {nut_length}          # each nut: the loaded turns plus one lead at each end [ASSUMED]
+nut_length = {nut_length}          # each nut: {nut_length_note}
 nut_outer_diameter = {nut_od}  # 1.75 d0 [TYPICAL flange-nut body]
 ambient_temperature = "20 degC"
 
@@ -311,8 +317,7 @@ duration = "20 min"
 "surface.D" = "typical ground raceway (Gao et al. 2019)"
 "surface.G" = "typical ground raceway (Gao et al. 2019)"
 "medium.thermal_conductivity" = "typical mineral oil or grease 0.13-0.15 W/(m K)"
-{assumed_preload}"thermal.nut_length" = "the loaded turns plus one lead at each end"
 "thermal.nut_outer_diameter" = "1.75 d0, a typical flange-nut body"
 "design.unsupported_length" = "90 % of the shaft between the bearings"
 "duty" = "an illustrative cycle, not your machine's"
-"""
+{assumed_preload}{assumed_nut_length}"""
