@@ -8,7 +8,6 @@ from typing import Annotated, Any
 import typer
 
 from ballscrew.commands._common import CaseArg, Output, log, writes_results
-from ballscrew.units import format_number, split_list
 
 MeasuredOpt = Annotated[
     list[Path],
@@ -84,6 +83,7 @@ def calibrate(
     from ballscrew.calibration import calibrate as calibrate_case
     from ballscrew.calibration.report import fit_table
     from ballscrew.errors import InputError
+    from ballscrew.units import format_number, split_list
 
     case = output.load_case(case_file)
     if not measured:
@@ -132,6 +132,7 @@ def calibrate(
 def _si(value: float, unit: str) -> str:
     """An SI ``value`` in ``unit`` (N*m, N, m) in engineering units: 0.005094 N·m, 2.43 µm."""
     from ballscrew.results.display import engineering
+    from ballscrew.units import format_number
 
     shown, symbol = engineering(value, unit, "wear_depth" if unit == "m" else "")
     return f"{format_number(shown)} {symbol}".rstrip()
@@ -169,6 +170,7 @@ def _joint(
 
     from ballscrew.calibration import calibrate_joint
     from ballscrew.calibration.joint_report import fit_table
+    from ballscrew.units import format_number
 
     with output.claim(case_file, *measured):
         log.info("joint fit of %d histories: shared %s", len(data), ", ".join(names))
