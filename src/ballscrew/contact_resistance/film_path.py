@@ -56,9 +56,9 @@ def ellipse_gap_conductance(
         G_f = 2π λ_f √(R_x R_y) ln[(h_max + M)/(h0 + M)]                                (P2)
 
     With x = √(2R_x) s cosθ, y = √(2R_y) s sinθ the gap is h0 + s² and dA = 2√(R_x R_y) s ds dθ,
-    so the integral is elementary. It is the gap around an unloaded ball (h0 its clearance), and
-    a lower bound of a loaded contact's film with the same h0: the loaded gap
-    (:func:`hertz_separation`) is the paraboloid less δ − u ≥ 0, narrower. h_max ≤ h0 gives 0.
+    so the integral is elementary. It is the gap around an unloaded ball (h0 its clearance). A
+    loaded contact's gap (:func:`hertz_separation`) is narrower, the paraboloid less δ − u ≥ 0,
+    and its film conducts more (25 % on the reference screw). h_max ≤ h0 gives 0.
     """
     positive("conductivity", conductivity, "W/(m K)")
     positive("rx", rx, "m")
