@@ -202,3 +202,12 @@ def test_thermal_model_gets_the_film_path() -> None:
     nut = result.nuts[0]
     cons = (contact_constriction(nut.screw, lam) + contact_constriction(nut.nut, lam)) / nut.balls
     assert interfaces[0].constriction_resistance == pytest.approx(cons)
+
+
+def test_results_report_both_paths() -> None:
+    """summary() and the report carry the ball path with and without the films."""
+    result = _tcr(5000.0, "meniscus")
+    film = result.summary()["film_path"]
+    assert film["nuts"]["nut2"]["loaded"] is False
+    assert [s.title for s in result.report()][-1] == "Film path around the balls"
+    assert _tcr(0.0, "none").summary()["film_path"] is None

@@ -283,7 +283,8 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
 
 
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
-    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units."""
+    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units; with
+    ``[tcr] film_path`` also the ball path with the films (``heat_path_resistance``)."""
     result = screw_tcr(case)
     scalars = {
         "resistance": (result.resistance, "K/W"),
@@ -297,4 +298,6 @@ def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
         scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")
         if case.loads.distribution == "elastic":
             scalars[f"nut{nut.index}_ball_load_spread"] = (nut.load_spread, "")
+    if result.films:
+        scalars["heat_path_resistance"] = (result.heat_path_resistance, "K/W")
     return scalars
