@@ -211,3 +211,17 @@ def test_results_report_both_paths() -> None:
     assert film["nuts"]["nut2"]["loaded"] is False
     assert [s.title for s in result.report()][-1] == "Film path around the balls"
     assert _tcr(0.0, "none").summary()["film_path"] is None
+
+
+@pytest.mark.parametrize(
+    ("field", "args"),
+    [("rx", (OIL, 0.0, RY, 1e-7, 1e-5)), ("h_max", (OIL, RX, RY, 1e-7, math.inf))],
+)
+def test_bad_film_inputs_are_refused(field: str, args: tuple[float, ...]) -> None:
+    """A non-positive radius or an infinite film edge is an InputError naming it, not a hang."""
+    h = hertz(RX, RY, E_STAR, 40.0)
+    with pytest.raises(InputError, match=field):
+        ellipse_gap_conductance(*args)
+    lam, rx, ry, h0, h_max = args
+    with pytest.raises(InputError, match=field):
+        loaded_film_conductance(lam, rx, ry, h, h0, h_max)

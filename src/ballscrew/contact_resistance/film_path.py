@@ -43,6 +43,18 @@ FILM_PATHS = ("none", "meniscus")
 """``tcr.film_path``: no film path (Gao et al.'s chain), or the film up to its meniscus."""
 
 
+def _check_film(
+    conductivity: float, rx: float, ry: float, h0: float, h_max: float, rarefaction: float
+) -> None:
+    """Refuse what (P1) cannot take: λ_f, R_x, R_y, h0 > 0, h_max ≥ 0 and M ≥ 0, all finite."""
+    positive("conductivity", conductivity, "W/(m K)")
+    positive("rx", rx, "m")
+    positive("ry", ry, "m")
+    positive("h0", h0, "m")
+    nonnegative("h_max", h_max, "m")
+    nonnegative("rarefaction", rarefaction, "m")
+
+
 def ellipse_gap_conductance(
     conductivity: float,
     rx: float,
@@ -60,11 +72,7 @@ def ellipse_gap_conductance(
     loaded contact's gap (:func:`hertz_separation`) is narrower, the paraboloid less δ − u ≥ 0,
     and its film conducts more (25 % on the reference screw). h_max ≤ h0 gives 0.
     """
-    positive("conductivity", conductivity, "W/(m K)")
-    positive("rx", rx, "m")
-    positive("ry", ry, "m")
-    positive("h0", h0, "m")
-    nonnegative("rarefaction", rarefaction, "m")
+    _check_film(conductivity, rx, ry, h0, h_max, rarefaction)
     if h_max <= h0:
         return 0.0
     ratio = (h_max + rarefaction) / (h0 + rarefaction)
@@ -115,9 +123,7 @@ def loaded_film_conductance(
     quadrant (the gap is symmetric). h0 is the film or roughness that separates the surfaces;
     it offsets the whole gap.
     """
-    positive("conductivity", conductivity, "W/(m K)")
-    positive("h0", h0, "m")
-    nonnegative("rarefaction", rarefaction, "m")
+    _check_film(conductivity, rx, ry, h0, h_max, rarefaction)
     if h_max <= h0:
         return 0.0
     a, b = hertz.a, hertz.b
