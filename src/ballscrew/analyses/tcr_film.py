@@ -111,14 +111,19 @@ def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: 
 def _edge(params: ScrewParameters, case: Case, side: Side, hertz: HertzContact, h0: float) -> float:
     """h_max: the gap at the inlet meniscus of a starved or greased supply, else (flooded, or a
     meniscus beyond it) the groove-bottom clearance [m]."""
-    geometry = params.geometry
-    clearance = groove_clearance(
-        geometry.ball_radius, geometry.groove_radius(side), geometry.contact_angle
-    )
+    clearance = _clearance(params, side)
     m = case.lubrication.meniscus
     if m is None:
         return clearance
     return min(clearance, meniscus_thickness(hertz, *_radii(params, side), m, h0))
+
+
+def _clearance(params: ScrewParameters, side: Side) -> float:
+    """Groove-bottom clearance of the ``side`` raceway [m]."""
+    geometry = params.geometry
+    return groove_clearance(
+        geometry.ball_radius, geometry.groove_radius(side), geometry.contact_angle
+    )
 
 
 def _radii(params: ScrewParameters, side: Side) -> tuple[float, float]:
@@ -135,7 +140,8 @@ def nut_films(
     A loaded contact's film fills the deformed Hertz gap from h0 (:func:`_separation`) to h_max
     (:func:`_edge`). An unloaded ball sits in the paraboloid gap at h0 = σ (the clearance the
     loaded nut's further deflection opens is left out: an upper bound) and is wetted up to the
-    h_max of the loaded contact on the same raceway (the same oil layer on the track).
+    h_max of the loaded contact on the same raceway (the same oil layer on the track; the
+    groove-bottom clearance when no nut is loaded).
     """
     lam, rarefaction = params.lubrication.thermal_conductivity, params.lubrication.rarefaction
     radii = {side: _radii(params, side) for side in SIDES}
@@ -159,8 +165,9 @@ def nut_films(
         paths = {}
         for side in SIDES:
             h0 = gaussian_joint(params, case.tcr, side).sigma
-            g = ellipse_gap_conductance(lam, *radii[side], h0, edges[side], rarefaction)
-            paths[side] = FilmPath(g, h0, edges[side])
+            h_max = edges.get(side, _clearance(params, side))  # no loaded nut: the groove's
+            g = ellipse_gap_conductance(lam, *radii[side], h0, h_max, rarefaction)
+            paths[side] = FilmPath(g, h0, h_max)
         films.append(
             NutFilm(index, params.balls_per_nut, paths["screw"], paths["nut"], False, radii)
         )
