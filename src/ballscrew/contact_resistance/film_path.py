@@ -150,7 +150,7 @@ def loaded_film_conductance(
             epsrel=1e-8,
         )
         total += w * inner
-    return 4.0 * conductivity * a * b * 0.25 * math.pi * total
+    return float(math.pi * conductivity * a * b * total)
 
 
 def meniscus_thickness(
