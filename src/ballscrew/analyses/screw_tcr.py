@@ -12,6 +12,7 @@ so one solve serves every contact of equal load and side.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from types import ModuleType
 from typing import ClassVar
@@ -21,6 +22,13 @@ from ballscrew.analyses.ball_contact import RacewayContact, solve_raceway_contac
 from ballscrew.analyses.ball_loads import chain_ball_loads
 from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
 from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.analyses.tcr_film import (
+    NutFilm,
+    NutHeatPath,
+    conductivities,
+    heat_paths,
+    nut_films,
+)
 from ballscrew.analyses.tcr_models import ModelSpread, ModelTCR, compare_models
 from ballscrew.case import Case, TCRSpec
 from ballscrew.contact_resistance import (
@@ -107,6 +115,9 @@ class ScrewTCR(Presented):
     """Every model of ``[tcr] models`` on the same contacts: name → R and R″."""
     uncertainty: ModelSpread | None = None
     """Spread of R″ over :attr:`models` (None with fewer than two models)."""
+    films: tuple[NutFilm, ...] = ()
+    """With ``[tcr] film_path``: the lubricant film around the balls of every nut, a
+    lifted-off one included (empty without)."""
 
     analysis: ClassVar[str] = "tcr"
     presentation: ClassVar[ModuleType] = tcr_report
@@ -129,6 +140,19 @@ class ScrewTCR(Presented):
     @property
     def title(self) -> str:
         return f"Thermal contact resistance: {self.case.name}"
+
+    def heat_paths(self, constriction: bool = True) -> tuple[NutHeatPath, ...]:
+        """Each nut's ball path, micro TCR (+ macro-constriction) with the film in parallel
+        (P3); empty without ``[tcr] film_path``."""
+        lam = conductivities(self.case)
+        return heat_paths(self.nuts, self.films, lam, constriction=constriction)
+
+    @property
+    def heat_path_resistance(self) -> float:
+        """Screw-to-nut resistance of all balls with the film path and the macro-constriction,
+        the nuts in parallel [K/W] (NaN without ``[tcr] film_path``)."""
+        paths = self.heat_paths()
+        return float(parallel_resistance([p.resistance for p in paths])) if paths else math.nan
 
 
 def tcr_model(
@@ -241,6 +265,9 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
             )
         area = sum(n.apparent_area for n in nuts)
         compared, spread = compare_models(params, case.tcr, models, nuts, area)
+        films = ()
+        if case.tcr.film_path != "none":
+            films = nut_films(case, params, nuts, [n.index for n in params.nuts])
     return ScrewTCR(
         case_name=case.name,
         variant=models["screw"].variant,
@@ -251,11 +278,13 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         warnings=tuple(dict.fromkeys((*early, *messages))),
         models=compared,
         uncertainty=spread,
+        films=films,
     )
 
 
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
-    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units."""
+    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units; with
+    ``[tcr] film_path`` also the ball path with the films (``heat_path_resistance``)."""
     result = screw_tcr(case)
     scalars = {
         "resistance": (result.resistance, "K/W"),
@@ -269,4 +298,6 @@ def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
         scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")
         if case.loads.distribution == "elastic":
             scalars[f"nut{nut.index}_ball_load_spread"] = (nut.load_spread, "")
+    if result.films:
+        scalars["heat_path_resistance"] = (result.heat_path_resistance, "K/W")
     return scalars

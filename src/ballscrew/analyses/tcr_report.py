@@ -98,6 +98,7 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
             for name, m in result.models.items()
         },
         "uncertainty": _spread_summary(result),
+        "film_path": _film_summary(result),
         "options": {
             "variant": result.variant,
             "cell_size": value(result.cell_size, "m") if result.cell_size else "solver grid",
@@ -109,6 +110,34 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
             "correlation_roughness": _roughness_summary(case),
             "medium_conductivity": value(case.medium.thermal_conductivity, "W/(m*K)"),
             "contact_gap_model": case.numerics.gap_model,
+            "film_path": case.tcr.film_path,
+        },
+    }
+
+
+def _film_summary(result: ScrewTCR) -> dict[str, Any] | None:
+    """With ``[tcr] film_path``: each nut's films and its ball path with and without them."""
+    if not result.films:
+        return None
+    paths = {p.index: p for p in result.heat_paths()}
+    return {
+        "resistance": value(result.heat_path_resistance, "K/W"),
+        "nuts": {
+            f"nut{f.index}": {
+                "loaded": f.loaded,
+                "film_conductance": value(f.conductance, "W/K"),
+                "contacts": {
+                    side: {
+                        "conductance": value(getattr(f, side).conductance, "W/K"),
+                        "h0": value(getattr(f, side).h0, "m"),
+                        "h_max": value(getattr(f, side).h_max, "m"),
+                    }
+                    for side in SIDES
+                },
+                "resistance_without_film": value(paths[f.index].without_film, "K/W"),
+                "resistance": value(paths[f.index].resistance, "K/W"),
+            }
+            for f in result.films
         },
     }
 
@@ -270,6 +299,52 @@ def sections(result: ScrewTCR) -> list[Section]:
             ),
         ),
         *_models_section(result),
+        *_film_section(result),
+    ]
+
+
+def _film_section(result: ScrewTCR) -> list[Section]:
+    """With ``[tcr] film_path``: the films around the balls and the ball path with them."""
+    if not result.films:
+        return []
+    paths = {p.index: p for p in result.heat_paths()}
+    rows = tuple(
+        (
+            f"nut {f.index}" + ("" if f.loaded else " (lifted off)"),
+            f.screw.conductance,
+            f.nut.conductance,
+            f.screw.h0 * 1e6,
+            f.screw.h_max * 1e6,
+            paths[f.index].without_film,
+            paths[f.index].resistance,
+        )
+        for f in result.films
+    )
+    text = (
+        "The lubricant film around each ball outside its Hertz patch conducts in parallel with "
+        "the patch path (micro TCR plus macro-constriction), a lifted-off nut's balls through "
+        f"their films alone. Screw to nut through all balls: {result.heat_path_resistance:.4g} "
+        "K/W with the film path (theory manual: Film path around the ball)."
+    )
+    return [
+        Section(
+            "Film path around the balls",
+            paragraphs=(text,),
+            tables=(
+                Table(
+                    (
+                        "nut",
+                        "G_f screw [W/K]",
+                        "G_f nut [W/K]",
+                        "h0 [µm]",
+                        "h_max [µm]",
+                        "R without film [K/W]",
+                        "R with film [K/W]",
+                    ),
+                    rows,
+                ),
+            ),
+        )
     ]
 
 

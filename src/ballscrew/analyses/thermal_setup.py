@@ -21,6 +21,7 @@ from ballscrew.analyses.case_cache import CaseCache
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+from ballscrew.analyses.tcr_film import conductivities, contact_constriction, heat_paths
 from ballscrew.analyses.tcr_models import PATCH
 from ballscrew.analyses.thermal_cooling import (
     bore_coefficient,
@@ -31,7 +32,6 @@ from ballscrew.analyses.thermal_cooling import (
 from ballscrew.budget import check_memory
 from ballscrew.case import Case, with_overrides
 from ballscrew.case.thermal_spec import ThermalSpec
-from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.errors import InputError
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
 from ballscrew.thermal.boundary import fixed_point, mounting_coefficient
@@ -106,10 +106,15 @@ class NutInterface:
     """R″ = R·S of the TCR chain (A4) for this nut [m² K/W] (NaN for a given value)."""
     bore_area: float
     """Nominal bore area 2πR·L_nut the balls are smeared over [m²]."""
+    path_resistance: float | None = None
+    """With ``[tcr] film_path``: the balls' resistance with the film around each contact in
+    parallel (P3), which replaces micro + constriction; None without [K/W]."""
 
     @property
     def resistance(self) -> float:
         """Total screw-to-nut resistance of the nut's balls [K/W]."""
+        if self.path_resistance is not None:
+            return self.path_resistance
         return self.micro_resistance + self.constriction_resistance
 
     @property
@@ -259,6 +264,12 @@ def build_problem(
         micro = {n.index: n.resistance for n in tcr.nuts}
         if contact.tcr_model is not None:
             micro = model_nut_resistances(case, tcr, contact.tcr_model)
+        paths = {
+            p.index: p.resistance
+            for p in heat_paths(
+                tcr.nuts, tcr.films, conductivities(case), micro, contact.constriction
+            )
+        }
     mats = case.materials
     for k in range(nuts_count):
         name = f"nut {k + 1}"
@@ -267,23 +278,21 @@ def build_problem(
             interfaces.append(NutInterface(name, r_pp / bore_area, 0.0, float("nan"), bore_area))
             continue
         nut = by_index.get(k + 1)
-        if nut is None:  # lifted off
-            interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area))
+        if nut is None:  # lifted off: nothing, or its balls' films
+            path = paths.get(k + 1)
+            interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area, path))
             continue
         constriction = 0.0
         if contact.constriction:
-            per_ball = ball_contact_constriction(
-                (nut.screw.contact.hertz.a, nut.screw.contact.hertz.b),
-                mats.ball.thermal_conductivity,
-                mats.screw.thermal_conductivity,
-            ) + ball_contact_constriction(
-                (nut.nut.contact.hertz.a, nut.nut.contact.hertz.b),
-                mats.ball.thermal_conductivity,
-                mats.nut.thermal_conductivity,
-            )
+            lam = conductivities(case)
+            per_ball = contact_constriction(nut.screw, lam) + contact_constriction(nut.nut, lam)
             constriction = per_ball / nut.balls
         r = micro[nut.index]
-        interfaces.append(NutInterface(name, r, constriction, r * nut.apparent_area, bore_area))
+        interfaces.append(
+            NutInterface(
+                name, r, constriction, r * nut.apparent_area, bore_area, paths.get(nut.index)
+            )
+        )
 
     nut_parts = [
         RingPart(

@@ -272,6 +272,12 @@ class TCRSpec(Model):
         ]
         | None
     ) = None
+    film_path: Literal["none", "meniscus"] = Field(
+        "none",
+        description="lubricant film around each ball outside its Hertz patch as a parallel heat "
+        "path: none (Gao et al.'s chain) or meniscus (wetted up to the inlet meniscus of a "
+        "starved or greased supply, else to the groove-bottom clearance)",
+    )
 
     @field_validator("models")
     @classmethod

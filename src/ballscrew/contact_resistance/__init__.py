@@ -6,7 +6,9 @@
 * :mod:`.aggregation` — elements of a solved pressure field in parallel, screw and nut contact
   in series, balls and nuts in parallel, and the unit-area value R″ = R·S; the reduction of a
   steady heater experiment;
-* :mod:`.constriction` — macro-constriction of the Hertz patches into ball and raceway.
+* :mod:`.constriction` — macro-constriction of the Hertz patches into ball and raceway;
+* :mod:`.film_path` — the lubricant film around a ball outside its Hertz patch, a heat path in
+  parallel with the patch (``tcr.film_path``).
 
 The element result depends on the fractal cell size (a known limitation, see the manual).
 """
@@ -45,6 +47,13 @@ from ballscrew.contact_resistance.element import (
     solid_conductance_v2,
     spot_conductance,
 )
+from ballscrew.contact_resistance.film_path import (
+    FilmPath,
+    ellipse_gap_conductance,
+    hertz_separation,
+    loaded_film_conductance,
+    with_film_path,
+)
 
 __all__ = [
     "DEFAULT_CELL_SIZE",
@@ -53,18 +62,22 @@ __all__ = [
     "VARIANTS",
     "ContactTCR",
     "ElementTCR",
+    "FilmPath",
     "FractalTCRModel",
     "ball_contact_constriction",
     "constriction_alleviation_factor",
     "contact_tcr",
     "cooper_mikic_yovanovich_conductance",
     "element_tcr",
+    "ellipse_gap_conductance",
     "elliptic_constriction_resistance",
     "experimental_tcr",
     "gap_conductance",
     "gap_thickness",
     "harmonic_mean_conductivity",
     "heater_power",
+    "hertz_separation",
+    "loaded_film_conductance",
     "mean_apparent_area",
     "parallel_resistance",
     "rebin_forces",
@@ -75,4 +88,5 @@ __all__ = [
     "solid_conductance_v2",
     "spot_conductance",
     "unit_area_resistance",
+    "with_film_path",
 ]

@@ -1,0 +1,235 @@
+"""The lubricant film around each ball as a heat path beside its Hertz patch (``tcr.film_path``).
+
+Per ball–raceway contact the film (P1) conducts in parallel with the patch path, the micro TCR
+plus the macro-constriction (P3); the ball is one temperature between its screw and nut contact,
+so the two contacts add in series and the balls of a nut in parallel. A lifted-off nut's balls
+carry no load and conduct through their films alone (theory manual: *Contact resistance*,
+*Film path around the ball*).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
+from ballscrew.analyses.tcr_models import gaussian_joint
+from ballscrew.case import Case
+from ballscrew.contact.hertz import HertzContact
+from ballscrew.contact_resistance.constriction import ball_contact_constriction
+from ballscrew.contact_resistance.film_path import (
+    FilmPath,
+    ellipse_gap_conductance,
+    groove_clearance,
+    loaded_film_conductance,
+    meniscus_thickness,
+    wetted_semi_axes,
+    with_film_path,
+)
+from ballscrew.geometry.curvature import raceway_curvature
+from ballscrew.lubrication.film import film_function
+from ballscrew.wear.step import entrainment_speed
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR
+
+
+@dataclass(frozen=True)
+class NutFilm:
+    """The films of one ball of a nut, at its screw and its nut contact."""
+
+    index: int
+    balls: int
+    screw: FilmPath
+    nut: FilmPath
+    loaded: bool
+    """False for a lifted-off nut (its balls touch nothing; film only)."""
+    radii: dict[Side, tuple[float, float]]
+    """(R_x, R_y) of the ball against each raceway [m]."""
+
+    @property
+    def conductance(self) -> float:
+        """All its balls' films, screw and nut film of a ball in series [W/K]."""
+        g_s, g_n = self.screw.conductance, self.nut.conductance
+        return 0.0 if g_s == 0.0 or g_n == 0.0 else self.balls / (1.0 / g_s + 1.0 / g_n)
+
+
+@dataclass(frozen=True)
+class NutHeatPath:
+    """Screw-to-nut resistance of one nut's balls with and without the film path."""
+
+    index: int
+    micro: float
+    """Micro TCR of all balls, R_sbn/n_b (∞ lifted off) [K/W]."""
+    constriction: float
+    """Macro-constriction of all balls' patches (A6) [K/W]."""
+    resistance: float
+    """With the film in parallel with each contact's patch path (P3) [K/W]."""
+
+    @property
+    def without_film(self) -> float:
+        """Micro TCR plus macro-constriction [K/W]."""
+        return self.micro + self.constriction
+
+
+def conductivities(case: Case) -> dict[str, float]:
+    """λ of "ball", "screw" and "nut" [W/(m K)]."""
+    mats = case.materials
+    return {name: getattr(mats, name).thermal_conductivity for name in ("ball", *SIDES)}
+
+
+def contact_constriction(raceway: RacewayTCR, lam: Mapping[str, float]) -> float:
+    """Macro-constriction (A6) of one ball's Hertz patch on ``raceway``, into ball and raceway
+    [K/W]; ``lam`` as :func:`conductivities`."""
+    h = raceway.contact.hertz
+    return ball_contact_constriction((h.a, h.b), lam["ball"], lam[raceway.contact.side])
+
+
+def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side) -> float:
+    """h0 of a loaded contact: the central EHL film at the case's speed when the medium has EHL
+    data, else (or when thinner) the raceway's RMS roughness σ (the ball is smooth) [m]."""
+    sigma = gaussian_joint(params, case.tcr, side).sigma
+    lub = params.lubrication
+    speed = entrainment_speed(params.geometry, case.operating.speed)
+    if not lub.lubricated or speed == 0.0:
+        return sigma
+    c = raceway.contact
+    film = film_function(lub.film_model)(
+        c.curvature.rx,
+        c.curvature.ry,
+        2.0 * c.e_star,
+        lub.viscosity,
+        lub.pressure_viscosity,
+        abs(speed),
+        c.load,
+    )
+    return max(sigma, film.central)
+
+
+def _edge(params: ScrewParameters, case: Case, side: Side, hertz: HertzContact, h0: float) -> float:
+    """h_max: the gap at the inlet meniscus of a starved or greased supply, else (flooded, or a
+    meniscus beyond it) the groove-bottom clearance [m]."""
+    clearance = _clearance(params, side)
+    m = case.lubrication.meniscus
+    if m is None:
+        return clearance
+    return min(clearance, meniscus_thickness(hertz, *_radii(params, side), m, h0))
+
+
+def _clearance(params: ScrewParameters, side: Side) -> float:
+    """Groove-bottom clearance of the ``side`` raceway [m]."""
+    geometry = params.geometry
+    return groove_clearance(
+        geometry.ball_radius, geometry.groove_radius(side), geometry.contact_angle
+    )
+
+
+def _radii(params: ScrewParameters, side: Side) -> tuple[float, float]:
+    """(R_x, R_y) of the ball against the ``side`` raceway (G17) [m]."""
+    c = raceway_curvature(params.geometry, side)
+    return c.rx, c.ry
+
+
+def nut_films(
+    case: Case, params: ScrewParameters, nuts: Sequence[NutTCR], indices: Sequence[int]
+) -> tuple[NutFilm, ...]:
+    """The film of every nut of ``indices``; one missing from ``nuts`` (lifted off) is unloaded.
+
+    A loaded contact's film fills the deformed Hertz gap from h0 (:func:`_separation`) to h_max
+    (:func:`_edge`). An unloaded ball sits in the paraboloid gap at h0 = σ (the clearance the
+    loaded nut's further deflection opens is left out: an upper bound) and is wetted up to the
+    h_max of the loaded contact on the same raceway (the same oil layer on the track; the
+    groove-bottom clearance when no nut is loaded).
+    """
+    lam, rarefaction = params.lubrication.thermal_conductivity, params.lubrication.rarefaction
+    radii = {side: _radii(params, side) for side in SIDES}
+    loaded: dict[int, NutFilm] = {}
+    edges: dict[Side, float] = {}
+    for nut in nuts:
+        paths = {}
+        for side in SIDES:
+            raceway = getattr(nut, side)
+            hertz = raceway.contact.hertz
+            h0 = _separation(params, case, raceway, side)
+            h_max = edges[side] = _edge(params, case, side, hertz, h0)
+            g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
+            paths[side] = FilmPath(g, h0, h_max)
+        loaded[nut.index] = NutFilm(nut.index, nut.balls, paths["screw"], paths["nut"], True, radii)
+    films = []
+    for index in indices:
+        if index in loaded:
+            films.append(loaded[index])
+            continue
+        paths = {}
+        for side in SIDES:
+            h0 = gaussian_joint(params, case.tcr, side).sigma
+            h_max = edges.get(side, _clearance(params, side))  # no loaded nut: the groove's
+            g = ellipse_gap_conductance(lam, *radii[side], h0, h_max, rarefaction)
+            paths[side] = FilmPath(g, h0, h_max)
+        films.append(
+            NutFilm(index, params.balls_per_nut, paths["screw"], paths["nut"], False, radii)
+        )
+    return tuple(films)
+
+
+def _film_branch(
+    film: FilmPath,
+    radii: tuple[float, float],
+    conductivities: Mapping[str, float],
+    side: Side,
+    constriction: bool,
+) -> float:
+    """Conductance of a contact's film branch: the film (P1) and, with ``constriction``, the
+    spreading from the wetted ellipse into ball and raceway (A6) in series [W/K]."""
+    if film.conductance == 0.0 or not constriction:
+        return film.conductance
+    cons = ball_contact_constriction(
+        wetted_semi_axes(*radii, film.h_max), conductivities["ball"], conductivities[side]
+    )
+    return 1.0 / (1.0 / film.conductance + cons)
+
+
+def heat_paths(
+    nuts: Sequence[NutTCR],
+    films: Sequence[NutFilm],
+    conductivities: Mapping[str, float],
+    micro: Mapping[int, float] | None = None,
+    constriction: bool = True,
+) -> tuple[NutHeatPath, ...]:
+    """Each nut's screw-to-nut resistance, the film in parallel with each contact (P3).
+
+    ``conductivities`` maps "ball", "screw", "nut" to λ [W/(m K)]; ``micro`` overrides the
+    nuts' micro TCR R_sbn/n_b (another model's), split between the screw and nut contact in the
+    headline model's proportion; ``constriction`` = False leaves out the macro-constriction of
+    the patches and of the wetted ellipses (the latter an isothermal-ellipse bound: the film's
+    heat crosses mostly near the patch, so its true spreading resistance is larger).
+    """
+    by_index = {n.index: n for n in nuts}
+    out = []
+    for film in films:
+        branches = {
+            side: _film_branch(getattr(film, side), radii, conductivities, side, constriction)
+            for side, radii in film.radii.items()
+        }
+        nut = by_index.get(film.index)
+        if nut is None:  # lifted off: the films alone
+            r_ball = sum(with_film_path(math.inf, g) for g in branches.values())
+            out.append(NutHeatPath(film.index, math.inf, 0.0, r_ball / film.balls))
+            continue
+        own = {s: float(getattr(nut, s).tcr.resistance) for s in SIDES}
+        total = micro[nut.index] * nut.balls if micro is not None else sum(own.values())
+        r_ball = r_micro = r_cons = 0.0
+        for side in SIDES:
+            patch = total * own[side] / sum(own.values())
+            r_micro += patch
+            if constriction:
+                cons = contact_constriction(getattr(nut, side), conductivities)
+                r_cons += cons
+                patch += cons
+            r_ball += with_film_path(patch, branches[side])
+        out.append(
+            NutHeatPath(nut.index, r_micro / nut.balls, r_cons / nut.balls, r_ball / nut.balls)
+        )
+    return tuple(out)
