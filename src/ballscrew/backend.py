@@ -149,10 +149,14 @@ def map_chunks(function: Callable[[slice], _T], size: int, threads: int) -> list
 
     The runs are those of ``numpy.array_split`` (sizes differ by at most one; an empty run is
     skipped). With ``threads`` ≤ 1 (or one row) ``function(slice(0, size))`` runs in the calling
-    thread under its own FFT thread limit. An exception of a run is raised here. Inside a run
-    :func:`fft_threads` is 1, so a nested call that takes its ``threads`` from it stays in its
-    thread and never waits on the pool it runs in.
+    thread under its own FFT thread limit. ``threads`` is capped by the calling thread's limit
+    (:func:`limited_fft_threads`), which is 1 inside a run, so a nested call stays in its
+    thread and never waits on the pool it runs in. The exception of the first failing run (in
+    row order) is raised here; runs not yet started are cancelled, running ones finish.
     """
+    limit = getattr(_thread_limit, "value", None)
+    if limit is not None:
+        threads = min(threads, limit)
     if threads <= 1 or size <= 1:
         return [function(slice(0, size))]
     split = np.array_split(np.arange(size), threads)

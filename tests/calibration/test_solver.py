@@ -14,21 +14,21 @@ from .test_subsets import noisy
 
 def test_secant_update_keeps_a_linear_model_exact_and_learns_a_curved_one() -> None:
     a = np.array([[1.0, 2.0], [0.5, -1.0], [3.0, 0.0]])
-    linear = _SecantJacobian(lambda x: a @ x, 1e-2, [np.inf, np.inf], False, 2.0)
+    linear = _SecantJacobian(lambda x: a @ x, 1e-2, ([-np.inf] * 2, [np.inf] * 2), False, 2.0)
     np.testing.assert_allclose(linear(np.zeros(2)), a / 2.0)
     np.testing.assert_allclose(linear(np.array([0.3, -0.7])), a / 2.0, atol=1e-12)
 
     def curved(x: np.ndarray) -> np.ndarray:
         return np.array([np.exp(x[0]), x[0] * x[1], x[1] ** 2])
 
-    jac = _SecantJacobian(curved, 1e-6, [np.inf, np.inf], False, 1.0)
+    jac = _SecantJacobian(curved, 1e-6, ([-np.inf] * 2, [np.inf] * 2), False, 1.0)
     jac(np.array([0.0, 1.0]))
     x, step = np.array([0.0, 1.0]), np.array([0.01, 0.0])
     moved = jac(x + step)
     # the secant condition: J_new Δx = Δy along the step just taken
     np.testing.assert_allclose(moved @ step, curved(x + step) - curved(x), rtol=1e-9)
     # the torque multiplier column is exact: the model values over the data scale
-    scaled = _SecantJacobian(curved, 1e-6, [np.inf, np.inf], True, 4.0)
+    scaled = _SecantJacobian(curved, 1e-6, ([-np.inf] * 2, [np.inf] * 2), True, 4.0)
     full = scaled(np.array([0.0, 1.0, 2.0]))
     np.testing.assert_allclose(full[:, -1], curved(np.array([0.0, 1.0])) / 4.0)
     np.testing.assert_allclose(full[:, 0], 2.0 * np.array([1.0, 1.0, 0.0]) / 4.0, rtol=1e-5)

@@ -180,14 +180,14 @@ class _SecantJacobian:
         self,
         model_at: Callable[[np.ndarray], np.ndarray],
         diff_step: float,
-        upper: Sequence[float],
+        bounds: tuple[Sequence[float], Sequence[float]],
         fit_scale: bool,
         scale: float,
         fit_offset: bool = False,
     ) -> None:
         self.model_at = model_at
         self.diff_step = diff_step
-        self.upper = list(upper)
+        self.lower, self.upper = list(bounds[0]), list(bounds[1])
         self.fit_scale = fit_scale
         self.fit_offset = fit_offset
         self.scale = scale
@@ -202,7 +202,7 @@ class _SecantJacobian:
 
     def difference(self, x: np.ndarray, central: bool = False) -> np.ndarray:
         """The Jacobian at ``x`` by forward differences (p model runs, cached), or by central
-        ones (2p runs; one-sided at an upper bound) for the covariance: a forward column's
+        ones (2p runs; one-sided within h of a bound) for the covariance: a forward column's
         O(h) error e biases the standard errors by about e/(1 − ρ²) where parameters correlate
         by ρ (2 % at h = 0.01 and ρ ≈ 0.99), a central column's error is O(h²)."""
         x = np.array(x, dtype=float)
@@ -211,7 +211,7 @@ class _SecantJacobian:
         for i, h in enumerate(self.steps(x)):
             ahead, behind = x.copy(), x.copy()
             ahead[i] += h
-            if central and h > 0.0:
+            if central and h > 0.0 and x[i] - h >= self.lower[i]:
                 behind[i] -= h
                 columns.append((self.model_at(ahead) - self.model_at(behind)) / (2.0 * h))
             else:
@@ -307,7 +307,12 @@ class HistoryFit:
         self.lower = [math.log(FIT_PARAMETERS[n].lower) for n in self.model_names]
         self.upper = [math.log(FIT_PARAMETERS[n].upper) for n in self.model_names]
         self.jacobian = _SecantJacobian(
-            self.model_at, diff_step, self.upper, self.fit_scale, self.scale, self.fit_offset
+            self.model_at,
+            diff_step,
+            (self.lower, self.upper),
+            self.fit_scale,
+            self.scale,
+            self.fit_offset,
         )
 
     def values_of(self, x: np.ndarray) -> dict[str, float]:
