@@ -120,8 +120,8 @@ def test_air_film_across_gap(validation, dataset, index) -> None:
         h,
         0.2,
         "±10 % stated in the table, widened to ±20 % because the air's temperature (λ_f "
-        "0.026–0.030 W/mK from 20 to 80 °C) and the radiation across the gap (about 3 % of h) "
-        "are not given",
+        "0.026–0.030 W/mK from 20 to 80 °C) and the radiation across the gap (3 % of h at "
+        "0.5 mm, 5 % at 1.0 mm) are not given",
     )
 
 
