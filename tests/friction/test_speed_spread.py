@@ -9,6 +9,10 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize
 
+import ballscrew
+from ballscrew.analyses.ball_loads import nut_model
+from ballscrew.analyses.friction import friction_torque
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.friction.ball_train import BallTrain, ball_ball_force, return_resistance
 from ballscrew.friction.speed_spread import (
     TrainSpread,
@@ -205,3 +209,41 @@ def test_creep_stiffness_against_a_quadrature_of_coulomb_traction():
 def test_circuits_run_both_ways():
     trains = circuit_trains(np.arange(5.0), np.ones(5), np.ones(5), 2)
     assert [t.speeds.tolist() for t in trains] == [[0, 1, 2], [2, 1, 0], [3, 4], [4, 3]]
+
+
+@pytest.fixture
+def spread_case(wear_case_path):
+    return ballscrew.load_case(
+        wear_case_path,
+        {"friction.model": "ball_model", "operating.axial_load": 0.0, "kinematics.level": 0},
+    )
+
+
+def _with(case, loads=None, **friction):
+    update = {"friction": case.friction.model_copy(update=friction)}
+    if loads is not None:
+        update["loads"] = case.loads.model_copy(update=loads)
+    return case.model_copy(update=update)
+
+
+def test_identical_balls_in_the_torque_are_the_return_push(spread_case):
+    spread = friction_torque(_with(spread_case, ball_train="speed_spread"), speed=100.0)
+    push = friction_torque(_with(spread_case, ball_train="return_push"), speed=100.0)
+    assert spread.parts == pytest.approx(push.parts, rel=1e-12)
+
+
+def test_elastic_ball_states_push_the_balls_and_errors_push_harder(spread_case):
+    elastic = {"distribution": "elastic"}
+    ratio = friction_torque(_with(spread_case, elastic), speed=100.0)
+    even = friction_torque(_with(spread_case, elastic, ball_train="speed_spread"), speed=100.0)
+    push = friction_torque(_with(spread_case, ball_train="return_push"), speed=100.0)
+    for part in ("sliding", "groove_slip", "ehl_rolling", "hysteresis", "drag"):
+        assert even.parts[part] == ratio.parts[part]  # the ball train acts on F_B alone
+    assert even.parts["ball_ball"] > push.parts["ball_ball"]  # the elastic spread adds force
+    layout, _ = nut_model(ScrewParameters.from_case(spread_case), spread_case.loads)
+    slope = 2e-6 * (layout.z - layout.z.mean()) / float(np.ptp(layout.z))  # 2 µm over the nuts
+    errors = {**elastic, "lead_error": slope.tolist()}
+    worse = friction_torque(_with(spread_case, errors, ball_train="speed_spread"), speed=100.0)
+    assert worse.parts["ball_ball"] > even.parts["ball_ball"]
+    rest = friction_torque(_with(spread_case, errors, ball_train="speed_spread"), speed=0.0)
+    assert 0.0 < rest.parts["ball_ball"]  # the forces per unit speed: finite at breakaway
