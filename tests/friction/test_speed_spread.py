@@ -140,15 +140,7 @@ def test_return_push_of_identical_balls_is_the_ramp_of_the_return_push_model():
     push, n = 0.3, 17
     forces, _ = spread_forces(_train(np.full(n, 0.1), 900.0, 5.0), push)
     assert forces == pytest.approx(push * np.arange(1, n + 1) / n, rel=1e-12)
-    train = BallTrain(
-        load=40.0,
-        mass=1e-3,
-        speed=1.0,
-        path_radius=0.02,
-        loaded_balls=n,
-        return_fraction=3.0 / n,
-        return_friction=0.1,
-    )
+    train = BallTrain(load=40.0, mass=1e-3, speed=1.0, loaded_balls=n, return_fraction=3.0 / n)
     spread = (_train(np.full(n, 0.1), 900.0, 5.0),)
     with_spread = ball_ball_force("speed_spread", BallTrain(**{**train.__dict__, "spread": spread}))
     same = ball_ball_force("return_push", train)

@@ -4,9 +4,7 @@ from __future__ import annotations
 
 import functools
 import math
-import tomllib
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -20,7 +18,6 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case, case_from_dict
 
 RPM = 2.0 * math.pi / 60.0
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 THK_SOURCE = "THK General Catalog, A-688/A-689"
 XJTU_SOURCE = "XJTU degradation dataset (2026), Up_FT/Down_FT row 1"
@@ -130,6 +127,47 @@ BALL_MODEL_ASSUMPTIONS = (
     "no seals or wipers in the measured torque (ASSUMED)",
 )
 
+SPREAD_MODEL = (
+    f"{PHYSICS_MODEL[:-1]}; elastic load distribution; ball train speed_spread: creep drives "
+    "of balls of different free orbital speeds, pool-adjacent-violators, return push)"
+)
+SPREAD_ASSUMPTIONS = (
+    "loads.distribution = elastic (bars for shaft and nut body, Lamé nut ring; nut outer "
+    "diameter d_m + 5 D_b, GUESS of the distribution); the balls under the preload alone",
+    "ball train speed_spread: linear creep law 6 μ Q/(|ω_sp| b) capped at 2 μ Q (ASSUMED); "
+    "the balls of a nut split into 2 circuits of consecutive balls (GUESS), each run both ways; "
+    "return push with wall friction 0.1 and 0.2 return balls per loaded ball (GUESS)",
+)
+SPREAD_ERRORS = {
+    "none": ("no lead error, every ball of the nominal diameter", 0.0, 0.0),
+    "p3_g5": (
+        "lead error ASSUMED linear along the nuts at 12 µm per 300 mm, the travel variation "
+        "v_300p of accuracy class P3 (ISO 3408-3, as Steinmeyer states it: 'accuracy class P3, "
+        "3 x 300 mm would result in 3 x 12 µm'); ball diameters ASSUMED uniform within the lot "
+        "diameter variation V_DwL = 0.25 µm of grade G5 (ISO 3290-1:2014, Table 1), drawn with "
+        "numpy's default_rng(2026); neither value was fitted to this row",
+        12e-6,
+        0.25e-6,
+    ),
+}
+
+
+def _spread_torque(case: Case, errors: str) -> float:
+    """The physics torque of ``case`` at 100 rpm, elastic distribution, ball train
+    speed_spread, with the lead and ball errors ``errors`` of :data:`SPREAD_ERRORS`."""
+    _, lead_rate, lot = SPREAD_ERRORS[errors]
+    z = nut_model(ScrewParameters.from_case(case), case.loads)[0].z
+    loads = {
+        "distribution": "elastic",
+        "lead_error": (lead_rate * (z - z.mean()) / 0.3).tolist(),
+        "ball_diameter_error": np.random.default_rng(2026)
+        .uniform(-lot / 2, lot / 2, z.size)
+        .tolist(),
+    }
+    elastic = case.model_copy(update={"loads": case.loads.model_copy(update=loads)})
+    return _physics_torque(elastic, 100.0 * RPM, ball_train="speed_spread")
+
+
 # name → (model label, predictor, extra assumptions, tolerance basis)
 XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]] = {
     "catalogue": (
@@ -166,6 +204,16 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a physical "
         "model should do at least as well (the same band as the ratio model's row)",
     ),
+    **{
+        f"friction_ball_model_speed_spread_{errors}": (
+            SPREAD_MODEL,
+            functools.partial(_spread_torque, errors=errors),
+            (*BALL_MODEL_ASSUMPTIONS, *PHYSICS_ASSUMPTIONS[:1], *SPREAD_ASSUMPTIONS, text),
+            f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a "
+            "physical model should do at least as well (the same band as the ratio model's row)",
+        )
+        for errors, (text, _, _) in SPREAD_ERRORS.items()
+    },
 }
 
 
@@ -188,6 +236,13 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
             "down",
             True,
             id="friction_ball_model_return_push-down",
+        ),
+        *(
+            pytest.param(
+                f"friction_ball_model_speed_spread_{e}", d, True, id=f"speed_spread_{e}-{d}"
+            )
+            for e in ("none", "p3_g5")
+            for d in ("up", "down")
         ),
     ],
 )
@@ -299,58 +354,15 @@ def test_xjtu_torque_decay_over_degradation(validation, dataset) -> None:
     )
 
 
-SPREAD_MODEL = (
-    f"{PHYSICS_MODEL[:-1]}; elastic load distribution; ball train speed_spread: creep drives "
-    "of balls of different free orbital speeds, pool-adjacent-violators, return push)"
-)
-SPREAD_ASSUMPTIONS = (
-    "loads.distribution = elastic (bars for shaft and nut body, Lamé nut ring; nut outer "
-    "diameter d_m + 5 D_b, GUESS of the distribution); the balls under the preload alone",
-    "ball train speed_spread: linear creep law 6 μ Q/(|ω_sp| b) capped at 2 μ Q (ASSUMED); "
-    "the balls of a nut split into 2 circuits of consecutive balls (GUESS), each run both ways; "
-    "return push with wall friction 0.1 and 0.2 return balls per loaded ball (GUESS)",
-)
-SPREAD_ERRORS = {
-    "none": ("no lead error, every ball of the nominal diameter", 0.0, 0.0),
-    "p3_g5": (
-        "lead error ASSUMED linear along the nuts at 12 µm per 300 mm, the travel variation "
-        "v_300p of accuracy class P3 (ISO 3408-3, as Steinmeyer states it: 'accuracy class P3, "
-        "3 x 300 mm would result in 3 x 12 µm'); ball diameters ASSUMED uniform within the lot "
-        "diameter variation V_DwL = 0.25 µm of grade G5 (ISO 3290-1:2014, Table 1), drawn with "
-        "numpy's default_rng(2026); neither value was fitted to this row",
-        12e-6,
-        0.25e-6,
-    ),
-}
-
-
-@functools.cache
-def _spread_torque(screw: str, errors: str) -> float:
-    """The physics torque of ``screw`` (thk, xjtu) at 100 rpm, elastic, ball train
-    speed_spread, with the lead and ball errors ``errors`` of :data:`SPREAD_ERRORS`."""
-    base = tomllib.loads((EXAMPLES / "gao2019_tcr.toml").read_text())
-    if screw == "thk":
-        base["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
-        base["operating"].update(preload="3000 N", axial_load="0 N")
-    else:
-        base = _xjtu_raw(base)
-    base.setdefault("loads", {})["distribution"] = "elastic"
-    case = case_from_dict(base)
-    _, lead_rate, lot = SPREAD_ERRORS[errors]
-    z = nut_model(ScrewParameters.from_case(case), case.loads)[0].z
-    diameters = np.random.default_rng(2026).uniform(-0.5 * lot, 0.5 * lot, z.size)
-    base["loads"].update(
-        lead_error=(lead_rate * (z - z.mean()) / 0.3).tolist(),
-        ball_diameter_error=diameters.tolist(),
-    )
-    return _physics_torque(case_from_dict(base), 100.0 * RPM, ball_train="speed_spread")
-
-
 @pytest.mark.parametrize("errors", list(SPREAD_ERRORS))
-def test_thk_preload_torque_example_by_the_speed_spread_train(validation, dataset, errors):
+def test_thk_preload_torque_example_by_the_speed_spread_train(
+    validation, dataset, base_raw, errors
+):
     """THK's worked preload torque (A-688/A-689) against the physics torque whose ball–ball
     force comes from the speed differences of the elastic distribution's balls."""
     data = dataset("drag_torque", "thk_preload_torque_example")
+    base_raw["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
+    base_raw["operating"].update(preload=f"{data['preload_N']} N", axial_load="0 N")
     validation.check(
         f"thk_preload_torque_example_physics_speed_spread_{errors}",
         kind="verification",
@@ -360,7 +372,7 @@ def test_thk_preload_torque_example_by_the_speed_spread_train(validation, datase
         quantity="preload drag torque, BNFN4010-5, F_p = 3000 N",
         unit="N mm",
         measured=data["torque_Nmm"],
-        predicted=_spread_torque("thk", errors) * 1e3,
+        predicted=_spread_torque(case_from_dict(base_raw), errors) * 1e3,
         tolerance=data["allowed_fluctuation"],
         relative=True,
         tolerance_basis="THK's allowed fluctuation of real preload torques about this value "
@@ -371,35 +383,6 @@ def test_thk_preload_torque_example_by_the_speed_spread_train(validation, datase
             "(ASSUMED; not printed in the example)",
             "speed 100 rpm (ASSUMED: the usual preload-torque measuring speed)",
             *BALL_MODEL_ASSUMPTIONS[1:3],
-            *PHYSICS_ASSUMPTIONS[:1],
-            *SPREAD_ASSUMPTIONS,
-            SPREAD_ERRORS[errors][0],
-        ),
-        known_miss=True,
-    )
-
-
-@pytest.mark.parametrize("direction", ["up", "down"])
-@pytest.mark.parametrize("errors", list(SPREAD_ERRORS))
-def test_xjtu_as_new_torque_by_the_speed_spread_train(validation, dataset, errors, direction):
-    """The XJTU as-new torques against the physics torque with the speed_spread ball train."""
-    data = dataset("drag_torque", "xjtu_friction_torque")
-    validation.check(
-        f"xjtu_as_new_friction_ball_model_speed_spread_{errors}_torque_{direction}",
-        model=SPREAD_MODEL,
-        source=XJTU_SOURCE,
-        reference=data,
-        quantity=f"as-new drag torque, '{direction.capitalize()}'",
-        unit="N m",
-        measured=data[f"{direction}_Nm"][0],
-        predicted=_spread_torque("xjtu", errors),
-        tolerance=0.30,
-        relative=True,
-        tolerance_basis=f"the band the makers allow about their empirical formula "
-        f"({TORQUE_BAND}); a physical model should do at least as well",
-        assumptions=(
-            *XJTU_ASSUMPTIONS,
-            *BALL_MODEL_ASSUMPTIONS,
             *PHYSICS_ASSUMPTIONS[:1],
             *SPREAD_ASSUMPTIONS,
             SPREAD_ERRORS[errors][0],
