@@ -168,6 +168,11 @@ def _spread_torque(case: Case, errors: str) -> float:
     return _physics_torque(elastic, 100.0 * RPM, ball_train="speed_spread")
 
 
+P2_NOTE = (
+    "the XJTU screw is of accuracy grade P2 (source), finer than P3: the P3 lead error is an "
+    "upper bound for it (ASSUMED)",
+)
+
 # name → (model label, predictor, extra assumptions, tolerance basis)
 XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]] = {
     "catalogue": (
@@ -208,11 +213,17 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
         f"friction_ball_model_speed_spread_{errors}": (
             SPREAD_MODEL,
             functools.partial(_spread_torque, errors=errors),
-            (*BALL_MODEL_ASSUMPTIONS, *PHYSICS_ASSUMPTIONS[:1], *SPREAD_ASSUMPTIONS, text),
+            (
+                *BALL_MODEL_ASSUMPTIONS,
+                *PHYSICS_ASSUMPTIONS[:1],
+                *SPREAD_ASSUMPTIONS,
+                text,
+                *(P2_NOTE if rate else ()),
+            ),
             f"the band the makers allow about their empirical formula ({TORQUE_BAND}); a "
             "physical model should do at least as well (the same band as the ratio model's row)",
         )
-        for errors, (text, _, _) in SPREAD_ERRORS.items()
+        for errors, (text, rate, _) in SPREAD_ERRORS.items()
     },
 }
 
