@@ -13,6 +13,7 @@ import ballscrew
 from ballscrew.analyses.ball_loads import nut_model
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.errors import InputError
 from ballscrew.friction.ball_train import BallTrain, ball_ball_force, return_resistance
 from ballscrew.friction.speed_spread import (
     TrainSpread,
@@ -150,9 +151,9 @@ def test_return_push_of_identical_balls_is_the_ramp_of_the_return_push_model():
 
 
 def test_a_return_heavier_than_the_traction_is_refused():
-    with pytest.raises(Exception, match=r"^friction\.return_fraction = "):
+    with pytest.raises(InputError, match=r"^friction\.return_fraction = "):
         spread_forces(_train(np.full(3, 0.1), 900.0, 0.1), push=1.0)
-    with pytest.raises(Exception, match="needs spin"):
+    with pytest.raises(InputError, match=r"^spin = 0\.0 .*needs spin"):
         creep_stiffness(0.1, [40.0], 0.0, [1e-3])
 
 

@@ -102,7 +102,7 @@ def creep_stiffness(
     """
     omega = abs(float(spin))
     if not omega > 0.0:
-        raise InputError("contact_angle", 0.0, "> 0 deg (a ball train needs spin at A)")
+        raise InputError("spin", spin, "!= 0 rad/s: the creep law needs spin at A (β > 0)")
     q = np.maximum(np.asarray(loads, dtype=float), 0.0)
     b = np.asarray(semi_axis, dtype=float)
     safe = np.where(q > 0.0, b, 1.0)
