@@ -132,6 +132,9 @@ SPREAD_MODEL = (
     "of balls of different free orbital speeds, pool-adjacent-violators, return push)"
 )
 SPREAD_ASSUMPTIONS = (
+    "hysteresis loss fraction 0.01; ball–ball friction 0.1; lubricant fill of the nut 0.1; "
+    "2 circuits per nut (GUESS: the friction model's defaults); no seals; flooded, isothermal "
+    "film; kinematics level 2",
     "loads.distribution = elastic (bars for shaft and nut body, Lamé nut ring; nut outer "
     "diameter d_m + 5 D_b, GUESS of the distribution); the balls under the preload alone",
     "ball train speed_spread: linear creep law 6 μ Q/(|ω_sp| b) capped at 2 μ Q (ASSUMED); "
@@ -215,7 +218,6 @@ XJTU_MODELS: dict[str, tuple[str, Callable[[Case], float], tuple[str, ...], str]
             functools.partial(_spread_torque, errors=errors),
             (
                 *BALL_MODEL_ASSUMPTIONS,
-                *PHYSICS_ASSUMPTIONS[:1],
                 *SPREAD_ASSUMPTIONS,
                 text,
                 *(P2_NOTE if rate else ()),
@@ -303,22 +305,40 @@ def test_thk_driving_torque_example(validation, dataset, base_raw) -> None:
     )
 
 
-THK_PHYSICS_ROWS = {  # id suffix → (traction law, ball train, model label, extra assumptions)
-    "": ("film", "ratio", PHYSICS_MODEL, ()),
-    "_skf": ("skf", "ratio", SKF_MODEL, SKF_ASSUMPTIONS),
-    "_return_push": ("film", "return_push", RETURN_PUSH_MODEL, RETURN_PUSH_ASSUMPTIONS),
+def _thk_row(traction: str, train: str) -> Callable[[Case], float]:
+    return functools.partial(
+        _physics_torque, speed=100.0 * RPM, traction=traction, ball_train=train
+    )
+
+
+THK_PHYSICS_ROWS = {  # id suffix → (torque of the case, model label, extra assumptions)
+    "": (_thk_row("film", "ratio"), PHYSICS_MODEL, PHYSICS_ASSUMPTIONS),
+    "_skf": (_thk_row("skf", "ratio"), SKF_MODEL, (*PHYSICS_ASSUMPTIONS, *SKF_ASSUMPTIONS)),
+    "_return_push": (
+        _thk_row("film", "return_push"),
+        RETURN_PUSH_MODEL,
+        (*PHYSICS_ASSUMPTIONS, *RETURN_PUSH_ASSUMPTIONS),
+    ),
+    **{
+        f"_speed_spread_{errors}": (
+            functools.partial(_spread_torque, errors=errors),
+            SPREAD_MODEL,
+            (*SPREAD_ASSUMPTIONS, text),
+        )
+        for errors, (text, _, _) in SPREAD_ERRORS.items()
+    },
 }
 
 
-@pytest.mark.parametrize("suffix", list(THK_PHYSICS_ROWS), ids=["film", "skf", "return_push"])
+@pytest.mark.parametrize("suffix", list(THK_PHYSICS_ROWS), ids=lambda s: s[1:] or "film")
 def test_thk_preload_torque_example_by_the_physics_model(
     validation, dataset, base_raw, suffix
 ) -> None:
     data = dataset("drag_torque", "thk_preload_torque_example")
-    traction, train, model, extra = THK_PHYSICS_ROWS[suffix]
+    predict, model, extra = THK_PHYSICS_ROWS[suffix]
     base_raw["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
     base_raw["operating"].update(preload=f"{data['preload_N']} N", axial_load="0 N")
-    torque = _physics_torque(case_from_dict(base_raw), 100.0 * RPM, traction, train)
+    torque = predict(case_from_dict(base_raw))
     validation.check(
         "thk_preload_torque_example_physics" + suffix,
         kind="verification",
@@ -339,7 +359,6 @@ def test_thk_preload_torque_example_by_the_physics_model(
             "0.52/0.52, contact angle 45 deg (ASSUMED; not printed in the example)",
             "speed 100 rpm (ASSUMED: the usual preload-torque measuring speed)",
             *BALL_MODEL_ASSUMPTIONS[1:3],
-            *PHYSICS_ASSUMPTIONS,
             *extra,
         ),
         known_miss=True,
@@ -362,41 +381,4 @@ def test_xjtu_torque_decay_over_degradation(validation, dataset) -> None:
         "coefficient to this decay would make it a calibration, not a validation (that forecast "
         "from the first half is in test_wear_history.py). Missing: an independent wear "
         "coefficient for the same steel and lubricant.",
-    )
-
-
-@pytest.mark.parametrize("errors", list(SPREAD_ERRORS))
-def test_thk_preload_torque_example_by_the_speed_spread_train(
-    validation, dataset, base_raw, errors
-):
-    """THK's worked preload torque (A-688/A-689) against the physics torque whose ball–ball
-    force comes from the speed differences of the elastic distribution's balls."""
-    data = dataset("drag_torque", "thk_preload_torque_example")
-    base_raw["screw"].update(pitch_diameter="41.75 mm", lead="10 mm", balls_per_nut=103)
-    base_raw["operating"].update(preload=f"{data['preload_N']} N", axial_load="0 N")
-    validation.check(
-        f"thk_preload_torque_example_physics_speed_spread_{errors}",
-        kind="verification",
-        model=SPREAD_MODEL,
-        source=THK_SOURCE,
-        reference=data,
-        quantity="preload drag torque, BNFN4010-5, F_p = 3000 N",
-        unit="N mm",
-        measured=data["torque_Nmm"],
-        predicted=_spread_torque(case_from_dict(base_raw), errors) * 1e3,
-        tolerance=data["allowed_fluctuation"],
-        relative=True,
-        tolerance_basis="THK's allowed fluctuation of real preload torques about this value "
-        "(A-689: ±30 %); the value itself is the catalogue formula, not a measurement",
-        assumptions=(
-            "ball-centre diameter 41.75 mm, lead 10 mm, preload 3000 N (source)",
-            "double nut, each 103 balls of 6.35 mm, conformity 0.52/0.52, contact angle 45 deg "
-            "(ASSUMED; not printed in the example)",
-            "speed 100 rpm (ASSUMED: the usual preload-torque measuring speed)",
-            *BALL_MODEL_ASSUMPTIONS[1:3],
-            *PHYSICS_ASSUMPTIONS[:1],
-            *SPREAD_ASSUMPTIONS,
-            SPREAD_ERRORS[errors][0],
-        ),
-        known_miss=True,
     )
