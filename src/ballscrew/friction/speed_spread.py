@@ -17,15 +17,16 @@ so the raceways drive the ball along the track with
 k_i is four times the creep stiffness of a contact whose slip field is dominated by spin about
 its centre, (3/2) μ Q/(ω_sp b) (Coulomb traction μ p along the local slip; the creep u tilts the
 slip direction by u x/(ω_sp r²) and the force ∫ μ p x²/r³ dA u/ω_sp ≈ (3/2) μ Q u/(ω_sp b) for an
-ellipse long across the track, b its semi-axis across; Johnson 1985, *Contact Mechanics*, §8.4,
-spin creep with full slip); c_i is the whole contact sliding one way. Between the two the law is
-taken as linear up to the cap (ASSUMED; the exact Coulomb curve bends smoothly from slope k to
-c). The spin and the speeds scale with ω_s, so the forces do not depend on it except through μ.
+ellipse long across the track, b its semi-axis across: full Coulomb slip about the spin pole,
+theory manual *Friction*, (F5g)); c_i is the whole contact sliding one way. Between the two the
+law is taken as linear up to the cap (ASSUMED; the exact Coulomb curve bends smoothly from
+slope k to c). The spin and the speeds scale with ω_s, so the forces do not depend on it
+except through μ.
 
 With C_i ≥ 0 the force at the contact ahead of ball i (ball i + 1 is ahead), each ball balances
 C_(i−1) + T_i = C_i, C_0 = 0, and C_n = R, the push the leading ball hands to the balls in the
 return (:func:`ballscrew.friction.ball_train.return_resistance`). Contacts are unilateral:
-C_i ≥ 0, u_i ≤ u_(i+1) and C_i (u_(i+1) − u_i) = 0. This linear complementarity problem is the
+C_i ≥ 0, u_i ≤ u_(i+1) and C_i (u_(i+1) − u_i) = 0. This complementarity problem is the
 optimality condition of the isotonic regression
 
     min Σ φ_i(u_i) + R u_n   subject to   u_1 ≤ u_2 ≤ … ≤ u_n,   φ_i' = −T_i,
