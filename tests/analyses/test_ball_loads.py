@@ -31,6 +31,19 @@ def test_a_lifted_off_nut_carries_nothing(gao_case_path):
     assert balls.axial_forces[0] == pytest.approx(6000.0, rel=1e-12)
 
 
+@pytest.mark.parametrize("distribution", ["uniform", "elastic"])
+def test_another_axial_load_is_the_case_at_that_load(gao_case_path, distribution):
+    loaded = ballscrew.load_case(
+        gao_case_path, {"operating.axial_load": 2000.0, "loads.distribution": distribution}
+    )
+    bare = ballscrew.load_case(
+        gao_case_path, {"operating.axial_load": 0.0, "loads.distribution": distribution}
+    )
+    at_zero = ballscrew.ball_loads(loaded, axial_load=0.0)
+    np.testing.assert_allclose(at_zero.loads, ballscrew.ball_loads(bare).loads, rtol=1e-10)
+    assert not np.allclose(at_zero.loads, ballscrew.ball_loads(loaded).loads)
+
+
 ELASTIC = {"loads.distribution": "elastic", "operating.axial_load": 2000.0}
 
 

@@ -35,7 +35,7 @@ TRAIN = BallTrain(
 
 
 def test_registry_holds_the_guess_and_the_return_push():
-    assert BALL_TRAIN_MODELS.names == ("ratio", "return_push")
+    assert BALL_TRAIN_MODELS.names == ("ratio", "return_push", "speed_spread")
     with pytest.raises(InputError, match=r"^friction\.ball_train = 'nope'"):
         ball_ball_force("nope", TRAIN)
 

@@ -166,16 +166,20 @@ def _root(case: Case) -> float | None:
     return None if case.design is None else case.design.root_diameter
 
 
-def ball_loads(case: Case) -> BallLoads:
-    """Normal load and contact angle of every ball of every nut of ``case``."""
+def ball_loads(case: Case, axial_load: float | None = None) -> BallLoads:
+    """Normal load and contact angle of every ball of every nut of ``case`` at ``axial_load``
+    [N] (None: the case's)."""
     params = ScrewParameters.from_case(case)
     g = params.geometry
     if case.loads.distribution == "uniform":
         z = params.balls_per_nut
-        loads = np.array([np.full(z, nut.ball_load) for nut in params.nuts])
+        nuts = params.with_loads(axial_load=axial_load).nuts
+        loads = np.array([np.full(z, nut.ball_load) for nut in nuts])
         angles = np.full_like(loads, g.contact_angle)
         return BallLoads(loads, angles, loads.sum(axis=1) * params.axial_projection)
-    dist = elastic_distribution(params, case.loads, _root(case), numerics=case.numerics)
+    dist = elastic_distribution(
+        params, case.loads, _root(case), axial_load=axial_load, numerics=case.numerics
+    )
     gap = (g.screw_conformity + g.nut_conformity - 1.0) * g.ball_diameter
     angles = loaded_contact_angle(dist.approach, g.contact_angle, gap)
     return BallLoads(

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from functools import partial
 
+from ballscrew.analyses.ball_loads import ball_loads, nut_model
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
@@ -22,9 +23,11 @@ from ballscrew.friction import (
     ball_losses,
     nut_friction_torque,
 )
+from ballscrew.friction.speed_spread import NutBalls
+from ballscrew.loads.distribution import expand_errors
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["friction_torque", "nut_loss_parameters", "seal_torque"]
+__all__ = ["friction_torque", "nut_balls", "nut_loss_parameters", "seal_torque"]
 
 #: Largest axial load accepted [N]: the upper end of ``operating.axial_load``.
 _LOAD_RANGE = f"a force in [0, {MAX_FORCE:g}] N (the range of operating.axial_load)"
@@ -50,6 +53,21 @@ def nut_loss_parameters(case: Case) -> NutLossParameters:
         ball_train=spec.ball_train,
         return_friction=spec.return_friction,
         return_fraction=spec.return_fraction,
+    )
+
+
+def nut_balls(case: Case, params: ScrewParameters) -> tuple[NutBalls, ...] | None:
+    """Per nut the loads, contact angles and diameter excesses of its balls under the preload
+    alone, for ``friction.ball_train = "speed_spread"`` with ``loads.distribution = "elastic"``
+    (None otherwise: identical balls)."""
+    if case.friction.ball_train != "speed_spread" or case.loads.distribution != "elastic":
+        return None
+    loads = ball_loads(case, axial_load=0.0)
+    layout, _ = nut_model(params, case.loads)
+    errors = case.loads.ball_diameter_error or None
+    excess = expand_errors("loads.ball_diameter_error", errors, layout).reshape(layout.nuts, -1)
+    return tuple(
+        NutBalls(q, beta, e) for q, beta, e in zip(loads.loads, loads.angles, excess, strict=True)
     )
 
 
@@ -92,6 +110,7 @@ def friction_torque(
             level=level,
             hysteresis=spec.hysteresis,
             nut=nut_loss_parameters(case),
+            balls=nut_balls(case, params),
         )
     inputs = FrictionInputs(
         lead=geometry.lead,

@@ -11,7 +11,8 @@ Example::
     seals = 2                   # contacting seals / wiper rings of the nut
     seal_force = "5 N"          # friction force of one seal lip [GUESS], at the radius d_m/2
     hysteresis = 0.01           # hysteresis loss fraction α of the Hertz contacts [GUESS]
-    ball_train = "ratio"        # force between adjacent balls: "ratio" (default) or "return_push"
+    ball_train = "ratio"        # force between adjacent balls: "ratio" (default), "return_push"
+                                # or "speed_spread" (with loads.distribution = "elastic")
     ball_ball_load_ratio = 0.01 # force between adjacent balls / ball load, ratio [GUESS]
     return_friction = 0.1       # friction of a ball on the return wall, return_push [GUESS]
     return_fraction = 0.2       # balls in the return per loaded ball, return_push [GUESS]
@@ -93,7 +94,9 @@ class FrictionSpec(Model):
     ball_train: model_choice(
         BALL_TRAIN_MODELS,
         "contact force between adjacent balls (ball model): ratio (a given fraction of the "
-        "ball load) or return_push (the loaded balls push the return balls)",
+        "ball load), return_push (the loaded balls push the return balls) or speed_spread "
+        "(balls of different free orbital speeds push each other and the return; per-ball "
+        "states from loads.distribution = elastic, identical balls otherwise)",
     ) = DEFAULT_BALL_TRAIN
     ball_ball_load_ratio: Annotated[
         float,
@@ -110,7 +113,7 @@ class FrictionSpec(Model):
             ge=0.0,
             le=1.0,
             description="friction coefficient of a ball on the wall of the ball return "
-            "(ball_train = return_push) [GUESS 0.1]",
+            "(ball_train = return_push or speed_spread) [GUESS 0.1]",
         ),
     ] = DEFAULT_RETURN_FRICTION
     return_fraction: Annotated[
@@ -119,7 +122,7 @@ class FrictionSpec(Model):
             ge=0.0,
             le=10.0,
             description="balls in the return per loaded ball of a circuit "
-            "(ball_train = return_push) [GUESS 0.2]",
+            "(ball_train = return_push or speed_spread) [GUESS 0.2]",
         ),
     ] = DEFAULT_RETURN_FRACTION
     ball_ball_friction: Annotated[

@@ -42,6 +42,14 @@ from ballscrew.friction.nut_losses import (
     drag_power,
     recirculation_power,
 )
+from ballscrew.friction.speed_spread import (
+    NutBalls,
+    TrainSpread,
+    circuit_trains,
+    creep_stiffness,
+    free_speed,
+    traction_capacity,
+)
 from ballscrew.geometry.screw import SIDES
 from ballscrew.kinematics.balance import BallState, solve_ball
 from ballscrew.kinematics.model import BallModel
@@ -140,8 +148,29 @@ def _semi_axes(model: BallModel, loads: FloatArray) -> tuple[FloatArray, FloatAr
     return np.column_stack([a for a, _ in axes]), np.column_stack([b for _, b in axes])
 
 
+def _spread(
+    model: BallModel, unit: BallMotion, balls: NutBalls | None, friction: float, circuits: int
+) -> tuple[TrainSpread, ...]:
+    """The circuits of one nut for ``speed_spread``: each ball's free speed from its contact
+    angle and diameter, its creep stiffness and capacity at the traction coefficient μ and the
+    spin at A of the nut's state, all per the state's screw speed (``unit``); () without
+    per-ball states."""
+    if balls is None:
+        return ()
+    g = model.geometry
+    radii = g.ball_radius + 0.5 * balls.diameter_excess
+    speeds = free_speed(0.5 * g.pitch_diameter, g.lead_angle, radii, balls.angles, unit.screw_speed)
+    _, across = model.hertz_semi_axes("screw", balls.loads)
+    stiffness = creep_stiffness(friction, balls.loads, unit.spin_screw, across)
+    return circuit_trains(speeds, stiffness, traction_capacity(friction, balls.loads), circuits)
+
+
 def _train(
-    model: BallModel, state: BallState, nut: NutLossParameters, drag_force: float
+    model: BallModel,
+    state: BallState,
+    nut: NutLossParameters,
+    drag_force: float,
+    spread: tuple[TrainSpread, ...] = (),
 ) -> TrainForces:
     """Contact forces of the ball train of one circuit of the nut of ``state``
     (:mod:`ballscrew.friction.ball_train`; the return path curves at the pitch radius, ASSUMED:
@@ -156,6 +185,7 @@ def _train(
         return_friction=nut.return_friction,
         drag_force=drag_force,
         load_ratio=nut.ball_ball_load_ratio,
+        spread=spread,
     )
     return ball_ball_force(nut.ball_train, train)
 
@@ -201,6 +231,7 @@ def _contact_losses(
     unit: BallMotion,
     semi_nut: tuple[float, float],
     nut: NutLossParameters,
+    balls: NutBalls | None = None,
 ) -> tuple[tuple[float, ...], float, float, float]:
     """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball, the
     torque of pushing the return train of one nut (ball returns), the separation h at A [m]
@@ -225,7 +256,11 @@ def _contact_losses(
             / speed
         )
     viscous = force * speed / omega
-    train = _train(model, state, nut, force)
+    spread = ()
+    if nut.ball_train == "speed_spread":
+        mu = _traction_coefficient(model, state, drag.psi)
+        spread = _spread(model, unit, balls, mu, nut.circuits)
+    train = _train(model, state, nut, force, spread)
     push = nut.circuits * train.return_push * speed / omega  # 0 at rest (V = 0)
     return (
         (
@@ -271,16 +306,21 @@ def ball_losses(
     level: int = 0,
     hysteresis: float = DEFAULT_HYSTERESIS,
     nut: NutLossParameters | None = None,
+    balls: tuple[NutBalls | None, ...] | None = None,
 ) -> BallLosses:
     """Losses of every loaded ball of the nuts ``(axial force, flank)`` at screw speed ω_s.
 
     ω_s = 0 gives the ω_s → 0⁺ limit (dry breakaway: boundary traction, no film, hysteresis at
     the rolling speed of a slowly turning screw, ball–ball friction at its rolling speed, no drag
     or return loss). ``nut``: the parameters of :mod:`~ballscrew.friction.nut_losses` (default
-    :class:`~ballscrew.friction.nut_losses.NutLossParameters`).
+    :class:`~ballscrew.friction.nut_losses.NutLossParameters`). ``balls``: per nut (aligned with
+    ``nuts``) the per-ball states of :class:`~ballscrew.friction.speed_spread.NutBalls` that the
+    ``speed_spread`` ball train needs (None: identical balls).
     """
     nut = NutLossParameters() if nut is None else nut
-    states = [solve_ball(model, speed, force, flank, level) for force, flank in nuts if force > 0.0]
+    per_nut = (None,) * len(nuts) if balls is None else balls
+    loaded = [(f, flank, b) for (f, flank), b in zip(nuts, per_nut, strict=True) if f > 0.0]
+    states = [solve_ball(model, speed, force, flank, level) for force, flank, _ in loaded]
     if not states:
         return BallLosses(0.0, 0.0, 0.0, 0.0, 0.0)
     # once per ball (the Z balls of a nut share one state): its motion per unit screw speed and
@@ -291,9 +331,11 @@ def ball_losses(
     sums = np.zeros(6)
     pushes = 0.0
     first: tuple[float, float] | None = None  # film separation and asperity share of the first
-    for state, unit, a, b in zip(states, units, along[:, 1], across[:, 1], strict=True):
+    for state, unit, a, b, (*_, own) in zip(
+        states, units, along[:, 1], across[:, 1], loaded, strict=True
+    ):
         torques, push, separation, psi = _contact_losses(
-            model, state, unit, (float(a), float(b)), nut
+            model, state, unit, (float(a), float(b)), nut, own
         )
         sums += torques
         pushes += push

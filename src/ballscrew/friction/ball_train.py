@@ -21,9 +21,13 @@ form one closed train. The force F_B at a ball–ball contact sets the ball–ba
   same mechanism in a full-complement bearing: balls of different orbital speeds that cannot
   pass each other push one another (Gupta 1984, *Advanced Dynamics of Rolling Elements*; the
   MESYS ball-screw manual, "circumferential ball advance"). The return push is the one
-  mechanism whose force follows from quantities the ball model has; the speed differences of
-  the loaded balls (load, contact-angle and ball-diameter spread) need per-ball states the
-  model does not resolve (every ball of a nut shares one state).
+  mechanism whose force follows from quantities the ball model has.
+* ``speed_spread``: the loaded balls want different orbital speeds (their loads, contact angles
+  and diameters differ along the nut) and cannot pass each other; each group of touching balls
+  moves at the speed where the creep drives of its raceways balance, and the leading ball also
+  pushes the return (:mod:`ballscrew.friction.speed_spread`). F_B is the mean contact force over
+  the loaded balls of the given circuits; without per-ball states (identical balls) it is the
+  ``return_push`` force.
 """
 
 from __future__ import annotations
@@ -34,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ballscrew.friction.speed_spread import TrainSpread, spread_forces
 from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative, positive
 
@@ -48,6 +53,7 @@ __all__ = [
     "TrainForces",
     "ball_ball_force",
     "return_resistance",
+    "speed_spread_force",
     "train_forces",
 ]
 
@@ -96,6 +102,9 @@ class BallTrain:
     """F_v, drag of one ball in the lubricant [N]."""
     load_ratio: float = DEFAULT_BALL_BALL_LOAD_RATIO
     """r = F_B/Q of the ``ratio`` model."""
+    spread: tuple[TrainSpread, ...] = ()
+    """The loaded balls of circuits in their direction of travel (``speed_spread``; empty:
+    identical balls)."""
 
     @property
     def return_balls(self) -> float:
@@ -171,3 +180,20 @@ def return_push_force(train: BallTrain) -> TrainForces:
 def ball_ball_force(model: str, train: BallTrain) -> TrainForces:
     """Contact forces of one circuit by the registered ball-train ``model``."""
     return BALL_TRAIN_MODELS.entry(model).model(train)
+
+
+@BALL_TRAIN_MODELS.register(
+    "speed_spread",
+    "loaded balls of different free orbital speeds push each other (creep drives, "
+    "pool-adjacent-violators) and the return",
+)
+def speed_spread_force(train: BallTrain) -> TrainForces:
+    """F_B = the mean of the contact forces C_i ahead of the loaded balls over the circuits of
+    ``train.spread`` (:func:`~ballscrew.friction.speed_spread.spread_forces`), the leading ball
+    pushing n_r f_r into the return; identical balls: :func:`return_push_force`."""
+    if not train.spread:
+        return return_push_force(train)
+    nonnegative("friction.return_fraction", train.return_fraction)
+    push = train.return_balls * return_resistance(train)
+    forces = np.concatenate([spread_forces(circuit, push)[0] for circuit in train.spread])
+    return TrainForces(float(np.mean(forces)), push)
