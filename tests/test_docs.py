@@ -40,3 +40,12 @@ def test_tutorials_are_stored_without_outputs(notebook):
     """The site build executes them; stored outputs would go stale."""
     cells = json.loads(notebook.read_text(encoding="utf-8"))["cells"]
     assert all(not c.get("outputs") for c in cells if c["cell_type"] == "code")
+
+
+@pytest.mark.parametrize("page", sorted(DOCS.rglob("*.md")), ids=lambda p: str(p.relative_to(DOCS)))
+def test_pages_hold_no_control_characters(page):
+    """A TeX command written through a Python string without ``r''`` loses its backslash to an
+    escape (``\\tag`` → tab + ``ag``, ``\\beta`` → backspace + ``eta``)."""
+    text = page.read_text(encoding="utf-8")
+    found = sorted({repr(c) for c in re.findall(r"[\x00-\x08\x0b-\x1f\x7f\t]", text)})
+    assert not found, f"{page.name}: {', '.join(found)}"

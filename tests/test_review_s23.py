@@ -111,3 +111,14 @@ def test_a_nested_map_chunks_with_explicit_threads_does_not_deadlock(monkeypatch
     caller.join()
     pool.shutdown()
     assert not deadlocked
+
+
+def test_more_circuits_than_balls_is_one_line_exit_2(tmp_path):
+    """``friction.circuits`` above ``screw.balls_per_nut`` ran silently and gave the return push
+    a mean force above its ramp's maximum ((n_l + 1)/(2 n_l) > 1 for n_l < 1)."""
+    out = tmp_path / "out"
+    args = ["operating-point", "examples/gao2019_tcr.toml", "--out", str(out)]
+    result = runner.invoke(app, [*args, "--set", "friction.circuits=64"])
+    assert result.exit_code == 2 and result.output.count("\n") == 1
+    assert "friction.circuits = 64 is not allowed: 1 to screw.balls_per_nut = 54" in result.output
+    assert not out.exists()

@@ -352,6 +352,16 @@ class Case(Model):
         return self
 
     @model_validator(mode="after")
+    def _a_ball_in_every_circuit(self) -> Case:
+        circuits, balls = self.friction.circuits, self.screw.balls_per_nut
+        if circuits > balls:
+            raise ValueError(
+                f"friction.circuits = {circuits} is not allowed: 1 to screw.balls_per_nut = "
+                f"{balls} (every circuit holds a ball)"
+            )
+        return self
+
+    @model_validator(mode="after")
     def _root_in_the_thread(self) -> Case:
         d_m, d_w = self.screw.pitch_diameter, self.screw.ball_diameter
         for key, spec in (("design", self.design), ("kinematics", self.kinematics)):

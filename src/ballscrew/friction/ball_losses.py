@@ -261,7 +261,8 @@ def _contact_losses(
         mu = _traction_coefficient(model, state, drag.psi)
         spread = _spread(model, unit, balls, mu, nut.circuits)
     train = _train(model, state, nut, force, spread)
-    push = nut.circuits * train.return_push * speed / omega  # 0 at rest (V = 0)
+    # the push's power n_c n_r f_r V per screw speed: V/ω of the unit motion (ω_s → 0⁺ at rest)
+    push = nut.circuits * train.return_push * abs(unit.ball_speed / unit.screw_speed)
     return (
         (
             sliding,

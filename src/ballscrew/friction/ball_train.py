@@ -17,7 +17,10 @@ form one closed train. The force F_B at a ball–ball contact sets the ball–ba
       F_B = n_r f_r (n_l + 1)/(2 n_l),   f_r = μ_r m (g + V²/ρ_r) + F_v,
 
   m the ball mass, V the ball speed, ρ_r the radius of the return path, μ_r the friction
-  coefficient of a ball on the return wall and F_v the drag of the ball in the lubricant. The
+  coefficient of a ball on the return wall and F_v the drag of the ball in the lubricant.
+  f_r takes every return ball as sliding (an upper bound: a ball rolling in the tube resists
+  less) and the train as filled without pre-force (an over-filled or thermally tightened
+  train adds an unknown C_0 > 0 to every contact). The
   same mechanism in a full-complement bearing: balls of different orbital speeds that cannot
   pass each other push one another (Gupta 1984, *Advanced Dynamics of Rolling Elements*; the
   MESYS ball-screw manual, "circumferential ball advance"). The return push is the one
