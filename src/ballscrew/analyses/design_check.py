@@ -157,9 +157,10 @@ class DesignCheck(Presented):
     shaft_stiffness: float
     """Shaft between the fixed bearing and the nut [N/m]."""
     axial_stiffness: float
-    """Nut contacts in series with the shaft [N/m]."""
+    """The nut (``nut_stiffness``) in series with the shaft, the supports rigid [N/m]."""
     drive_stiffness: float | None
-    """Axial stiffness with the support bearings in series [N/m]; None without them."""
+    """``axial_stiffness`` with the support bearings in series [N/m]; None without
+    ``[design] bearing_stiffness``."""
     preload_drag_torque: float
     """Catalogue preload drag torque [N·m]."""
     thermal_elongation: float | None
