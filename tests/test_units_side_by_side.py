@@ -23,10 +23,28 @@ from ballscrew.units import in_display_units
         ((1.0e6, 72890.0), "h", (1.0e6, 72890.0), "h"),
         ((40000.0, 70000.0), "mm·rpm", (40000.0, 70000.0), "mm·rpm"),
         ((math.inf, 2.0e3), "N", (math.inf, 2.0), "kN"),
+        ((0.0, 0.0), "m", (0.0, 0.0), "mm"),
     ],
 )
 def test_one_unit_picked_by_the_largest_value(values, unit, shown, symbol) -> None:
     """The largest finite value picks the unit (a non-finite one is shown as it is)."""
+    got, got_symbol = in_display_units(values, unit)
+    assert got_symbol == symbol
+    assert got == pytest.approx(shown, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("values", "unit", "shown", "symbol"),
+    [
+        ((881.0, 2.0e7), "N", (0.881, 2.0e4), "kN"),
+        ((4840.0, 8.485), "N", (4840.0, 8.485), "N"),
+        ((50.0, 4999.0), "N", (0.05, 4.999), "kN"),
+    ],
+)
+def test_values_far_apart_share_the_unit_of_their_geometric_mean(
+    values, unit, shown, symbol
+) -> None:
+    """100 x apart or more, neither reads as a tiny fraction (8.81×10⁻⁴ MN against 20 MN)."""
     got, got_symbol = in_display_units(values, unit)
     assert got_symbol == symbol
     assert got == pytest.approx(shown, rel=1e-12)

@@ -372,17 +372,30 @@ def to_display(values: object, kind: str, magnitude: float | None = None) -> tup
     return array / scale, symbol
 
 
+SIDE_BY_SIDE_SPREAD = 100.0
+"""Largest over smallest value above which :func:`in_display_units` picks the unit by their
+geometric mean, not by the largest."""
+
+
 def in_display_units(values: Sequence[float], unit: str) -> tuple[tuple[float, ...], str]:
     """SI ``values`` of one quantity, in their ``summary.json`` unit spelling (``"N"``,
-    ``"rad/s"``), in ONE engineering unit picked by the largest, so values set side by side
-    (a demand and its capacity) read alike: ``((800.0, 1.2e4), "N")`` → ``((0.8, 12.0), "kN")``.
-    A unit with no engineering display (``"h"``, ``"mm·rpm"``) is kept, the values as given."""
+    ``"rad/s"``), in ONE engineering unit, so values set side by side (a demand and its
+    capacity) read alike: ``((800.0, 1.2e4), "N")`` → ``((0.8, 12.0), "kN")``.
+
+    The largest finite value picks the unit; where it is :data:`SIDE_BY_SIDE_SPREAD` times the
+    smallest non-zero one or more, their geometric mean does, so neither reads as a tiny
+    fraction: ``((881.0, 2e7), "N")`` → ``((0.881, 2e4), "kN")``, not 8.81×10⁻⁴ MN. A unit with
+    no engineering display (``"h"``, ``"mm·rpm"``) is kept, the values as given."""
     numbers = tuple(float(v) for v in values)
     kind = KIND_OF_UNIT.get(unit)
     if kind is None:
         return numbers, unit
-    largest = max((abs(v) for v in numbers if math.isfinite(v)), default=1.0)
-    symbol, scale = display_unit(kind, largest)
+    sizes = [abs(v) for v in numbers if math.isfinite(v)]
+    magnitude = max(sizes, default=1.0)
+    smallest = min((v for v in sizes if v > 0.0), default=magnitude)
+    if magnitude >= SIDE_BY_SIDE_SPREAD * smallest:
+        magnitude = math.sqrt(magnitude * smallest)
+    symbol, scale = display_unit(kind, magnitude)
     return tuple(v / scale for v in numbers), symbol
 
 

@@ -217,3 +217,29 @@ def test_a_red_margin_reads_demand_and_capacity_in_one_unit() -> None:
     table = next(s for s in result.report() if s.title == "Margins").tables[0]
     row = next(r for r in table.rows if r[0].startswith("axial load vs 0.5"))
     assert row[3] == "kN" and capacity == f"{row[2]:.3f} kN"
+
+
+def test_a_nut_far_softer_than_its_contacts_warns() -> None:
+    """51 of the 54 balls of each nut 30 µm undersized: three balls carry the preload and the
+    nut with bodies has 152 N/µm against the contacts' 1089 N/µm (all balls) — said, not hidden."""
+    raw = raw_case()
+    raw["loads"] = {"ball_diameter_error": [0.0 if k % 54 < 3 else -30e-6 for k in range(108)]}
+    with pytest.warns(UserWarning, match="below 50% of the Hertz contacts"):
+        result = design_check(case_from_dict(raw))
+    assert result.nut_stiffness < 0.5 * result.contact_stiffness
+    assert any("nut stiffness with the elastic bodies" in w for w in result.warnings)
+
+
+def test_the_lift_off_margin_of_a_double_nut_only() -> None:
+    """Demand: the largest axial load; capacity: 2^1.5 F_p (HIWIN); a single nut, modelled with
+    one loaded flank, has none."""
+    raw = raw_case()
+    raw["operating"]["axial_load"] = "5 kN"
+    with pytest.warns(UserWarning, match="lift-off load 2\\^1.5 F_p: 5 kN against 4.243 kN"):
+        result = design_check(case_from_dict(raw))
+    lift = next(m for m in result.margins if m.name == "lift_off")
+    assert lift.capacity == pytest.approx(2.0**1.5 * 1500.0) and lift.status == "red"
+    raw["screw"]["nuts"] = 1
+    raw["operating"]["axial_load"] = "2 kN"
+    single = design_check(case_from_dict(raw))
+    assert "lift_off" not in {m.name for m in single.margins}

@@ -75,6 +75,16 @@ def test_single_nut_load_decays_monotonically_from_the_loaded_end() -> None:
     assert np.all(np.diff(q) < 0) and q[0] / q[-1] > 1.05
 
 
+@pytest.mark.parametrize("fa", [0.0, 500.0])
+def test_a_preloaded_single_nut_carries_preload_plus_load(fa: float) -> None:
+    """One nut's flank carries F_p + F_a; rigid bodies give 1.5 F / (C F^(2/3))."""
+    d = solve(fa, fp=1500.0, nuts=1, bodies=NutBodies())
+    force = 1500.0 + fa
+    assert d.nut_forces == pytest.approx([force], rel=1e-10)
+    compliance = K / (S * (90 * S) ** (2.0 / 3.0))
+    assert d.stiffness == pytest.approx(1.5 * force ** (1.0 / 3.0) / compliance, rel=1e-8)
+
+
 def test_flange_at_the_free_end_spreads_the_load_more_evenly() -> None:
     other = NutBodies(BODIES.screw_rigidity, BODIES.nut_rigidity, BODIES.ring_compliance, False)
     tc = solve(3000.0, fp=0.0, nuts=1).loads

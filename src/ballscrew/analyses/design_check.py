@@ -31,11 +31,12 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
-from ballscrew.units import format_number, in_display_units
+from ballscrew.units import format_number, format_quantity, in_display_units
 from ballscrew.validation import case_with
 
 __all__ = [
     "AMBER_BAND",
+    "BODY_SOFTENING_LIMIT",
     "DesignCheck",
     "DesignWarning",
     "LoadSpectrum",
@@ -53,6 +54,18 @@ PRELOAD_SHARE = design.MAX_PRELOAD_SHARE
 
 DRAG_TORQUE_BAND = 0.30
 """± share of the real preload torque about the formula (THK A-689 worked example)."""
+
+BODY_SOFTENING_LIMIT = 0.5
+"""GUESS: the nut stiffness with the elastic bodies below this share of the Hertz contacts'
+alone is warned about as implausible (the bodies soften a nut by tens of per cent)."""
+
+_HINTS = {
+    "lift_off": (
+        "above it the second nut carries no load and the nut runs with backlash; a preload of "
+        "at least the largest load / 2^1.5 keeps both nuts loaded"
+    ),
+}
+"""What a red margin means, added to its warning."""
 
 Status = Literal["green", "amber", "red"]
 
@@ -144,9 +157,10 @@ class DesignCheck(Presented):
     shaft_stiffness: float
     """Shaft between the fixed bearing and the nut [N/m]."""
     axial_stiffness: float
-    """Nut contacts in series with the shaft [N/m]."""
+    """The nut (``nut_stiffness``) in series with the shaft, the supports rigid [N/m]."""
     drive_stiffness: float | None
-    """Axial stiffness with the support bearings in series [N/m]; None without them."""
+    """``axial_stiffness`` with the support bearings in series [N/m]; None without
+    ``[design] bearing_stiffness``."""
     preload_drag_torque: float
     """Catalogue preload drag torque [N·m]."""
     thermal_elongation: float | None
@@ -274,6 +288,16 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
             "N",
         ),
     ]
+    if case.screw.nuts == 2:
+        out.append(
+            Margin(
+                "lift_off",
+                "max axial load vs lift-off load 2^1.5 F_p",
+                f_max,
+                design.LIFT_OFF_FACTOR * case.operating.preload,
+                "N",
+            )
+        )
     if check["static_safety_factor"] is not None:
         out.append(
             Margin(
@@ -326,13 +350,24 @@ def _warn(
         )
     for m in margins:
         if m.status == "red":
-            values, unit = in_display_units((m.demand, m.capacity), m.unit)
-            demand, capacity = (f"{format_number(v)} {unit}".rstrip() for v in values)
+            shown, unit = in_display_units((m.demand, m.capacity), m.unit)
+            demand, capacity = (f"{format_number(v)} {unit}".rstrip() for v in shown)
+            hint = f"; {_HINTS[m.name]}" if m.name in _HINTS else ""
             warnings.warn(
-                f"{m.label}: {demand} against {capacity}",
+                f"{m.label}: {demand} against {capacity}{hint}",
                 DesignWarning,
                 stacklevel=3,
             )
+    nut_k, contact_k = values["nut_stiffness"], values["contact_stiffness"]
+    if nut_k < BODY_SOFTENING_LIMIT * contact_k:
+        warnings.warn(
+            f"nut stiffness with the elastic bodies {format_quantity(nut_k, 'N/m')} is below "
+            f"{BODY_SOFTENING_LIMIT:.0%} of the Hertz contacts' alone "
+            f"{format_quantity(contact_k, 'N/m')}; check [loads] (nut_outer_diameter, "
+            "lead_error, ball_diameter_error) and design.root_diameter",
+            DesignWarning,
+            stacklevel=3,
+        )
 
 
 def design_check(case: Case) -> DesignCheck:

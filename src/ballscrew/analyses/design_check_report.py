@@ -42,8 +42,8 @@ _VALUES: dict[str, tuple[str, str, float, str]] = {
     "nut_stiffness": ("N/m", "nut stiffness, contacts and bodies", 1e-6, "N/µm"),
     "catalogue_nut_stiffness": ("N/m", "nut stiffness, catalogue 0.8 K", 1e-6, "N/µm"),
     "shaft_stiffness": ("N/m", "shaft stiffness", 1e-6, "N/µm"),
-    "axial_stiffness": ("N/m", "axial stiffness, nut and shaft", 1e-6, "N/µm"),
-    "drive_stiffness": ("N/m", "drive stiffness with bearings", 1e-6, "N/µm"),
+    "axial_stiffness": ("N/m", "nut + shaft stiffness (supports rigid)", 1e-6, "N/µm"),
+    "drive_stiffness": ("N/m", "drive stiffness, nut + shaft + supports", 1e-6, "N/µm"),
     "preload_drag_torque": ("N*m", "preload drag torque", 1.0, "N·m"),
     "thermal_elongation": ("m", "thermal elongation", 1e6, "µm"),
     "thermal_pretension": ("N", "pretension for the temperature rise", 1e-3, "kN"),
@@ -303,6 +303,20 @@ def _ratings_note(result: DesignCheck) -> str:
     )
 
 
+def _supports_note(result: DesignCheck) -> str:
+    """What the drive stiffness includes: a catalogue's nut rigidity compares with the nut's."""
+    text = (
+        "A catalogue's nut rigidity compares with the nut stiffness alone; the shaft between "
+        "the fixed bearing and the nut is in series with it"
+    )
+    if result.drive_stiffness is None:
+        return (
+            text + ". The support bearings are LEFT OUT (taken as rigid): give "
+            "design.bearing_stiffness for the drive stiffness with them."
+        )
+    return text + ", and so are the support bearings (design.bearing_stiffness)."
+
+
 def _margin_row(m: Margin) -> tuple[str, float, float, str, float, str]:
     """A margin's table row, demand and capacity in one engineering unit (rpm, kN; SI in, as
     ``summary.json`` keeps them)."""
@@ -322,7 +336,10 @@ def sections(result: DesignCheck) -> list[Section]:
             "Margins",
             paragraphs=(
                 "capacity / demand: GREEN ≥ 1.25, AMBER ≥ 1, RED < 1. Speed and buckling against "
-                "the makers' 0.8 × critical speed and 0.5 × buckling load (THK, HIWIN).",
+                "the makers' 0.8 × critical speed and 0.5 × buckling load (THK, HIWIN). "
+                "A double nut's largest axial load against the lift-off load 2^1.5 F_p, above "
+                "which the second nut runs unloaded, with backlash (HIWIN F 3.5-3.7); its amber "
+                "band, as every margin's, is a GUESS.",
             ),
             tables=(Table(("check", "demand", "capacity", "unit", "ratio", "status"), margins),),
         ),
@@ -332,7 +349,7 @@ def sections(result: DesignCheck) -> list[Section]:
                 _ratings_note(result) + " Life, static safety, speed and buckling by "
                 "the makers' formulas (THK General Catalog, HIWIN Ballscrews & Accessories); "
                 "nut stiffness from the Hertz contacts of every ball with the elastic shaft "
-                "under the nut and the nut body (theory manual, Loads).",
+                "under the nut and the nut body (theory manual, Loads). " + _supports_note(result),
             ),
             tables=(Table(("quantity", "value"), _value_rows(result)),),
             figures=("stiffness_curve", "ball_loads"),

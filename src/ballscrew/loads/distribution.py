@@ -23,10 +23,11 @@ solid shaft give c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n) + (1 −
 approach per line load (the thick-ring expansion of the MESYS ball-screw manual).
 
 One Newton solve on (Q, x[, g]) with a dense Jacobian (no loop over balls) and a backtracking
-line search; the force balance Σ σ_j s Q_j = F_a is a linear row of the system, so it holds to
-rounding. The contact angle under load follows the distance of the groove curvature centres
-A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007); the
-axial share s keeps β₀ (the change is of order δ/A, 1–2 %). Theory manual, *Loads*.
+line search; the force balance Σ σ_j s Q_j = F_a (a single nut: F_p + F_a on its one flank) is
+a linear row of the system, so it holds to rounding. The contact angle under load follows the
+distance of the groove curvature centres A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j)
+(Harris & Kotzalas 2007); the axial share s keeps β₀ (the change is of order δ/A, 1–2 %).
+Theory manual, *Loads*.
 """
 
 from __future__ import annotations
@@ -393,7 +394,7 @@ def solve_distribution(
         sigma[:, None],
         c_load,
         force_row[None, :],
-        np.array([fa / f_ref]),
+        np.array([(fa if layout.nuts == 2 else f1) / f_ref]),  # one nut: F_p + F_a
         np.append(q0, x0),
         law,
     )

@@ -66,11 +66,23 @@ _SECTIONS = {"operating", "numerics", "screw", "surface", "medium", "nuts"}
 _GROUPS = {"steady", "numerical", "recommended", "heat_balance", "contacts", "nuts", "margins"}
 
 
+#: Summary keys whose name alone would mislead: the design check's stiffnesses, which an engineer
+#: compares with the catalogue's nut rigidity.
+_WORDS = {
+    "axial_stiffness": "nut + shaft stiffness (supports rigid)",
+    "drive_stiffness": "drive stiffness, nut + shaft + supports",
+    "nut_stiffness": "nut stiffness alone (contacts + bodies)",
+}
+
+
 def readable(name: str) -> str:
     """A field name or dotted summary key as words, for tables, plot axes and the console:
     ``nuts.nut1.orbital_speed`` → ``nut 1: orbital speed``, ``operating.axial_load`` →
     ``axial load``, ``contacts.screw.numerical.peak_pressure`` → ``screw: peak pressure``,
-    ``margins.speed.ratio`` → ``speed margin (capacity/demand)``, ``F1`` → ``F1``."""
+    ``margins.speed.ratio`` → ``speed margin (capacity/demand)``, ``F1`` → ``F1``,
+    ``axial_stiffness`` → ``nut + shaft stiffness (supports rigid)``."""
+    if name in _WORDS:
+        return _WORDS[name]
     parts = [p for p in name.split(".") if p]
     if len(parts) == 3 and parts[0] == "margins" and parts[2] == "ratio":
         return f"{readable(parts[1])} margin (capacity/demand)"
