@@ -10,12 +10,14 @@ adds the maker's values.
 Ball count: a circuit of t turns holds floor(t π d_m/(D_w cos λ)) − 1 balls
 (:func:`ballscrew.design.circuit_ball_count`), the nut ``circuits`` of them.
 
-Before the case is written the sheet is checked against rules every maker's thread obeys, so
-that a value in the wrong unit is blamed on its own option: the ball is smaller than d0/2 and
-than the lead (one groove per lead of a single-start thread); the lead is at most π d_m (helix
-angle λ = atan(L/(π d_m)) at most 45°) and at least D_w/2 (makers' balls are about 0.5–0.8 of
-the lead; a lead below half the ball is no thread for it); the ball-centre diameter d_m lies
-within one ball diameter of d0; the root diameter lies between d_m − 2 D_w and d_m.
+Before the case is written the sheet is checked against the geometry of a thread, so that a
+value in the wrong unit is blamed on its own option: the ball is smaller than d0/2 and than the
+lead (one groove per lead of a single-start thread); the lead is at most π d_m (lead angle
+λ = atan(L/(π d_m)) at most 45°) and at least D_w/2 (makers' balls are at most about 0.8 of the
+lead, so a lead below half the ball is taken as a wrong unit and blamed on --lead, one between
+D_w/2 and D_w on --ball); the ball-centre diameter d_m lies within one ball diameter of d0
+[GUESS: a plausibility bound; THK prints 41.75 mm for a 40 mm screw with 6.35 mm balls]; the
+root diameter lies between d_m − 2 D_w and d_m (the case's own rule).
 """
 
 from __future__ import annotations
