@@ -9,6 +9,15 @@ adds the maker's values.
 
 Ball count: a circuit of t turns holds floor(t π d_m/(D_w cos λ)) − 1 balls
 (:func:`ballscrew.design.circuit_ball_count`), the nut ``circuits`` of them.
+
+Before the case is written the sheet is checked against the geometry of a thread, so that a
+value in the wrong unit is blamed on its own option: the ball is smaller than d0/2 and than the
+lead (one groove per lead of a single-start thread); the lead is at most π d_m (lead angle
+λ = atan(L/(π d_m)) at most 45°) and at least D_w/2 (makers' balls are at most about 0.8 of the
+lead, so a lead below half the ball is taken as a wrong unit and blamed on --lead, one between
+D_w/2 and D_w on --ball); the ball-centre diameter d_m lies within one ball diameter of d0
+[GUESS: a plausibility bound; THK prints 41.75 mm for a 40 mm screw with 6.35 mm balls]; the
+root diameter lies between d_m − 2 D_w and d_m (the case's own rule).
 """
 
 from __future__ import annotations
@@ -28,6 +37,7 @@ from ballscrew.design import (
 )
 from ballscrew.errors import InputError
 from ballscrew.geometry import ScrewGeometry
+from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.materials import material
 
 __all__ = ["CatalogueSheet", "parse_turns", "starter_case"]
@@ -48,7 +58,7 @@ class CatalogueSheet:
     """What a maker's table says about one screw (SI)."""
 
     nominal_diameter: float
-    """d0 [m], taken as the pitch diameter d_m."""
+    """d0 [m]; also the pitch diameter d_m unless :attr:`pitch_diameter` is given."""
     lead: float
     """L [m]."""
     ball_diameter: float
@@ -64,6 +74,15 @@ class CatalogueSheet:
     """Screw shaft length [m]."""
     nut_length: float | None = None
     """Length of each nut [m]; None = the loaded turns plus one lead at each end."""
+    pitch_diameter: float | None = None
+    """Ball-centre (pitch circle) diameter d_m [m]; None = d0."""
+    root_diameter: float | None = None
+    """Thread root (minor) diameter d_r [m]; None = the groove bottom."""
+
+    @property
+    def d_m(self) -> float:
+        """The pitch diameter d_m [m]: the sheet's ball-centre diameter, else d0."""
+        return self.nominal_diameter if self.pitch_diameter is None else self.pitch_diameter
 
 
 def parse_turns(text: str) -> tuple[float, int]:
@@ -80,19 +99,63 @@ def parse_turns(text: str) -> tuple[float, int]:
     return t, c
 
 
+def _plural(count: float, word: str) -> str:
+    """'1 nut', '2 nuts', '2.5 turns'."""
+    return f"{count:g} {word}" + ("" if count == 1 else "s")
+
+
+def _in_mm(value: float) -> str:
+    return f"{value * 1e3:g} mm"
+
+
+def _unit_hint(value: float, low: float, high: float) -> str:
+    """'; did you mean 10 mm?' when ``value`` × 1000 or / 1000 (metres taken for millimetres
+    or the reverse) lies in (``low``, ``high``]; else empty."""
+    fits = [v for v in (value * 1e3, value * 1e-3) if low < v <= high]
+    return f"; did you mean {_in_mm(fits[0])}?" if fits else ""
+
+
+def _check_diameters(sheet: CatalogueSheet) -> None:
+    """InputError unless d_m lies within one ball of d0 and the root in (d_m − 2 D_w, d_m)."""
+    d0, d_m, ball = sheet.nominal_diameter, sheet.d_m, sheet.ball_diameter
+    if not abs(d_m - d0) < ball:
+        raise InputError(
+            "--dp",
+            _in_mm(d_m),
+            f"a ball-centre diameter within one ball of d0: {_in_mm(d0 - ball)} to "
+            f"{_in_mm(d0 + ball)}{_unit_hint(d_m, d0 - ball, d0 + ball)}",
+        )
+    root = sheet.root_diameter
+    if root is not None and not d_m - 2.0 * ball < root < d_m:
+        low = d_m - 2.0 * ball
+        raise InputError(
+            "--root",
+            _in_mm(root),
+            f"a thread root between d_m - 2 D_w = {_in_mm(low)} and d_m = {_in_mm(d_m)}"
+            f"{_unit_hint(root, low, d_m)}",
+        )
+
+
 def _check_fits(sheet: CatalogueSheet) -> float:
-    """The nut length [m] after checking that ball, turns and nuts fit."""
+    """The nut length [m] after checking that diameters, lead, ball, turns and nuts fit."""
     d0, lead, ball = sheet.nominal_diameter, sheet.lead, sheet.ball_diameter
+    if not ball < d0 / 2.0:
+        raise InputError("--ball", _in_mm(ball), f"it must be smaller than d0/2 = {_in_mm(d0 / 2)}")
+    _check_diameters(sheet)
+    low, high = ball / 2.0, math.pi * sheet.d_m
+    if not low <= lead <= high:
+        raise InputError(
+            "--lead",
+            _in_mm(lead),
+            f"a lead from D_w/2 = {_in_mm(low)} to pi d_m = {_in_mm(high)} (helix angle at "
+            f"most 45 deg){_unit_hint(lead, low, high)}",
+        )
     if not ball < lead:
         raise InputError(
             "--ball",
-            f"{ball * 1e3:g} mm",
-            f"it must be smaller than the lead {lead * 1e3:g} mm (a "
+            _in_mm(ball),
+            f"it must be smaller than the lead {_in_mm(lead)} (a "
             "single-start thread has one groove per lead; a larger ball overlaps the next turn)",
-        )
-    if not ball < d0 / 2.0:
-        raise InputError(
-            "--ball", f"{ball * 1e3:g} mm", f"it must be smaller than d0/2 = {d0 * 5e2:g} mm"
         )
     loaded = sheet.turns * sheet.circuits * lead
     nut = sheet.nut_length or loaded + 2.0 * lead
@@ -101,13 +164,13 @@ def _check_fits(sheet: CatalogueSheet) -> float:
             "--turns",
             f"{sheet.turns:g}x{sheet.circuits}",
             f"circuits × turns × lead must fit the nut "
-            f"length {nut * 1e3:g} mm (they take {loaded * 1e3:g} mm)",
+            f"length {_in_mm(nut)} (they take {_in_mm(loaded)})",
         )
     if sheet.nuts * nut >= sheet.length:
         raise InputError(
             "--length",
-            f"{sheet.length * 1e3:g} mm",
-            f"it must be longer than {sheet.nuts} nut(s) of {nut * 1e3:g} mm",
+            _in_mm(sheet.length),
+            f"it must be longer than {_plural(sheet.nuts, 'nut')} of {_in_mm(nut)}",
         )
     return nut
 
@@ -127,30 +190,50 @@ def _mm(value: float) -> str:
     return f'"{value * 1e3:.6g} mm"'
 
 
+_OIL = "iso_vg_68"
+"""The starter's lubricant (:data:`~ballscrew.lubrication.lubricant_library.LUBRICANT_LIBRARY`)
+[ASSUMED: an oil of the usual grade; many nuts are delivered greased]."""
+
+
+def _optional(value: float | None, line: str, unknown: str) -> str:
+    """``line`` with the value in mm when the sheet gives it, else the comment ``unknown``."""
+    return unknown if value is None else line.format(_mm(value))
+
+
 def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     """The TOML text of a complete case for ``sheet`` (every command accepts it)."""
     nut_length = _check_fits(sheet)
-    d0, lead, ball = sheet.nominal_diameter, sheet.lead, sheet.ball_diameter
-    per_circuit = circuit_ball_count(d0, ball, lead, sheet.turns)
+    d0, d_m, lead, ball = sheet.nominal_diameter, sheet.d_m, sheet.lead, sheet.ball_diameter
+    per_circuit = circuit_ball_count(d_m, ball, lead, sheet.turns)
     balls = per_circuit * sheet.circuits
-    geometry = ScrewGeometry(d0, lead, ball, CONFORMITY, CONFORMITY, math.pi / 4.0)
+    geometry = ScrewGeometry(d_m, lead, ball, CONFORMITY, CONFORMITY, math.pi / 4.0)
     ca = dynamic_load_rating(geometry, balls)
     preload = sheet.preload
     if preload is None:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
+    oil = LUBRICANT_LIBRARY[_OIL]
+    root = "root_diameter = {}   # thread root (minor) diameter from the sheet\n"
     text = _TEMPLATE.format(
         name=json.dumps(name, ensure_ascii=False),  # a TOML basic string, escapes and all
-        d0=_mm(d0),
+        d_m=_mm(d_m),
+        d_m_note="ball-centre diameter from the sheet" if sheet.pitch_diameter is not None else (
+            "d0 [ASSUMED: give the sheet's ball-centre diameter by --dp]"
+        ),
         d0_mm=f"{d0 * 1e3:.6g}",
         lead_mm=f"{lead * 1e3:.6g}",
         lead=_mm(lead),
         ball=_mm(ball),
-        turns=f"{sheet.turns:g}",
-        circuits=sheet.circuits,
+        turns=_plural(sheet.turns, "turn"),
+        circuits=_plural(sheet.circuits, "circuit"),
+        circuit_count=sheet.circuits,
         per_circuit=per_circuit,
         balls=balls,
-        nuts=sheet.nuts,
+        nuts=_plural(sheet.nuts, "nut"),
+        nut_count=sheet.nuts,
         conformity=CONFORMITY,
+        oil_name=json.dumps(oil.name),
+        oil_key=json.dumps(_OIL),
+        oil_density=f'"{oil.density_15:g} kg/m^3"',
         preload=f'"{preload:.6g} N"',
         ca_kn=f"{ca * 1e-3:.3g}",
         ca_rated_kn=f"{_rating_factor() * ca * 1e-3:.3g}",
@@ -164,10 +247,19 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
             f'"operating.preload" = "{DEFAULT_PRELOAD_SHARE[sheet.nuts]:.0%} of the geometric '
             'C_a, a typical preload"\n'
         ),
+        assumed_d_m="" if sheet.pitch_diameter is not None else (
+            '"screw.pitch_diameter" = "d_m taken as the nominal diameter d0"\n'
+        ),
         length=_mm(sheet.length),
         duty_load=f"\"{round(0.08 * ca, -1):.6g} N\"",
         stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
         unsupported=_mm(0.9 * sheet.length),
+        kinematics_root=_optional(sheet.root_diameter, root, ""),
+        design_root=_optional(
+            sheet.root_diameter,
+            root,
+            '# root_diameter = "... mm"   # the sheet\'s thread root; default the groove bottom\n',
+        ),
         nut_length=_mm(nut_length),
         nut_length_note="given" if sheet.nut_length is not None else (
             "the loaded turns plus one lead at each end [ASSUMED]"
@@ -183,6 +275,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
 
 #: The ``init`` option behind the case fields it sets (prefixes); others follow from --d0.
 _OPTION_OF = (
+    ("screw.pitch_diameter", "--dp"),
     ("screw.lead", "--lead"),
     ("screw.ball_diameter", "--ball"),
     ("screw.balls_per_nut", "--ball"),  # π d0 × turns × circuits / ball: a ball far too small
@@ -192,6 +285,7 @@ _OPTION_OF = (
     ("thermal.bearings", "--length"),
     ("design.unsupported_length", "--length"),
     ("duty.0.stroke", "--length"),
+    ("thermal.stroke", "--length"),
 )
 
 
@@ -210,6 +304,7 @@ def _check_case(text: str, sheet: CatalogueSheet) -> None:
             "--preload": sheet.preload,
             "--nut-length": sheet.nut_length,
             "--length": sheet.length,
+            "--dp": sheet.pitch_diameter,
         }
         option = next(
             (o for field, o in _OPTION_OF if problem.startswith(field) and given[o] is not None),
@@ -227,24 +322,24 @@ _TEMPLATE = """\
 # Units are written in strings ("40 mm"); bare numbers are SI.
 
 name = {name}
-description = "{d0_mm} x {lead_mm} mm ball screw, {turns} turns x {circuits} circuits, {nuts} nuts"
+description = "{d0_mm} x {lead_mm} mm ball screw, {turns} x {circuits}, {nuts}"
 
 [screw]
-pitch_diameter = {d0}        # d_m: the nominal diameter d0 [ASSUMED: catalogues rarely print d_m]
+pitch_diameter = {d_m}        # d_m: {d_m_note}
 lead = {lead}
 ball_diameter = {ball}
 screw_conformity = {conformity}          # groove radius / ball diameter [TYPICAL: 0.52-0.53]
 nut_conformity = {conformity}            # [TYPICAL]
 contact_angle = "45 deg"         # Gothic-arch standard [TYPICAL]
-# {circuits} circuit(s) x {per_circuit} balls, floor(turns pi d_m/(D_w cos lambda)) - 1 per circuit
+# {circuits} x {per_circuit} balls, floor(turns pi d_m/(D_w cos lambda)) - 1 per circuit
 balls_per_nut = {balls}
-nuts = {nuts}                         # 2: double nut preloaded by a spacer; 1: single nut
+nuts = {nut_count}                         # 2: double nut preloaded by a spacer; 1: single nut
 
 # Steels by name (ballscrew.materials); any property written below a name overrides it.
 [materials.ball]
 material = "100Cr6"              # bearing steel AISI 52100 / SUJ2
 [materials.screw]
-material = "42CrMo4"             # induction-hardened shaft steel SCM440 / AISI 4140
+material = "42CrMo4"             # induction-hardened shaft steel SCM440 / AISI 4140 [TYPICAL]
 [materials.nut]
 material = "100Cr6"
 
@@ -254,18 +349,23 @@ material = "100Cr6"
 D = 1.59
 G = "9e-10 m"
 
-# Oil between the asperities; the named lubricant fills its viscosity (ballscrew.lubrication).
+# Oil between the asperities [ASSUMED: many nuts are delivered greased; name your lubricant].
+# The named lubricant (ballscrew.lubrication) gives the viscosity and the density.
 [medium]
-name = "ISO VG 68 mineral oil"
+name = {oil_name}
+density_15 = {oil_density}   # of the named oil at 15 degC
 thermal_conductivity = 0.14      # W/(m K) [TYPICAL mineral oil or grease 0.13-0.15]
 
 [kinematics]
-lubricant = "iso_vg_68"
+lubricant = {oil_key}
+{kinematics_root}
+[friction]
+circuits = {circuit_count}                     # ball circuits (returns) per nut, from --turns
 
 [operating]
 preload = {preload}            # {preload_note}; the makers allow at most {max_share}
 axial_load = "0 N"
-speed = "1000 rpm"
+speed = "1000 rpm"               # [ASSUMED]
 
 [numerics]
 cells_across = 32                # grid cells across each Hertz contact (64 for final numbers)
@@ -283,16 +383,22 @@ ambient_temperature = "20 degC"
 duration = "1 h"
 time_step = "60 s"
 
+# The nut reciprocates over the stroke of the duty cycle below [ASSUMED].
+[thermal.stroke]
+length = {stroke}
+
 # Design check (`ballscrew check`). Without the maker's ratings the check computes C_a and C_0a
 # from the geometry (here C_a = {ca_rated_kn} kN: {ca_kn} kN of the geometry times the hardness
 # and accuracy factors f_H f_ac = {rating_factor} of the 42CrMo4 shaft and grade {grade}) and says
-# so; add the sheet's values when known:
+# so; add the sheet's values when known by removing the '#' below:
+[design]
 #   dynamic_load_rating = "... kN"
 #   static_load_rating = "... kN"
-[design]
 mounting = "fixed-supported"
 unsupported_length = {unsupported}   # 90 % of the shaft between the bearings [ASSUMED]
-required_life = "20000 h"
+{design_root}required_life = "20000 h"          # [ASSUMED]
+load_factor = 1.2                # f_w: smooth running, no shocks [ASSUMED]
+accuracy_grade = {grade}               # C{grade} / P{grade} [ASSUMED]
 
 # A working cycle for `ballscrew duty` and the life of `ballscrew check` [ASSUMED, illustrative:
 # write your machine's]: strokes at 1000 rpm under 8 % of the geometric C_a, then rest.
@@ -307,17 +413,25 @@ duration = "40 min"
 speed = 0
 duration = "20 min"
 
-# The values above that are not on the sheet: every summary and report lists them with the
-# guesses. Delete a line when you write the maker's or your measured value.
+# The values above that are neither on the sheet nor computed from it (the ball count and the
+# oil's density are computed): every summary and report lists them with the guesses. Delete a
+# line when you write the maker's or your measured value.
 [assumed]
-"screw.pitch_diameter" = "d_m taken as the nominal diameter d0"
-"screw.screw_conformity" = "typical Gothic-arch conformity 0.52-0.53"
+{assumed_d_m}"screw.screw_conformity" = "typical Gothic-arch conformity 0.52-0.53"
 "screw.nut_conformity" = "typical Gothic-arch conformity 0.52-0.53"
 "screw.contact_angle" = "Gothic-arch standard 45 deg"
+"materials.screw.material" = "a typical induction-hardened shaft steel"
 "surface.D" = "typical ground raceway (Gao et al. 2019)"
 "surface.G" = "typical ground raceway (Gao et al. 2019)"
+"medium.name" = "an oil of the usual grade; many nuts are delivered greased"
+"kinematics.lubricant" = "an oil of the usual grade; many nuts are delivered greased"
 "medium.thermal_conductivity" = "typical mineral oil or grease 0.13-0.15 W/(m K)"
+"operating.speed" = "an illustrative speed"
 "thermal.nut_outer_diameter" = "1.75 d0, a typical flange-nut body"
+"thermal.stroke.length" = "the stroke of the illustrative duty cycle"
 "design.unsupported_length" = "90 % of the shaft between the bearings"
+"design.required_life" = "a typical requirement of a machine tool"
+"design.load_factor" = "smooth running without shocks (f_w 1-1.2)"
+"design.accuracy_grade" = "a typical precision grade"
 "duty" = "an illustrative cycle, not your machine's"
 {assumed_preload}{assumed_nut_length}"""

@@ -31,7 +31,7 @@ _MM = "mm (or a unit string)"
 
 @user_errors_exit_2
 def init(
-    d0: Annotated[str, typer.Option("--d0", help=f"nominal (pitch) diameter, {_MM}")],
+    d0: Annotated[str, typer.Option("--d0", help=f"nominal diameter, {_MM}")],
     lead: Annotated[str, typer.Option(help=f"lead, {_MM}")],
     ball: Annotated[str, typer.Option(help=f"ball diameter, {_MM}")],
     turns: Annotated[
@@ -50,11 +50,24 @@ def init(
         str | None,
         typer.Option(help=f"length of each nut, {_MM}; default the loaded turns + 2 leads"),
     ] = None,
+    dp: Annotated[
+        str | None,
+        typer.Option(
+            "--dp", help=f"ball-centre (pitch circle) diameter d_m, {_MM}; default d0 [ASSUMED]"
+        ),
+    ] = None,
+    root: Annotated[
+        str | None,
+        typer.Option(help=f"thread root (minor) diameter, {_MM}; default the groove bottom"),
+    ] = None,
     name: Annotated[str, typer.Option(help="case name")] = "my_screw",
 ) -> None:
     """Print a complete case (TOML) for a screw from a maker's table; redirect it to a file."""
     from ballscrew.case.starter import CatalogueSheet, parse_turns, starter_case
     from ballscrew.errors import InputError
+
+    def optional_mm(option: str, text: str | None) -> float | None:
+        return None if text is None else _si(option, text, "length", _MM, 1e-3)
 
     if nuts not in (1, 2):
         raise InputError("--nuts", nuts, "1 or 2")
@@ -68,8 +81,8 @@ def init(
         nuts=nuts,
         preload=None if preload is None else _si("--preload", preload, "force", "N", 1.0),
         length=_si("--length", length, "length", _MM, 1e-3),
-        nut_length=None
-        if nut_length is None
-        else _si("--nut-length", nut_length, "length", _MM, 1e-3),
+        nut_length=optional_mm("--nut-length", nut_length),
+        pitch_diameter=optional_mm("--dp", dp),
+        root_diameter=optional_mm("--root", root),
     )
     typer.echo(starter_case(sheet, name), nl=False)
