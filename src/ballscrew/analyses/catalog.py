@@ -67,7 +67,17 @@ for _analysis in (
         "operating-point",
         "coupled friction torque, heat, temperatures, viscosity and film",
         scalars=operating_point_scalars,
-        headlines=("friction_torque", "heat", "nut_temperature", "screw_temperature"),
+        headlines=(
+            "friction_torque",
+            "friction_part",
+            "heat",
+            "nut_temperature",
+            "screw_temperature",
+        ),
+        labels={
+            "friction_torque": "screw torque (work on the load included)",
+            "friction_part": "friction torque",
+        },
         key_figure="temperature_map.png",
     ),
     Analysis(

@@ -68,6 +68,7 @@ __all__ = [
     "run_kinematics",
     "speed_limit_messages",
     "speed_sweep",
+    "whirl_shaft",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -339,21 +340,46 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
             f"speed {format_quantity(speed, 'rad/s')} gives d·n = {dn:.0f} mm·rpm above the limit "
             f"{spec.dn_limit:.0f} ([kinematics] dn_limit)"
         )
-    if spec.unsupported_length is not None:
-        root = spec.root_diameter or groove_root_diameter(geometry)
+    shaft = whirl_shaft(case)
+    if shaft is not None:
+        length, mounting, root = shaft
+        root = root or groove_root_diameter(geometry)
         material = params.screw
         allowed = spec.critical_speed_factor * critical_speed(
-            root, spec.unsupported_length, material.youngs_modulus, material.density, spec.mounting
+            root, length, material.youngs_modulus, material.density, mounting
         )
         if speed > allowed:
             messages.append(
                 f"speed {format_quantity(speed, 'rad/s')} exceeds "
                 f"{spec.critical_speed_factor:g} × the whirling speed of the screw shaft = "
-                f"{format_quantity(allowed, 'rad/s')} ({spec.mounting}, "
-                f"l = {format_quantity(spec.unsupported_length, 'm')}, "
+                f"{format_quantity(allowed, 'rad/s')} ({mounting}, "
+                f"l = {format_quantity(length, 'm')}, "
                 f"d_r = {format_quantity(root, 'm')})"
             )
     return messages
+
+
+def whirl_shaft(case: Case) -> tuple[float, str, float | None] | None:
+    """(unsupported length [m], mounting, root diameter [m] or None = groove bottom) of the
+    whirling check; None when neither ``[kinematics]`` nor ``[design]`` gives the length.
+
+    Each of ``unsupported_length``, ``mounting`` and ``root_diameter`` is taken from
+    ``[kinematics]`` where the case gives it there, else from ``[design]`` (which ``ballscrew
+    init`` writes), else the ``[kinematics]`` default.
+    """
+    spec, design = case.kinematics, case.design
+    given = spec.model_fields_set
+
+    def pick(name: str) -> Any:
+        if name in given or design is None:
+            return getattr(spec, name)
+        value = getattr(design, name)
+        return getattr(spec, name) if value is None else value
+
+    length = pick("unsupported_length")
+    if length is None:
+        return None
+    return length, pick("mounting"), pick("root_diameter")
 
 
 def check_speed_limits(case: Case, speed: float, *, stacklevel: int = 3) -> list[str]:

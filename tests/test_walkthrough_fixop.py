@@ -1,0 +1,69 @@
+"""Findings of a first-time user's walk through the README with a THK BNFN4010-5 double nut
+(d0 = 40 mm, lead 10 mm, 6.35 mm balls, 2.5 turns x 2 circuits, preload 3000 N, 1500 mm
+shaft) about the operating point, kinematics, calibration, wear and speed inputs."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from ballscrew.cli import app
+
+runner = CliRunner()
+SHEET = ["--d0", "40", "--lead", "10", "--ball", "6.35", "--turns", "2.5x2", "--nuts", "2"]
+THK = [*SHEET, "--preload", "3000", "--length", "1500", "--name", "BNFN4010-5"]
+
+
+def run(*args: str | Path):
+    return runner.invoke(app, [str(a) for a in args])
+
+
+def starter(*args: str) -> str:
+    result = run("init", *args)
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
+def fast(text: str) -> str:
+    return text.replace("cells_across = 32", "cells_across = 16") + '[tcr]\ncell_size = "20 um"\n'
+
+
+@pytest.fixture(scope="module")
+def thk_case(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("thk") / "bnfn4010.toml"
+    path.write_text(fast(starter(*THK)))
+    return path
+
+
+def test_operating_point_above_the_whirling_speed_warns(thk_case, tmp_path) -> None:
+    """`check` gives 0.8 x critical speed = 2949 rpm for this case (design.unsupported_length =
+    1350 mm, written by init); `operating-point --speed "4000 rpm"` (above even the bare
+    critical speed, 3687 rpm) must warn about whirling, not only about d·n."""
+    out = tmp_path / "op"
+    result = run("operating-point", thk_case, "--speed", "4000 rpm", "--out", out)
+    assert result.exit_code == 0, result.output
+    warnings = json.loads((out / "summary.json").read_text())["warnings"]
+    assert any("whirling" in w and "l = 1.35 m" in w for w in warnings), warnings
+
+
+def test_the_console_friction_torque_is_the_friction(thk_case, tmp_path) -> None:
+    """At 500 rpm and 5 kN the console printed 'friction torque 9.137 N·m' while the friction
+    part is 1.18 N·m (heat 61.8 W = 1.18 N·m x 52.4 rad/s); 7.96 N·m is the work F_a L/2pi."""
+    out = tmp_path / "op"
+    result = run(
+        "operating-point", thk_case, "--speed", "500 rpm", "--axial-load", "5 kN", "--out", out
+    )
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    line = next(t for t in result.output.splitlines() if t.strip().startswith("friction torque"))
+    shown = float(re.search(r"([0-9.]+) N·m", line).group(1))
+    assert shown == pytest.approx(summary["friction_part"]["value"], rel=0.01), line
+    screw = next(t for t in result.output.splitlines() if t.strip().startswith("screw torque"))
+    assert "work on the load included" in screw
+    total = float(re.search(r"([0-9.]+) N·m", screw).group(1))
+    assert total == pytest.approx(summary["friction_torque"]["value"], rel=0.01)
+    assert total - shown == pytest.approx(5e3 * 0.01 / (2 * 3.141592653589793), rel=0.01)
