@@ -67,3 +67,50 @@ def test_the_console_friction_torque_is_the_friction(thk_case, tmp_path) -> None
     total = float(re.search(r"([0-9.]+) N·m", screw).group(1))
     assert total == pytest.approx(summary["friction_torque"]["value"], rel=0.01)
     assert total - shown == pytest.approx(5e3 * 0.01 / (2 * 3.141592653589793), rel=0.01)
+
+
+WEAR = """
+[wear]
+grid = [16, 64]
+
+[[wear.programme]]
+axial_load = "2 kN"
+speed = "100 rpm"
+revolutions = 1e4
+
+[[wear.programme]]
+axial_load = "2 kN"
+speed = "1000 rpm"
+revolutions = 1e4
+"""
+
+
+def without_duty(text: str) -> str:
+    """The starter without its illustrative [[duty]] cycle (a wear programme of its own)."""
+    head, rest = text.split("[[duty]]", 1)
+    tail = rest[rest.index("[assumed]") :]
+    return head + "\n".join(t for t in tail.splitlines() if not t.startswith('"duty"')) + "\n"
+
+
+def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
+    """100 rpm wore 2.4 µm, 1000 rpm then exactly 0 with no word why (full-film EHL: asperity
+    share ~1e-10). The summary and report give Λ and ψ per level, and a warning names the level
+    that wears practically nothing; the range warning says 'at 100 rpm', not '100–100 rpm'."""
+    case_file = tmp_path / "wear.toml"
+    case_file.write_text(without_duty(starter(*THK)) + WEAR)
+    out = tmp_path / "wear"
+    result = run("wear", case_file, "--out", out)
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    slow, fast_ = summary["lubrication"]
+    assert slow["part"] == "level 1" and 0.5 < slow["film_parameter"]["value"] < 3.0
+    assert slow["asperity_share"]["value"] > 0.1
+    assert fast_["film_parameter"]["value"] > 3.0 and fast_["asperity_share"]["value"] < 1e-6
+    depth = [lv["max_wear_depth"]["value"] for lv in summary["levels"]]
+    assert depth[0] > 0.0 and depth[1] - depth[0] < 1e-3 * depth[0]
+    warnings = summary["warnings"]
+    full_film = [w for w in warnings if "wears practically nothing" in w]
+    assert len(full_film) == 1 and full_film[0].startswith("level 2 (1000 rpm"), warnings
+    assert any("calibrated at 100 rpm and 2000–4000 N" in w for w in warnings), warnings
+    assert not any("100–100" in w for w in warnings)
+    assert "Film and asperity share by level" in (out / "report.html").read_text()
