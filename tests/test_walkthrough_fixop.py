@@ -114,3 +114,31 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     assert any("calibrated at 100 rpm and 2000–4000 N" in w for w in warnings), warnings
     assert not any("100–100" in w for w in warnings)
     assert "Film and asperity share by level" in (out / "report.html").read_text()
+
+
+def test_the_kinematics_torque_says_it_is_the_contact_losses(thk_case, tmp_path) -> None:
+    """`kinematics --speed "1000 rpm"` called 0.2201 N·m the ball model's 'operating point'
+    torque while `operating-point --set friction.model=ball_model` gives 0.4455 N·m (ball–ball
+    friction, drag, ... added): the kinematics torque is named the ball contacts' losses, and
+    the second sliding map (1677 rpm) says that its speed is the d·n limit's."""
+    out = tmp_path / "kin"
+    result = run("kinematics", thk_case, "--speed", "1000 rpm", "--out", out)
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    torque = summary["drag_torque"]
+    assert "ball_model" not in torque
+    line = next(t for t in result.output.splitlines() if "ball contacts' losses only" in t)
+    shown = float(re.search(r"([0-9.]+) N·m", line).group(1))
+    assert shown == pytest.approx(torque["contact_losses"]["value"], rel=1e-3)
+    report = (out / "report.html").read_text()
+    assert "ball–ball friction" in report
+    caption = (
+        r"(\d+) rpm, the top of the curves vs speed: the d·n limit 70000 mm·rpm / d_m = (\S+) mm"
+    )
+    rpm, pitch = re.search(caption, report).groups()
+    assert float(rpm) == pytest.approx(70000 / float(pitch), abs=0.5)
+    op = tmp_path / "op"
+    args = ("--speed", "1000 rpm", "--set", "friction.model=ball_model", "--out", op)
+    assert run("operating-point", thk_case, *args).exit_code == 0
+    friction = json.loads((op / "summary.json").read_text())["friction_part"]["value"]
+    assert friction > 1.2 * shown  # the full ball model adds ball–ball friction and drag

@@ -107,9 +107,13 @@ for _analysis in (
             "nuts.nut1.spin_screw",
             "nuts.nut1.asperity_share",
             "nuts.nut1.film_thickness_central",
-            "drag_torque.ball_model",
+            "drag_torque.contact_losses",
             "drag_torque.catalogue",
         ),
+        labels={
+            "drag_torque.contact_losses": "drag torque: ball contacts' losses only",
+            "drag_torque.catalogue": "drag torque: catalogue preload torque",
+        },
         key_figure="sliding_high_speed.png",
     ),
     Analysis(

@@ -454,7 +454,10 @@ class KinematicsRun(Presented):
     """Ball-model drag torque at F_a = 0 and the case speed versus preload [N m]."""
     catalogue_torque: float
     model_torque: float
-    """Ball-model drag torque at the operating point [N m]."""
+    """Ball contacts' losses T_c at the case speed and load [N m]: sliding at A and EHL rolling
+    resistance at A and B over ω_s (:func:`computed_drag_torque`); without the ball–ball
+    friction, viscous drag, hysteresis, seals and returns that ``friction.model =
+    "ball_model"`` adds (the name is kept for compatibility)."""
     lubricated: bool
     case: Case
     """The case that was solved."""
