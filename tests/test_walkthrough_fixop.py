@@ -6,12 +6,16 @@ from __future__ import annotations
 
 import json
 import re
+import tomllib
 from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
 
+from ballscrew.case import case_from_dict, with_overrides
+from ballscrew.case.plausibility import implausible_values
 from ballscrew.cli import app
+from ballscrew.units import to_si
 
 runner = CliRunner()
 SHEET = ["--d0", "40", "--lead", "10", "--ball", "6.35", "--turns", "2.5x2", "--nuts", "2"]
@@ -142,3 +146,30 @@ def test_the_kinematics_torque_says_it_is_the_contact_losses(thk_case, tmp_path)
     assert run("operating-point", thk_case, *args).exit_code == 0
     friction = json.loads((op / "summary.json").read_text())["friction_part"]["value"]
     assert friction > 1.2 * shown  # the full ball model adds ball–ball friction and drag
+
+
+@pytest.mark.parametrize(
+    ("speed", "hint"),
+    [("1500", "did you mean '1500 rpm'?"), ("1500 rpm", None), ("90000", "")],
+)
+def test_a_speed_without_a_unit_hints_rpm(thk_case, speed, hint) -> None:
+    """`--speed 1500` is 1500 rad/s = 14 324 rpm, d·n = 573 000 on this 40 mm screw, beyond any
+    ball screw (about 200 000); 1500 rpm is plausible, so the case warning asks 'did you mean
+    1500 rpm?'. 90 000 rad/s is implausible in rpm too: no unit hint."""
+    case = case_from_dict(tomllib.loads(thk_case.read_text()))
+    case = with_overrides(case, {"operating.speed": to_si(speed, "angular_velocity")})
+    found = [m for m in implausible_values(case) if m.startswith("operating.speed")]
+    assert bool(found) is (hint is not None), found
+    if hint is not None:
+        assert "above any ball screw's 200000" in found[0]
+        assert found[0].endswith(hint) if hint else "did you mean" not in found[0]
+
+
+def test_the_speed_option_without_a_unit_hints_rpm(thk_case, tmp_path) -> None:
+    """`kinematics --speed 1500` (the option does not go into the case): the d·n warning asks
+    'did you mean 1500 rpm?'."""
+    out = tmp_path / "kin"
+    result = run("kinematics", thk_case, "--speed", "1500", "--out", out)
+    assert result.exit_code == 0, result.output
+    warnings = json.loads((out / "summary.json").read_text())["warnings"]
+    assert any("d·n" in w and w.endswith("did you mean '1500 rpm'?") for w in warnings), warnings

@@ -35,6 +35,7 @@ from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
 from ballscrew.case.base import MAX_SPEED
+from ballscrew.case.plausibility import speed_hint
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.kinematics.balance import LEVELS, BallState, solve_ball
@@ -339,6 +340,7 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
         messages.append(
             f"speed {format_quantity(speed, 'rad/s')} gives d·n = {dn:.0f} mm·rpm above the limit "
             f"{spec.dn_limit:.0f} ([kinematics] dn_limit)"
+            + speed_hint(speed, geometry.pitch_diameter)
         )
     shaft = whirl_shaft(case)
     if shaft is not None:
