@@ -162,7 +162,10 @@ def test_a_speed_without_a_unit_hints_rpm(thk_case, speed, hint) -> None:
     assert bool(found) is (hint is not None), found
     if hint is not None:
         assert "above any ball screw's 200000" in found[0]
-        assert found[0].endswith(hint) if hint else "did you mean" not in found[0]
+        if hint:
+            assert found[0].endswith(f"if given without a unit (rad/s), {hint}"), found
+        else:
+            assert "did you mean" not in found[0]
 
 
 def test_the_speed_option_without_a_unit_hints_rpm(thk_case, tmp_path) -> None:

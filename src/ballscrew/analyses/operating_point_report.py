@@ -100,7 +100,7 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("speed [rpm]", result.speed * 30.0 / math.pi),
         ("axial load [N]", result.axial_load),
         ("screw torque T, work F_a·L/2π included [N·m]", result.friction_torque),
-        ("friction torque T_f = heat / ω, the friction part of T [N·m]", result.friction_part),
+        ("friction part of T = heat / ω [N·m]", result.friction_part),
         ("friction heat [W]", result.heat),
         ("driving efficiency [-]", result.efficiency),
         ("nut temperature [°C]", result.nut_temperature - CELSIUS),

@@ -96,12 +96,13 @@ def implausible_values(case: Case) -> list[str]:
 
 
 def speed_hint(speed: float, pitch_diameter: float) -> str:
-    """``"; did you mean '1500 rpm'?"`` when ``speed`` [rad/s] on a screw of ``pitch_diameter``
-    [m] exceeds :data:`MAX_PLAUSIBLE_DN` but would not in rpm; ``""`` otherwise."""
+    """``"; if given without a unit (rad/s), did you mean '1500 rpm'?"`` when ``speed``
+    [rad/s] on a screw of ``pitch_diameter`` [m] exceeds :data:`MAX_PLAUSIBLE_DN` but would not
+    in rpm; ``""`` otherwise (the case holds SI values: how the speed was typed is unknown)."""
     highest = MAX_PLAUSIBLE_DN / (1e3 * pitch_diameter) * math.pi / 30.0  # rad/s
-    if speed <= highest:
+    if speed <= highest or speed * math.pi / 30.0 > highest:
         return ""
-    return unit_hint(speed, "angular_velocity", lambda v: v <= highest)
+    return f"; if given without a unit (rad/s), did you mean '{format_number(speed)} rpm'?"
 
 
 def _speeds(case: Case) -> list[str]:
