@@ -169,7 +169,7 @@ KINEMATICS_NUMBERS: dict[str, Callable[[Any], float]] = {
     "nuts.nut1.angle_screw": _nut1("angle_screw"),
     "nuts.nut1.angle_nut": _nut1("angle_nut"),
     "nuts.nut2.load_nut": lambda r: r.states[2].load_nut,
-    "drag_torque.ball_model": lambda r: r.model_torque,
+    "drag_torque.contact_losses": lambda r: r.model_torque,
     "drag_torque.catalogue": lambda r: r.catalogue_torque,
 }
 

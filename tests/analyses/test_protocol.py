@@ -53,6 +53,7 @@ def test_kinematics_speed_limits_are_the_results_warnings(tmp_path):
     case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", QUICK))
     with pytest.warns(SpeedLimitWarning) as caught:
         result = run_kinematics(case, speed=942.5)
-    assert len(result.warnings) == 1
+    assert len(result.warnings) == 2  # d·n, and whirling of the [design] shaft (0.9 m)
     assert "[kinematics] dn_limit" in result.warnings[0]
+    assert "whirling" in result.warnings[1] and "l = 900 mm" in result.warnings[1]
     assert [str(w.message) for w in caught] == list(result.warnings)

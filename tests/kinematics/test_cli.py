@@ -64,9 +64,9 @@ def test_writes_a_complete_results_folder(tmp_path, wear_case_path):
     assert nut["film_thickness_central"]["value"] == pytest.approx(55e-9, rel=0.05)
     torque = summary["drag_torque"]
     assert torque["catalogue"]["value"] == pytest.approx(0.4231, rel=5e-4)
-    assert 0 < torque["ball_model"]["value"] < torque["catalogue"]["value"]
+    assert 0 < torque["contact_losses"]["value"] < torque["catalogue"]["value"]
     assert torque["heat"]["value"] == pytest.approx(
-        torque["ball_model"]["value"] * 10 * math.pi / 3, rel=1e-9
+        torque["contact_losses"]["value"] * 10 * math.pi / 3, rel=1e-9
     )
     assert len(summary["curves"]["load_screw"]["value"]) == 4
     assert summary["options"]["traction"] == "film"

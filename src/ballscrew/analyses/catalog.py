@@ -67,7 +67,17 @@ for _analysis in (
         "operating-point",
         "coupled friction torque, heat, temperatures, viscosity and film",
         scalars=operating_point_scalars,
-        headlines=("friction_torque", "heat", "nut_temperature", "screw_temperature"),
+        headlines=(
+            "friction_torque",
+            "friction_part",
+            "heat",
+            "nut_temperature",
+            "screw_temperature",
+        ),
+        labels={
+            "friction_torque": "screw torque (work on the load included)",
+            "friction_part": "friction torque",
+        },
         key_figure="temperature_map.png",
     ),
     Analysis(
@@ -99,9 +109,13 @@ for _analysis in (
             "nuts.nut1.spin_screw",
             "nuts.nut1.asperity_share",
             "nuts.nut1.film_thickness_central",
-            "drag_torque.ball_model",
+            "drag_torque.contact_losses",
             "drag_torque.catalogue",
         ),
+        labels={
+            "drag_torque.contact_losses": "drag torque: ball contacts' losses only",
+            "drag_torque.catalogue": "drag torque: catalogue preload torque",
+        },
         key_figure="sliding_high_speed.png",
     ),
     Analysis(

@@ -35,6 +35,7 @@ from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
 from ballscrew.case.base import MAX_SPEED
+from ballscrew.case.plausibility import speed_hint
 from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.kinematics.balance import LEVELS, BallState, solve_ball
@@ -68,6 +69,7 @@ __all__ = [
     "run_kinematics",
     "speed_limit_messages",
     "speed_sweep",
+    "whirl_shaft",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -338,22 +340,48 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
         messages.append(
             f"speed {format_quantity(speed, 'rad/s')} gives d·n = {dn:.0f} mm·rpm above the limit "
             f"{spec.dn_limit:.0f} ([kinematics] dn_limit)"
+            + speed_hint(speed, geometry.pitch_diameter)
         )
-    if spec.unsupported_length is not None:
-        root = spec.root_diameter or groove_root_diameter(geometry)
+    shaft = whirl_shaft(case)
+    if shaft is not None:
+        length, mounting, root = shaft
+        root = root or groove_root_diameter(geometry)
         material = params.screw
         allowed = spec.critical_speed_factor * critical_speed(
-            root, spec.unsupported_length, material.youngs_modulus, material.density, spec.mounting
+            root, length, material.youngs_modulus, material.density, mounting
         )
         if speed > allowed:
             messages.append(
                 f"speed {format_quantity(speed, 'rad/s')} exceeds "
                 f"{spec.critical_speed_factor:g} × the whirling speed of the screw shaft = "
-                f"{format_quantity(allowed, 'rad/s')} ({spec.mounting}, "
-                f"l = {format_quantity(spec.unsupported_length, 'm')}, "
+                f"{format_quantity(allowed, 'rad/s')} ({mounting}, "
+                f"l = {format_quantity(length, 'm')}, "
                 f"d_r = {format_quantity(root, 'm')})"
             )
     return messages
+
+
+def whirl_shaft(case: Case) -> tuple[float, str, float | None] | None:
+    """(unsupported length [m], mounting, root diameter [m] or None = groove bottom) of the
+    whirling check; None when neither ``[kinematics]`` nor ``[design]`` gives the length.
+
+    Each of ``unsupported_length``, ``mounting`` and ``root_diameter`` is taken from
+    ``[kinematics]`` where the case gives it there, else from ``[design]`` (which ``ballscrew
+    init`` writes), else the ``[kinematics]`` default.
+    """
+    spec, design = case.kinematics, case.design
+    given = spec.model_fields_set
+
+    def pick(name: str) -> Any:
+        if name in given or design is None:
+            return getattr(spec, name)
+        value = getattr(design, name)
+        return getattr(spec, name) if value is None else value
+
+    length = pick("unsupported_length")
+    if length is None:
+        return None
+    return length, pick("mounting"), pick("root_diameter")
 
 
 def check_speed_limits(case: Case, speed: float, *, stacklevel: int = 3) -> list[str]:
@@ -428,7 +456,10 @@ class KinematicsRun(Presented):
     """Ball-model drag torque at F_a = 0 and the case speed versus preload [N m]."""
     catalogue_torque: float
     model_torque: float
-    """Ball-model drag torque at the operating point [N m]."""
+    """Ball contacts' losses T_c at the case speed and load [N m]: sliding at A and EHL rolling
+    resistance at A and B over ω_s (:func:`computed_drag_torque`); without the ball–ball
+    friction, viscous drag, hysteresis, seals and returns that ``friction.model =
+    "ball_model"`` adds (the name is kept for compatibility)."""
     lubricated: bool
     case: Case
     """The case that was solved."""

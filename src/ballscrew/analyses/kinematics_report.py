@@ -76,7 +76,7 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
         "nuts": nuts,
         "drag_torque": {
             "catalogue": value(run.catalogue_torque, "N*m"),
-            "ball_model": value(run.model_torque, "N*m"),
+            "contact_losses": value(run.model_torque, "N*m"),
             "heat": value(run.model_torque * run.speed, "W"),
         },
         "curves": {
@@ -199,10 +199,12 @@ def _torques(run: KinematicsRun, path: Path) -> Path:
     plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
     rpm = run.drag_speeds * _RPM
-    axes[0].plot(rpm, run.no_load_torque, "o-", ms=3, label="ball model (E3.7), F_a = 0")
+    axes[0].plot(rpm, run.no_load_torque, "o-", ms=3, label="ball contacts' losses (E3.7), F_a = 0")
     axes[0].axhline(run.catalogue_torque, color="k", ls="--", label="catalogue (E9.1)")
     axes[0].set_xlabel("screw speed [rpm]")
-    axes[1].plot(run.preloads, run.preload_model, "o-", ms=3, label="ball model (E3.7), F_a = 0")
+    axes[1].plot(
+        run.preloads, run.preload_model, "o-", ms=3, label="ball contacts' losses (E3.7), F_a = 0"
+    )
     axes[1].plot(run.preloads, run.preload_catalogue, "k--", label="catalogue (E9.1)")
     axes[1].set_xlabel("preload [N]")
     for ax in axes:
@@ -242,6 +244,22 @@ def _state_rows(run: KinematicsRun) -> tuple[tuple[object, ...], ...]:
     return tuple(rows)
 
 
+def _why_speed(run: KinematicsRun, speed: float) -> str:
+    """Why a sliding map is drawn at ``speed`` [rad/s]: the case speed or the top of the curves
+    vs speed (``kinematics.speed_range``, else the speed of the d·n limit)."""
+    if math.isclose(speed, run.speed):
+        return "the case speed"
+    if not math.isclose(speed, float(run.sweep.speed.max())):
+        return "the lowest speed of the curves (the case speed is 0)"
+    spec = run.case.kinematics
+    if spec.speed_range is not None:
+        return "the top of the curves vs speed (kinematics.speed_range)"
+    return (
+        f"the top of the curves vs speed: the d·n limit {spec.dn_limit:.0f} mm·rpm / d_m = "
+        f"{1e3 * run.case.screw.pitch_diameter:.4g} mm (kinematics.dn_limit)"
+    )
+
+
 def figures(run: KinematicsRun) -> list[Figure]:
     """Sliding maps at the low and high speed, loads and angles versus speed, drag torques."""
     out = []
@@ -251,7 +269,8 @@ def figures(run: KinematicsRun) -> list[Figure]:
             Figure(
                 f"sliding_{tag}_speed",
                 f"Sliding velocity of the ball relative to the screw over the pressure at A, "
-                f"{rpm:.0f} rpm (arrow length ∝ |Δv|, per figure).",
+                f"{rpm:.0f} rpm, {_why_speed(run, f.state.screw_speed)} (arrow length ∝ |Δv|, "
+                "per figure).",
                 partial(
                     sliding_map,
                     f,
@@ -263,7 +282,11 @@ def figures(run: KinematicsRun) -> list[Figure]:
     return [
         *out,
         Figure("loads_angles_vs_speed", "Q_A, Q_B, β_A, β_B.", partial(_loads_angles, run)),
-        Figure("drag_torque", "Drag torque: ball model and catalogue.", partial(_torques, run)),
+        Figure(
+            "drag_torque",
+            "Drag torque: the ball contacts' losses of the ball model and the catalogue value.",
+            partial(_torques, run),
+        ),
     ]
 
 
@@ -323,19 +346,22 @@ def sections(run: KinematicsRun) -> list[Section]:
         Section(
             "Drag torque",
             paragraphs=(
-                "Catalogue preload drag torque (E9.1) and the ball model: power dissipated "
-                "by sliding at A (traction E3.3) and EHL rolling resistance (E3.4) over ω_s, "
-                "which equals the screw torque of the ball forces (E3.7) when the balance "
-                "includes the traction (level 2). The external load's reversible torque is "
-                "excluded. The curves are at F_a = 0 (no-load drag torque).",
+                "Catalogue preload drag torque (E9.1) and the ball contacts' losses T_c of the "
+                "ball model: power dissipated by sliding at A (traction E3.3) and EHL rolling "
+                "resistance (E3.4) over ω_s, which equals the screw torque of the ball forces "
+                "(E3.7) when the balance includes the traction (level 2). T_c leaves out the "
+                "ball–ball friction, viscous drag, hysteresis, seals and ball returns: the "
+                'friction torque of `operating-point` with friction.model = "ball_model" '
+                "adds them and is larger. The external load's reversible torque is excluded. "
+                "The curves are at F_a = 0 (no-load drag torque).",
             ),
             tables=(
                 Table(
                     ("quantity", "value"),
                     (
                         ("catalogue T_p [N m]", run.catalogue_torque),
-                        ("ball model T [N m], operating point", run.model_torque),
-                        ("heat T·ω_s [W]", run.model_torque * run.speed),
+                        ("ball contacts' losses T_c at the case load [N m]", run.model_torque),
+                        ("their heat T_c·ω_s [W]", run.model_torque * run.speed),
                     ),
                 ),
             ),

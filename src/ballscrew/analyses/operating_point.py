@@ -101,8 +101,14 @@ class OperatingPoint(Presented):
 
     @property
     def friction_torque(self) -> float:
-        """Screw torque T of the nut(s), work on the load included [N·m]."""
+        """Screw torque T = T_f + F_a·L/2π of the nut(s) [N·m]: the friction torque T_f
+        (:attr:`friction_part`) plus the work on the load; the name is kept for compatibility."""
         return self.friction.total
+
+    @property
+    def friction_part(self) -> float:
+        """Friction torque T_f = heat/ω of the nut(s), without the work on the load [N·m]."""
+        return self.friction.friction
 
     @property
     def heat(self) -> float:
@@ -362,6 +368,7 @@ def operating_point_scalars(case: Case) -> dict[str, tuple[float, str]]:
     point = operating_point(case)
     return {
         "friction_torque": (point.friction_torque, "N*m"),
+        "friction_part": (point.friction_part, "N*m"),
         "heat": (point.heat, "W"),
         "efficiency": (point.efficiency, ""),
         "nut_temperature": (point.nut_temperature, "K"),

@@ -39,7 +39,7 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         scalars["coolant_outlet_temperature"] = quantity(outlet, "K")
     friction = result.friction
     scalars["friction_model"] = friction.model
-    scalars["friction_part"] = quantity(friction.friction, "N*m")
+    scalars["friction_part"] = quantity(result.friction_part, "N*m")
     scalars["torque_parts"] = {k: quantity(v, "N*m") for k, v in friction.parts.items()}
     if friction.film_parameter is not None:
         scalars["film_parameter"] = quantity(friction.film_parameter, "")
@@ -100,7 +100,7 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("speed [rpm]", result.speed * 30.0 / math.pi),
         ("axial load [N]", result.axial_load),
         ("screw torque T, work F_a·L/2π included [N·m]", result.friction_torque),
-        ("friction part of T = heat / ω [N·m]", result.friction.friction),
+        ("friction part of T = heat / ω [N·m]", result.friction_part),
         ("friction heat [W]", result.heat),
         ("driving efficiency [-]", result.efficiency),
         ("nut temperature [°C]", result.nut_temperature - CELSIUS),

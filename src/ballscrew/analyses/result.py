@@ -167,6 +167,8 @@ class Analysis:
     """Sweepable scalars of a case, ``name → (value, SI unit)``; None = not sweepable."""
     headlines: tuple[str, ...] = field(default_factory=tuple)
     """Dotted ``summary.json`` keys the index page shows for a results folder."""
+    labels: Mapping[str, str] = field(default_factory=dict)
+    """Words for headline keys whose own words would mislead (default: the key as words)."""
     key_figure: str | None = None
     """The PNG the index page shows for a results folder (None: its first PNG)."""
 

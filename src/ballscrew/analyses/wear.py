@@ -21,6 +21,7 @@ from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.wear_duty import duty_programme, warn_outside_range
+from ballscrew.analyses.wear_film import PartFilm, part_films, warn_full_film
 from ballscrew.budget import check_memory, contact_grid_bytes
 from ballscrew.case import Case
 from ballscrew.case.wear_spec import WearSpec
@@ -50,6 +51,8 @@ class WearResult(Presented):
     life: WearLife
     warnings: tuple[str, ...] = ()
     """Warnings raised during the run (one line each)."""
+    films: tuple[PartFilm, ...] = ()
+    """Film parameter Λ and asperity share ψ of each programme part at the start of the run."""
 
     analysis: ClassVar[str] = "wear"
     presentation: ClassVar[ModuleType] = wear_report
@@ -304,6 +307,8 @@ def wear_life(
     with recorded_warnings() as messages:
         setup = wear_setup(case)
         warn_outside_range(case.wear or WearSpec(), setup.spec.programme)
+        films = part_films(setup, setup.spec.programme)
+        warn_full_film(films)
         life = integrate_wear(
             setup,
             fingerprint(case, setup),
@@ -311,4 +316,4 @@ def wear_life(
             resume=resume,
             max_steps=max_steps,
         )
-    return WearResult(case, life, tuple(messages))
+    return WearResult(case, life, tuple(messages), films)

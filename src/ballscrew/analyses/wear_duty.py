@@ -128,12 +128,18 @@ def range_messages(spec: WearSpec, programme: tuple[WearLevel, ...]) -> list[str
                 continue
             out.append(
                 f"wear.coefficient = {spec.coefficient:.4g} was calibrated at "
-                f"{bounds.speed_min / _RPM:.4g}–{bounds.speed_max / _RPM:.4g} rpm and "
-                f"{bounds.load_min:.4g}–{bounds.load_max:.4g} N; programme level {i + 1} runs at "
+                f"{_span(bounds.speed_min / _RPM, bounds.speed_max / _RPM)} rpm and "
+                f"{_span(bounds.load_min, bounds.load_max)} N; programme level {i + 1} runs at "
                 f"{part.speed / _RPM:.4g} rpm and {part.axial_load:.4g} N: the wear prediction "
                 "there is an extrapolation"
             )
     return out
+
+
+def _span(low: float, high: float) -> str:
+    """'low–high', or one number when the range is a single value (4 significant figures)."""
+    a, b = f"{low:.4g}", f"{high:.4g}"
+    return a if a == b else f"{a}–{b}"
 
 
 def warn_outside_range(spec: WearSpec, programme: tuple[WearLevel, ...]) -> None:

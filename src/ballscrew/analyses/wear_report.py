@@ -7,6 +7,7 @@ Figure 8).
 
 from __future__ import annotations
 
+import math
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -16,6 +17,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
+from ballscrew.analyses.wear_film import FULL_FILM_SHARE
 from ballscrew.case import Case
 from ballscrew.plotting import legend_outside, pyplot, revolutions_axis
 from ballscrew.units import format_number
@@ -82,6 +84,17 @@ def summary(result: WearResult) -> dict[str, Any]:
         "initial_torque": value(float(life.friction_torque[0]), "N*m"),
         "final_torque": value(float(life.friction_torque[-1]), "N*m"),
         "wear_coefficient": {"value": life.coefficient, "unit": "", "source": _provenance(case)},
+        "lubrication": [
+            {
+                "part": f.name,
+                "speed": value(f.speed, "rad/s"),
+                "axial_load": value(f.axial_load, "N"),
+                "ball_load": value(f.ball_load, "N"),
+                "film_parameter": None if f.film_parameter is None else value(f.film_parameter, ""),
+                "asperity_share": value(f.asperity_share, ""),
+            }
+            for f in result.films
+        ],
         "levels": [
             {
                 "axial_load": value(float(f), "N"),
@@ -270,5 +283,32 @@ def sections(result: WearResult) -> list[Section]:
                 Table(("level", "F_a [N]", "end [rev]", "h_max [µm]", "F_p [N]"), rows),
             ),
             figures=("torque_preload", "wear_profiles", "max_wear_depth"),
-        )
+        ),
+        *_film_section(result),
     ]
+
+
+def _film_section(result: WearResult) -> list[Section]:
+    """Λ and ψ of each programme part: why a level wears little or nothing."""
+    if not result.films:
+        return []
+    rows = tuple(
+        (
+            f.name,
+            f.speed * 30.0 / math.pi,
+            f.axial_load,
+            f.ball_load,
+            "dry" if f.film_parameter is None else f"{f.film_parameter:.3g}",
+            f"{f.asperity_share:.3g}",
+        )
+        for f in result.films
+    )
+    text = (
+        "The wear law acts on the asperity-borne part ψQ of the ball load Q only (Johnson, "
+        "Greenwood & Poon 1972): where the EHL film separates the surfaces (Λ = h/σ of a few, "
+        "ψ → 0) a level wears practically nothing, so the wear depth can stop growing from one "
+        "level to the next. Λ and ψ of the mean ball of the more loaded nut at the start of the "
+        f"run (unworn raceway); below ψ = {FULL_FILM_SHARE:g} a warning says so."
+    )
+    table = Table(("part", "speed [rpm]", "F_a [N]", "Q [N]", "Λ [-]", "ψ [-]"), rows)
+    return [Section("Film and asperity share by level", paragraphs=(text,), tables=(table,))]

@@ -20,6 +20,7 @@ from ballscrew.calibration.multi import (
     FIT_PARAMETERS,
     fit_parameters,
     warn_if_systematic,
+    warn_implausible_scale,
 )
 from ballscrew.calibration.result import CalibrationError, CalibrationResult, WearHistory
 from ballscrew.errors import InputError
@@ -147,6 +148,7 @@ def calibrate(
     with recorded_warnings() as messages:
         setup.reissue(result.values)
         warn_if_systematic(result)
+        warn_implausible_scale(result)
     return replace(
         result,
         case=setup.case,

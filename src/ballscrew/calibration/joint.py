@@ -43,6 +43,7 @@ from ballscrew.calibration.multi import (
     too_few_points,
     warn_correlated,
     warn_if_systematic,
+    warn_implausible_scale,
 )
 from ballscrew.calibration.result import CalibrationResult, WearHistory
 from ballscrew.calibration.search import DIFF_STEP, SCAN_STEPS, covariance
@@ -310,6 +311,7 @@ def calibrate_joint(
             setups[group].reissue(result.histories[group].values)
         for history in result.histories:
             warn_if_systematic(history)
+            warn_implausible_scale(history)
     histories = tuple(_with_case(h, s.case) for h, s in zip(result.histories, setups, strict=True))
     return replace(
         result,

@@ -63,6 +63,7 @@ __all__ = [
     "CORRELATION_LIMIT",
     "FIT_PARAMETERS",
     "LINEAR",
+    "PLAUSIBLE_TORQUE_SCALE",
     "CalibrationWarning",
     "FitParameter",
     "HistoryFit",
@@ -72,6 +73,7 @@ __all__ = [
     "solve",
     "start_values",
     "warn_correlated",
+    "warn_implausible_scale",
 ]
 
 
@@ -133,6 +135,12 @@ CORRELATION_LIMIT = 0.995
 """|correlation| of two fitted parameters above which a CalibrationWarning says the data hardly
 separate them (GUESS: each one's standard error is then 1/√(1 − r²) = 10× what it would be
 with the other known)."""
+
+
+PLAUSIBLE_TORQUE_SCALE = (0.2, 5.0)
+"""Band of the fitted torque scale m outside which a CalibrationWarning suspects the torque's
+unit (GUESS: seals, lubricant and running-in move a nut's drag torque by a few times the
+catalogue value, not by a factor of 1000 as N·mm read as N·m does)."""
 
 
 def too_few_points(source: str, n: int, p: int, fit_until: float | None) -> CalibrationError:
@@ -505,6 +513,21 @@ def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
                 CalibrationWarning,
                 stacklevel=3,
             )
+
+
+def warn_implausible_scale(result: CalibrationResult) -> None:
+    """CalibrationWarning when the fitted torque scale lies outside
+    :data:`PLAUSIBLE_TORQUE_SCALE` (most often torques in N·mm read as N·m)."""
+    scale = result.values.get("torque_scale")
+    low, high = PLAUSIBLE_TORQUE_SCALE
+    if scale is not None and not low <= scale <= high:
+        warnings.warn(
+            f"{result.source}: the fitted torque scale {scale:.4g} is outside the plausible "
+            f"{low:g}–{high:g} [GUESS] × the model's drag torque: check the torque's unit (a "
+            "column without a unit is read in N·m; name it e.g. 'friction_torque [N*mm]')",
+            CalibrationWarning,
+            stacklevel=3,
+        )
 
 
 def fit_parameters(

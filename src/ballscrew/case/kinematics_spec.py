@@ -10,8 +10,11 @@ Example::
     level = 1                              # 0 static, 1 centrifugal + groove, 2 full balance
     speed_range = ["0 rpm", "3000 rpm"]    # curves of the `kinematics` command
     lubricant = "iso_vg_68"                # fills medium.viscosity / pressure_viscosity if unset
-    unsupported_length = "800 mm"          # enables the whirling-speed check
+    unsupported_length = "800 mm"          # whirling check; default: [design]'s
     mounting = "fixed-supported"
+
+The whirling check takes ``unsupported_length``, ``mounting`` and ``root_diameter`` from this
+section where given, else from ``[design]`` (which ``ballscrew init`` writes).
 """
 
 from __future__ import annotations
@@ -84,15 +87,27 @@ class KinematicsSpec(Model):
     ] = 32
     unsupported_length: (
         quantity(
-            "length", "unsupported screw length between bearings (whirling check)", gt=0, le=100.0
+            "length",
+            "unsupported screw length between bearings (whirling check); None = "
+            "design.unsupported_length",
+            gt=0,
+            le=100.0,
         )
         | None
     ) = None
     mounting: Mounting = Field(
-        "fixed-supported", description="end fixity of the screw shaft for the whirling speed"
+        "fixed-supported",
+        description="end fixity of the screw shaft for the whirling speed; when not given here, "
+        "design.mounting",
     )
     root_diameter: (
-        quantity("length", "screw root diameter; None = groove bottom", gt=0, le=5.0) | None
+        quantity(
+            "length",
+            "screw root diameter; None = design.root_diameter, else the groove bottom",
+            gt=0,
+            le=5.0,
+        )
+        | None
     ) = None
     critical_speed_factor: Annotated[
         float, Field(gt=0.0, le=1.0, description="allowed fraction of the whirling speed")

@@ -13,7 +13,14 @@ from collections.abc import Callable
 from ballscrew.case.models import Case
 from ballscrew.units import DISPLAY_UNITS, format_number, format_quantity
 
-__all__ = ["NUT_LENGTH_FACTOR", "ImplausibleValueWarning", "implausible_values", "unit_hint"]
+__all__ = [
+    "MAX_PLAUSIBLE_DN",
+    "NUT_LENGTH_FACTOR",
+    "ImplausibleValueWarning",
+    "implausible_values",
+    "speed_hint",
+    "unit_hint",
+]
 
 NUT_LENGTH_FACTOR = 4.0
 """Longest usual nut as a multiple of the pitch diameter, when the case gives no nut length
@@ -22,6 +29,12 @@ NUT_LENGTH_FACTOR = 4.0
 SOFTEST_SOLID = 1e9
 """Smallest Young's modulus or hardness of a raceway, ball or nut material [Pa] (polymers
 are about 1 to 3 GPa; steels about 200 GPa)."""
+
+
+MAX_PLAUSIBLE_DN = 200_000.0
+"""Largest d·n = pitch diameter [mm] × speed [rpm] of any ball screw (standard nuts are rated
+50 000–70 000, the makers' high-speed series 120 000–160 000 and up to about 200 000, e.g.
+THK's and NSK's high-speed catalogues). A speed above it was most likely meant in rpm."""
 
 
 class ImplausibleValueWarning(UserWarning):
@@ -68,6 +81,7 @@ def implausible_values(case: Case) -> list[str]:
             f"operating.preload = {format_quantity(case.operating.preload, 'force')} is above "
             f"design.static_load_rating = {format_quantity(rating, 'force')} (C_0a)"
         )
+    found += _speeds(case)
     for part in ("ball", "screw", "nut"):
         material = getattr(case.materials, part)
         for name in ("youngs_modulus", "hardness"):
@@ -79,6 +93,42 @@ def implausible_values(case: Case) -> list[str]:
                     + unit_hint(value, "pressure", lambda v: not _too_soft(v))
                 )
     return found
+
+
+def speed_hint(speed: float, pitch_diameter: float) -> str:
+    """``"; if given without a unit (rad/s), did you mean '1500 rpm'?"`` when ``speed``
+    [rad/s] on a screw of ``pitch_diameter`` [m] exceeds :data:`MAX_PLAUSIBLE_DN` but would not
+    in rpm; ``""`` otherwise (the case holds SI values: how the speed was typed is unknown)."""
+    highest = MAX_PLAUSIBLE_DN / (1e3 * pitch_diameter) * math.pi / 30.0  # rad/s
+    if speed <= highest or speed * math.pi / 30.0 > highest:
+        return ""
+    return f"; if given without a unit (rad/s), did you mean '{format_number(speed)} rpm'?"
+
+
+def _speeds(case: Case) -> list[str]:
+    """Screw speeds whose d·n exceeds :data:`MAX_PLAUSIBLE_DN`: a number without a unit is
+    rad/s, so ``speed = 1500`` (1500 rpm meant) turns the screw at 14 324 rpm."""
+    d_mm = 1e3 * case.screw.pitch_diameter
+    highest = MAX_PLAUSIBLE_DN / d_mm * math.pi / 30.0  # rad/s
+
+    given: list[tuple[str, float]] = [("operating.speed", case.operating.speed)]
+    if case.kinematics.speed_range is not None:
+        given += [
+            (f"kinematics.speed_range[{i}]", w) for i, w in enumerate(case.kinematics.speed_range)
+        ]
+    given += [(f"duty[{i}].speed", seg.speed) for i, seg in enumerate(case.duty)]
+    if case.wear is not None:
+        given += [
+            (f"wear.programme[{i}].speed", lv.speed) for i, lv in enumerate(case.wear.programme)
+        ]
+    return [
+        f"{key} = {format_number(speed)} rad/s ({format_quantity(speed, 'angular_velocity')}) "
+        f"gives d·n = {d_mm * speed * 30.0 / math.pi:.3g} mm·rpm, above any ball screw's "
+        f"{MAX_PLAUSIBLE_DN:.0f} (a number without a unit is rad/s)"
+        + speed_hint(speed, case.screw.pitch_diameter)
+        for key, speed in given
+        if speed > highest
+    ]
 
 
 def _balls_fit(case: Case) -> list[str]:

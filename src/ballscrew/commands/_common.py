@@ -338,12 +338,13 @@ def finish(folder: Path) -> None:
 
 def headline_lines(folder: Path) -> list[str]:
     """'  label   value unit' lines of the headline numbers of the results folder ``folder``."""
-    from ballscrew.results.headlines import headline_keys, headline_rows
+    from ballscrew.results.headlines import headline_keys, headline_label, headline_rows
     from ballscrew.results.index import SWEEP
 
     summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
     is_sweep = isinstance(summary.get("axes"), dict)
-    keys = SWEEP.headlines if is_sweep else headline_keys(str(summary.get("analysis", "")))
-    rows = headline_rows(summary, keys)
+    analysis = str(summary.get("analysis", ""))
+    keys = SWEEP.headlines if is_sweep else headline_keys(analysis)
+    rows = headline_rows(summary, keys, label=headline_label(analysis))
     width = max((len(label) for label, _ in rows), default=0)
     return [f"  {label:<{width}}  {text}" for label, text in rows]

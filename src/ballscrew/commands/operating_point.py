@@ -1,4 +1,4 @@
-"""``ballscrew operating-point``: friction torque, heat, temperatures, viscosity and film."""
+"""``ballscrew operating-point``: screw and friction torque, heat, temperatures, viscosity, film."""
 
 from __future__ import annotations
 
@@ -32,7 +32,7 @@ def operating_point(
     *,
     output: Output,
 ) -> None:
-    """The coupled steady state: friction torque, heat, efficiency, temperatures and film."""
+    """The coupled steady state: screw and friction torque, heat, efficiency, temperatures, film."""
     from ballscrew.analyses.operating_point import operating_point as solve
 
     omega = quantity_option("--speed", speed, "angular_velocity")

@@ -15,7 +15,7 @@ from ballscrew.analyses.catalog import ANALYSES
 from ballscrew.results.display import readable
 from ballscrew.units import display_kind, format_number, format_quantity
 
-__all__ = ["format_entry", "headline_keys", "headline_rows", "label_of"]
+__all__ = ["format_entry", "headline_keys", "headline_label", "headline_rows", "label_of"]
 
 label_of = readable
 """A dotted summary key in words: an alias of :func:`ballscrew.results.display.readable`."""
@@ -48,6 +48,13 @@ def _lookup(summary: dict[str, Any], dotted: str) -> Any:
 def headline_keys(analysis: str) -> tuple[str, ...]:
     """The dotted summary keys ``analysis`` declares as its headlines (none if unknown)."""
     return ANALYSES[analysis].headlines if analysis in ANALYSES.names else ()
+
+
+def headline_label(analysis: str) -> Callable[[str], str]:
+    """Words of a headline key of ``analysis``: the label its descriptor gives, else the key as
+    words (:func:`~ballscrew.results.display.readable`)."""
+    labels = ANALYSES[analysis].labels if analysis in ANALYSES.names else {}
+    return lambda key: labels.get(key) or readable(key)
 
 
 def headline_rows(

@@ -14,7 +14,7 @@ from ballscrew.analyses.result import Analysis
 from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
 from ballscrew.results.folder import SUMMARY_NAME
-from ballscrew.results.headlines import headline_rows
+from ballscrew.results.headlines import headline_label, headline_rows
 from ballscrew.results.report import Section, write_report
 
 HEADLINES = 6
@@ -40,7 +40,7 @@ def _headlines(summary: dict[str, Any], analysis: str) -> list[str]:
     """'label = value unit' for the analysis' headlines (or its first top-level numbers)."""
     descriptor = _descriptor(analysis)
     keys = descriptor.headlines if descriptor is not None else ()
-    rows = headline_rows(summary, keys, HEADLINES)
+    rows = headline_rows(summary, keys, HEADLINES, headline_label(analysis))
     return [f"{label} = {text}" for label, text in rows]
 
 

@@ -53,9 +53,10 @@ def result_warnings(result: AnalysisResult) -> list[str]:
 
 def _headline_section(summary: dict[str, Any]) -> list[Section]:
     """The report's table of headline numbers in engineering units (as on the console)."""
-    from ballscrew.results.headlines import headline_keys, headline_rows
+    from ballscrew.results.headlines import headline_keys, headline_label, headline_rows
 
-    rows = headline_rows(summary, headline_keys(str(summary["analysis"])))
+    analysis = str(summary["analysis"])
+    rows = headline_rows(summary, headline_keys(analysis), label=headline_label(analysis))
     if not rows:
         return []
     return [Section("Headline numbers", tables=[(["quantity", "value"], [list(r) for r in rows])])]
