@@ -94,6 +94,10 @@ def test_command_writes_the_folder(
         < 3 * (summary["torque_scale_standard_error"]["value"])
     )
     assert summary["rms_residual"]["unit"] == "N*m"
+    # the file's own words about its data reach the summary and the report
+    assert summary["measured"]["notes"][0].startswith("SYNTHETIC example, NOT measured data")
+    report = (out / "report.html").read_text(encoding="utf-8")
+    assert "step_stress_torque.csv says about its data: SYNTHETIC example" in report
     table = np.loadtxt(out / "fit.csv", delimiter=",", skiprows=1)
     np.testing.assert_allclose(table[:, 3], table[:, 2] - table[:, 1], atol=1e-15)
     assert {"fit.csv", "fit.nc", "fit.png", "case.toml", "inputs.json"} <= set(

@@ -32,7 +32,7 @@ from __future__ import annotations
 import csv
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -103,6 +103,8 @@ class MeasuredHistory:
     quantity: str
     source: str = "measured data"
     schedule: NDArray[np.float64] | None = None
+    notes: tuple[str, ...] = ()
+    """The comment lines before the header of a CSV file: what it says about its data."""
     """(speed [rad/s], axial load [N]) run since the previous row, one row per point; None:
     the case's programme."""
 
@@ -344,7 +346,7 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
                 for name, kind in SCHEDULE.items()
             ]
         )
-    return measured_history(
+    history = measured_history(
         rev,
         np.asarray(val) * factor,
         quantity,
@@ -352,3 +354,15 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
         min_points=min_points,
         schedule=schedule,
     )
+    return replace(history, notes=_leading_comments(text))
+
+
+def _leading_comments(text: str) -> tuple[str, ...]:
+    """The ``#`` lines before the first other non-blank line, without their ``#``."""
+    notes = []
+    for line in text.splitlines():
+        if line.strip() and not line.lstrip().startswith("#"):
+            break
+        if line.strip():
+            notes.append(line.lstrip()[1:].strip())
+    return tuple(note for note in notes if note)

@@ -447,6 +447,7 @@ class HistoryFit:
             diagnostics=diagnostics.as_dict(),
             torque_offset=values.get("torque_offset", self.torque_offset),
             correlations=pairs,
+            data_notes=data.notes,
         )
 
 

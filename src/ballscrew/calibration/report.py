@@ -69,6 +69,7 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         "from the Jacobian covariance",
         "measured": {
             "file": result.source,
+            "notes": list(result.data_notes),
             "quantity": result.quantity,
             "unit": result.unit,
             "points": result.n_points,
@@ -271,6 +272,11 @@ def sections(result: CalibrationResult) -> list[Section]:
                 "K is confounded with the stroke and the revolution count of the case: quote "
                 "it together with them. The standard errors cover measurement noise only, not "
                 "the model's own uncertainty.",
+                *(
+                    [f"What {result.source} says about its data: " + " ".join(result.data_notes)]
+                    if result.data_notes
+                    else []
+                ),
             ),
             tables=(Table(("quantity", "value"), tuple(rows)),),
             figures=("fit",),

@@ -122,6 +122,8 @@ class CalibrationResult(Presented):
     """Preload-independent torque T_0 added to the model torque [N m] (fitted or the case's)."""
     correlations: Mapping[str, float] = field(default_factory=dict)
     """Correlation of each pair of fitted parameters from the covariance, keyed ``"a,b"``."""
+    data_notes: tuple[str, ...] = ()
+    """What the measured file says about its data (its leading comment lines)."""
 
     analysis: ClassVar[str] = "calibrate"
     presentation: ClassVar[ModuleType] = calibration_report
