@@ -58,3 +58,22 @@ def test_plausible_values_and_units_raise_nothing(tmp_path):
         write_case(tmp_path, "gao2019_tcr.toml", {"screw.lead": "20 mm", "operating.preload": 3e3})
     )
     assert implausible_values(case) == []
+
+
+def test_a_case_changed_by_overrides_warns_only_about_what_the_overrides_bring(tmp_path):
+    """``with_overrides`` (sweeps, coupled runs) re-validates the case: its own implausible
+    values were warned about when it was read, and are not repeated for every derived case."""
+    import warnings
+
+    from ballscrew.case.loader import with_overrides
+
+    with pytest.warns(ImplausibleValueWarning):
+        case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", {"screw.lead": 0.5}))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleValueWarning)
+        with_overrides(case, {"operating.axial_load": 100.0})
+    with pytest.warns(ImplausibleValueWarning) as caught:
+        with_overrides(case, {"operating.speed": 1500.0})
+    assert [str(w.message).split(": ", 1)[1].split(" = ")[0] for w in caught] == [
+        "operating.speed"
+    ]

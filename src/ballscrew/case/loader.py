@@ -9,7 +9,7 @@ import os
 import stat
 import tomllib
 import warnings
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import UnionType
@@ -115,9 +115,13 @@ def _depth(value: Any) -> int:
 
 
 def case_from_dict(
-    raw: Mapping[str, Any], overrides: Mapping[str, Any] | None = None, source: str = "case"
+    raw: Mapping[str, Any],
+    overrides: Mapping[str, Any] | None = None,
+    source: str = "case",
+    known: Sequence[str] = (),
 ) -> Case:
-    """Validate a case given as nested dictionaries (as read from TOML)."""
+    """Validate a case given as nested dictionaries (as read from TOML); warn about each
+    implausible value (:mod:`ballscrew.case.plausibility`) not among the ``known`` messages."""
     if not isinstance(raw, Mapping):
         raise CaseError([f"expected tables of keys, not {type(raw).__name__}"], source)
     data = apply_overrides(raw, overrides or {}, source)
@@ -135,7 +139,8 @@ def case_from_dict(
     from ballscrew.case.plausibility import ImplausibleValueWarning, implausible_values
 
     for message in implausible_values(case):
-        warnings.warn(f"{source}: {message}", ImplausibleValueWarning, stacklevel=2)
+        if message not in known:
+            warnings.warn(f"{source}: {message}", ImplausibleValueWarning, stacklevel=2)
     return case
 
 
@@ -144,7 +149,11 @@ def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:
 
     The fields ``case`` left at their defaults stay marked unset (``model_fields_set``) unless
     an override writes them, so the defaults that are guesses are still reported as such."""
-    new = case_from_dict(case.model_dump(), overrides, source=case.name)
+    from ballscrew.case.plausibility import implausible_values
+
+    # the case's own implausible values were warned about when it was read
+    known = implausible_values(case)
+    new = case_from_dict(case.model_dump(), overrides, source=case.name, known=known)
     _keep_unset(case, new, [str(key).split(".") for key in overrides])
     return new
 
