@@ -74,6 +74,4 @@ def test_a_case_changed_by_overrides_warns_only_about_what_the_overrides_bring(t
         with_overrides(case, {"operating.axial_load": 100.0})
     with pytest.warns(ImplausibleValueWarning) as caught:
         with_overrides(case, {"operating.speed": 1500.0})
-    assert [str(w.message).split(": ", 1)[1].split(" = ")[0] for w in caught] == [
-        "operating.speed"
-    ]
+    assert [str(w.message).split(": ", 1)[1].split(" = ")[0] for w in caught] == ["operating.speed"]

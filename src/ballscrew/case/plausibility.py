@@ -124,8 +124,7 @@ def _speeds(case: Case) -> list[str]:
     return [
         f"{key} = {format_number(speed)} rad/s ({format_quantity(speed, 'angular_velocity')}) "
         f"gives d·n = {d_mm * speed * 30.0 / math.pi:.3g} mm·rpm, above any ball screw's "
-        f"{MAX_PLAUSIBLE_DN:.0f}"
-        + speed_hint(speed, case.screw.pitch_diameter)
+        f"{MAX_PLAUSIBLE_DN:.0f}" + speed_hint(speed, case.screw.pitch_diameter)
         for key, speed in given
         if speed > highest
     ]
