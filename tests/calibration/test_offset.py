@@ -355,3 +355,22 @@ def test_a_fixed_case_offset_is_added_when_not_fitted(wear_case_path) -> None:
     assert moved.wear_coefficient == pytest.approx(plain.wear_coefficient, rel=1e-6)
     assert moved.torque_scale == pytest.approx(plain.torque_scale, rel=1e-6)
     assert moved.rms_residual == pytest.approx(plain.rms_residual, rel=1e-6)
+
+
+def test_the_joint_report_states_what_each_file_says_about_its_data() -> None:
+    from dataclasses import replace
+
+    from ballscrew.calibration import joint_report
+
+    a, b = noisy(1.0, 0.05, 4, "a"), noisy(1.0, 0.12, 5, "b")
+    a = replace(a, notes=("bench A, screws run in grease",))
+    case = load_case(Path(__file__).parents[2] / "examples" / "wear_step_stress.toml")
+    result = calibrate_joint(case, [a, b], model=CaseModel())
+    first, second = (s for s in joint_report.sections(result) if s.title.startswith("History"))
+    assert f"What {a.source} says about its data: bench A, screws run in grease" in (
+        first.paragraphs
+    )
+    assert not any("says about its data" in text for text in second.paragraphs)
+    assert joint_report.summary(result)["histories"][0]["measured"]["notes"] == [
+        "bench A, screws run in grease"
+    ]

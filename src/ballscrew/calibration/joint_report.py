@@ -123,7 +123,7 @@ def sections(result: JointCalibrationResult) -> list[Section]:
         out.append(
             Section(
                 f"History {j + 1}: {history.source}",
-                paragraphs=section.paragraphs[:1],
+                paragraphs=(section.paragraphs[0], *report.data_notes(history)),
                 tables=section.tables,
                 figures=(f"fit_{j + 1}",),
             )

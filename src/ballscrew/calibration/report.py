@@ -206,6 +206,13 @@ def figures(result: CalibrationResult) -> list[Figure]:
     ]
 
 
+def data_notes(result: CalibrationResult) -> list[str]:
+    """A paragraph with what the measured file says about its data (none if it says nothing)."""
+    if not result.data_notes:
+        return []
+    return [f"What {result.source} says about its data: " + " ".join(result.data_notes)]
+
+
 def sections(result: CalibrationResult) -> list[Section]:
     """The fitted values, their uncertainty and the method."""
     from ballscrew.calibration.multi import FIT_PARAMETERS
@@ -272,11 +279,7 @@ def sections(result: CalibrationResult) -> list[Section]:
                 "K is confounded with the stroke and the revolution count of the case: quote "
                 "it together with them. The standard errors cover measurement noise only, not "
                 "the model's own uncertainty.",
-                *(
-                    [f"What {result.source} says about its data: " + " ".join(result.data_notes)]
-                    if result.data_notes
-                    else []
-                ),
+                *data_notes(result),
             ),
             tables=(Table(("quantity", "value"), tuple(rows)),),
             figures=("fit",),
