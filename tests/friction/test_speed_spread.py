@@ -240,3 +240,25 @@ def test_elastic_ball_states_push_the_balls_and_errors_push_harder(spread_case):
     assert worse.parts["ball_ball"] > even.parts["ball_ball"]
     rest = friction_torque(_with(spread_case, errors, ball_train="speed_spread"), speed=0.0)
     assert 0.0 < rest.parts["ball_ball"]  # the forces per unit speed: finite at breakaway
+
+
+def test_the_ball_states_are_solved_once_per_case(spread_case, monkeypatch):
+    """A coupled operating point asks for the torque of one case at many viscosities: the
+    elastic distribution behind the ball states is solved once, and again for another preload."""
+    from ballscrew.analyses import friction as module
+
+    calls = []
+    original = module.ball_loads
+    monkeypatch.setattr(module, "ball_loads", lambda *a, **k: calls.append(1) or original(*a, **k))
+    module._NUT_BALLS.clear()
+    case = _with(spread_case, {"distribution": "elastic"}, ball_train="speed_spread")
+    first = friction_torque(case, speed=100.0, viscosity=0.05)
+    friction_torque(case, speed=100.0, viscosity=0.02)
+    assert len(calls) == 1
+    other = case.model_copy(
+        update={
+            "operating": case.operating.model_copy(update={"preload": 1.5 * case.operating.preload})
+        }
+    )
+    assert friction_torque(other, speed=100.0, viscosity=0.05).total != first.total
+    assert len(calls) == 2

@@ -11,6 +11,7 @@ from __future__ import annotations
 from functools import partial
 
 from ballscrew.analyses.ball_loads import ball_loads, nut_model
+from ballscrew.analyses.case_cache import CaseCache
 from ballscrew.analyses.kinematics import _level, _speed, ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import Case
@@ -56,19 +57,32 @@ def nut_loss_parameters(case: Case) -> NutLossParameters:
     )
 
 
-def nut_balls(case: Case, params: ScrewParameters) -> tuple[NutBalls, ...] | None:
+def nut_balls(case: Case) -> tuple[NutBalls, ...] | None:
     """Per nut the loads, contact angles and diameter excesses of its balls under the preload
     alone, for ``friction.ball_train = "speed_spread"`` with ``loads.distribution = "elastic"``
-    (None otherwise: identical balls)."""
+    (None otherwise: identical balls). Cached: a coupled operating point asks for the same
+    case at every temperature it tries."""
     if case.friction.ball_train != "speed_spread" or case.loads.distribution != "elastic":
         return None
+    return _NUT_BALLS(case)
+
+
+def _elastic_nut_balls(case: Case) -> tuple[NutBalls, ...]:
     loads = ball_loads(case, axial_load=0.0)
-    layout, _ = nut_model(params, case.loads)
+    layout, _ = nut_model(ScrewParameters.from_case(case), case.loads)
     errors = case.loads.ball_diameter_error or None
     excess = expand_errors("loads.ball_diameter_error", errors, layout).reshape(layout.nuts, -1)
     return tuple(
         NutBalls(q, beta, e) for q, beta, e in zip(loads.loads, loads.angles, excess, strict=True)
     )
+
+
+#: The per-ball states by the case fields they depend on (all but these, which they never read).
+_NUT_BALLS = CaseCache(
+    _elastic_nut_balls,
+    size=8,
+    exclude={"name", "description", "thermal", "wear", "duty", "duty_repeat", "assumed"},
+)
 
 
 def friction_torque(
@@ -110,7 +124,7 @@ def friction_torque(
             level=level,
             hysteresis=spec.hysteresis,
             nut=nut_loss_parameters(case),
-            balls=nut_balls(case, params),
+            balls=nut_balls(case),
         )
     inputs = FrictionInputs(
         lead=geometry.lead,
