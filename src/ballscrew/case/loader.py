@@ -188,15 +188,19 @@ def check_assumed_keys(data: Mapping[str, Any], source: str = "case") -> None:
             raise CaseError([problem], source)
 
 
+def _no_entry(keys: list[str], depth: int, node: list[Any]) -> str:
+    """'duty has no entry 7 (entries: 0 to 1)': the list ``keys[:depth]`` lacks ``keys[depth]``."""
+    entries = f"0 to {len(node) - 1}" if node else "none"
+    return f"{'.'.join(keys[:depth])} has no entry {keys[depth]} (entries: {entries})"
+
+
 def _check_entries_exist(keys: list[str], data: Any, where: str, source: str) -> None:
     """Raise :class:`CaseError` when a list index of ``keys`` names no entry of ``data``."""
     node = data
     for depth, key in enumerate(keys):
         if isinstance(node, list):
             if int(key) >= len(node):
-                entries = f"0 to {len(node) - 1}" if node else "none"
-                problem = f"{where}: {'.'.join(keys[:depth])} has no entry {key} ({entries})"
-                raise CaseError([problem], source)
+                raise CaseError([f"{where}: {_no_entry(keys, depth, node)}"], source)
             node = node[int(key)]
         elif isinstance(node, Mapping):
             node = node.get(key)
@@ -241,10 +245,7 @@ def apply_overrides(
         for depth, key in enumerate(keys):
             if isinstance(node, list):
                 if int(key) >= len(node):
-                    where = ".".join(keys[:depth])
-                    entries = f"0 to {len(node) - 1}" if node else "none"
-                    problem = f"{dotted}: {where} has no entry {key} (entries: {entries})"
-                    raise CaseError([problem], source)
+                    raise CaseError([f"{dotted}: {_no_entry(keys, depth, node)}"], source)
                 key = int(key)
             if depth == len(keys) - 1:
                 node[key] = value
