@@ -95,3 +95,17 @@ def test_arrays_are_read_only() -> None:
         data.values[0] = 1.0
     with pytest.raises(InputError, match="one of"):
         measured_history([0.0, 1.0], [2.0, 3.0], "torque")
+
+
+def test_the_comment_lines_before_the_header_are_the_notes(tmp_path: Path) -> None:
+    """Leading ``#`` lines (blank ones and bare ``#`` skipped) are what the file says about its
+    data; a comment after the header is not."""
+    path = tmp_path / "bench.csv"
+    path.write_text(
+        "# bench A, grease\n\n#\n#   two screws  \n"
+        "revolutions,preload [N]\n# mid\n0,1500\n1e6,1400\n"
+    )
+    assert read_measured(path).notes == ("bench A, grease", "two screws")
+    plain = tmp_path / "plain.csv"
+    plain.write_text("revolutions,preload [N]\n0,1500\n1e6,1400\n")
+    assert read_measured(plain).notes == ()

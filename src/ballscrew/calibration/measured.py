@@ -32,7 +32,7 @@ from __future__ import annotations
 import csv
 import math
 import re
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -103,10 +103,10 @@ class MeasuredHistory:
     quantity: str
     source: str = "measured data"
     schedule: NDArray[np.float64] | None = None
-    notes: tuple[str, ...] = ()
-    """The comment lines before the header of a CSV file: what it says about its data."""
     """(speed [rad/s], axial load [N]) run since the previous row, one row per point; None:
     the case's programme."""
+    notes: tuple[str, ...] = ()
+    """The comment lines before the header of a CSV file: what it says about its data."""
 
     @property
     def unit(self) -> str:
@@ -124,6 +124,7 @@ def measured_history(
     source: str = "measured data",
     min_points: int = 2,
     schedule: ArrayLike | None = None,
+    notes: tuple[str, ...] = (),
 ) -> MeasuredHistory:
     """Validate arrays (SI) and return them as a read-only :class:`MeasuredHistory`.
 
@@ -170,7 +171,7 @@ def measured_history(
     val.setflags(write=False)
     plan = None if schedule is None else _check_schedule(source, schedule, rev.size)
     return MeasuredHistory(
-        revolutions=rev, values=val, quantity=quantity, source=source, schedule=plan
+        revolutions=rev, values=val, quantity=quantity, source=source, schedule=plan, notes=notes
     )
 
 
@@ -346,15 +347,15 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
                 for name, kind in SCHEDULE.items()
             ]
         )
-    history = measured_history(
+    return measured_history(
         rev,
         np.asarray(val) * factor,
         quantity,
         source=source,
         min_points=min_points,
         schedule=schedule,
+        notes=_leading_comments(text),
     )
-    return replace(history, notes=_leading_comments(text))
 
 
 def _leading_comments(text: str) -> tuple[str, ...]:
