@@ -171,7 +171,10 @@ def test_option_off_keeps_the_chain() -> None:
     assert off.films == () and off.heat_paths() == ()
     assert math.isnan(off.heat_path_resistance)
     assert on.resistance == off.resistance  # the micro TCR is not touched
-    assert on.heat_path_resistance < min(p.without_film for p in on.heat_paths())
+    # at 0 kN both nuts carry their patch: each one's film lowers that nut's own path
+    paths = on.heat_paths()
+    assert len(paths) == 2 and all(p.resistance < p.without_film for p in paths)
+    assert with_film_path(paths[0].without_film, 0.0) == paths[0].without_film
 
 
 def test_lifted_off_nut_conducts_through_its_films_only() -> None:
@@ -238,3 +241,26 @@ def test_film_floor_is_the_ehl_film_when_thicker_than_the_roughness() -> None:
     assert h0 == pytest.approx(0.2527e-6 * 10**0.67, rel=0.02)
     still = load_case(EXAMPLE, {**COARSE, "tcr.film_path": "meniscus", "operating.speed": 0.0})
     assert screw_tcr(still).films[0].screw.h0 == pytest.approx(sigma)
+
+
+def test_loaded_film_of_a_sphere_equals_the_radial_integral_of_johnsons_gap() -> None:
+    """An independent reference for (P1) around a loaded patch: on a sphere the gap outside the
+    Hertz circle is Johnson's closed form (1985, eq. 3.42b),
+    h(r) = r²/2R − δ + (a²/πR)[(2 − r²/a²) asin(a/r) + √(r²/a² − 1)], δ = a²/R, and the film
+    conductance the radial integral ∫ 2πr λ/(h0 + h) dr from a to h(r) = h_max − h0."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    radius, lam, h0, h_max = 5e-3, 0.14, 0.3e-6, 20e-6
+    contact = hertz(radius, radius, 115e9, 40.0)
+    a = contact.a
+
+    def gap(r: float) -> float:
+        ratio = r / a
+        shape = (2.0 - ratio**2) * math.asin(1.0 / ratio) + math.sqrt(ratio**2 - 1.0)
+        return r * r / (2.0 * radius) - a * a / radius + a * a / (math.pi * radius) * shape
+
+    outer = brentq(lambda r: h0 + gap(r) - h_max, a * (1 + 1e-12), 10.0 * radius)
+    reference, _ = quad(lambda r: 2.0 * math.pi * r * lam / (h0 + gap(r)), a, outer, limit=200)
+    found = loaded_film_conductance(lam, radius, radius, contact, h0, h_max)
+    assert found == pytest.approx(reference, rel=1e-6)

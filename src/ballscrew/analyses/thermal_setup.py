@@ -264,11 +264,10 @@ def build_problem(
         micro = {n.index: n.resistance for n in tcr.nuts}
         if contact.tcr_model is not None:
             micro = model_nut_resistances(case, tcr, contact.tcr_model)
+        lam = conductivities(case)
         paths = {
             p.index: p.resistance
-            for p in heat_paths(
-                tcr.nuts, tcr.films, conductivities(case), micro, contact.constriction
-            )
+            for p in heat_paths(tcr.nuts, tcr.films, lam, micro, contact.constriction)
         }
     mats = case.materials
     for k in range(nuts_count):
@@ -284,7 +283,6 @@ def build_problem(
             continue
         constriction = 0.0
         if contact.constriction:
-            lam = conductivities(case)
             per_ball = contact_constriction(nut.screw, lam) + contact_constriction(nut.nut, lam)
             constriction = per_ball / nut.balls
         r = micro[nut.index]

@@ -15,6 +15,7 @@ Batliner & Fisher (2025, thermal conductance of static lubricated ball bearings)
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -28,7 +29,6 @@ from ballscrew.errors import InputError
 from ballscrew.validation import nonnegative, positive
 
 __all__ = [
-    "FILM_PATHS",
     "FilmPath",
     "ellipse_gap_conductance",
     "groove_clearance",
@@ -38,9 +38,6 @@ __all__ = [
     "wetted_semi_axes",
     "with_film_path",
 ]
-
-FILM_PATHS = ("none", "meniscus")
-"""``tcr.film_path``: no film path (Gao et al.'s chain), or the film up to its meniscus."""
 
 
 def _check_film(
@@ -101,8 +98,14 @@ def hertz_separation(x: float, y: float, hertz: HertzContact, rx: float, ry: flo
     rd_x = float(elliprd(b2 + lam, lam, a2 + lam))
     rd_y = float(elliprd(a2 + lam, lam, b2 + lam))
     # u/δ: the prefactor p0 a b/(2E*) cancels against δ = u(0, 0) = (p0 a b/2E*)·2R_F(a², b², 0)
-    u = (2.0 * rf - (2.0 / 3.0) * (x2 * rd_x + y2 * rd_y)) / (2.0 * float(elliprf(a2, b2, 0.0)))
+    u = (2.0 * rf - (2.0 / 3.0) * (x2 * rd_x + y2 * rd_y)) / (2.0 * _centre_rf(a2, b2))
     return max(x2 / (2.0 * rx) + y2 / (2.0 * ry) - hertz.approach * (1.0 - u), 0.0)
+
+
+@functools.lru_cache(maxsize=64)
+def _centre_rf(a2: float, b2: float) -> float:
+    """R_F(a², b², 0) of δ = u(0, 0): one per contact, not per quadrature point."""
+    return float(elliprf(a2, b2, 0.0))
 
 
 def loaded_film_conductance(
