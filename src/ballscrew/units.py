@@ -395,8 +395,8 @@ def in_display_units(values: Sequence[float], unit: str) -> tuple[tuple[float, .
     smallest = min((v for v in sizes if v > 0.0), default=magnitude)
     if magnitude >= SIDE_BY_SIDE_SPREAD * smallest:
         magnitude = math.sqrt(magnitude * smallest)
-    symbol, scale = display_unit(kind, magnitude)
-    return tuple(v / scale for v in numbers), symbol
+    shown, symbol = to_display(numbers, kind, magnitude)
+    return tuple(float(v) for v in shown), symbol
 
 
 def format_quantity(
