@@ -144,6 +144,8 @@ class ScrewTCR(Presented):
     def heat_paths(self, constriction: bool = True) -> tuple[NutHeatPath, ...]:
         """Each nut's ball path, micro TCR (+ macro-constriction) with the film in parallel
         (P3); empty without ``[tcr] film_path``."""
+        if not self.films:
+            return ()
         lam = conductivities(self.case)
         return heat_paths(self.nuts, self.films, lam, constriction=constriction)
 

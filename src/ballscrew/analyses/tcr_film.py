@@ -200,6 +200,9 @@ def heat_paths(
 ) -> tuple[NutHeatPath, ...]:
     """Each nut's screw-to-nut resistance, the film in parallel with each contact (P3).
 
+    One path per nut of ``films`` (every nut, lifted-off ones included), or per loaded nut of
+    ``nuts`` when there are no films (micro TCR + macro-constriction alone). The thermal model's
+    interfaces and :meth:`ScrewTCR.heat_paths` both take their constriction from here.
     ``conductivities`` maps "ball", "screw", "nut" to λ [W/(m K)]; ``micro`` overrides the
     nuts' micro TCR R_sbn/n_b (another model's), split between the screw and nut contact in the
     headline model's proportion; ``constriction`` = False leaves out the macro-constriction of
@@ -207,16 +210,18 @@ def heat_paths(
     heat crosses mostly near the patch, so its true spreading resistance is larger).
     """
     by_index = {n.index: n for n in nuts}
+    by_film = {f.index: f for f in films}
     out = []
-    for film in films:
+    for index in by_film or by_index:
+        film = by_film.get(index)
         branches = {
             side: _film_branch(getattr(film, side), radii, conductivities, side, constriction)
-            for side, radii in film.radii.items()
+            for side, radii in ({} if film is None else film.radii).items()
         }
-        nut = by_index.get(film.index)
+        nut = by_index.get(index)
         if nut is None:  # lifted off: the films alone
             r_ball = sum(with_film_path(math.inf, g) for g in branches.values())
-            out.append(NutHeatPath(film.index, math.inf, 0.0, r_ball / film.balls))
+            out.append(NutHeatPath(index, math.inf, 0.0, r_ball / film.balls))
             continue
         own = {s: float(getattr(nut, s).tcr.resistance) for s in SIDES}
         total = micro[nut.index] * nut.balls if micro is not None else sum(own.values())
@@ -228,7 +233,7 @@ def heat_paths(
                 cons = contact_constriction(getattr(nut, side), conductivities)
                 r_cons += cons
                 patch += cons
-            r_ball += with_film_path(patch, branches[side])
+            r_ball += with_film_path(patch, branches.get(side, 0.0))
         out.append(
             NutHeatPath(nut.index, r_micro / nut.balls, r_cons / nut.balls, r_ball / nut.balls)
         )

@@ -1,0 +1,48 @@
+"""The ball heat paths of the screw: one constriction for the thermal model and the TCR result,
+computed once per result, one film quadrature per distinct contact, and the film edge of a
+lifted-off ball (theory manual: *Contact resistance*, *Film path around the ball*)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from scipy.special import ellipk
+
+from ballscrew.analyses.screw_tcr import ScrewTCR
+from ballscrew.analyses.thermal_setup import build_problem
+from ballscrew.case import with_overrides
+
+from .test_film_path import _tcr
+
+GIVEN_TORQUE = {"thermal.drag_torque.source": "given", "thermal.drag_torque.torque": 0.2}
+
+
+def _interfaces(result: ScrewTCR) -> tuple:
+    return build_problem(with_overrides(result.case, GIVEN_TORQUE), result)[3]
+
+
+def test_thermal_interfaces_take_the_constriction_of_the_heat_paths() -> None:
+    """The interfaces keep their numbers (values of the code before the two computations were
+    made one, 1e-12) and the constriction is the closed form (A6): per patch
+    K(e²)/(2π a)·(1/λ_ball + 1/λ_raceway) (Yovanovich 1971), summed over the screw and nut
+    patch of a ball, over 54 balls; λ = 40 W/(m K) for every body of the example."""
+    chain = _tcr(0.0, "none")
+    interfaces = _interfaces(chain)
+    assert [i.micro_resistance for i in interfaces] == pytest.approx([0.03825179077420288] * 2)
+    cons = [i.constriction_resistance for i in interfaces]
+    assert cons == pytest.approx([2.5129744276823214] * 2, rel=1e-12)
+    nut = chain.nuts[0]
+    closed = 0.0
+    for raceway in (nut.screw, nut.nut):
+        a, b = sorted((raceway.contact.hertz.a, raceway.contact.hertz.b), reverse=True)
+        closed += 2.0 * ellipk(1.0 - (b / a) ** 2) / (2.0 * math.pi * 40.0 * a)
+    assert cons[0] == pytest.approx(closed / 54, rel=1e-12)
+    assert all(i.path_resistance is None for i in interfaces)
+
+    lifted = _interfaces(_tcr(5000.0, "meniscus"))
+    assert lifted[0].constriction_resistance == pytest.approx(1.6822678846044279, rel=1e-12)
+    assert [i.resistance for i in lifted] == pytest.approx(
+        [0.5314579854014874, 0.9041646725068996], rel=1e-12
+    )
+    assert lifted[1].constriction_resistance == 0.0
