@@ -4,11 +4,13 @@ lifted-off ball (theory manual: *Contact resistance*, *Film path around the ball
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
 from scipy.special import ellipk
 
+from ballscrew.analyses import screw_tcr as screw_tcr_module
 from ballscrew.analyses.screw_tcr import ScrewTCR
 from ballscrew.analyses.thermal_setup import build_problem
 from ballscrew.case import with_overrides
@@ -46,3 +48,23 @@ def test_thermal_interfaces_take_the_constriction_of_the_heat_paths() -> None:
         [0.5314579854014874, 0.9041646725068996], rel=1e-12
     )
     assert lifted[1].constriction_resistance == 0.0
+
+
+def test_heat_paths_are_computed_once_per_result(monkeypatch: pytest.MonkeyPatch) -> None:
+    """summary(), the report and heat_path_resistance share one evaluation of the paths (the
+    summary and the report each evaluated them twice); the numbers are the earlier ones."""
+    calls = []
+    original = screw_tcr_module.heat_paths
+
+    def counted(*args: object, **kwargs: object) -> tuple:
+        calls.append(1)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(screw_tcr_module, "heat_paths", counted)
+    result = dataclasses.replace(_tcr(5000.0, "meniscus"))  # a fresh result, nothing cached
+    film = result.summary()["film_path"]
+    result.report()
+    both = 1.0 / (1.0 / 0.5314579854014874 + 1.0 / 0.9041646725068996)
+    assert result.heat_path_resistance == pytest.approx(both, rel=1e-12)
+    assert film["resistance"]["value"] == pytest.approx(both, rel=1e-12)
+    assert len(calls) == 1
