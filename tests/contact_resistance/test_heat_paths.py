@@ -11,6 +11,8 @@ import pytest
 from scipy.special import ellipk
 
 from ballscrew.analyses import screw_tcr as screw_tcr_module
+from ballscrew.analyses import tcr_film
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR
 from ballscrew.analyses.thermal_setup import build_problem
 from ballscrew.case import with_overrides
@@ -68,3 +70,23 @@ def test_heat_paths_are_computed_once_per_result(monkeypatch: pytest.MonkeyPatch
     assert result.heat_path_resistance == pytest.approx(both, rel=1e-12)
     assert film["resistance"]["value"] == pytest.approx(both, rel=1e-12)
     assert len(calls) == 1
+
+
+def test_equal_contacts_share_one_film_quadrature(monkeypatch: pytest.MonkeyPatch) -> None:
+    """At zero axial load both nuts carry equal balls: two quadratures (screw, nut), not four;
+    the films keep the values of the code that ran four."""
+    result = _tcr(0.0, "meniscus")
+    calls = []
+    original = tcr_film.loaded_film_conductance
+
+    def counted(*args: object, **kwargs: object) -> float:
+        calls.append(1)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(tcr_film, "loaded_film_conductance", counted)
+    params = ScrewParameters.from_case(result.case)
+    films = tcr_film.nut_films(result.case, params, result.nuts, [1, 2])
+    assert len(calls) == 2
+    for film in films:
+        assert film.screw.conductance == pytest.approx(0.0769718129516161, rel=1e-12)
+        assert film.nut.conductance == pytest.approx(0.08574848475690444, rel=1e-12)

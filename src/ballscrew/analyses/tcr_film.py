@@ -138,24 +138,30 @@ def nut_films(
     """The film of every nut of ``indices``; one missing from ``nuts`` (lifted off) is unloaded.
 
     A loaded contact's film fills the deformed Hertz gap from h0 (:func:`_separation`) to h_max
-    (:func:`_edge`). An unloaded ball sits in the paraboloid gap at h0 = σ (the clearance the
+    (:func:`_edge`); contacts of equal side and ball load (both nuts at zero axial load) share
+    one quadrature. An unloaded ball sits in the paraboloid gap at h0 = σ (the clearance the
     loaded nut's further deflection opens is left out: an upper bound) and is wetted up to the
     h_max of the loaded contact on the same raceway (the same oil layer on the track; the
     groove-bottom clearance when no nut is loaded).
     """
     lam, rarefaction = params.lubrication.thermal_conductivity, params.lubrication.rarefaction
     radii = {side: _radii(params, side) for side in SIDES}
+    solved: dict[tuple[Side, float], FilmPath] = {}
     loaded: dict[int, NutFilm] = {}
     edges: dict[Side, float] = {}
     for nut in nuts:
         paths = {}
         for side in SIDES:
             raceway = getattr(nut, side)
-            hertz = raceway.contact.hertz
-            h0 = _separation(params, case, raceway, side)
-            h_max = edges[side] = _edge(params, case, side, hertz, h0)
-            g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
-            paths[side] = FilmPath(g, h0, h_max)
+            key = (side, raceway.contact.load)
+            if key not in solved:
+                hertz = raceway.contact.hertz
+                h0 = _separation(params, case, raceway, side)
+                h_max = _edge(params, case, side, hertz, h0)
+                g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
+                solved[key] = FilmPath(g, h0, h_max)
+            paths[side] = solved[key]
+            edges[side] = solved[key].h_max
         loaded[nut.index] = NutFilm(nut.index, nut.balls, paths["screw"], paths["nut"], True, radii)
     films = []
     for index in indices:
