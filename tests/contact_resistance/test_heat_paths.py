@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
+from functools import cache
 
 import pytest
 from scipy.special import ellipk
@@ -13,13 +15,14 @@ from scipy.special import ellipk
 from ballscrew.analyses import screw_tcr as screw_tcr_module
 from ballscrew.analyses import tcr_film
 from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.analyses.screw_tcr import ScrewTCR
+from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
 from ballscrew.analyses.thermal_setup import build_problem
-from ballscrew.case import with_overrides
+from ballscrew.case import load_case, with_overrides
 
-from .test_film_path import _tcr
+from .test_film_path import COARSE, EXAMPLE, _tcr
 
 GIVEN_TORQUE = {"thermal.drag_torque.source": "given", "thermal.drag_torque.torque": 0.2}
+STARVED = {"lubrication.supply": "starved", "lubrication.inlet_ratio": 2.0}
 
 
 def _interfaces(result: ScrewTCR) -> tuple:
@@ -90,3 +93,35 @@ def test_equal_contacts_share_one_film_quadrature(monkeypatch: pytest.MonkeyPatc
     for film in films:
         assert film.screw.conductance == pytest.approx(0.0769718129516161, rel=1e-12)
         assert film.nut.conductance == pytest.approx(0.08574848475690444, rel=1e-12)
+
+
+@cache
+def _starved() -> ScrewTCR:
+    """Starved supply at 1 kN: both nuts loaded, unequally (different meniscus gaps)."""
+    case = load_case(
+        EXAMPLE,
+        {**COARSE, **STARVED, "operating.axial_load": 1000.0, "tcr.film_path": "meniscus"},
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return screw_tcr(case)
+
+
+def test_a_lifted_off_ball_takes_the_thickest_meniscus_gap_of_its_side() -> None:
+    """With two loaded nuts of unequal load (starved: h_max 1.355 and 0.971 µm on the screw)
+    a lifted-off ball (nut 3) is wetted up to the larger, whichever order the nuts come in (it
+    took the last loaded nut's: 0.971 µm for nuts (1, 2), 1.355 µm for (2, 1)); with no loaded
+    nut, up to the groove-bottom clearance (r_g − r_b)(1 − cos β) = 0.127 mm (1 − cos 45°)."""
+    result = _starved()
+    params = ScrewParameters.from_case(result.case)
+    assert [n.index for n in result.nuts] == [1, 2]
+    expected = {"screw": 1.3549766469427256e-06, "nut": 1.3727619215364612e-06}
+    for order in (result.nuts, result.nuts[::-1]):
+        lifted = tcr_film.nut_films(result.case, params, order, [1, 2, 3])[2]
+        assert not lifted.loaded
+        for side, h_max in expected.items():
+            assert getattr(lifted, side).h_max == pytest.approx(h_max, rel=1e-9)
+    alone = tcr_film.nut_films(result.case, params, (), [1])[0]
+    clearance = 0.127e-3 * (1.0 - math.sqrt(0.5))
+    assert alone.screw.h_max == pytest.approx(clearance, rel=1e-12)
+    assert alone.nut.h_max == pytest.approx(clearance, rel=1e-12)

@@ -139,16 +139,12 @@ def nut_films(
 
     A loaded contact's film fills the deformed Hertz gap from h0 (:func:`_separation`) to h_max
     (:func:`_edge`); contacts of equal side and ball load (both nuts at zero axial load) share
-    one quadrature. An unloaded ball sits in the paraboloid gap at h0 = σ (the clearance the
-    loaded nut's further deflection opens is left out: an upper bound) and is wetted up to the
-    h_max of the loaded contact on the same raceway (the same oil layer on the track; the
-    groove-bottom clearance when no nut is loaded).
+    one quadrature. A lifted-off ball: :func:`_lifted_edges`.
     """
     lam, rarefaction = params.lubrication.thermal_conductivity, params.lubrication.rarefaction
     radii = {side: _radii(params, side) for side in SIDES}
     solved: dict[tuple[Side, float], FilmPath] = {}
     loaded: dict[int, NutFilm] = {}
-    edges: dict[Side, float] = {}
     for nut in nuts:
         paths = {}
         for side in SIDES:
@@ -161,8 +157,8 @@ def nut_films(
                 g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
                 solved[key] = FilmPath(g, h0, h_max)
             paths[side] = solved[key]
-            edges[side] = solved[key].h_max
         loaded[nut.index] = NutFilm(nut.index, nut.balls, paths["screw"], paths["nut"], True, radii)
+    edges = _lifted_edges(params, solved)
     films = []
     for index in indices:
         if index in loaded:
@@ -171,13 +167,38 @@ def nut_films(
         paths = {}
         for side in SIDES:
             h0 = gaussian_joint(params, case.tcr, side).sigma
-            h_max = edges.get(side, _clearance(params, side))  # no loaded nut: the groove's
-            g = ellipse_gap_conductance(lam, *radii[side], h0, h_max, rarefaction)
-            paths[side] = FilmPath(g, h0, h_max)
+            g = ellipse_gap_conductance(lam, *radii[side], h0, edges[side], rarefaction)
+            paths[side] = FilmPath(g, h0, edges[side])
         films.append(
             NutFilm(index, params.balls_per_nut, paths["screw"], paths["nut"], False, radii)
         )
     return tuple(films)
+
+
+def _lifted_edges(
+    params: ScrewParameters, loaded: Mapping[tuple[Side, float], FilmPath]
+) -> dict[Side, float]:
+    """h_max of a lifted-off ball on each side [m], from the loaded contacts ``loaded``
+    ((side, Q) → film).
+
+    A lifted-off ball touches neither flank: it sees the undeformed paraboloid gap from
+    h0 = σ (the clearance its nut's lift-off opens is left out: an upper bound on the film).
+    How far the oil fills that gap is set by the supply, not by the ball's load: flooded, the
+    groove-bottom clearance, as at a loaded contact; starved or greased, the oil layer the
+    supply leaves on the track, which fixes where the inlet meniscus of a loaded ball forms
+    (Wedeven, Evans & Cameron 1971; Chevalier, Lubrecht, Cann, Colin & Dalmaz 1998). The model
+    knows that layer only as the gap at a loaded contact's meniscus, which varies with the load
+    because the meniscus is placed m Hertz semi-axes upstream. The lifted ball takes the largest
+    h_max of the loaded contacts on its side (the screw's track is one, the nuts' share the
+    supply) — the same bound from above as h0 = σ, whatever the order or number of the nuts;
+    with no loaded contact on the side, the groove-bottom clearance (the flooded limit).
+    """
+    edges = {side: _clearance(params, side) for side in SIDES}
+    for side in SIDES:
+        h_max = [film.h_max for (s, _), film in loaded.items() if s == side]
+        if h_max:
+            edges[side] = max(h_max)
+    return edges
 
 
 def _film_branch(
