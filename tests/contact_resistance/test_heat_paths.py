@@ -8,6 +8,8 @@ import dataclasses
 import math
 import warnings
 from functools import cache
+from types import ModuleType
+from typing import Any
 
 import pytest
 from scipy.special import ellipk
@@ -55,17 +57,23 @@ def test_thermal_interfaces_take_the_constriction_of_the_heat_paths() -> None:
     assert lifted[1].constriction_resistance == 0.0
 
 
-def test_heat_paths_are_computed_once_per_result(monkeypatch: pytest.MonkeyPatch) -> None:
-    """summary(), the report and heat_path_resistance share one evaluation of the paths (the
-    summary and the report each evaluated them twice); the numbers are the earlier ones."""
-    calls = []
-    original = screw_tcr_module.heat_paths
+def _count_calls(monkeypatch: pytest.MonkeyPatch, module: ModuleType, name: str) -> list[int]:
+    """Replace ``module.name`` by a wrapper that appends to the returned list at every call."""
+    calls: list[int] = []
+    original = getattr(module, name)
 
-    def counted(*args: object, **kwargs: object) -> tuple:
+    def counted(*args: Any, **kwargs: Any) -> Any:
         calls.append(1)
         return original(*args, **kwargs)
 
-    monkeypatch.setattr(screw_tcr_module, "heat_paths", counted)
+    monkeypatch.setattr(module, name, counted)
+    return calls
+
+
+def test_heat_paths_are_computed_once_per_result(monkeypatch: pytest.MonkeyPatch) -> None:
+    """summary(), the report and heat_path_resistance share one evaluation of the paths (the
+    summary and the report each evaluated them twice); the numbers are the earlier ones."""
+    calls = _count_calls(monkeypatch, screw_tcr_module, "heat_paths")
     result = dataclasses.replace(_tcr(5000.0, "meniscus"))  # a fresh result, nothing cached
     film = result.summary()["film_path"]
     result.report()
@@ -79,14 +87,7 @@ def test_equal_contacts_share_one_film_quadrature(monkeypatch: pytest.MonkeyPatc
     """At zero axial load both nuts carry equal balls: two quadratures (screw, nut), not four;
     the films keep the values of the code that ran four."""
     result = _tcr(0.0, "meniscus")
-    calls = []
-    original = tcr_film.loaded_film_conductance
-
-    def counted(*args: object, **kwargs: object) -> float:
-        calls.append(1)
-        return original(*args, **kwargs)
-
-    monkeypatch.setattr(tcr_film, "loaded_film_conductance", counted)
+    calls = _count_calls(monkeypatch, tcr_film, "loaded_film_conductance")
     params = ScrewParameters.from_case(result.case)
     films = tcr_film.nut_films(result.case, params, result.nuts, [1, 2])
     assert len(calls) == 2
