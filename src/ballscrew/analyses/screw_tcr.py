@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from types import ModuleType
 from typing import ClassVar
 
@@ -143,9 +144,22 @@ class ScrewTCR(Presented):
 
     def heat_paths(self, constriction: bool = True) -> tuple[NutHeatPath, ...]:
         """Each nut's ball path, micro TCR (+ macro-constriction) with the film in parallel
-        (P3); empty without ``[tcr] film_path``."""
-        lam = conductivities(self.case)
-        return heat_paths(self.nuts, self.films, lam, constriction=constriction)
+        (P3); empty without ``[tcr] film_path``. With the constriction (the default) it is
+        computed once per result."""
+        if constriction:
+            return self._heat_paths
+        return self._paths(constriction=False)
+
+    @cached_property
+    def _heat_paths(self) -> tuple[NutHeatPath, ...]:
+        """:meth:`heat_paths` with the macro-constriction (cached: the summary and the report
+        each read it and :attr:`heat_path_resistance`)."""
+        return self._paths(constriction=True)
+
+    def _paths(self, constriction: bool) -> tuple[NutHeatPath, ...]:
+        if not self.films:
+            return ()
+        return heat_paths(self.nuts, self.films, conductivities(self.case), None, constriction)
 
     @property
     def heat_path_resistance(self) -> float:

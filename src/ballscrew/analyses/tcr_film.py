@@ -138,25 +138,27 @@ def nut_films(
     """The film of every nut of ``indices``; one missing from ``nuts`` (lifted off) is unloaded.
 
     A loaded contact's film fills the deformed Hertz gap from h0 (:func:`_separation`) to h_max
-    (:func:`_edge`). An unloaded ball sits in the paraboloid gap at h0 = σ (the clearance the
-    loaded nut's further deflection opens is left out: an upper bound) and is wetted up to the
-    h_max of the loaded contact on the same raceway (the same oil layer on the track; the
-    groove-bottom clearance when no nut is loaded).
+    (:func:`_edge`); contacts of equal side and ball load (both nuts at zero axial load) share
+    one quadrature. A lifted-off ball: :func:`_lifted_edges`.
     """
     lam, rarefaction = params.lubrication.thermal_conductivity, params.lubrication.rarefaction
     radii = {side: _radii(params, side) for side in SIDES}
+    solved: dict[tuple[Side, float], FilmPath] = {}
     loaded: dict[int, NutFilm] = {}
-    edges: dict[Side, float] = {}
     for nut in nuts:
         paths = {}
         for side in SIDES:
             raceway = getattr(nut, side)
-            hertz = raceway.contact.hertz
-            h0 = _separation(params, case, raceway, side)
-            h_max = edges[side] = _edge(params, case, side, hertz, h0)
-            g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
-            paths[side] = FilmPath(g, h0, h_max)
+            key = (side, raceway.contact.load)
+            if key not in solved:
+                hertz = raceway.contact.hertz
+                h0 = _separation(params, case, raceway, side)
+                h_max = _edge(params, case, side, hertz, h0)
+                g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
+                solved[key] = FilmPath(g, h0, h_max)
+            paths[side] = solved[key]
         loaded[nut.index] = NutFilm(nut.index, nut.balls, paths["screw"], paths["nut"], True, radii)
+    edges = _lifted_edges(params, solved)
     films = []
     for index in indices:
         if index in loaded:
@@ -165,13 +167,38 @@ def nut_films(
         paths = {}
         for side in SIDES:
             h0 = gaussian_joint(params, case.tcr, side).sigma
-            h_max = edges.get(side, _clearance(params, side))  # no loaded nut: the groove's
-            g = ellipse_gap_conductance(lam, *radii[side], h0, h_max, rarefaction)
-            paths[side] = FilmPath(g, h0, h_max)
+            g = ellipse_gap_conductance(lam, *radii[side], h0, edges[side], rarefaction)
+            paths[side] = FilmPath(g, h0, edges[side])
         films.append(
             NutFilm(index, params.balls_per_nut, paths["screw"], paths["nut"], False, radii)
         )
     return tuple(films)
+
+
+def _lifted_edges(
+    params: ScrewParameters, loaded: Mapping[tuple[Side, float], FilmPath]
+) -> dict[Side, float]:
+    """h_max of a lifted-off ball on each side [m], from the loaded contacts ``loaded``
+    ((side, Q) → film).
+
+    A lifted-off ball touches neither flank: it sees the undeformed paraboloid gap from
+    h0 = σ (the clearance its nut's lift-off opens is left out: an upper bound on the film).
+    How far the oil fills that gap is set by the supply, not by the ball's load: flooded, the
+    groove-bottom clearance, as at a loaded contact; starved or greased, the oil layer the
+    supply leaves on the track, which fixes where the inlet meniscus of a loaded ball forms
+    (Wedeven, Evans & Cameron 1971; Chevalier, Lubrecht, Cann, Colin & Dalmaz 1998). The model
+    knows that layer only as the gap at a loaded contact's meniscus, which varies with the load
+    because the meniscus is placed m Hertz semi-axes upstream. The lifted ball takes the largest
+    h_max of the loaded contacts on its side (the screw's track is one, the nuts' share the
+    supply) — the same bound from above as h0 = σ, whatever the order or number of the nuts;
+    with no loaded contact on the side, the groove-bottom clearance (the flooded limit).
+    """
+    edges = {side: _clearance(params, side) for side in SIDES}
+    for side in SIDES:
+        h_max = [film.h_max for (s, _), film in loaded.items() if s == side]
+        if h_max:
+            edges[side] = max(h_max)
+    return edges
 
 
 def _film_branch(
@@ -200,6 +227,9 @@ def heat_paths(
 ) -> tuple[NutHeatPath, ...]:
     """Each nut's screw-to-nut resistance, the film in parallel with each contact (P3).
 
+    One path per nut of ``films`` (every nut, lifted-off ones included), or per loaded nut of
+    ``nuts`` when there are no films (micro TCR + macro-constriction alone). The thermal model's
+    interfaces and :meth:`ScrewTCR.heat_paths` both take their constriction from here.
     ``conductivities`` maps "ball", "screw", "nut" to λ [W/(m K)]; ``micro`` overrides the
     nuts' micro TCR R_sbn/n_b (another model's), split between the screw and nut contact in the
     headline model's proportion; ``constriction`` = False leaves out the macro-constriction of
@@ -207,16 +237,18 @@ def heat_paths(
     heat crosses mostly near the patch, so its true spreading resistance is larger).
     """
     by_index = {n.index: n for n in nuts}
+    by_film = {f.index: f for f in films}
     out = []
-    for film in films:
+    for index in by_film or by_index:
+        film = by_film.get(index)
         branches = {
             side: _film_branch(getattr(film, side), radii, conductivities, side, constriction)
-            for side, radii in film.radii.items()
+            for side, radii in ({} if film is None else film.radii).items()
         }
-        nut = by_index.get(film.index)
+        nut = by_index.get(index)
         if nut is None:  # lifted off: the films alone
             r_ball = sum(with_film_path(math.inf, g) for g in branches.values())
-            out.append(NutHeatPath(film.index, math.inf, 0.0, r_ball / film.balls))
+            out.append(NutHeatPath(index, math.inf, 0.0, r_ball / film.balls))
             continue
         own = {s: float(getattr(nut, s).tcr.resistance) for s in SIDES}
         total = micro[nut.index] * nut.balls if micro is not None else sum(own.values())
@@ -228,7 +260,7 @@ def heat_paths(
                 cons = contact_constriction(getattr(nut, side), conductivities)
                 r_cons += cons
                 patch += cons
-            r_ball += with_film_path(patch, branches[side])
+            r_ball += with_film_path(patch, branches.get(side, 0.0))
         out.append(
             NutHeatPath(nut.index, r_micro / nut.balls, r_cons / nut.balls, r_ball / nut.balls)
         )

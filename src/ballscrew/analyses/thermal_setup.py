@@ -21,7 +21,7 @@ from ballscrew.analyses.case_cache import CaseCache
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
-from ballscrew.analyses.tcr_film import conductivities, contact_constriction, heat_paths
+from ballscrew.analyses.tcr_film import conductivities, heat_paths
 from ballscrew.analyses.tcr_models import PATCH
 from ballscrew.analyses.thermal_cooling import (
     bore_coefficient,
@@ -264,10 +264,10 @@ def build_problem(
         micro = {n.index: n.resistance for n in tcr.nuts}
         if contact.tcr_model is not None:
             micro = model_nut_resistances(case, tcr, contact.tcr_model)
+        # constriction and film path of every nut: one computation (tcr_film.heat_paths)
         lam = conductivities(case)
         paths = {
-            p.index: p.resistance
-            for p in heat_paths(tcr.nuts, tcr.films, lam, micro, contact.constriction)
+            p.index: p for p in heat_paths(tcr.nuts, tcr.films, lam, micro, contact.constriction)
         }
     mats = case.materials
     for k in range(nuts_count):
@@ -276,19 +276,16 @@ def build_problem(
             r_pp = float(contact.resistance_per_area)
             interfaces.append(NutInterface(name, r_pp / bore_area, 0.0, float("nan"), bore_area))
             continue
+        path = paths.get(k + 1)
+        with_film = path.resistance if path is not None and tcr.films else None
         nut = by_index.get(k + 1)
         if nut is None:  # lifted off: nothing, or its balls' films
-            path = paths.get(k + 1)
-            interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area, path))
+            interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area, with_film))
             continue
-        constriction = 0.0
-        if contact.constriction:
-            per_ball = contact_constriction(nut.screw, lam) + contact_constriction(nut.nut, lam)
-            constriction = per_ball / nut.balls
         r = micro[nut.index]
         interfaces.append(
             NutInterface(
-                name, r, constriction, r * nut.apparent_area, bore_area, paths.get(nut.index)
+                name, r, paths[nut.index].constriction, r * nut.apparent_area, bore_area, with_film
             )
         )
 
