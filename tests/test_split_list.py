@@ -77,7 +77,7 @@ def test_vary_lists_keep_their_messages(gao_case_path, tmp_path, values, message
 
 FIT_ALLOWED = (
     "is not allowed: one or more of wear_coefficient, torque_scale, torque_offset, "
-    "film_factor, running_in_depth"
+    "film_factor, running_in_depth, preload"
 )
 
 

@@ -52,7 +52,8 @@ class WearResult(Presented):
     warnings: tuple[str, ...] = ()
     """Warnings raised during the run (one line each)."""
     films: tuple[PartFilm, ...] = ()
-    """Film parameter Λ and asperity share ψ of each programme part at the start of the run."""
+    """Film parameter Λ and asperity share ψ of each programme part the run reached, at the start
+    of its level (the wear engine's own, :func:`~ballscrew.analyses.wear_film.part_films`)."""
 
     analysis: ClassVar[str] = "wear"
     presentation: ClassVar[ModuleType] = wear_report
@@ -307,8 +308,6 @@ def wear_life(
     with recorded_warnings() as messages:
         setup = wear_setup(case)
         warn_outside_range(case.wear or WearSpec(), setup.spec.programme)
-        films = part_films(setup, setup.spec.programme)
-        warn_full_film(films)
         life = integrate_wear(
             setup,
             fingerprint(case, setup),
@@ -316,4 +315,6 @@ def wear_life(
             resume=resume,
             max_steps=max_steps,
         )
+        films = part_films(setup, setup.spec.programme, life)
+        warn_full_film(films)
     return WearResult(case, life, tuple(messages), films)

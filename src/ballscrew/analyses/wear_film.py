@@ -3,8 +3,12 @@
 The wear laws act on the asperity-borne load only, ψQ (Johnson, Greenwood & Poon 1972); a part
 whose EHL film carries practically all of the load wears practically nothing. This module gives,
 per programme level (and per duty segment), the film parameter Λ = h/σ and ψ of the mean ball of
-the more loaded nut at the start of the run (unworn raceway, Hertz ellipse as the nominal area
-A_n = π a b), so that a report can say why a level wears nothing.
+the more loaded nut at the start of the level, so that a report can say why a level wears
+nothing. They are the wear engine's own: one contact of :func:`ballscrew.wear.step.step_rates`
+each, on the raceway worn by the earlier levels, under the preload left at the level's start and
+with the solved contact's loaded cells as the nominal area A_n. Under the uniform ball-load
+distribution that is the ψ the engine applies at the level's first step (to the contact solver's
+tolerance); under load classes it is that of the class of the mean load.
 """
 
 from __future__ import annotations
@@ -13,11 +17,12 @@ import math
 import warnings
 from dataclasses import dataclass
 
-from ballscrew.contact import hertz
-from ballscrew.lubrication import share_load
+import numpy as np
+
+from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearLevel
-from ballscrew.wear.setup import WearSetup, nut_force_pair
-from ballscrew.wear.step import entrainment_speed
+from ballscrew.wear.setup import FLANKS, WearSetup, nut_force_pair
+from ballscrew.wear.step import StepContact, step_rates
 
 __all__ = [
     "FULL_FILM_SHARE",
@@ -66,38 +71,55 @@ class PartFilm:
         return text if self.segment is None else f"{text}, segment {self.segment + 1}"
 
 
-def _part_film(setup: WearSetup, index: int, segment: int | None, part: WearLevel) -> PartFilm:
-    force = max(nut_force_pair(setup.initial_preload, part.axial_load))
-    load = setup.ball_load(force)
-    eta, alpha = setup.lubricant(part)
-    speed = entrainment_speed(setup.geometry, part.speed)
-    film, psi = None, 1.0
-    if eta is not None and alpha is not None and speed != 0.0 and load > 0.0:
-        contact = hertz(setup.rx, setup.ry, setup.e_star, load)
-        surface = setup.surface_at(0.0)
-        sharing = share_load(
-            load,
-            setup.rx,
-            setup.ry,
-            eta,
-            alpha,
-            abs(speed),
-            math.pi * contact.a * contact.b,
-            surface,
-            film_model=setup.film_model,
-            film_factor=setup.spec.film_factor,
-        )
-        film, psi = sharing.separation / surface.rms_height, sharing.psi
-    return PartFilm(index, segment, part.speed, part.axial_load, load, film, psi)
+def part_films(
+    setup: WearSetup, programme: tuple[WearLevel, ...], life: WearLife | None = None
+) -> tuple[PartFilm, ...]:
+    """Λ and ψ of every constant part of ``programme`` (see the module docstring), all its
+    contacts solved in one :func:`~ballscrew.wear.step.step_rates` batch.
 
-
-def part_films(setup: WearSetup, programme: tuple[WearLevel, ...]) -> tuple[PartFilm, ...]:
-    """Λ and ψ of every constant part of ``programme`` (see the module docstring)."""
-    return tuple(
-        _part_film(setup, i, j if level.segments else None, part)
+    ``life``: the run whose raceway and preload each level starts from (the levels it has not
+    reached are left out); None: every level on the unworn raceway at the initial preload.
+    """
+    starts = _level_starts(setup, life, len(programme))
+    parts = [
+        (i, j if level.segments else None, part)
         for i, level in enumerate(programme)
+        if i in starts
         for j, (_, part) in enumerate(level.parts())
-    )
+    ]
+    contacts: dict[int, StepContact] = {}
+    for k, (i, _, part) in enumerate(parts):
+        preload, depth = starts[i]
+        forces = nut_force_pair(preload, part.axial_load)
+        nut = int(forces[1] > forces[0])  # the more loaded nut: its flank is FLANKS[nut]
+        if forces[nut] > 0.0:  # an unloaded part: no contact, ψ = 1
+            contacts[k] = StepContact(FLANKS[nut], forces[nut], part.speed, depth[nut], level=part)
+    rates = dict(zip(contacts, step_rates(setup, list(contacts.values())), strict=True))
+    return tuple(
+        PartFilm(i, j, part.speed, part.axial_load, rates[k].load, rates[k].film_parameter,
+                 rates[k].psi)
+        if k in rates
+        else PartFilm(i, j, part.speed, part.axial_load, 0.0, None, 1.0)
+        for k, (i, j, part) in enumerate(parts)
+    )  # fmt: skip
+
+
+def _level_starts(
+    setup: WearSetup, life: WearLife | None, levels: int
+) -> dict[int, tuple[float, np.ndarray]]:
+    """{level: (preload [N], worn depth of both flanks (2, ny) [m])} at the start of each level
+    ``life`` has reached: its last record before the level (its first record for level 1)."""
+    if life is None:
+        return dict.fromkeys(range(levels), (setup.initial_preload, np.zeros((2, setup.y.size))))
+    reached = np.asarray(life.level)
+    out = {}
+    for k in range(levels):
+        if not np.any(reached >= k):
+            break
+        earlier = np.flatnonzero(reached < k)
+        index = int(earlier[-1]) if earlier.size else 0
+        out[k] = (float(life.preload[index]), np.asarray(life.profiles[index]))
+    return out
 
 
 def full_film_messages(films: tuple[PartFilm, ...]) -> list[str]:

@@ -307,8 +307,9 @@ def _film_section(result: WearResult) -> list[Section]:
         "The wear law acts on the asperity-borne part ψQ of the ball load Q only (Johnson, "
         "Greenwood & Poon 1972): where the EHL film separates the surfaces (Λ = h/σ of a few, "
         "ψ → 0) a level wears practically nothing, so the wear depth can stop growing from one "
-        "level to the next. Λ and ψ of the mean ball of the more loaded nut at the start of the "
-        f"run (unworn raceway); below ψ = {FULL_FILM_SHARE:g} a warning says so."
+        "level to the next. Λ and ψ of the mean ball of the more loaded nut at the start of each "
+        "level (the raceway worn and the preload lost by the earlier levels), as the wear engine "
+        f"applies them; below ψ = {FULL_FILM_SHARE:g} a warning says so."
     )
     table = Table(("part", "speed [rpm]", "F_a [N]", "Q [N]", "Λ [-]", "ψ [-]"), rows)
     return [Section("Film and asperity share by level", paragraphs=(text,), tables=(table,))]

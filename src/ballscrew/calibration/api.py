@@ -116,7 +116,8 @@ def calibrate(
         measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
             (speed and axial-load columns) replaces the case's programme.
         fit: names from ``wear_coefficient``, ``torque_scale``, ``torque_offset``,
-            ``film_factor``, ``running_in_depth`` (a comma-separated string also works). The
+            ``film_factor``, ``running_in_depth``, ``preload`` (a comma-separated string also
+            works; the preload with the torque scale warns: only m·F_p is determined). The
             default fits K and, for friction-torque data, the torque scale. ``torque_offset``
             is T_0 of T = m K_T F_p L/(2π) + T_0 (case default ``wear.torque_offset``, 0).
         fit_until: fit the points up to these revolutions and report ``prediction_rmse`` on the
@@ -238,6 +239,8 @@ def case_setup(
         if running is None:
             raise InputError("--fit", "running_in_depth", "a case with a [wear.running_in] section")
         start["running_in_depth"] = running.depth
+    if "preload" in names:
+        start["preload"] = case.operating.preload
     scale0 = getattr(wear, "torque_scale", None) or 1.0
     offset0 = float(getattr(wear, "torque_offset", 0.0) or 0.0)
     initial_torque = getattr(wear, "initial_torque", None)

@@ -1,11 +1,12 @@
 """Least-squares calibration of any subset of the wear model's parameters, with held-out data.
 
 Parameters (:data:`FIT_PARAMETERS`): the wear coefficient K, the drag-torque scale m (torque
-data only), the film supply factor φ (``wear.film_factor``) and the running-in depth h_r
-(``wear.running_in.depth``). K, φ and h_r are fitted as logarithms (positive, spanning decades);
-m multiplies the model torque, which does not feed back into the wear, so its Jacobian column
-is exact and no model run is spent on it. The residuals on the fitted points (revolutions ≤
-``fit_until``) are
+data only), the film supply factor φ (``wear.film_factor``), the running-in depth h_r
+(``wear.running_in.depth``) and the preload F_p (``operating.preload``; with m it is only as good
+as the K assumed, :func:`warn_scale_and_preload`). K, φ, h_r and F_p are fitted as logarithms
+(positive, spanning decades); m multiplies the model torque, which does not feed back into the
+wear, so its Jacobian column is exact and no model run is spent on it. The residuals on the
+fitted points (revolutions ≤ ``fit_until``) are
 
     r_i(θ) = (m · y_model(N_i; K, φ, h_r) − y_i) / s,
 
@@ -74,6 +75,7 @@ __all__ = [
     "start_values",
     "warn_correlated",
     "warn_implausible_scale",
+    "warn_scale_and_preload",
 ]
 
 
@@ -127,6 +129,9 @@ FIT_PARAMETERS: dict[str, FitParameter] = {
     "film_factor": FitParameter("wear.film_factor", 1.0e-3, 1.0, "film supply factor φ"),
     "running_in_depth": FitParameter(
         "wear.running_in.depth", 1.0e-9, 1.0e-4, "running-in depth h_r [m]", unit="m"
+    ),
+    "preload": FitParameter(
+        "operating.preload", 1.0, 1.0e7, "preload F_p [N]", short="preload", unit="N"
     ),
 }
 LINEAR = ("torque_scale", "torque_offset")
@@ -293,6 +298,7 @@ class HistoryFit:
         label: str,
     ) -> None:
         self.names = check_names(fit, data)
+        warn_scale_and_preload(self.names, data.source)
         check_values(data.source, data.quantity, np.asarray(data.values, dtype=np.float64))
         if not math.isfinite(torque_offset):
             raise InputError("wear.torque_offset", torque_offset, "a finite torque in N·m")
@@ -514,6 +520,26 @@ def warn_correlated(cov: np.ndarray, names: Sequence[str], source: str) -> None:
                 CalibrationWarning,
                 stacklevel=3,
             )
+
+
+def warn_scale_and_preload(names: Sequence[str], source: str) -> None:
+    """CalibrationWarning when the torque scale m and the preload F_p are both fitted.
+
+    T = m K_T F_p(N) L/(2π) (E9.1): the as-new torque fixes only m·F_p. With the Hertz preload
+    law (E1.13), F_p(N)/F_p = (1 − h/(sinβ cosλ C_a F_p^(2/3)))^(3/2), and a wear depth
+    h ∝ K F_p^a, the shape of the loss fixes only K·F_p^(a − 2/3): F_p is then as good as the K
+    assumed, and with K fitted too the three are not identifiable (the Jacobian has rank 2).
+    """
+    if "torque_scale" in names and "preload" in names:
+        warnings.warn(
+            f"{source}: the torque scale and the preload are fitted together "
+            "(torque_scale,preload): the as-new torque fixes only their product m·F_p, and the "
+            "torque's loss only K·F_p^(a−2/3) (wear depth ∝ K·F_p^a against the Hertz approach "
+            "∝ F_p^(2/3)), so the preload is only as good as the wear coefficient assumed and "
+            "is not identifiable with it; give the preload (or wear.torque_scale) instead",
+            CalibrationWarning,
+            stacklevel=3,
+        )
 
 
 def warn_implausible_scale(result: CalibrationResult) -> None:

@@ -47,8 +47,9 @@ FitOpt = Annotated[
     typer.Option(
         "--fit",
         help="parameters to fit, comma-separated: wear_coefficient, torque_scale, "
-        "torque_offset (T_0 [N·m] of T = m·K_T·F_p·L/2π + T_0), film_factor, running_in_depth "
-        "(default: wear_coefficient, and torque_scale for friction_torque data; with several "
+        "torque_offset (T_0 [N·m] of T = m·K_T·F_p·L/2π + T_0), film_factor, running_in_depth, "
+        "preload (with torque_scale only m·F_p is determined: warned) (default: "
+        "wear_coefficient, and torque_scale for friction_torque data; with several "
         "--measured: the shared parameters, default wear_coefficient)",
         show_default=False,
     ),

@@ -55,6 +55,9 @@ class FlankRate:
     depth_per_revolution: FloatArray
     """Δh_j per screw revolution if this force acted all the time [m/rev]."""
     iterations: int
+    film_parameter: float | None = None
+    """Λ = h/σ of the film that gives ψ (its mean-plane separation over the RMS roughness of the
+    worn surface); None when dry or at rest."""
 
 
 def entrainment_speed(geometry: ScrewGeometry, screw_speed: float) -> float:
@@ -126,9 +129,9 @@ def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[Flank
             initial=None if starts is None else np.stack(starts),
         )
         solved.update(zip(group, results, strict=True))
-    psis = _asperity_shares(setup, contacts, loads, [solved[i] for i in range(len(contacts))])
+    films = _asperity_shares(setup, contacts, loads, [solved[i] for i in range(len(contacts))])
     return tuple(
-        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level, psis[i])
+        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level, *films[i])
         for i, (c, q) in enumerate(zip(contacts, loads, strict=True))
     )
 
@@ -138,9 +141,10 @@ def _asperity_shares(
     contacts: Sequence[StepContact],
     loads: Sequence[float],
     solved: Sequence[ContactResult],
-) -> list[float]:
-    """JGP asperity share ψ of each contact (E6.4), A_n its loaded cells; the contacts on one
-    surface, lubricant and speed are solved together (:func:`share_loads`); dry: ψ = 1."""
+) -> list[tuple[float, float | None]]:
+    """JGP asperity share ψ (E6.4) and film parameter Λ = h/σ of each contact, A_n its loaded
+    cells; the contacts on one surface, lubricant and speed are solved together
+    (:func:`share_loads`); dry or at rest: (1, None)."""
     groups: dict[tuple[object, ...], list[int]] = {}
     for i, c in enumerate(contacts):
         eta, alpha = setup.lubricant(c.level)
@@ -148,7 +152,7 @@ def _asperity_shares(
             surface = setup.surface_at(float(np.max(c.depth)))
             key = (surface, eta, alpha, entrainment_speed(setup.geometry, c.speed))
             groups.setdefault(key, []).append(i)
-    psis = [1.0] * len(contacts)
+    films: list[tuple[float, float | None]] = [(1.0, None)] * len(contacts)
     for (surface, eta, alpha, speed), group in groups.items():
         shares = share_loads(
             [loads[i] for i in group],
@@ -163,8 +167,9 @@ def _asperity_shares(
             film_factor=setup.spec.film_factor,
         )
         for i, share in zip(group, shares, strict=True):
-            psis[i] = share.psi
-    return psis
+            film = None if share.film is None else share.separation / surface.rms_height
+            films[i] = (share.psi, film)
+    return films
 
 
 def flank_rate(
@@ -197,6 +202,7 @@ def _rate(
     depth: FloatArray,
     level: WearLevel | None,
     psi: float,
+    film: float | None,
 ) -> FlankRate:
     """Sliding, cell wear and raceway depth rate of one solved contact of asperity share ψ."""
     p = np.asarray(sol.pressure, dtype=float)
@@ -228,7 +234,8 @@ def _rate(
     rate = raceway_depth_rate(
         strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length_of(level)
     )
-    return FlankRate(q, p, float(psi), w, depth_per_revolution(rate, screw_speed), sol.iterations)
+    per_rev = depth_per_revolution(rate, screw_speed)
+    return FlankRate(q, p, float(psi), w, per_rev, sol.iterations, film)
 
 
 def _loaded_area(setup: WearSetup, sol: ContactResult) -> float:
