@@ -230,9 +230,10 @@ def test_a_nut_far_softer_than_its_contacts_warns() -> None:
     assert any("nut stiffness with the elastic bodies" in w for w in result.warnings)
 
 
-def test_the_lift_off_margin_of_a_double_nut_only() -> None:
-    """Demand: the largest axial load; capacity: 2^1.5 F_p (HIWIN); a single nut, modelled with
-    one loaded flank, has none."""
+def test_the_lift_off_margin_of_a_preloaded_nut_only() -> None:
+    """Demand: the largest axial load; capacity: 2^1.5 F_p (HIWIN), for a double nut and a
+    single nut preloaded by oversized balls alike; a single nut without preload has none (the
+    old single nut had one loaded flank and no margin: the bug this test now guards)."""
     raw = raw_case()
     raw["operating"]["axial_load"] = "5 kN"
     with pytest.warns(UserWarning, match="lift-off load 2\\^1.5 F_p: 5 kN against 4.243 kN"):
@@ -242,4 +243,8 @@ def test_the_lift_off_margin_of_a_double_nut_only() -> None:
     raw["screw"]["nuts"] = 1
     raw["operating"]["axial_load"] = "2 kN"
     single = design_check(case_from_dict(raw))
-    assert "lift_off" not in {m.name for m in single.margins}
+    lift = next(m for m in single.margins if m.name == "lift_off")
+    assert lift.capacity == pytest.approx(2.0**1.5 * 1500.0) and lift.status == "green"
+    raw["operating"]["preload"] = "0 N"
+    unpreloaded = design_check(case_from_dict(raw))
+    assert "lift_off" not in {m.name for m in unpreloaded.margins}
