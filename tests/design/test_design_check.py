@@ -248,3 +248,44 @@ def test_the_lift_off_margin_of_a_preloaded_nut_only() -> None:
     raw["operating"]["preload"] = "0 N"
     unpreloaded = design_check(case_from_dict(raw))
     assert "lift_off" not in {m.name for m in unpreloaded.margins}
+
+
+def test_single_nut_preload_methods_against_the_double_nut() -> None:
+    """Oversized balls: both flanks of the same Z balls, so contacts, life and equivalent loads
+    are those of a double nut of Z balls per nut; offset lead: a double nut of Z/2 balls per
+    half, whose Hertz compliance is 2^(2/3) larger. The report names the method."""
+    double = design_check(case_from_dict(raw_case()))
+    raw = raw_case()
+    raw["screw"]["nuts"] = 1
+    four = design_check(case_from_dict(raw))
+    assert four.flanks == 2
+    assert four.equivalent_loads == pytest.approx(double.equivalent_loads, rel=1e-12)
+    assert four.rating_life == pytest.approx(double.rating_life, rel=1e-12)
+    assert four.contact_stiffness == pytest.approx(double.contact_stiffness, rel=1e-12)
+    text = " ".join(p for s in four.report() for p in s.paragraphs)
+    assert "Preload method: oversized_balls" in text
+    raw["screw"]["preload_method"] = "offset_lead"
+    offset = design_check(case_from_dict(raw))
+    assert offset.compliance == pytest.approx(2.0 ** (2.0 / 3.0) * double.compliance, rel=1e-12)
+    assert offset.contact_stiffness == pytest.approx(
+        2.0 ** (-2.0 / 3.0) * double.contact_stiffness, rel=1e-12
+    )
+    raw["operating"]["preload"] = "0 N"
+    bare = design_check(case_from_dict(raw))
+    assert bare.flanks == 1 and bare.equivalent_loads == pytest.approx((2000.0, 0.0))
+    assert "Preload method: none" in " ".join(p for s in bare.report() for p in s.paragraphs)
+
+
+@pytest.mark.parametrize(
+    ("screw", "message"),
+    [
+        ({"nuts": 2, "preload_method": "oversized_balls"}, "screw.preload_method = 'oversized"),
+        ({"nuts": 1, "preload_method": "spacer"}, "oversized_balls or offset_lead"),
+        ({"nuts": 1, "preload_method": "offset_lead", "balls_per_nut": 53}, "balls_per_nut = 53"),
+    ],
+)
+def test_a_preload_method_that_does_not_fit_the_nuts_is_a_case_error(screw, message) -> None:
+    raw = raw_case()
+    raw["screw"].update(screw)
+    with pytest.raises(BallscrewError, match=message):
+        case_from_dict(raw)
