@@ -2,27 +2,20 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
+from tests.loads.test_distribution import ALPHA, BALL, BETA, BODIES, D_M, LEAD, K
 
 from ballscrew.errors import InputError
 from ballscrew.loads import Flanks, flank_forces, nut_forces, preload_flanks
 from ballscrew.loads.distribution import (
     NutBodies,
     ball_layout,
-    body_properties,
     expand_errors,
     lift_off_load,
     solve_distribution,
 )
 
-D_M, LEAD, BALL, BETA = 0.04, 0.01, 0.00635, math.pi / 4
-ALPHA = math.atan(LEAD / (math.pi * D_M))
-K = 2.448e-7  # K_A + K_B of the 40 × 10 reference screw (f = 0.52, steel), m N^-2/3
-STEEL = (2.06e11, 0.3)
-BODIES = body_properties(D_M, BALL, BETA, 0.0335, 0.07, STEEL, STEEL)
 FP = 1500.0
 
 
