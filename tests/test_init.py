@@ -139,3 +139,15 @@ def test_the_stated_load_rating_is_the_one_the_check_uses(generated) -> None:
     assert "dynamic_load_rating" in computed
     stated = re.search(r"here C_a = ([\d.]+) kN", generated)
     assert stated is not None and float(stated.group(1)) == pytest.approx(ca * 1e-3, rel=2e-3)
+
+
+def test_init_writes_the_preload_method() -> None:
+    """A single nut's starter case names its preload (oversized balls unless told); a method that
+    does not fit the nuts is refused by its option."""
+    base = ["init", "--d0", "40", "--lead", "10", "--ball", "6.35", "--turns", "2.5x2"]
+    single = CliRunner().invoke(app, [*base, "--nuts", "1"])
+    assert single.exit_code == 0 and 'preload_method = "oversized_balls"' in single.output
+    offset = CliRunner().invoke(app, [*base, "--nuts", "1", "--preload-method", "offset_lead"])
+    assert offset.exit_code == 0 and 'preload_method = "offset_lead"' in offset.output
+    bad = CliRunner().invoke(app, [*base, "--preload-method", "oversized_balls"])
+    assert bad.exit_code == 2 and "--preload-method" in bad.output and "spacer" in bad.output

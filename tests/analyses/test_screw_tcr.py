@@ -18,6 +18,7 @@ from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.tcr_models import gaussian_joint
 from ballscrew.case import CaseError
 from ballscrew.contact_resistance.correlations import correlation_conductance
+from ballscrew.loads import nut_forces
 
 DOC_GRID = {
     "numerics.cells": [40, 200],
@@ -102,13 +103,17 @@ def test_t_tr3_axial_load_through_lift_off(doc_case):
     assert np.all(np.diff(r2[4:]) > 0)
 
 
-def test_single_nut_carries_preload_plus_axial_load(gao_case_path):
-    case = load_case(
-        gao_case_path, {"screw.nuts": 1, "operating.axial_load": 500.0, "numerics.cells_across": 24}
-    )
-    result = ballscrew.screw_tcr(case)
-    assert result.nut_forces == (2000.0, 0.0)
+def test_single_nut_tcr_takes_its_loaded_flank(gao_case_path):
+    """A preloaded single nut (oversized balls, the default) carries F1 of (P1) on its loaded
+    flank, not F_p + F_a (the old one-flank single nut, the bug fixed here); without preload it
+    carries F_a."""
+    over = {"screw.nuts": 1, "operating.axial_load": 500.0, "numerics.cells_across": 24}
+    result = ballscrew.screw_tcr(load_case(gao_case_path, over))
+    assert result.nut_forces == pytest.approx((float(nut_forces(1500.0, 500.0).f1), 0.0))
+    assert result.nut_forces[0] == pytest.approx(1756.957, rel=1e-6)
     assert len(result.nuts) == 1
+    bare = ballscrew.screw_tcr(load_case(gao_case_path, {**over, "operating.preload": 0.0}))
+    assert bare.nut_forces == (500.0, 0.0)
 
 
 def test_rough_ball_is_refused(gao_case_path):

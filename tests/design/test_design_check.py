@@ -230,9 +230,10 @@ def test_a_nut_far_softer_than_its_contacts_warns() -> None:
     assert any("nut stiffness with the elastic bodies" in w for w in result.warnings)
 
 
-def test_the_lift_off_margin_of_a_double_nut_only() -> None:
-    """Demand: the largest axial load; capacity: 2^1.5 F_p (HIWIN); a single nut, modelled with
-    one loaded flank, has none."""
+def test_the_lift_off_margin_of_a_preloaded_nut_only() -> None:
+    """Demand: the largest axial load; capacity: 2^1.5 F_p (HIWIN), for a double nut and a
+    single nut preloaded by oversized balls alike; a single nut without preload has none (the
+    old single nut had one loaded flank and no margin: the bug this test now guards)."""
     raw = raw_case()
     raw["operating"]["axial_load"] = "5 kN"
     with pytest.warns(UserWarning, match="lift-off load 2\\^1.5 F_p: 5 kN against 4.243 kN"):
@@ -242,4 +243,49 @@ def test_the_lift_off_margin_of_a_double_nut_only() -> None:
     raw["screw"]["nuts"] = 1
     raw["operating"]["axial_load"] = "2 kN"
     single = design_check(case_from_dict(raw))
-    assert "lift_off" not in {m.name for m in single.margins}
+    lift = next(m for m in single.margins if m.name == "lift_off")
+    assert lift.capacity == pytest.approx(2.0**1.5 * 1500.0) and lift.status == "green"
+    raw["operating"]["preload"] = "0 N"
+    unpreloaded = design_check(case_from_dict(raw))
+    assert "lift_off" not in {m.name for m in unpreloaded.margins}
+
+
+def test_single_nut_preload_methods_against_the_double_nut() -> None:
+    """Oversized balls: both flanks of the same Z balls, so contacts, life and equivalent loads
+    are those of a double nut of Z balls per nut; offset lead: a double nut of Z/2 balls per
+    half, whose Hertz compliance is 2^(2/3) larger. The report names the method."""
+    double = design_check(case_from_dict(raw_case()))
+    raw = raw_case()
+    raw["screw"]["nuts"] = 1
+    four = design_check(case_from_dict(raw))
+    assert four.flanks == 2
+    assert four.equivalent_loads == pytest.approx(double.equivalent_loads, rel=1e-12)
+    assert four.rating_life == pytest.approx(double.rating_life, rel=1e-12)
+    assert four.contact_stiffness == pytest.approx(double.contact_stiffness, rel=1e-12)
+    text = " ".join(p for s in four.report() for p in s.paragraphs)
+    assert "Preload method: oversized_balls" in text
+    raw["screw"]["preload_method"] = "offset_lead"
+    offset = design_check(case_from_dict(raw))
+    assert offset.compliance == pytest.approx(2.0 ** (2.0 / 3.0) * double.compliance, rel=1e-12)
+    assert offset.contact_stiffness == pytest.approx(
+        2.0 ** (-2.0 / 3.0) * double.contact_stiffness, rel=1e-12
+    )
+    raw["operating"]["preload"] = "0 N"
+    bare = design_check(case_from_dict(raw))
+    assert bare.flanks == 1 and bare.equivalent_loads == pytest.approx((2000.0, 0.0))
+    assert "Preload method: none" in " ".join(p for s in bare.report() for p in s.paragraphs)
+
+
+@pytest.mark.parametrize(
+    ("screw", "message"),
+    [
+        ({"nuts": 2, "preload_method": "oversized_balls"}, "screw.preload_method = 'oversized"),
+        ({"nuts": 1, "preload_method": "spacer"}, "oversized_balls or offset_lead"),
+        ({"nuts": 1, "preload_method": "offset_lead", "balls_per_nut": 53}, "balls_per_nut = 53"),
+    ],
+)
+def test_a_preload_method_that_does_not_fit_the_nuts_is_a_case_error(screw, message) -> None:
+    raw = raw_case()
+    raw["screw"].update(screw)
+    with pytest.raises(BallscrewError, match=message):
+        case_from_dict(raw)

@@ -57,8 +57,11 @@ def _catalogue_row(dataset, key: str, model: str) -> tuple[dict[str, Any], dict[
     return row, {k: v for k, v in data.items() if k not in ("rows", "columns")} | {"row": row}
 
 
-def _catalogue_case(base_raw: dict[str, Any], row: dict[str, Any]) -> Case:
-    """The example case with the screw and the 0.1 C_a double-nut preload of a catalogue row."""
+def _catalogue_case(
+    base_raw: dict[str, Any], row: dict[str, Any], method: str | None = None
+) -> Case:
+    """The example case with the screw and the 0.1 C_a double-nut preload of a catalogue row;
+    ``method = "offset_lead"``: one nut of both halves' balls, preloaded by a lead offset."""
     d_m, ball, lead = row["d0_mm"] * MM, row["ball_mm"] * MM, row["lead_mm"] * MM
     lead_angle = math.atan(lead / (math.pi * d_m))
     turns = row.get("turns_per_circuit", 1)
@@ -70,18 +73,21 @@ def _catalogue_case(base_raw: dict[str, Any], row: dict[str, Any]) -> Case:
         screw_conformity=CONFORMITY,
         nut_conformity=CONFORMITY,
         contact_angle="45 deg",
-        balls_per_nut=row["circuits_per_nut"] * per_circuit,
-        nuts=2,
+        balls_per_nut=row["circuits_per_nut"] * per_circuit * (2 if method else 1),
+        nuts=1 if method else 2,
+        preload_method=method,
     )
     preload = 0.1 * row["Ca_N"]
     base_raw["operating"].update(preload=preload, axial_load=0.0)
     return case_from_dict(base_raw)
 
 
-def _nut_rigidity(base_raw: dict[str, Any], row: dict[str, Any]) -> float:
-    """Stiffness of the double nut at preload 0.1 C_a, contacts and bodies, through the case
-    chain, N/m."""
-    case = _catalogue_case(base_raw, row)
+def _nut_rigidity(
+    base_raw: dict[str, Any], row: dict[str, Any], method: str | None = None
+) -> float:
+    """Stiffness of the double nut (or the single nut preloaded by ``method``) at preload
+    0.1 C_a, contacts and bodies, through the case chain, N/m."""
+    case = _catalogue_case(base_raw, row, method)
     params = ScrewParameters.from_case(case)
     return elastic_distribution(params, case.loads, row["root_mm"] * MM).stiffness
 
@@ -114,8 +120,10 @@ RIGIDITY_MISSES = {
 
 def _check_rigidity(validation, base_raw, key: str, model: str, reference: dict[str, Any], *,
                     row: dict[str, Any], source: str, assumptions: tuple[str, ...],
-                    known_miss: bool) -> None:  # fmt: skip
-    """Record the double nut's rigidity of the case chain against a catalogue row."""
+                    known_miss: bool, method: str | None = None) -> None:  # fmt: skip
+    """Record the double nut's (or ``method``'s single nut's) rigidity of the case chain against
+    a catalogue row."""
+    nut = "double nut" if method is None else f"single nut ({method})"
     validation.check(
         f"{key}_" + re.sub(r"[^\w.-]+", "_", model).strip("_"),
         kind="comparison with a maker's calculation",
@@ -123,10 +131,10 @@ def _check_rigidity(validation, base_raw, key: str, model: str, reference: dict[
         "(elastic distribution, 2 halves at 0.1 C_a preload)",
         source=source,
         reference=reference,
-        quantity=f"axial rigidity of the double nut {model}",
+        quantity=f"axial rigidity of the {nut} {model}",
         unit="N/µm",
         measured=row["rigidity_N_per_um"],
-        predicted=_nut_rigidity(base_raw, row) * 1e-6,
+        predicted=_nut_rigidity(base_raw, row, method) * 1e-6,
         tolerance=0.25,
         relative=True,
         tolerance_basis=RIGIDITY_TOLERANCE,
@@ -340,6 +348,39 @@ def test_thk_bnfn_nut_rigidity(validation, dataset, base_raw, model) -> None:
         validation, base_raw, "thk_bnfn_rigidity", model, reference, row=thk_geometry(row),
         source=THK_BNFN_SOURCE, assumptions=THK_RIGIDITY_ASSUMPTIONS,
         known_miss=model in THK_RIGIDITY_MISSES,
+    )  # fmt: skip
+
+
+THK_BIF_SOURCE = "THK General Catalog, model BIF (B-652…B-672), offset preload A-700, A-769"
+
+THK_BIF_ASSUMPTIONS = (
+    "one nut body: its balls split into two halves, one per preload direction, the halves one "
+    "lead apart (GUESS: THK sketches the phase zone in the middle of the nut, its length is not "
+    "printed), each half the 'rows × turns' of the table",
+    *THK_RIGIDITY_ASSUMPTIONS,
+)
+
+THK_BIF_MISSES = {
+    # predicted with contacts and bodies: the nuts of one circuit per half, as for BNFN
+    "BIF1605-5": "+26.5 %",
+    "BIF2005-5": "+32.0 %",
+    "BIF4010-5": "+32.4 %",
+}
+"""BIF rows outside ±25 %: those of one circuit per half, the same miss as the BNFN double nuts
+of one circuit per nut (THK's K doubles from one circuit to two, the model's grows by 1.49)."""
+
+
+@pytest.mark.filterwarnings("ignore::ballscrew.case.plausibility.ImplausibleValueWarning")
+@pytest.mark.parametrize("model", _models("thk_bif_rigidity"))
+def test_thk_bif_offset_preload_nut_rigidity(validation, dataset, base_raw, model) -> None:
+    """THK BIF single nuts preloaded by a lead offset (``screw.preload_method = "offset_lead"``):
+    THK prints for BIF 4010-10 the ratings and rigidity of the double nut BNFN 4010-5, i.e. an
+    offset-lead nut is a double nut of half its turns per flank in one body."""
+    row, reference = _catalogue_row(dataset, "thk_bif_rigidity", model)
+    _check_rigidity(
+        validation, base_raw, "thk_bif_rigidity", model, reference, row=thk_geometry(row),
+        source=THK_BIF_SOURCE, assumptions=THK_BIF_ASSUMPTIONS,
+        known_miss=model in THK_BIF_MISSES, method="offset_lead",
     )  # fmt: skip
 
 

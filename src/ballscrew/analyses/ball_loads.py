@@ -58,7 +58,8 @@ _FIELDS = {
 
 @dataclass(frozen=True)
 class BallLoads:
-    """Per-ball loads and angles, one row per nut (nut 1 first), one column per ball (SI).
+    """Per-ball loads and angles, one row per loaded flank (the nuts of a double nut, nut 1
+    first; the two contact pairs of a four-point nut), one column per ball (SI).
 
     Columns run from each nut's end nearest the loaded end of the shaft.
     """
@@ -87,18 +88,21 @@ class BallLoads:
 def nut_model(
     params: ScrewParameters, spec: LoadsSpec, root_diameter: float | None = None
 ) -> tuple[BallLayout, NutBodies]:
-    """Ball positions and elastic bodies of the case's nut(s)."""
+    """Ball positions and elastic bodies of the case's nut(s), one row of balls per loaded
+    flank (an offset-lead nut: its two halves, the lead-shift zone as ``spec.spacer``)."""
     g = params.geometry
     root = groove_root_diameter(g) if root_diameter is None else root_diameter
     outer = spec.nut_outer_diameter or g.pitch_diameter + NUT_DIAMETER_BALLS * g.ball_diameter
+    flanks = params.flanks
     layout = ball_layout(
-        params.balls_per_nut,
-        params.nut_count,
+        flanks.balls,
+        flanks.count,
         g.lead,
         g.pitch_diameter,
         g.ball_diameter,
         g.lead_angle,
         spec.spacer or g.lead,
+        shared=flanks.shared,
     )
     with as_case_fields(_FIELDS):
         bodies = body_properties(
@@ -172,8 +176,8 @@ def ball_loads(case: Case, axial_load: float | None = None) -> BallLoads:
     params = ScrewParameters.from_case(case)
     g = params.geometry
     if case.loads.distribution == "uniform":
-        z = params.balls_per_nut
-        nuts = params.with_loads(axial_load=axial_load).nuts
+        z = params.flanks.balls
+        nuts = params.with_loads(axial_load=axial_load).flank_loads
         loads = np.array([np.full(z, nut.ball_load) for nut in nuts])
         angles = np.full_like(loads, g.contact_angle)
         return BallLoads(loads, angles, loads.sum(axis=1) * params.axial_projection)
@@ -204,11 +208,13 @@ class NutBallLoad:
 
 
 def chain_ball_loads(case: Case, params: ScrewParameters) -> tuple[NutBallLoad, ...]:
-    """Per nut (nut 1 first) the force and ball load the contact and TCR chains use."""
+    """Per nut (nut 1 first) the force and ball load the contact and TCR chains use; a single
+    nut preloaded on both flanks gives its loaded flank only."""
     if case.loads.distribution == "uniform":
         return tuple(NutBallLoad(n.force, n.ball_load, 1.0) for n in params.nuts)
     result = ball_loads(case)
+    rows = zip(result.axial_forces, result.loads, strict=True)
     return tuple(
         NutBallLoad(float(force), float(q.max()), float(q.max() / q.mean()) if q.max() > 0 else 1.0)
-        for force, q in zip(result.axial_forces, result.loads, strict=True)
+        for force, q in list(rows)[: len(params.nuts)]
     )

@@ -246,13 +246,15 @@ def numerical_contact(params: ScrewParameters, numerics: NumericsSpec) -> Tabula
     """Q(δ) of a ball's screw and nut contacts in series from the contact solver (cached).
 
     The nominal ball load is that of the case's nut forces (the larger of F_p and F_a for a
-    double nut, F_p + F_a for one nut, over Z sinβ cosα). The law is cached; a distribution
-    whose balls go above the table's top warns through :func:`warn_above_table`.
+    nut preloaded on both flanks, F_p + F_a for one flank, over Z sinβ cosα per flank). The
+    law is cached; a distribution whose balls go above the table's top warns through
+    :func:`warn_above_table`.
     """
     fp, fa = params.preload, params.axial_load
-    force = max(fp, fa) if params.nut_count == 2 else fp + fa
+    flanks = params.flanks
+    force = max(fp, fa) if flanks.count == 2 else fp + fa
     if not force > 0.0:
         raise InputError("operating.axial_load", fa, "> 0 N where the preload is 0 N")
-    top = float(table_loads(force / (params.balls_per_nut * params.axial_projection))[-1])
+    top = float(table_loads(force / (flanks.balls * params.axial_projection))[-1])
     e_stars = (params.contact_modulus("screw"), params.contact_modulus("nut"))
     return _table(params.geometry, e_stars, numerics.model_dump_json(), top)

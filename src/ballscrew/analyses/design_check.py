@@ -121,12 +121,15 @@ class DesignCheck(Presented):
 
     case: Case
     spectrum: LoadSpectrum
+    flanks: int
+    """Loaded flanks: 2 for a preloaded nut (spacer, oversized balls, offset lead), 1 for a
+    single nut without preload."""
     dynamic_load_rating: float | None
     """C_a [N] (catalogue, else computed from the geometry × f_H f_ac)."""
     static_load_rating: float | None
     """C_0a [N] (catalogue, else computed from the geometry × f_H f_ac)."""
     equivalent_loads: tuple[float, float]
-    """Cube-mean equivalent loads F_bm of nut half 1 and 2 [N] (half 2 = 0 for a single nut)."""
+    """Cube-mean equivalent loads F_bm of flank 1 and 2 [N] (flank 2 = 0 without preload)."""
     rating_life: float | None
     """L10 (× a₁) in revolutions [-]; None without C_a."""
     life_hours: float | None
@@ -146,7 +149,7 @@ class DesignCheck(Presented):
     dn: float
     """d·n at the highest speed [mm·rpm]."""
     compliance: float
-    """Hertz nut compliance C, δ = C F^(2/3) per nut half [m N^(-2/3)]."""
+    """Hertz compliance C, δ = C F^(2/3) per loaded flank (nut half) [m N^(-2/3)]."""
     contact_stiffness: float
     """Hertz contacts only (rigid bodies) of the preloaded nut at the case's loads [N/m]."""
     nut_stiffness: float
@@ -212,12 +215,12 @@ def load_spectrum(case: Case) -> LoadSpectrum:
     )
 
 
-def _equivalent_loads(spectrum: LoadSpectrum, preload: float, nuts: int) -> tuple[float, float]:
+def _equivalent_loads(spectrum: LoadSpectrum, preload: float, flanks: int) -> tuple[float, float]:
+    """Cube-mean load of each loaded flank over the spectrum (a double nut's two nuts, or the
+    two flanks of a single nut preloaded by oversized balls or an offset lead)."""
     loads = np.asarray(spectrum.loads)
-    if nuts == 2:
+    if flanks == 2:
         halves = design.preloaded_half_loads(loads, preload)
-    elif preload > 0.0:
-        halves = (design.preloaded_half_loads(loads, preload)[0], np.zeros_like(loads))
     else:
         halves = (loads, np.zeros_like(loads))
     return tuple(design.cube_mean_loads(h, spectrum.shares)[0] for h in halves)  # type: ignore[return-value]
@@ -239,7 +242,7 @@ def load_ratings(case: Case, params: ScrewParameters) -> tuple[float, float, tup
     """
     spec = case.design
     given = (spec.dynamic_load_rating, spec.static_load_rating) if spec else (None, None)
-    balls = params.balls_per_nut
+    balls = params.flanks.balls
     factor = rating_factor(case, params) if None in given else 1.0
     ca = given[0] or factor * design.dynamic_load_rating(params.geometry, balls)
     c0a = given[1] or factor * design.static_load_rating(
@@ -288,7 +291,7 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
             "N",
         ),
     ]
-    if case.screw.nuts == 2:
+    if check["flanks"] == 2:
         out.append(
             Margin(
                 "lift_off",
@@ -378,15 +381,15 @@ def design_check(case: Case) -> DesignCheck:
     params = ScrewParameters.from_case(case)
     geometry, screw = params.geometry, params.screw
     spectrum = load_spectrum(case)
-    preload, nuts = case.operating.preload, case.screw.nuts
+    preload, flanks = case.operating.preload, params.flanks.count
     root = spec.root_diameter or groove_root_diameter(geometry)
     length = spec.unsupported_length
-    equivalent = _equivalent_loads(spectrum, preload, nuts)
+    equivalent = _equivalent_loads(spectrum, preload, flanks)
     ca, c0a, computed = load_ratings(case, params)
     life = _life(ca, spec, equivalent)
     running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
-    contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, nuts)
+    contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, flanks)
     with recorded_warnings() as distribution_messages:
         nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
     shaft_k = design.shaft_axial_stiffness(
@@ -399,6 +402,7 @@ def design_check(case: Case) -> DesignCheck:
     rise = spec.temperature_rise
     values = {
         "spectrum": spectrum,
+        "flanks": flanks,
         "dynamic_load_rating": ca,
         "static_load_rating": c0a,
         "equivalent_loads": equivalent,

@@ -119,7 +119,7 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     ]
     x = np.array([r.displacement for r in runs])
     lift = 0.0
-    if params.nut_count == 2:
+    if params.flanks.count == 2:
         layout, bodies = nut_model(params, spec, result.root_diameter)
         g = params.geometry
         lift = lift_off_load(
@@ -138,7 +138,7 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     """Nut displacement and stiffness against the axial load: Hertz contacts only, and the
     contacts with the elastic bodies, with units."""
-    fp, nuts = result.case.operating.preload, result.case.screw.nuts
+    fp, nuts = result.case.operating.preload, result.flanks
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
     top = max(1.5 * lift_off, 1.2 * max(result.spectrum.loads), 3.0 * fp, 1.0)
     loads = np.linspace(0.0, top, _CURVE_POINTS)
@@ -213,7 +213,8 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
     q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
     for k in range(dist.layout.nuts):
-        ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"nut {k + 1}")
+        part = "flank" if result.case.screw.nuts == 1 else "nut"
+        ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{part} {k + 1}")
         lifted = q[k] <= 0.0
         if lifted.any():
             ax.plot(z[k][lifted] * 1e3, q[k][lifted], "x", c="k", label="lifted off")
@@ -303,6 +304,23 @@ def _ratings_note(result: DesignCheck) -> str:
     )
 
 
+_PRELOAD_NOTES = {
+    "spacer": "a double nut preloaded by a spacer",
+    "oversized_balls": "a single nut preloaded by oversized balls (four-point contact: every "
+    "ball loads both flanks, each flank carries all balls of the nut)",
+    "offset_lead": "a single nut preloaded by an offset lead (half the balls on each flank)",
+}
+
+
+def _preload_note(result: DesignCheck) -> str:
+    """Which preload method the loads, stiffness, life and lift-off margin assume."""
+    screw = result.case.screw
+    if result.flanks == 1:
+        return "Preload method: none (a single nut without preload, one loaded flank). "
+    method = screw.resolved_preload_method
+    return f"Preload method: {method}, {_PRELOAD_NOTES[method]}. "
+
+
 def _supports_note(result: DesignCheck) -> str:
     """What the drive stiffness includes: a catalogue's nut rigidity compares with the nut's."""
     text = (
@@ -337,8 +355,9 @@ def sections(result: DesignCheck) -> list[Section]:
             paragraphs=(
                 "capacity / demand: GREEN ≥ 1.25, AMBER ≥ 1, RED < 1. Speed and buckling against "
                 "the makers' 0.8 × critical speed and 0.5 × buckling load (THK, HIWIN). "
-                "A double nut's largest axial load against the lift-off load 2^1.5 F_p, above "
-                "which the second nut runs unloaded, with backlash (HIWIN F 3.5-3.7); its amber "
+                "A preloaded nut's largest axial load against the lift-off load 2^1.5 F_p, above "
+                "which its second nut (or flank) runs unloaded, with backlash (HIWIN F 3.5-3.7); "
+                "its amber "
                 "band, as every margin's, is a GUESS.",
             ),
             tables=(Table(("check", "demand", "capacity", "unit", "ratio", "status"), margins),),
@@ -346,7 +365,9 @@ def sections(result: DesignCheck) -> list[Section]:
         Section(
             "Design values",
             paragraphs=(
-                _ratings_note(result) + " Life, static safety, speed and buckling by "
+                _preload_note(result)
+                + _ratings_note(result)
+                + " Life, static safety, speed and buckling by "
                 "the makers' formulas (THK General Catalog, HIWIN Ballscrews & Accessories); "
                 "nut stiffness from the Hertz contacts of every ball with the elastic shaft "
                 "under the nut and the nut body (theory manual, Loads). " + _supports_note(result),
@@ -357,8 +378,9 @@ def sections(result: DesignCheck) -> list[Section]:
         Section(
             "Life against the load spectrum",
             paragraphs=(
-                f"Load spectrum from [{s.source}]. Cube-mean equivalent loads of the nut halves "
-                f"(preload included, HIWIN F 3.5–3.9): "
+                f"Load spectrum from [{s.source}]. Cube-mean equivalent loads of the loaded "
+                f"flanks (preload included, HIWIN F 3.5–3.9), lives combined as "
+                f"(L₁^(−10/9) + L₂^(−10/9))^(−9/10): "
                 + ", ".join(f"{f:.4g} N" for f in result.equivalent_loads),
             ),
             tables=(Table(("level", "axial load [N]", "revolutions share"), spectrum),),

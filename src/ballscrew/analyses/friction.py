@@ -116,7 +116,7 @@ def friction_torque(
     if spec.model == "ball_model":
         model = ball_model(case, viscosity)
         level = _level(case, None)
-        nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).nuts)
+        nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).flank_loads)
         losses = partial(
             ball_losses,
             model,

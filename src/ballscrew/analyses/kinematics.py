@@ -133,8 +133,9 @@ def prepare(
 def nut_loads(case: Case, preload: float | None = None) -> list[tuple[int, float, int]]:
     """(nut number, axial force, flank) of each nut, from :class:`ScrewParameters`.
 
-    Nut 1 carries F_1 on flank s = +1 and nut 2 carries F_2 on s = −1; a single nut carries
-    F_p + F_a on s = +1. ``preload`` overrides the case's.
+    Nut 1 carries F_1 on flank s = +1 and nut 2 carries F_2 on s = −1; a single nut its loaded
+    flank's F_1 (preloaded on both flanks, (P1)) or F_a (no preload) on s = +1. ``preload``
+    overrides the case's.
     """
     fp = case.operating.preload if preload is None else float(preload)
     if not (math.isfinite(fp) and fp >= 0.0):
@@ -300,7 +301,7 @@ def ball_model(case: Case, viscosity: float | None = None) -> BallModel:
     state = lubricant_state(case, viscosity)
     model = BallModel(
         geometry=params.geometry,
-        balls=params.balls_per_nut,
+        balls=params.flanks.balls,
         ball_density=params.ball.density,
         e_star_screw=e_star,
         e_star_nut=params.contact_modulus("nut"),

@@ -10,8 +10,9 @@ these numbers and small frozen dataclasses.
 
 The nut forces of a spacer-preloaded double nut follow from equal Hertz deflection of the two
 nuts, F1^(2/3) + F2^(2/3) = 2 F_p^(2/3) with F1 − F2 = F_a (Hertz point contacts, rigid bodies;
-lift-off of nut 2 at F_a = 2^(3/2) F_p), see the theory manual, *Loads*. A single nut carries
-F_p + F_a on its one flank.
+lift-off of nut 2 at F_a = 2^(3/2) F_p), see the theory manual, *Loads*. A single nut preloaded
+by oversized balls (four-point contact) or by an offset lead loads both flanks the same way
+(:mod:`ballscrew.loads.preload_method`); a single nut without preload carries F_a on one flank.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from ballscrew.contact.elastic import composite_modulus
 from ballscrew.contact.hertz import hertz
 from ballscrew.geometry import ScrewGeometry, raceway_curvature
 from ballscrew.geometry.screw import SIDES, Side
-from ballscrew.loads import ball_load, nut_axial_compliance, nut_forces
+from ballscrew.loads import Flanks, ball_load, flank_forces, nut_axial_compliance, preload_flanks
 from ballscrew.lubrication.film import FilmModel
 from ballscrew.lubrication.lubricant_library import (
     LibraryLubricant,
@@ -168,7 +169,14 @@ class ScrewParameters:
     """True when the case gives no ball roughness."""
     lubrication: Lubrication
     nuts: tuple[NutLoad, ...]
-    """Every nut of the screw, loaded or lifted off, nut 1 first."""
+    """Every nut of the screw, loaded or lifted off, nut 1 first; a single nut preloaded on
+    both flanks appears once, with its loaded flank (flank 1)."""
+    preload_method: str = "spacer"
+    """spacer, oversized_balls or offset_lead (:mod:`ballscrew.loads.preload_method`)."""
+    flank_loads: tuple[NutLoad, ...] = ()
+    """Every loaded flank, flank 1 first: the nuts of a double nut; the two contact pairs of a
+    four-point nut or the two halves of an offset-lead nut; the one flank of a single nut
+    without preload."""
 
     @classmethod
     def from_case(cls, case: Case) -> ScrewParameters:
@@ -206,6 +214,7 @@ class ScrewParameters:
                 medium.rarefaction,
             ),
             nuts=(),
+            preload_method=spec.resolved_preload_method,
         )
         return params.with_loads()
 
@@ -215,23 +224,28 @@ class ScrewParameters:
         """The same screw at ``preload`` and ``axial_load`` [N] (None = unchanged)."""
         fp = self.preload if preload is None else float(preload)
         fa = self.axial_load if axial_load is None else float(axial_load)
-        if self.nut_count == 2:
-            forces = tuple(float(f) for f in nut_forces(fp, fa))
-        else:
-            forces = (fp + fa,)
+        flanks = preload_flanks(self.preload_method, self.nut_count, self.balls_per_nut, fp)
+        forces = flank_forces(fp, fa, flanks.count)[: flanks.count]
         g = self.geometry
-        nuts = tuple(
+        loads = tuple(
             NutLoad(
                 index=k,
-                force=force,
+                force=float(force),
                 flank=1 if k == 1 else -1,
-                ball_load=float(ball_load(force, self.balls_per_nut, g.contact_angle, g.lead_angle))
+                ball_load=float(ball_load(force, flanks.balls, g.contact_angle, g.lead_angle))
                 if force > 0.0
                 else 0.0,
             )
             for k, force in enumerate(forces, start=1)
         )
-        return dataclasses.replace(self, preload=fp, axial_load=fa, nuts=nuts)
+        return dataclasses.replace(
+            self, preload=fp, axial_load=fa, nuts=loads[: self.nut_count], flank_loads=loads
+        )
+
+    @property
+    def flanks(self) -> Flanks:
+        """The loaded flanks: how many, the balls on each, shared balls (four-point contact)."""
+        return preload_flanks(self.preload_method, self.nut_count, self.balls_per_nut, self.preload)
 
     @property
     def nut_forces(self) -> tuple[float, float]:
@@ -278,13 +292,13 @@ class ScrewParameters:
 
     @property
     def nut_compliance(self) -> float:
-        """C_a of one nut, δ_a = C_a F^(2/3): the Hertz constants of both contacts of a ball
-        (Hertz point contacts, rigid bodies; theory manual, *Loads*) [m N^(−2/3)]."""
+        """C_a of one loaded flank (one nut of a double nut), δ_a = C_a F^(2/3): the Hertz
+        constants of both contacts of a ball (Hertz point contacts, rigid bodies; theory
+        manual, *Loads*) [m N^(−2/3)]."""
         g = self.geometry
         k_a, k_b = self.hertz_constants
-        return float(
-            nut_axial_compliance(k_a, k_b, self.balls_per_nut, g.contact_angle, g.lead_angle)
-        )
+        balls = self.flanks.balls
+        return float(nut_axial_compliance(k_a, k_b, balls, g.contact_angle, g.lead_angle))
 
     @property
     def axial_projection(self) -> float:

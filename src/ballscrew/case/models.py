@@ -56,6 +56,33 @@ class ScrewSpec(Model):
     )
     balls_per_nut: Annotated[int, Field(ge=1, le=10_000, description="loaded balls per nut")]
     nuts: Literal[1, 2] = Field(2, description="1 (single nut) or 2 (preloaded double nut)")
+    preload_method: Literal["spacer", "oversized_balls", "offset_lead"] | None = Field(
+        None,
+        description="how the nut is preloaded: spacer (double nut), oversized_balls "
+        "(single nut, four-point contact) or offset_lead (single nut, lead shift); "
+        "None = spacer for 2 nuts, oversized_balls for 1",
+    )
+
+    @property
+    def resolved_preload_method(self) -> str:
+        """``preload_method``, or its default for ``nuts``."""
+        return self.preload_method or ("spacer" if self.nuts == 2 else "oversized_balls")
+
+    @model_validator(mode="after")
+    def _preload_method_fits(self) -> ScrewSpec:
+        method = self.resolved_preload_method
+        if (method == "spacer") != (self.nuts == 2):
+            allowed = "spacer" if self.nuts == 2 else "oversized_balls or offset_lead"
+            raise ValueError(
+                f"screw.preload_method = {method!r} is not allowed with screw.nuts = "
+                f"{self.nuts}: {allowed}"
+            )
+        if method == "offset_lead" and self.balls_per_nut % 2:
+            raise ValueError(
+                f"screw.balls_per_nut = {self.balls_per_nut} is not allowed with "
+                'screw.preload_method = "offset_lead": an even number (two equal halves)'
+            )
+        return self
 
     @model_validator(mode="after")
     def _ball_fits(self) -> ScrewSpec:

@@ -78,6 +78,8 @@ class CatalogueSheet:
     """Ball-centre (pitch circle) diameter d_m [m]; None = d0."""
     root_diameter: float | None = None
     """Thread root (minor) diameter d_r [m]; None = the groove bottom."""
+    preload_method: str | None = None
+    """``screw.preload_method``; None = spacer for 2 nuts, oversized_balls for 1."""
 
     @property
     def d_m(self) -> float:
@@ -230,6 +232,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         balls=balls,
         nuts=_plural(sheet.nuts, "nut"),
         nut_count=sheet.nuts,
+        preload_method=sheet.preload_method or ("spacer" if sheet.nuts == 2 else "oversized_balls"),
         conformity=CONFORMITY,
         oil_name=json.dumps(oil.name),
         oil_key=json.dumps(_OIL),
@@ -334,6 +337,7 @@ contact_angle = "45 deg"         # Gothic-arch standard [TYPICAL]
 # {circuits} x {per_circuit} balls, floor(turns pi d_m/(D_w cos lambda)) - 1 per circuit
 balls_per_nut = {balls}
 nuts = {nut_count}                         # 2: double nut preloaded by a spacer; 1: single nut
+preload_method = "{preload_method}"      # spacer (2 nuts); oversized_balls or offset_lead (1 nut)
 
 # Steels by name (ballscrew.materials); any property written below a name overrides it.
 [materials.ball]

@@ -60,6 +60,13 @@ def init(
         str | None,
         typer.Option(help=f"thread root (minor) diameter, {_MM}; default the groove bottom"),
     ] = None,
+    preload_method: Annotated[
+        str | None,
+        typer.Option(
+            help="spacer (2 nuts), oversized_balls or offset_lead (1 nut); default spacer for "
+            "2 nuts, oversized_balls for 1"
+        ),
+    ] = None,
     name: Annotated[str, typer.Option(help="case name")] = "my_screw",
 ) -> None:
     """Print a complete case (TOML) for a screw from a maker's table; redirect it to a file."""
@@ -71,6 +78,11 @@ def init(
 
     if nuts not in (1, 2):
         raise InputError("--nuts", nuts, "1 or 2")
+    methods = ("spacer",) if nuts == 2 else ("oversized_balls", "offset_lead")
+    if preload_method is not None and preload_method not in methods:
+        raise InputError(
+            "--preload-method", preload_method, f"{' or '.join(methods)} for {nuts} nut(s)"
+        )
     t, circuits = parse_turns(turns)
     sheet = CatalogueSheet(
         nominal_diameter=_si("--d0", d0, "length", _MM, 1e-3),
@@ -84,5 +96,6 @@ def init(
         nut_length=optional_mm("--nut-length", nut_length),
         pitch_diameter=optional_mm("--dp", dp),
         root_diameter=optional_mm("--root", root),
+        preload_method=preload_method,
     )
     typer.echo(starter_case(sheet, name), nl=False)

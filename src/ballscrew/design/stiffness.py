@@ -9,7 +9,9 @@
   F₁ − F₂ = F_a (:func:`ballscrew.loads.nut_forces`). The halves act in parallel, so the
   stiffness is the sum of the halves' 1.5 F_i/δ_i
   (:func:`ballscrew.loads.preloaded_axial_stiffness`) until the second half lifts off at
-  F_a = 2^(3/2) F_p. A single nut carries F_p + F_a.
+  F_a = 2^(3/2) F_p. A single nut preloaded by oversized balls (four-point contact) or an offset
+  lead has the same two loaded flanks (``nuts = 2`` here, with the compliance of one flank); a
+  single nut without preload carries F_a on one flank (``nuts = 1``).
 * Bodies in series: 1/K = Σ 1/K_i.
 """
 
@@ -19,7 +21,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
-from ballscrew.loads import nut_axial_deflection, nut_forces, preloaded_axial_stiffness
+from ballscrew.loads import flank_forces, nut_axial_deflection, preloaded_axial_stiffness
 from ballscrew.validation import nonnegative, nonnegative_array, positive
 
 __all__ = [
@@ -46,11 +48,8 @@ def catalogue_nut_rigidity(table_rigidity: float, load: float, reference_load: f
 
 
 def _half_forces(axial_load: float, preload: float, nuts: int) -> tuple[float, float]:
-    if nuts == 1:
-        return preload + axial_load, 0.0
-    if nuts == 2:
-        return tuple(float(f) for f in nut_forces(preload, axial_load))  # type: ignore[return-value]
-    raise InputError("nuts", nuts, "1 or 2")
+    f1, f2 = flank_forces(preload, axial_load, nuts)
+    return float(f1), float(f2)
 
 
 def nut_load_deflection(

@@ -1,4 +1,5 @@
-"""Axial loads: ball load (Q1) and the preloaded double nut (P1)–(P3), (E1.7)–(E1.13).
+"""Axial loads: ball load (Q1), the preloaded double nut (P1)–(P3), (E1.7)–(E1.13), and the
+single nut preloaded by oversized balls or an offset lead (:mod:`.preload_method`).
 
 Vectorised functions return NumPy float64 scalars for scalar inputs.
 """
@@ -18,18 +19,28 @@ from ballscrew.loads.drag_torque import (
     DragTorqueInputs,
     preload_drag_torque,
 )
+from ballscrew.loads.preload_method import (
+    PRELOAD_METHODS,
+    Flanks,
+    flank_forces,
+    preload_flanks,
+)
 
 __all__ = [
     "DRAG_TORQUE_MODELS",
+    "PRELOAD_METHODS",
     "DragTorqueInputs",
+    "Flanks",
     "NutForces",
     "axial_deflection_from_approaches",
     "ball_load",
+    "flank_forces",
     "nut_axial_compliance",
     "nut_axial_deflection",
     "nut_forces",
     "preload_after_wear",
     "preload_drag_torque",
+    "preload_flanks",
     "preloaded_axial_stiffness",
     "validate_angles",
     "validate_balls",

@@ -16,7 +16,9 @@ so with c = 1/(EA) the flexibility is
 
 (the screw carries the load out at the loaded end z → +∞). e_j is the lead error (axial, screw
 relative to nut), Δd_j the ball-diameter excess, g the interference the spacer of a double nut
-builds in (found from the preload), K = K_A + K_B the Hertz constants of a ball's two contacts.
+builds in (found from the preload; for a single nut preloaded by oversized balls the two "nuts"
+are the two contact pairs of the same balls at the same z_j, g the ball oversize),
+K = K_A + K_B the Hertz constants of a ball's two contacts.
 The nut ring widens and the shaft shrinks under the radial line load f_j = cosβ n_t ⟨Q⟩_j / L
 of the turn around ball j (n_t balls per turn, ⟨Q⟩_j their mean load); Lamé thick ring and
 solid shaft give c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n) + (1 − ν_s)/(2π E_s) of radial
@@ -77,6 +79,9 @@ class BallLayout:
     lead: float
     """Lead L [m]."""
     nuts: int
+    shared: bool = False
+    """True: the two "nuts" are the two contact pairs of the same balls (a single nut preloaded
+    by oversized balls, four-point contact): both flanks at the same axial positions."""
 
     @property
     def balls(self) -> int:
@@ -97,21 +102,26 @@ def ball_layout(
     ball_diameter: float,
     lead_angle: float,
     spacer: float,
+    shared: bool = False,
 ) -> BallLayout:
     """Axial positions of touching balls on the helix; nut 1 at the loaded end.
 
     Balls touch along the helix of length π d_m / cos α per turn, so consecutive balls are
     Δz = L D_b cos α / (π d_m) apart axially. Nut 2 lies beyond nut 1 away from the loaded end,
-    its nearest ball ``spacer`` [m] from nut 1's.
+    its nearest ball ``spacer`` [m] from nut 1's; with ``shared`` (two "nuts" that are the two
+    contact pairs of the same balls, four-point contact) at nut 1's positions.
     """
     z_count = validate_balls(balls_per_nut)
-    if nuts not in (1, 2):
-        raise InputError("nuts", nuts, "1 or 2")
+    if nuts not in (1, 2) or (shared and nuts != 2):
+        raise InputError("nuts", nuts, "2 where the flanks share the balls, else 1 or 2")
     lead = positive("lead", lead, "m")
     step = lead * ball_diameter * math.cos(lead_angle) / (math.pi * pitch_diameter)
     own = np.arange(z_count) * step  # distance from the nut's end nearest the loaded end
-    top = own[-1] if nuts == 1 else 2.0 * own[-1] + positive("spacer", spacer, "m")
-    starts = [top, top - own[-1] - spacer][:nuts]
+    if shared:
+        starts = [own[-1], own[-1]]
+    else:
+        top = own[-1] if nuts == 1 else 2.0 * own[-1] + positive("spacer", spacer, "m")
+        starts = [top, top - own[-1] - spacer][:nuts]
     turn = np.floor(own / lead + 1e-12).astype(np.int64)
     return BallLayout(
         z=np.concatenate([start - own for start in starts]),
@@ -120,6 +130,7 @@ def ball_layout(
         turn=np.tile(turn, nuts),
         lead=lead,
         nuts=nuts,
+        shared=shared,
     )
 
 
@@ -179,20 +190,23 @@ def body_properties(
 
 def expand_errors(name: str, values: ArrayLike | None, layout: BallLayout) -> NDArray[np.float64]:
     """Per-ball values from ``values`` given per ball (nuts × balls) or per turn (nuts × turns),
-    nut 1 first, each nut from its end nearest the loaded end; None → zeros."""
+    nut 1 first, each nut from its end nearest the loaded end; None → zeros. Where the flanks
+    share the balls (four-point contact) the values are of the one nut's balls, on both flanks."""
     if values is None:
         return np.zeros(layout.z.size)
     v = np.asarray(values, dtype=float).ravel()
     if not np.all(np.isfinite(v)):
         raise InputError(name, values, "finite numbers")
-    if v.size == layout.z.size:
-        return v
-    if v.size == layout.nuts * layout.turns:
-        return v.reshape(layout.nuts, layout.turns)[layout.nut, layout.turn]
+    rows = 1 if layout.shared else layout.nuts
+    nut = np.zeros_like(layout.nut) if layout.shared else layout.nut
+    if v.size == rows * layout.balls:
+        return v.reshape(rows, layout.balls)[nut, np.tile(np.arange(layout.balls), layout.nuts)]
+    if v.size == rows * layout.turns:
+        return v.reshape(rows, layout.turns)[nut, layout.turn]
     raise InputError(
         name,
         f"{v.size} values",
-        f"{layout.z.size} (one per ball) or {layout.nuts * layout.turns} (one per turn), "
+        f"{rows * layout.balls} (one per ball) or {rows * layout.turns} (one per turn), "
         "nut 1 first",
     )
 
@@ -244,12 +258,15 @@ def _flexibility(layout: BallLayout, bodies: NutBodies) -> tuple[NDArray[np.floa
 
 def _window(layout: BallLayout) -> NDArray[np.float64]:
     """Averaging over the balls of the same nut within half a lead: f_j = cosβ n_t ⟨Q⟩_j / L
-    with n_t balls per turn, so a nut's end turns see the local mean load, not half of it."""
+    with n_t balls per turn, so a nut's end turns see the local mean load, not half of it.
+    Where the flanks share the balls both contact pairs press the ring: f_j = cosβ n_t
+    (⟨Q₁⟩_j + ⟨Q₂⟩_j) / L."""
     same = layout.nut[:, None] == layout.nut[None, :]
     near = np.abs(layout.z[:, None] - layout.z[None, :]) <= 0.5 * layout.lead * (1 + 1e-12)
-    w = (same & near).astype(float)
+    w = ((same | layout.shared) & near).astype(float)
     per_turn = layout.lead / float(np.abs(layout.z[1] - layout.z[0])) if layout.balls > 1 else 1.0
-    return w * (per_turn / w.sum(axis=1, keepdims=True))
+    pairs = layout.nuts if layout.shared else 1
+    return w * (pairs * per_turn / w.sum(axis=1, keepdims=True))
 
 
 Law = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.float64]]]
