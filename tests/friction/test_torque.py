@@ -7,7 +7,7 @@ import math
 import pytest
 
 import ballscrew
-from ballscrew.analyses.friction import friction_torque, seal_torque
+from ballscrew.analyses.friction import FourPointContactWarning, friction_torque, seal_torque
 from ballscrew.analyses.kinematics import ball_model, computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import CaseError
@@ -186,3 +186,36 @@ def test_film_parameter_is_the_screw_contacts_separation_over_the_roughness(ball
     assert losses.film_parameter == pytest.approx(expected, rel=1e-9)
     nut_side = model.sharing(state.load_nut, abs(state.ball_speed), "nut").separation
     assert nut_side / model.surface.rms_height != pytest.approx(expected, rel=1e-3)
+
+
+def test_four_point_balls_count_their_train_once(ball_case):
+    """A single nut preloaded by oversized balls has Z balls touching both flanks: the contact
+    losses add over the two flanks, the ball train's (ball–ball, drag, return) are those of one
+    flank's Z balls, not of 2Z."""
+    model = ball_model(ball_case)
+    fp = 1500.0
+    both = ((fp, 1), (fp, -1))
+    apart = ball_losses(model, 100.0, both)
+    shared = ball_losses(model, 100.0, both, shared=True)
+    one = ball_losses(model, 100.0, both[:1])
+    for part in ("sliding", "ehl_rolling", "hysteresis", "groove_slip"):
+        assert getattr(shared, part) == pytest.approx(getattr(apart, part), rel=1e-12)
+    for part in ("ball_ball", "drag", "recirculation"):
+        assert getattr(shared, part) == pytest.approx(getattr(one, part), rel=1e-12)
+        assert getattr(one, part) > 0.0
+    assert shared.total < apart.total
+
+
+def test_oversized_ball_nut_friction_is_below_the_double_nut(wear_case_path):
+    """Same balls per flank and preload: the four-point single nut has the double nut's contact
+    losses but half its ball train (Z balls, not 2Z)."""
+    base = {"friction.model": "ball_model", "operating.axial_load": 0.0}
+    double = ballscrew.load_case(wear_case_path, base)
+    single = ballscrew.load_case(
+        wear_case_path, {**base, "screw.nuts": 1, "screw.preload_method": "oversized_balls"}
+    )
+    rd = friction_torque(double, speed=100.0)
+    with pytest.warns(FourPointContactWarning, match="lower estimate"):
+        rs = friction_torque(single, speed=100.0)
+    assert rs.parts["sliding"] == pytest.approx(rd.parts["sliding"], rel=1e-9)
+    assert rs.parts["drag"] == pytest.approx(0.5 * rd.parts["drag"], rel=1e-9)

@@ -8,6 +8,7 @@ inlet viscosity (the viscosity at the operating temperature is passed by the cal
 
 from __future__ import annotations
 
+import warnings
 from functools import partial
 
 from ballscrew.analyses.ball_loads import ball_loads, nut_model
@@ -28,7 +29,19 @@ from ballscrew.friction.speed_spread import NutBalls
 from ballscrew.loads.distribution import expand_errors
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["friction_torque", "nut_balls", "nut_loss_parameters", "seal_torque"]
+__all__ = [
+    "FourPointContactWarning",
+    "friction_torque",
+    "nut_balls",
+    "nut_loss_parameters",
+    "seal_torque",
+]
+
+
+class FourPointContactWarning(UserWarning):
+    """The ball model runs a single nut preloaded by oversized balls as two flanks of the same
+    balls; the extra spin and sliding of a ball touching four points are not modelled."""
+
 
 #: Largest axial load accepted [N]: the upper end of ``operating.axial_load``.
 _LOAD_RANGE = f"a force in [0, {MAX_FORCE:g}] N (the range of operating.axial_load)"
@@ -117,6 +130,14 @@ def friction_torque(
         model = ball_model(case, viscosity)
         level = _level(case, None)
         nuts = tuple((n.force, n.flank) for n in params.with_loads(axial_load=0.0).flank_loads)
+        if params.flanks.shared:
+            warnings.warn(
+                "screw.preload_method = oversized_balls: the ball model adds the contact losses "
+                "of both flanks and counts the ball train once, but not the extra spin and "
+                "sliding of a ball touching four points, so its torque is a lower estimate",
+                FourPointContactWarning,
+                stacklevel=2,
+            )
         losses = partial(
             ball_losses,
             model,
@@ -125,6 +146,7 @@ def friction_torque(
             hysteresis=spec.hysteresis,
             nut=nut_loss_parameters(case),
             balls=nut_balls(case),
+            shared=params.flanks.shared,
         )
     inputs = FrictionInputs(
         lead=geometry.lead,

@@ -308,6 +308,7 @@ def ball_losses(
     hysteresis: float = DEFAULT_HYSTERESIS,
     nut: NutLossParameters | None = None,
     balls: tuple[NutBalls | None, ...] | None = None,
+    shared: bool = False,
 ) -> BallLosses:
     """Losses of every loaded ball of the nuts ``(axial force, flank)`` at screw speed ω_s.
 
@@ -316,7 +317,11 @@ def ball_losses(
     or return loss). ``nut``: the parameters of :mod:`~ballscrew.friction.nut_losses` (default
     :class:`~ballscrew.friction.nut_losses.NutLossParameters`). ``balls``: per nut (aligned with
     ``nuts``) the per-ball states of :class:`~ballscrew.friction.speed_spread.NutBalls` that the
-    ``speed_spread`` ball train needs (None: identical balls).
+    ``speed_spread`` ball train needs (None: identical balls). ``shared``: the flanks are the two
+    contact pairs of the same balls (a single nut preloaded by oversized balls): the contact
+    losses count on every flank, the ball train's (ball–ball, drag, return push and
+    recirculation) once, with the motion of the first loaded flank (an assumption: the
+    four-point ball's own kinematics are not modelled).
     """
     nut = NutLossParameters() if nut is None else nut
     per_nut = (None,) * len(nuts) if balls is None else balls
@@ -338,6 +343,8 @@ def ball_losses(
         torques, push, separation, psi = _contact_losses(
             model, state, unit, (float(a), float(b)), nut, own
         )
+        if shared and first is not None:  # the same balls: their train counts once
+            torques, push = (*torques[:3], 0.0, 0.0, torques[5]), 0.0
         sums += torques
         pushes += push
         first = first or (separation, psi)
@@ -349,7 +356,8 @@ def ball_losses(
     hyst_a, hyst_b = model.balls * np.sum(
         hysteresis_force(loads, along, radii, hysteresis) * ratio[:, None], axis=0
     )
-    returns = pushes + sum(_recirculation_torque(model, state, nut) for state in states)
+    trains = states[:1] if shared else states
+    returns = pushes + sum(_recirculation_torque(model, state, nut) for state in trains)
     film = 0.0
     if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
         film = film_parameter(separation, model.surface.rms_height)
