@@ -11,11 +11,9 @@ import numpy as np
 import pytest
 
 from ballscrew.calibration.joint import fit_joint, joint_columns
-from ballscrew.calibration.multi import HistoryFit
-from ballscrew.calibration.search import DIFF_STEP
 from ballscrew.errors import InputError
 
-from .test_joint_covariance import THREE, Model, data
+from .test_joint_covariance import THREE, data, joint_parts
 
 SHARED = ["wear_coefficient", "torque_scale"]
 
@@ -44,22 +42,7 @@ def test_a_parameter_named_twice_is_refused_before_any_model_run():
 def test_the_degrees_of_freedom_are_the_points_less_the_parameters():
     truths = ((2.0e-4, 1.1, 0.05), (2.0e-4, 1.1, 0.12), (2.0e-4, 1.1, 0.08))
     measured = [data(seed, *truth) for seed, truth in enumerate(truths, start=21)]
-    parts = [
-        HistoryFit(
-            Model(),
-            d,
-            THREE,
-            {"wear_coefficient": 1.0e-4},
-            torque_scale=1.0,
-            torque_offset=0.0,
-            fit_until=None,
-            max_evaluations=200,
-            diff_step=DIFF_STEP,
-            label="test",
-        )
-        for d in measured
-    ]
-    result = fit_joint(parts, SHARED)
+    result = fit_joint(joint_parts(measured), SHARED)
     points = sum(d.values.size for d in measured)
     assert result.degrees_of_freedom == points - 5  # K, m shared; three offsets
     labels = {name for pair in result.correlations for name in pair.split(",")}
