@@ -188,3 +188,20 @@ def test_the_command_lists_only_its_guesses(tmp_path, command, example, kept, go
     guesses = _guesses_of(tmp_path, command, example, quick)
     assert kept <= guesses
     assert not [key for key in guesses if key.startswith(tuple(gone))]
+
+
+def test_a_sweep_lists_the_guesses_of_its_analysis(tmp_path):
+    from ballscrew.results.sweep_report import write_sweep
+    from ballscrew.sweep import PointRecord, assemble, parse_axis
+
+    case = load_case(EXAMPLES / "gao2019_tcr.toml")
+    axis = parse_axis("operating.preload=1000 N,2000 N")
+    records = [
+        PointRecord({axis.key: v}, {"resistance": (v, "K/W")}, None, 0.0) for v in axis.values
+    ]
+    folder = tmp_path / "sweep"
+    folder.mkdir()
+    write_sweep(assemble([axis], records, "tcr", case), folder, 2, case, [axis])
+    guessed = json.loads((folder / "summary.json").read_text(encoding="utf-8"))["guessed_defaults"]
+    assert "case.loads.nut_outer_diameter" in guessed
+    assert not [key for key in guessed if key.startswith(("case.friction.", "case.kinematics."))]
