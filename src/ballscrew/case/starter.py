@@ -323,7 +323,7 @@ _TEMPLATE = """\
 
 name = {name}
 description = "{d0_mm} x {lead_mm} mm ball screw, {turns} x {circuits}, {nuts}"
-duty_repeat = 1                  # runs of the one-hour [[duty]] cycle below; 8: a working day
+duty_repeat = 1                  # runs of the one-hour duty cycle at the end; 8: a working day
 
 [screw]
 pitch_diameter = {d_m}        # d_m: {d_m_note}
