@@ -87,9 +87,9 @@ def test_the_hand_written_model_is_the_stand_in() -> None:
     np.testing.assert_allclose(torque(2.0e-4, depth_per_k(MEASURED_AT))[0], want, rtol=1e-12)
 
 
-def test_joint_standard_errors_match_curve_fit() -> None:
-    measured = [data(seed, *truth) for seed, truth in enumerate(TRUE, start=11)]
-    parts = [
+def joint_parts(measured: list) -> list[HistoryFit]:
+    """One part per history fitting :data:`THREE` on the stand-in, from K = 1e-4."""
+    return [
         HistoryFit(
             Model(),
             d,
@@ -104,7 +104,11 @@ def test_joint_standard_errors_match_curve_fit() -> None:
         )
         for d in measured
     ]
-    result = fit_joint(parts, ["wear_coefficient"])
+
+
+def test_joint_standard_errors_match_curve_fit() -> None:
+    measured = [data(seed, *truth) for seed, truth in enumerate(TRUE, start=11)]
+    result = fit_joint(joint_parts(measured), ["wear_coefficient"])
 
     n = MEASURED_AT.size
     model, jacobian = stacked(n)

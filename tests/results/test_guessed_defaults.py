@@ -52,7 +52,9 @@ class _Result:
 
 def test_the_folder_reports_the_guesses(tmp_path):
     case = load_case(EXAMPLE, {"friction.circuits": 3})
-    folder = write_results(_Result(case, inputs=resolved_inputs(case)), tmp_path / "out")
+    # the operating point reads [friction] (a tcr result lists no friction guess any more)
+    result = _Result(case, analysis="operating-point", inputs=resolved_inputs(case))
+    folder = write_results(result, tmp_path / "out")
     summary = json.loads((folder / "summary.json").read_text(encoding="utf-8"))
     assert "friction.seal_force" in summary["guessed_defaults"]
     assert "friction.circuits" not in summary["guessed_defaults"]

@@ -11,6 +11,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table, quantity
 from ballscrew.plotting import legend_outside, line_styles, plain, pyplot
+from ballscrew.units import format_quantity
 
 if TYPE_CHECKING:
     from ballscrew.analyses.duty_thermal import DutyThermal
@@ -108,6 +109,17 @@ def figures(result: DutyThermal) -> list[Figure]:
     ]
 
 
+def time_base(result: DutyThermal) -> str:
+    """What the histories span: ``2 segments (1 h) run 8 times: 8 h in all``."""
+    repeat = result.case.duty_repeat
+    cycle = sum(segment.duration for segment in result.case.duty)
+    return (
+        f"{len(result.case.duty)} segments ({format_quantity(cycle, 'time')}) run {repeat} "
+        f"{'time' if repeat == 1 else 'times'}: {format_quantity(result.time[-1], 'time')} "
+        "in all"
+    )
+
+
 def sections(result: DutyThermal) -> list[Section]:
     """The segments with their mean heat, then the day's peaks."""
     rows = tuple(
@@ -141,8 +153,8 @@ def sections(result: DutyThermal) -> list[Section]:
         Section(
             "Duty cycle",
             paragraphs=(
-                f"{len(result.case.duty)} segments run {result.case.duty_repeat} times, "
-                "averaged over strokes and dwells. The friction heat of each time step is taken "
+                f"{time_base(result)}, averaged over strokes and dwells. The friction heat of "
+                "each time step is taken "
                 "with the lubricant at the contact temperature of the step before; the table "
                 "gives each segment's heat at its steady coupled operating point.",
             ),

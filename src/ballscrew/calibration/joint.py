@@ -51,7 +51,7 @@ from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import InputError
 from ballscrew.units import split_list
 
-__all__ = ["JointCalibrationResult", "calibrate_joint", "fit_joint"]
+__all__ = ["JointCalibrationResult", "calibrate_joint", "fit_joint", "joint_columns"]
 
 _K = "wear_coefficient"
 
@@ -122,6 +122,24 @@ class JointCalibrationResult(Presented):
         return joint_report.fields(self)
 
 
+def joint_columns(
+    parts: Sequence[HistoryFit], shared: Sequence[str]
+) -> tuple[list[str], list[np.ndarray]]:
+    """The labels of the jointly fitted parameters (a shared one once, every other one per
+    history: ``torque_offset[2]``) and each part's columns among them; p is their number.
+
+    A part that names a parameter twice is refused (its columns would count it twice)."""
+    names: list[str] = []
+    index: list[np.ndarray] = []
+    for j, part in enumerate(parts, start=1):
+        if len(set(part.names)) != len(part.names):
+            raise InputError("fit", ", ".join(part.names), "each parameter once")
+        labels = [name if name in shared else f"{name}[{j}]" for name in part.names]
+        names += [label for label in labels if label not in names]
+        index.append(np.array([names.index(label) for label in labels]))
+    return names, index
+
+
 def fit_joint(
     parts: Sequence[HistoryFit],
     shared: Sequence[str],
@@ -144,8 +162,8 @@ def fit_joint(
         missing = [n for n in shared if n not in part.names]
         if missing:
             raise InputError("shared", ", ".join(missing), "parameters every history fits")
-    n = sum(part.n_fit for part in parts)
-    p = len(shared) + sum(len(part.names) - len(shared) for part in parts)
+    names, index = joint_columns(parts, shared)
+    n, p = sum(part.n_fit for part in parts), len(names)
     if n <= p:  # before the start-value scans, each dozens of model runs
         until = next((part.fit_until for part in parts if part.fit_until is not None), None)
         raise too_few_points(source, n, p, until)
@@ -160,24 +178,14 @@ def fit_joint(
     }
     brackets = [s[2] for s in starts if s[2] is not None]
     bracket = (min(b[0] for b in brackets), max(b[1] for b in brackets)) if brackets else None
-    index: list[np.ndarray] = []
-    names: list[str] = []
-    x0: list[float] = []
-    lower: list[float] = []
-    upper: list[float] = []
-    for j, (part, (base, _, _)) in enumerate(zip(parts, starts, strict=True)):
+    x0, lower, upper = np.zeros(p), np.zeros(p), np.zeros(p)
+    seen = np.zeros(p, dtype=bool)  # a shared parameter starts where the first part puts it
+    for part, i, (base, _, _) in zip(parts, index, starts, strict=True):
         part.base = {**base, **common}
-        x, lo, hi = part.begin(bracket)
-        columns = []
-        for name, v, a, b in zip(part.names, x, lo, hi, strict=True):
-            label_j = name if name in shared else f"{name}[{j + 1}]"
-            if label_j not in names:
-                names.append(label_j)
-                x0.append(float(v))
-                lower.append(a)
-                upper.append(b)
-            columns.append(names.index(label_j))
-        index.append(np.array(columns))
+        x, lo, hi = (np.asarray(v, dtype=float) for v in part.begin(bracket))
+        new = ~seen[i]
+        x0[i[new]], lower[i[new]], upper[i[new]] = x[new], lo[new], hi[new]
+        seen[i] = True
     rows = np.cumsum([0] + [part.n_fit for part in parts])
 
     def residuals(x: np.ndarray) -> np.ndarray:
@@ -197,8 +205,8 @@ def fit_joint(
         residuals,
         stacked(lambda part: part.jacobian),
         difference,
-        np.array(x0),
-        (lower, upper),
+        x0,
+        (list(lower), list(upper)),
         n,
         max_evaluations,
         label,
@@ -206,7 +214,7 @@ def fit_joint(
         source,
     )
     for part, i in zip(parts, index, strict=True):
-        part.check_bracket(x[i], np.array(lower)[i], np.array(upper)[i])
+        part.check_bracket(x[i], lower[i], upper[i])
     r = residuals(x)
     what = " and ".join(described(name) for name in names) + " together"
     central = stacked(lambda part: partial(part.jacobian.difference, central=True))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import Any, get_args
 
 from pydantic import BaseModel
@@ -14,6 +14,7 @@ __all__ = [
     "field_unit",
     "guessed_defaults",
     "input_rows",
+    "is_read",
     "resolved_inputs",
 ]
 
@@ -84,21 +85,40 @@ def input_rows(inputs: dict[str, Any], prefix: str = "") -> list[tuple[str, Any,
     return rows
 
 
-def guessed_defaults(model: BaseModel, prefix: str = "") -> dict[str, str]:
+def guessed_defaults(
+    model: BaseModel, prefix: str = "", reads: Sequence[str] | None = None
+) -> dict[str, str]:
     """Dotted key → description of every field of ``model`` (a validated case) that was left
     at a default its description labels a guess (:data:`GUESS_MARKS`), nested sections
     included; a value the user wrote is no guess, nor is None unless the description gives the
     guessed rule that None stands for (``None = d_m + 5 D_b [GUESS]``). The inputs a case
-    declares in its own ``[assumed]`` table are listed too, with the reason it gives."""
+    declares in its own ``[assumed]`` table are listed too, with the reason it gives.
+
+    ``reads``: dotted prefixes of the inputs an analysis reads
+    (:data:`ballscrew.analyses.case_reads.CASE_READS`); only the keys under one of them are
+    kept (None keeps all). Keys are given with ``prefix`` in front, matched without it."""
+    found = _guessed(model, prefix)
+    if reads is None:
+        return found
+    return {key: text for key, text in found.items() if is_read(key[len(prefix) :], reads)}
+
+
+def is_read(key: str, reads: Sequence[str]) -> bool:
+    """Whether the input ``key`` (``friction.circuits``, ``duty[0].stroke``) is one of or
+    inside the dotted prefixes ``reads`` (``friction``, ``duty``)."""
+    return any(key == p or key.startswith((p + ".", p + "[")) for p in reads)
+
+
+def _guessed(model: BaseModel, prefix: str) -> dict[str, str]:
     found: dict[str, str] = {}
     for name, info in type(model).model_fields.items():
         value, key = getattr(model, name), f"{prefix}{name}"
         if isinstance(value, BaseModel):
-            found |= guessed_defaults(value, key + ".")
+            found |= _guessed(value, key + ".")
         elif isinstance(value, list | tuple):
             for k, item in enumerate(value):
                 if isinstance(item, BaseModel):
-                    found |= guessed_defaults(item, f"{key}[{k}].")
+                    found |= _guessed(item, f"{key}[{k}].")
         elif name not in model.model_fields_set:
             text = field_description(info)
             if (value is not None or "None = " in text) and any(m in text for m in GUESS_MARKS):

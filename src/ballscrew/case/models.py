@@ -21,6 +21,7 @@ from ballscrew.case.friction_spec import FrictionSpec
 from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
 from ballscrew.case.loads_spec import LoadsSpec
 from ballscrew.case.lubrication_spec import LubricationSpec, check_oil_viscosities
+from ballscrew.case.nut_body import check_nut_body
 from ballscrew.case.thermal_spec import ThermalSpec
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import (
@@ -377,6 +378,8 @@ class Case(Model):
                 f"kinematics.lubricant = {self.kinematics.lubricant!r}: name one lubricant"
             )
         return self
+
+    _nut_around_the_balls = model_validator(mode="after")(check_nut_body)
 
     @model_validator(mode="after")
     def _a_ball_in_every_circuit(self) -> Case:

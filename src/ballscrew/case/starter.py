@@ -326,6 +326,7 @@ _TEMPLATE = """\
 
 name = {name}
 description = "{d0_mm} x {lead_mm} mm ball screw, {turns} x {circuits}, {nuts}"
+duty_repeat = 1                  # runs of the one-hour duty cycle at the end; 8: a working day
 
 [screw]
 pitch_diameter = {d_m}        # d_m: {d_m_note}
@@ -404,8 +405,9 @@ unsupported_length = {unsupported}   # 90 % of the shaft between the bearings [A
 load_factor = 1.2                # f_w: smooth running, no shocks [ASSUMED]
 accuracy_grade = {grade}               # C{grade} / P{grade} [ASSUMED]
 
-# A working cycle for `ballscrew duty` and the life of `ballscrew check` [ASSUMED, illustrative:
-# write your machine's]: strokes at 1000 rpm under 8 % of the geometric C_a, then rest.
+# A one-hour working cycle for `ballscrew duty` (run duty_repeat times, at the top) and the life
+# of `ballscrew check` [ASSUMED, illustrative: write your machine's]: 40 min of strokes at
+# 1000 rpm under 8 % of the geometric C_a, then 20 min of rest.
 [[duty]]
 speed = "1000 rpm"
 axial_load = {duty_load}

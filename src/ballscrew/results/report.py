@@ -87,9 +87,10 @@ def inputs_warnings_sections(
             Section(
                 "Defaults that are guesses",
                 paragraphs=[
-                    "Inputs the case left at a default that is only a guess (GUESS or ASSUMED in "
-                    "its description); each counts only where the analysis uses it. Write the "
-                    "value into the case when it is known."
+                    "Inputs this analysis reads that the case left at a default that is only a "
+                    "guess (GUESS or ASSUMED in its description) or lists in its [assumed] "
+                    "table; each counts only where the analysis uses it. Write the value into "
+                    "the case when it is known."
                 ],
                 tables=[(["input", "value", "unit", "what and why"], guessed)],
             )

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import xarray as xr
 
+from ballscrew.analyses.case_reads import case_reads
 from ballscrew.case import Case
 from ballscrew.case.inputs import guessed_defaults, resolved_inputs
 from ballscrew.plotting import legend_outside, line_styles, pyplot, zero_noise
@@ -162,7 +163,8 @@ def write_sweep(
     export = parse_formats(export)
     with writing(folder):
         swept = {f"case.{d}" for d in ds["failed"].dims}  # each point writes its own value
-        guessed = guessed_defaults(case, "case.") if case is not None else {}
+        reads = case_reads(str(ds.attrs["analysis"]))
+        guessed = guessed_defaults(case, "case.", reads) if case is not None else {}
         guesses = {key: text for key, text in guessed.items() if key not in swept}
         _write_files(ds, folder, computed, sweep_inputs(ds, case, axes), guesses)
         if export:

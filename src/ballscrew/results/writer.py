@@ -3,8 +3,8 @@
 A results folder holds
 
 * ``summary.json`` — the result's scalars (SI, each with its unit), its warnings, the keys of
-  the inputs left at a default that is only a guess (``guessed_defaults``) and the resolved
-  inputs;
+  the inputs it reads (:mod:`ballscrew.analyses.case_reads`) left at a default that is only a
+  guess (``guessed_defaults``) and the resolved inputs;
 * ``<stem>.nc`` — the result's xarray datasets (NetCDF, ``units`` attributes);
 * ``<figure>.png`` — its figures;
 * ``report.html`` — one self-contained page: the inputs, the warnings, then the result's own
@@ -27,6 +27,7 @@ from typing import Any
 
 import xarray as xr
 
+from ballscrew.analyses.case_reads import case_reads
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.case import Case
 from ballscrew.case.inputs import guessed_defaults
@@ -79,7 +80,8 @@ def write_results(
     """
     warnings = result_warnings(result)
     case = getattr(result, "case", None)
-    guesses = guessed_defaults(case) if isinstance(case, Case) else {}
+    reads = case_reads(result.analysis)
+    guesses = guessed_defaults(case, reads=reads) if isinstance(case, Case) else {}
     export = parse_formats(export)
     with results_folder(out) as folder:
         summary = {
