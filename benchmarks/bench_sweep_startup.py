@@ -7,12 +7,15 @@ workers' imports and the results folder are in its wall time, as a user meets th
 several source folders (``src`` of two checkouts), the runs alternate between them (A, B / B, A /
 ...), so slow drifts of the machine's load fall on all. Prints each run's wall time, the points'
 own seconds (summed, as the workers measured them) and the load average; then median, min and
-max of the wall time per source folder. Not a test.
+max of the wall time per source folder. ``--phases`` instead times the command's steps in this
+process (imports, cluster start, the workers' first points, the rest of the points, the
+results folder) and the same points run here, warm. Not a test.
 """
 
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import os
 import statistics
@@ -41,12 +44,63 @@ def run(src: Path, points: int, out: Path) -> tuple[float, float]:
     return wall, own
 
 
+def phases(points: int) -> None:
+    """Seconds of each step of the sweep command, taken one after the other in this process."""
+    marks = [("start", time.perf_counter())]
+
+    def mark(step: str) -> None:
+        marks.append((step, time.perf_counter()))
+
+    from ballscrew.sweep.cluster import close_clients, shared_client
+
+    client = shared_client(None, 2)
+    client.wait_for_workers(2)
+    mark("local cluster start (2 workers)")
+    import ballscrew
+    from ballscrew.analyses.thermal import thermal_network_scalars
+    from ballscrew.sweep import parse_axis, run_sweep, warm_workers
+    from ballscrew.sweep.axes import grid_points, validate_points
+    from ballscrew.sweep.runner import run_chunk
+
+    base = ballscrew.load_case(CASE)
+    mark("imports and case here")
+    warm = warm_workers(thermal_network_scalars, base, workers=2)
+    mark(f"workers' first point (own {max(warm.values()):.2f} s)")
+    axis = parse_axis(f"operating.speed=500 rpm:3000 rpm:{points}")
+    with tempfile.TemporaryDirectory() as scratch:
+        from ballscrew.results.folder import prepare_sweep_folder
+
+        out = Path(scratch) / "out"
+        out.mkdir()
+        prepare_sweep_folder(out)
+        dataset, _ = run_sweep(base, [axis], thermal_network_scalars, "thermal-network", out,
+                               workers=2)  # fmt: skip
+        mark(f"{points} points on the warm workers")
+        from ballscrew.results.sweep_report import write_sweep
+
+        write_sweep(dataset, out, points, base, [axis])
+        mark("results folder (figures, report)")
+    close_clients()
+    grid = grid_points([axis])
+    run_chunk(thermal_network_scalars, [base], [{}])
+    mark("first point here (after imports)")
+    run_chunk(thermal_network_scalars, validate_points(base, grid), grid)
+    mark(f"{points} points here, warm")
+    for (_, before), (step, after) in itertools.pairwise(marks):
+        print(f"{step:<40}{after - before:>8.2f} s")
+    print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("sources", nargs="*", type=Path, default=[ROOT / "src"])
     parser.add_argument("--points", type=int, default=4, help="points of the sweep")
     parser.add_argument("--repeats", type=int, default=4, help="runs per source folder")
+    parser.add_argument("--phases", action="store_true", help="time the steps in this process")
     args = parser.parse_args()
+    if args.phases:
+        phases(args.points)
+        return
     walls: dict[Path, list[float]] = {src: [] for src in args.sources}
     print(f"{'repeat':>6}  {'source':<28}{'wall [s]':>9}{'points [s]':>11}  load average")
     with tempfile.TemporaryDirectory() as scratch:
