@@ -42,8 +42,8 @@ WORKER_ENV = {
 }
 
 #: Modules a local worker imports when it starts, before it takes tasks: the sweep's runner and,
-#: through it, the case models, NumPy, SciPy and xarray (about three quarters of a thermal point's
-#: first-call imports; measured in ``docs/benchmarks.md``).
+#: through it, the case models, NumPy, SciPy and xarray (5.4 of the 6.6 s that importing the
+#: thermal analysis took on the 2-core machine under load: ``python -X importtime``).
 WORKER_PRELOAD = ("ballscrew.sweep.runner",)
 
 #: Dask settings of a local worker.
