@@ -202,3 +202,19 @@ def test_cli_refuses_and_writes_nothing(tmp_path, gao):
         assert result.output.startswith("error: ")
         assert "budget" in result.output or "limit" in result.output
         assert not out.exists()
+
+
+def test_contact_batch_counts_its_window_check(monkeypatch):
+    """A batch of 32 contacts on 1024² grids: the budget between the solves' own memory (the old
+    estimate) and that plus the window check's run refuses it, naming the field."""
+    from ballscrew.budget import CHECK_BYTES_PER_CELL, contact_batch_bytes, contact_grid_bytes
+
+    cells = 1024 * 1024
+    solves = 32 * contact_grid_bytes(1024, 1024)
+    estimate = contact_batch_bytes(32, 1024, 1024)
+    assert estimate == solves + CHECK_BYTES_PER_CELL * cells  # one contact's check at a time
+    monkeypatch.setenv(budget.MEMORY_ENV, str(int(solves + 0.5 * (estimate - solves))))
+    check_memory("numerics.cells", [1024, 1024], solves, "old estimate")
+    refused = r"^numerics.cells = \[1024, 1024\] .* 32 contacts needs .* more than the"
+    with pytest.raises(BudgetError, match=refused):
+        check_memory("numerics.cells", [1024, 1024], estimate, "32 contacts")

@@ -27,12 +27,16 @@ import re
 from ballscrew.errors import InputError
 
 __all__ = [
+    "CHECK_BYTES_PER_CELL",
+    "CHECK_CELLS",
     "MEMORY_ENV",
     "STEPS_ENV",
     "BudgetError",
+    "check_chunk",
     "check_count",
     "check_memory",
     "check_work",
+    "contact_batch_bytes",
     "contact_grid_bytes",
     "format_bytes",
     "memory_budget",
@@ -173,3 +177,28 @@ def contact_grid_bytes(nx: float, ny: float) -> float:
     """
     cells = float(nx) * float(ny)
     return 8.0 * cells * (20.0 + 4.0 * 4.0)
+
+
+CHECK_CELLS = 2**20
+"""Grid cells whose whole-grid window check (u + h outside each contact's window) is taken at
+once: a batch is checked in runs of :func:`check_chunk` contacts (GUESS: 2²⁰ cells keep the
+check's temporaries near 25 MB, while a run of many small grids stays one vectorised step)."""
+CHECK_BYTES_PER_CELL = 24.0
+"""Temporaries of the window check per cell of a run [bytes]: u + h (float64), the contacts' rows
+of u, h and p gathered when the windowed contacts are not consecutive (float64 each, u's and
+h's freed once summed) and two boolean masks (window, contact set)."""
+
+
+def check_chunk(nx: int, ny: int) -> int:
+    """Contacts of nx × ny grids whose window check runs at once: CHECK_CELLS / (nx·ny), ≥ 1."""
+    return max(1, CHECK_CELLS // (int(nx) * int(ny)))
+
+
+def contact_batch_bytes(count: int, nx: float, ny: float) -> float:
+    """Working memory of ``count`` normal contacts solved together on nx × ny grids [bytes].
+
+    ``count`` × :func:`contact_grid_bytes` and the whole-grid window check of the batch, which
+    holds :data:`CHECK_BYTES_PER_CELL` per cell of at most :func:`check_chunk` contacts at once.
+    """
+    run = min(int(count), check_chunk(int(nx), int(ny)))
+    return count * contact_grid_bytes(nx, ny) + CHECK_BYTES_PER_CELL * run * float(nx) * float(ny)

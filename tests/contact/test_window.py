@@ -171,3 +171,59 @@ def test_outside_clear_of_a_batch_equals_the_check_contact_by_contact():
     assert True in answers and False in answers
     none = preconditioned._outside_clear(h, u, p, [None] * batch, True)
     assert none.all()
+
+
+def test_window_check_in_runs_of_one_contact_equals_the_whole_batch_at_once(monkeypatch):
+    """The batch's window check taken one contact at a time (CHECK_CELLS = one grid) gives the
+    answers of the reference, and a batch solve whose windows are checked so ends bit for bit
+    where the check of the whole batch at once does."""
+    from ballscrew import budget
+
+    rng = np.random.default_rng(9)
+    batch, shape = 6, (24, 20)
+    windows = [(slice(2, 10), slice(3, 15)), None, (slice(0, 24), slice(12, 20)),
+               (slice(5, 6), slice(5, 6)), None, (slice(8, 16), slice(2, 18))]  # fmt: skip
+    h, u = rng.random((batch, *shape)), rng.random((batch, *shape)) - 0.5
+    h[:, :8] -= 0.35
+    p = np.where(rng.random((batch, *shape)) < 0.4, 1.0, 0.0)
+    gap, dx, _ = sphere()
+    gaps = np.stack([gap, 1.5 * gap, 2.0 * gap])
+    solves, default = {}, budget.CHECK_CELLS
+    for cells in (default, shape[0] * shape[1], gap.size):
+        monkeypatch.setattr(budget, "CHECK_CELLS", cells)
+        for load in (True, False):
+            clear = preconditioned._outside_clear(h, u, p, windows, load)
+            assert list(clear) == outside_clear_reference(h, u, p, windows, load)
+        solves[cells] = solve_normal_batch(gaps, dx, dx, E_STAR, np.array([100.0, 80.0, 60.0]))
+    assert budget.check_chunk(*gap.shape) == 1
+    for one, whole in zip(solves[gap.size], solves[default], strict=True):
+        np.testing.assert_array_equal(one.pressure, whole.pressure)
+        np.testing.assert_array_equal(one.displacement, whole.displacement)
+
+
+def test_window_check_memory_is_bounded_and_counted(monkeypatch):
+    """The check of 16 contacts on 256² grids, in runs of 2 contacts, allocates at most
+    CHECK_BYTES_PER_CELL per cell of a run (tracemalloc sees NumPy's buffers), which
+    contact_batch_bytes adds to the solves' own; checked at once the same batch took ~ 8×."""
+    import tracemalloc
+
+    from ballscrew import budget
+
+    batch, n = 16, 256
+    h = np.ones((batch, n, n))
+    u = np.zeros((batch, n, n))
+    p = np.zeros((batch, n, n))
+    p[:, 100:140, 100:140] = 1.0
+    windows = [(slice(90, 150), slice(90, 150))] * batch
+    windows[3] = None  # the windowed contacts are not all consecutive
+    peaks = {}
+    for cells in (2 * n * n, batch * n * n):
+        monkeypatch.setattr(budget, "CHECK_CELLS", cells)
+        tracemalloc.start()
+        assert preconditioned._outside_clear(h, u, p, windows, True).all()
+        peaks[cells] = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+    monkeypatch.setattr(budget, "CHECK_CELLS", 2 * n * n)
+    counted = budget.contact_batch_bytes(batch, n, n) - batch * budget.contact_grid_bytes(n, n)
+    assert peaks[2 * n * n] <= counted == budget.CHECK_BYTES_PER_CELL * 2 * n * n
+    assert peaks[batch * n * n] > 4 * counted

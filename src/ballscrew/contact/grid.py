@@ -20,7 +20,7 @@ import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
 
-from ballscrew.budget import check_memory, contact_grid_bytes
+from ballscrew.budget import check_memory, contact_batch_bytes
 from ballscrew.contact._validation import finite_grid, integer_at_least, positive
 from ballscrew.contact.batch import solve_normal_batch
 from ballscrew.contact.hertz import HertzContact, hertz
@@ -276,7 +276,7 @@ def solve_contacts(
             count = sum(1 + len(grids[k].extra) for k in members)
             if count > 1:
                 what = f"{count} contacts on {what.removeprefix('the ')}s"
-            check_memory(field, value, count * contact_grid_bytes(nx, ny), what)
+            check_memory(field, value, contact_batch_bytes(count, nx, ny), what)
             _solve_round([grids[k] for k in members], results, members, tol, max_iterations,
                          warm_start, len(grids) > 1)  # fmt: skip
             for k in members:

@@ -36,6 +36,7 @@ import numpy as np
 import scipy.fft
 
 from ballscrew.backend import array_module, fft_threads, map_chunks
+from ballscrew.budget import check_chunk
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 
 __all__ = [
@@ -643,23 +644,36 @@ def _outside_clear(h: Any, u: Any, p: Any, windows: list[Any], load: bool) -> np
     """(B,) whether no cell outside its contact's window penetrates: u + h ≥ ḡ there (ḡ = mean of
     u + h over the contact set, all in the window, under load control; 0 under displacement
     control), so each window's solution is its whole grid's (Polonsky & Keer 1999, Eq. 37 admits
-    no cell)."""
+    no cell).
+
+    Taken on runs of at most :func:`~ballscrew.budget.check_chunk` contacts, so the copy of u + h
+    and the masks hold O(:data:`~ballscrew.budget.CHECK_CELLS`) cells, not the whole batch's; each
+    contact's sums and minimum are its own, whatever the run (the same bits)."""
     windowed = [b for b, window in enumerate(windows) if window is not None]
     clear = np.ones(len(h), dtype=bool)  # a contact without a window was solved on its grid
-    if not windowed:
-        return clear
+    step = check_chunk(*h.shape[1:])
+    for start in range(0, len(windowed), step):
+        run = windowed[start : start + step]
+        clear[run] = _run_clear(h, u, p, run, [windows[b] for b in run], load)
+    return clear
+
+
+def _run_clear(
+    h: Any, u: Any, p: Any, run: list[int], windows: list[tuple[slice, slice]], load: bool
+) -> np.ndarray:
+    """:func:`_outside_clear` of the contacts ``run`` (ascending indices of the stack)."""
     xp = array_module(h)
-    rows = slice(None) if len(windowed) == len(h) else xp.asarray(windowed)
+    consecutive = run[-1] - run[0] + 1 == len(run)
+    rows = slice(run[0], run[-1] + 1) if consecutive else xp.asarray(run)
     q = u[rows] + h[rows]
-    inside = _inside([windows[b] for b in windowed], h.shape[1:], xp)
-    g_bar = np.zeros(len(windowed))
+    inside = _inside(windows, h.shape[1:], xp)
+    g_bar = np.zeros(len(run))
     if load:
         contact = p[rows] > 0.0
         contact &= inside
         g_bar = _host(_dot(q, contact)) / np.maximum(_host(_sums(contact)), 1.0)
     xp.copyto(q, xp.inf, where=inside)
-    clear[windowed] = _host(q.min(axis=(1, 2))) >= g_bar
-    return clear
+    return _host(q.min(axis=(1, 2))) >= g_bar
 
 
 def _inside(windows: list[tuple[slice, slice]], shape: tuple[int, int], xp: ModuleType) -> Any:

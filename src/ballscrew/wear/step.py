@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ballscrew.budget import check_memory, contact_grid_bytes
+from ballscrew.budget import check_memory, contact_batch_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.kinematics.sliding import sliding_field_closed_form
@@ -107,7 +107,7 @@ def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[Flank
     check_memory(
         "wear.grid",
         [nx, ny],
-        len(contacts) * contact_grid_bytes(nx, ny),
+        contact_batch_bytes(len(contacts), nx, ny),
         f"{len(contacts)} contacts of a wear step on the {nx} × {ny} grid",
     )
     loads = [c.load_ratio * setup.ball_load(c.nut_force) for c in contacts]
