@@ -92,13 +92,8 @@ def test_bad_sweep_axes_are_refused_before_any_work(coarse_case, tmp_path):
 
 
 def test_sweeps_of_one_process_share_one_cluster(tmp_path, coarse_case):
-    """Started in the background, the shared cluster's worker has the runner imported before its
-    first task (``WORKER_PRELOAD``); each sweep then uses it."""
-    from ballscrew.sweep.cluster import close_clients, shared_client, start_client
+    from ballscrew.sweep.cluster import close_clients, shared_client
 
-    start_client(None, 1)
-    preloaded = shared_client(None, 1).run(lambda: "ballscrew.sweep.runner" in sys.modules)
-    assert list(preloaded.values()) == [True]
     axes = [parse_axis("surface.D=1.45,1.5")]
     run_sweep(coarse_case, axes, tcr_scalars, "tcr", tmp_path / "a", workers=1)
     client = shared_client(None, 1)

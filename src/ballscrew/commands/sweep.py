@@ -82,16 +82,12 @@ def sweep(
     output: Output,
 ) -> None:
     """Run an analysis over a grid of case values on Dask; re-runs skip finished points."""
-    from ballscrew.sweep.cluster import check_workers, start_client
-
-    if not scheduler:  # the workers start and import while this process reads the case
-        check_workers(workers)
-        start_client(None, workers)
     from ballscrew.case import CaseError, with_overrides
     from ballscrew.progress import advance
     from ballscrew.results.folder import prepare_sweep_folder
     from ballscrew.results.sweep_report import write_sweep
     from ballscrew.sweep import parse_axis, run_sweep
+    from ballscrew.sweep.cluster import check_workers
     from ballscrew.sweep.registry import get_analysis
     from ballscrew.sweep.spec import check_sweep_size, is_sweep_file, load_sweep, merge_axes
 
@@ -106,6 +102,8 @@ def sweep(
     if not axes:
         raise CaseError(["nothing to sweep: give --vary KEY=START:STOP:NUM"], "sweep")
     check_sweep_size(axes)
+    if not scheduler:
+        check_workers(workers)
     function = get_analysis(name)
 
     def progress(done: int, total: int) -> None:

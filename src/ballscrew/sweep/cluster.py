@@ -2,9 +2,7 @@
 
 Starting a local cluster costs seconds (worker processes import numpy, scipy and ballscrew); a
 notebook or script that runs several sweeps pays it once. The clients are closed when the
-interpreter exits, or by :func:`close_clients`. :func:`start_client` starts one in a background
-thread, so that the command line reads its case and imports the analysis while the workers start
-and import what every point needs (:data:`WORKER_PRELOAD`).
+interpreter exits, or by :func:`close_clients`.
 
 A local worker runs one task thread, and its BLAS, OpenMP and FFT pools one thread each
 (:data:`WORKER_ENV`): the sweep's parallelism is its workers, one per core, and a second pool
@@ -16,7 +14,6 @@ from __future__ import annotations
 import atexit
 import logging
 import os
-from concurrent.futures import Future, ThreadPoolExecutor
 from typing import Any
 
 from ballscrew.budget import check_memory
@@ -41,20 +38,10 @@ WORKER_ENV = {
     "BALLSCREW_FFT_THREADS": "1",
 }
 
-#: Modules a local worker imports when it starts, before it takes tasks: the sweep's runner and,
-#: through it, the case models, NumPy, SciPy and xarray (5.4 of the 6.6 s that importing the
-#: thermal analysis took on the 2-core machine under load: ``python -X importtime``).
-WORKER_PRELOAD = ("ballscrew.sweep.runner",)
-
 #: Dask settings of a local worker.
-WORKER_CONFIG = {
-    "distributed.worker.profile.enabled": False,
-    "distributed.worker.preload": list(WORKER_PRELOAD),
-}
+WORKER_CONFIG = {"distributed.worker.profile.enabled": False}
 
-_Key = tuple[str | None, int | None]
-_CLIENTS: dict[_Key, tuple[Any, Any]] = {}
-_STARTING: dict[_Key, Future[tuple[Any, Any]]] = {}
+_CLIENTS: dict[tuple[str | None, int | None], tuple[Any, Any]] = {}
 
 
 def _quiet_dask() -> None:
@@ -110,55 +97,29 @@ def _local(workers: int | None) -> tuple[Any, Any]:
     return Client(cluster, set_as_default=False), cluster
 
 
-def _key(scheduler: str | None, workers: int | None) -> _Key:
-    return scheduler, None if scheduler else workers
-
-
-def _open(scheduler: str | None, workers: int | None) -> tuple[Any, Any]:
-    _quiet_dask()
-    if not scheduler:
-        check_workers(workers)
-    return (_connect(scheduler), None) if scheduler else _local(workers)
-
-
-def start_client(scheduler: str | None = None, workers: int | None = None) -> None:
-    """Start the client of :func:`shared_client` in a background thread and return at once; the
-    next :func:`shared_client` of the same scheduler and workers waits for it (and raises what
-    its start raised). Nothing is started when that client is running or starting."""
-    key = _key(scheduler, workers)
-    cached = _CLIENTS.get(key)
-    if key in _STARTING or (cached is not None and cached[0].status == "running"):
-        return
-    pool = ThreadPoolExecutor(1, thread_name_prefix="ballscrew-cluster-start")
-    _STARTING[key] = pool.submit(_open, scheduler, workers)
-    pool.shutdown(wait=False)
-
-
 def shared_client(scheduler: str | None = None, workers: int | None = None) -> Any:
     """The process's client of ``scheduler`` (an address) or of a local cluster of ``workers``.
 
     A client that has been closed is replaced. A scheduler given by address is trusted: Dask
     exchanges pickled functions and results with it.
     """
-    key = _key(scheduler, workers)
-    starting = _STARTING.pop(key, None)
-    if starting is not None:
-        _CLIENTS[key] = starting.result()
+    key = (scheduler, None if scheduler else workers)
     cached = _CLIENTS.get(key)
     if cached is not None and cached[0].status == "running":
         return cached[0]
-    _CLIENTS[key] = _open(scheduler, workers)
-    return _CLIENTS[key][0]
+    _quiet_dask()
+    if not scheduler:
+        check_workers(workers)
+    entry = (_connect(scheduler), None) if scheduler else _local(workers)
+    _CLIENTS[key] = entry
+    return entry[0]
 
 
 @atexit.register
 def close_clients() -> None:
-    """Close every shared client and the local clusters behind them (a starting one, once up)."""
-    started = [start.result() for start in _STARTING.values() if start.exception() is None]
-    _STARTING.clear()
-    entries = [*started, *_CLIENTS.values()]
-    _CLIENTS.clear()
-    for client, cluster in entries:
+    """Close every shared client and the local clusters behind them."""
+    while _CLIENTS:
+        _, (client, cluster) = _CLIENTS.popitem()
         client.close()
         if cluster is not None:
             cluster.close()
