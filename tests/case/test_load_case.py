@@ -83,6 +83,12 @@ def test_override_accepts_unit_strings_and_returns_new_case(gao_case_path):
         ("screw.lead", "10 kg", "screw.lead: '10 kg' is not a length (expected m)"),
         ("screw.nuts", 3, "screw.nuts = 3 is not allowed: it must be one of 1 or 2"),
         ("numerics.gap_model", "cubic", "numerics.gap_model = 'cubic'"),
+        (
+            "numerics.cells_across",
+            64.5,
+            "numerics.cells_across = 64.5: Input should be a valid integer, got a number with a "
+            "fractional part; allowed range is [8, 4096]",
+        ),
     ],
 )
 def test_bad_values_name_field_value_and_range(gao_case_path, key, value, expected):

@@ -34,7 +34,7 @@ def test_units_and_ranges():
     ("fields", "message"),
     [
         ({"level": 3}, "level"),
-        ({"lubricant": "castor oil"}, "unknown lubricant"),
+        ({"lubricant": "castor oil"}, "not a lubricant of the library"),
         ({"speed_range": ["3000 rpm", "100 rpm"]}, "highest speed must exceed"),
         ({"speed_range": ["-1 rpm", "100 rpm"]}, "greater than or equal"),
         ({"mounting": "glued"}, "mounting"),
@@ -45,3 +45,8 @@ def test_units_and_ranges():
 def test_bad_values(fields, message):
     with pytest.raises(ValidationError, match=message):
         KinematicsSpec(**fields)
+
+
+@pytest.mark.parametrize("name", ["ISO VG 68", "iso-vg-68", " Iso_VG_68 "])
+def test_lubricant_names_ignore_case_spaces_and_hyphens(name):
+    assert KinematicsSpec(lubricant=name).lubricant == "iso_vg_68"

@@ -166,7 +166,12 @@ def test_bad_oil_viscosities_are_one_line_errors(tmp_path, wear_case_path, lines
 @pytest.mark.parametrize(
     ("insert", "message"),
     [
-        ('lubricant = "motor oil"\n', "medium.lubricant: unknown lubricant; known: "),
+        (
+            'lubricant = "motor oil"\n',
+            "medium.lubricant = 'motor oil' is not allowed: not a lubricant of the library; "
+            "known: ",
+        ),
+        ('lubricant = "iso_vg_86"\n', "(did you mean 'iso_vg_68'?)"),
         (
             'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "90 mm^2/s"\n',
             "(the viscosity falls with temperature)",

@@ -19,7 +19,9 @@ section where given, else from ``[design]`` (which ``ballscrew init`` writes).
 
 from __future__ import annotations
 
+import difflib
 import math
+import re
 from typing import Annotated, Literal
 
 from pydantic import Field, field_validator, model_validator
@@ -31,10 +33,17 @@ Mounting = Literal["fixed-free", "supported-supported", "fixed-supported", "fixe
 
 
 def known_lubricant(cls: type, name: str | None) -> str | None:
-    """``name`` if the lubricant library has it (validator of every lubricant key)."""
-    if name is not None and name not in LUBRICANT_LIBRARY:
-        raise ValueError(f"unknown lubricant; known: {', '.join(sorted(LUBRICANT_LIBRARY))}")
-    return name
+    """The library key of ``name`` (validator of every lubricant key): case, spaces and hyphens
+    do not matter, so ``"ISO VG 68"`` is ``"iso_vg_68"``."""
+    if name is None:
+        return None
+    key = re.sub(r"[\s\-]+", "_", name.strip().lower())
+    if key not in LUBRICANT_LIBRARY:
+        near = difflib.get_close_matches(key, LUBRICANT_LIBRARY, n=1)
+        hint = f" (did you mean '{near[0]}'?)" if near else ""
+        known = ", ".join(sorted(LUBRICANT_LIBRARY))
+        raise ValueError(f"is not allowed: not a lubricant of the library{hint}; known: {known}")
+    return key
 
 
 _Speed = quantity(

@@ -518,7 +518,8 @@ def _describe(err: dict[str, Any]) -> str:
             return f"{dotted}: {message}; {_range_text(loc, spec)}"
         return f"{dotted}: {message}"
     value = f" = {err['input']!r}" if "input" in err and loc else ""
-    return f"{dotted or 'case'}{value}: {err['msg']}"
+    allowed = f"; {_range_text(loc, spec)}" if spec.constraints else ""
+    return f"{dotted or 'case'}{value}: {err['msg']}{allowed}"
 
 
 def describe_errors(exc: ValidationError) -> list[str]:
