@@ -166,10 +166,11 @@ def _tcr(axial_load: float, film_path: str) -> ScrewTCR:
 
 
 def test_option_off_keeps_the_chain() -> None:
-    """film_path = "none" (default) adds nothing: same R, no films, no heat path."""
+    """film_path = "none" (default) adds nothing: same R, no films, the ball paths without
+    film (they were empty, and heat_path_resistance NaN, before both modes were given them)."""
     off, on = _tcr(0.0, "none"), _tcr(0.0, "meniscus")
-    assert off.films == () and off.heat_paths() == ()
-    assert math.isnan(off.heat_path_resistance)
+    assert off.films == () and [p.film for p in off.heat_paths()] == [False, False]
+    assert off.heat_path_resistance == off.ball_path_without_film < math.inf
     assert on.resistance == off.resistance  # the micro TCR is not touched
     # at 0 kN both nuts carry their patch: each one's film lowers that nut's own path
     paths = on.heat_paths()

@@ -12,7 +12,6 @@ so one solve serves every contact of equal load and side.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from functools import cached_property
 from types import ModuleType
@@ -125,7 +124,11 @@ class ScrewTCR(Presented):
 
     @property
     def resistance(self) -> float:
-        """R of the whole screw: every loaded ball of every nut in parallel (A3) [K/W]."""
+        """R of the whole screw, the headline: the micro TCR of every loaded ball of every nut in
+        parallel (A3) [K/W]. It is Gao, Wang & Liu's (2019) resistance of the asperity spots and
+        the gap between them inside the Hertz patches; the macro-constriction and the film path
+        lie outside the patches, so ``[tcr] film_path`` leaves it unchanged (they are in
+        :attr:`ball_path_without_film` and :attr:`ball_path_with_film`)."""
         return float(parallel_resistance([n.resistance for n in self.nuts]))
 
     @property
@@ -143,9 +146,10 @@ class ScrewTCR(Presented):
         return f"Thermal contact resistance: {self.case.name}"
 
     def heat_paths(self, constriction: bool = True) -> tuple[NutHeatPath, ...]:
-        """Each nut's ball path, micro TCR (+ macro-constriction) with the film in parallel
-        (P3); empty without ``[tcr] film_path``. With the constriction (the default) it is
-        computed once per result."""
+        """Each nut's ball path: micro TCR (+ macro-constriction) and, with ``[tcr]
+        film_path``, the film in parallel (P3), a lifted-off nut's films included. Without a
+        film path one path per loaded nut, without film. With the constriction (the default)
+        it is computed once per result."""
         if constriction:
             return self._heat_paths
         return self._paths(constriction=False)
@@ -157,16 +161,27 @@ class ScrewTCR(Presented):
         return self._paths(constriction=True)
 
     def _paths(self, constriction: bool) -> tuple[NutHeatPath, ...]:
-        if not self.films:
-            return ()
         return heat_paths(self.nuts, self.films, conductivities(self.case), None, constriction)
 
     @property
-    def heat_path_resistance(self) -> float:
-        """Screw-to-nut resistance of all balls with the film path and the macro-constriction,
-        the nuts in parallel [K/W] (NaN without ``[tcr] film_path``)."""
+    def ball_path_without_film(self) -> float:
+        """Screw to nut through every loaded ball's patches, micro TCR plus macro-constriction
+        (A3, A6), the nuts in parallel [K/W]; the same with and without ``[tcr] film_path``."""
         paths = self.heat_paths()
-        return float(parallel_resistance([p.resistance for p in paths])) if paths else math.nan
+        return float(parallel_resistance([p.ball_path_without_film for p in paths]))
+
+    @property
+    def ball_path_with_film(self) -> float | None:
+        """Screw to nut with the film around every ball beside its patches (P3), the nuts in
+        parallel (a lifted-off one through its films) [K/W]; None without ``[tcr] film_path``."""
+        return self.heat_path_resistance if self.films else None
+
+    @property
+    def heat_path_resistance(self) -> float:
+        """The screw-to-nut path the thermal model takes (``thermal.contact.constriction``
+        on): :attr:`ball_path_with_film` with ``[tcr] film_path``, else
+        :attr:`ball_path_without_film` [K/W]."""
+        return float(parallel_resistance([p.resistance for p in self.heat_paths()]))
 
 
 def tcr_model(
@@ -297,8 +312,9 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
 
 
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
-    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units; with
-    ``[tcr] film_path`` also the ball path with the films (``heat_path_resistance``)."""
+    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units: the headline
+    micro TCR, the ball path without film and the one the thermal model takes
+    (``heat_path_resistance``; with ``[tcr] film_path`` also ``ball_path_with_film``)."""
     result = screw_tcr(case)
     scalars = {
         "resistance": (result.resistance, "K/W"),
@@ -306,12 +322,14 @@ def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
         "apparent_area": (result.apparent_area, "m^2"),
         "F1": (result.nut_forces[0], "N"),
         "F2": (result.nut_forces[1], "N"),
+        "ball_path_without_film": (result.ball_path_without_film, "K/W"),
+        "heat_path_resistance": (result.heat_path_resistance, "K/W"),
     }
+    if result.films:
+        scalars["ball_path_with_film"] = (result.heat_path_resistance, "K/W")
     for nut in result.nuts:
         scalars[f"nut{nut.index}_resistance"] = (nut.resistance, "K/W")
         scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")
         if case.loads.distribution == "elastic":
             scalars[f"nut{nut.index}_ball_load_spread"] = (nut.load_spread, "")
-    if result.films:
-        scalars["heat_path_resistance"] = (result.heat_path_resistance, "K/W")
     return scalars

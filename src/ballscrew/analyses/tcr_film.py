@@ -58,20 +58,35 @@ class NutFilm:
 
 @dataclass(frozen=True)
 class NutHeatPath:
-    """Screw-to-nut resistance of one nut's balls with and without the film path."""
+    """Screw-to-nut resistance of one nut's balls: the patch path (micro TCR plus
+    macro-constriction) and, with films, the film path beside it (P3)."""
 
     index: int
     micro: float
     """Micro TCR of all balls, R_sbn/n_b (∞ lifted off) [K/W]."""
     constriction: float
-    """Macro-constriction of all balls' patches (A6) [K/W]."""
+    """Macro-constriction of all balls' patches (A6; 0 when left out) [K/W]."""
     resistance: float
-    """With the film in parallel with each contact's patch path (P3) [K/W]."""
+    """The path the thermal model takes: :attr:`ball_path_with_film` with films, else
+    :attr:`ball_path_without_film` [K/W]."""
+    film: bool = False
+    """Whether :attr:`resistance` has the film in parallel with each contact's patch path."""
+
+    @property
+    def ball_path_without_film(self) -> float:
+        """Micro TCR plus macro-constriction, R_micro + R_cons [K/W]."""
+        return self.micro + self.constriction
+
+    @property
+    def ball_path_with_film(self) -> float | None:
+        """With the film in parallel with each contact's patch path (P3) [K/W]; None without
+        films."""
+        return self.resistance if self.film else None
 
     @property
     def without_film(self) -> float:
-        """Micro TCR plus macro-constriction [K/W]."""
-        return self.micro + self.constriction
+        """Older name of :attr:`ball_path_without_film` (kept) [K/W]."""
+        return self.ball_path_without_film
 
 
 def conductivities(case: Case) -> dict[str, float]:
@@ -248,7 +263,7 @@ def heat_paths(
         nut = by_index.get(index)
         if nut is None:  # lifted off: the films alone
             r_ball = sum(with_film_path(math.inf, g) for g in branches.values())
-            out.append(NutHeatPath(index, math.inf, 0.0, r_ball / film.balls))
+            out.append(NutHeatPath(index, math.inf, 0.0, r_ball / film.balls, True))
             continue
         own = {s: float(getattr(nut, s).tcr.resistance) for s in SIDES}
         total = micro[nut.index] * nut.balls if micro is not None else sum(own.values())
@@ -262,6 +277,8 @@ def heat_paths(
                 patch += cons
             r_ball += with_film_path(patch, branches.get(side, 0.0))
         out.append(
-            NutHeatPath(nut.index, r_micro / nut.balls, r_cons / nut.balls, r_ball / nut.balls)
+            NutHeatPath(
+                nut.index, r_micro / nut.balls, r_cons / nut.balls, r_ball / nut.balls, bool(films)
+            )
         )
     return tuple(out)

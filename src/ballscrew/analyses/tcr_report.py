@@ -15,8 +15,21 @@ from ballscrew.analyses.result import quantity as value
 
 if TYPE_CHECKING:
     from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR, ScrewTCR
+    from ballscrew.analyses.tcr_film import NutHeatPath
 
 _LABEL = {"screw": "ball–screw contact", "nut": "ball–nut contact"}
+
+HEADLINE = (
+    "R (resistance) and R″ = R·S (resistance_per_area) are the headline: the micro TCR of "
+    "Gao, Wang & Liu (2019), the asperity spots and the gap between them inside each Hertz "
+    "patch. The macro-constriction of the patches and the lubricant film around the balls lie "
+    "outside the patches, so neither is in R, and tcr.film_path leaves R unchanged. The "
+    "screw-to-nut path through the balls is ball_path_without_film (micro TCR plus "
+    "macro-constriction, in every run) and, with tcr.film_path, ball_path_with_film (the film "
+    "beside each patch); heat_path_resistance is the one of the two that the thermal model "
+    "takes."
+)
+"""Which number is the headline and why the film path does not change it (summary, report)."""
 
 
 def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarray:
@@ -43,7 +56,18 @@ def _contact_summary(r: RacewayTCR) -> dict[str, Any]:
     }
 
 
-def _nut_summary(nut: NutTCR) -> dict[str, Any]:
+def _path_summary(path: NutHeatPath) -> dict[str, Any]:
+    """A nut's ball path: its micro TCR, macro-constriction and the path without and with film."""
+    with_film = path.ball_path_with_film
+    return {
+        "micro_resistance": value(path.micro, "K/W"),
+        "constriction": value(path.constriction, "K/W"),
+        "ball_path_without_film": value(path.ball_path_without_film, "K/W"),
+        "ball_path_with_film": None if with_film is None else value(with_film, "K/W"),
+    }
+
+
+def _nut_summary(nut: NutTCR, path: NutHeatPath) -> dict[str, Any]:
     return {
         "force": value(nut.force, "N"),
         "ball_load": value(nut.ball_load, "N"),
@@ -54,6 +78,7 @@ def _nut_summary(nut: NutTCR) -> dict[str, Any]:
         "axial_deflection": value(nut.axial_deflection, "m"),
         "axial_stiffness": value(nut.axial_stiffness, "N/m"),
         "contacts": {side: _contact_summary(getattr(nut, side)) for side in SIDES},
+        **_path_summary(path),
     } | ({} if nut.load_spread == 1.0 else {"ball_load_spread": nut.load_spread})
 
 
@@ -83,13 +108,19 @@ def _roughness_summary(case: Any) -> dict[str, Any]:
 def summary(result: ScrewTCR) -> dict[str, Any]:
     """Scalars of the whole screw, per nut and per contact, with the options that produced them."""
     case = result.case
+    paths = {p.index: p for p in result.heat_paths()}
+    with_film = result.ball_path_with_film
     return {
         "case": result.case_name,
+        "headline": HEADLINE,
         "resistance": value(result.resistance, "K/W"),
         "resistance_per_area": value(result.resistance_per_area, "m^2*K/W"),
         "apparent_area": value(result.apparent_area, "m^2"),
+        "ball_path_without_film": value(result.ball_path_without_film, "K/W"),
+        "ball_path_with_film": None if with_film is None else value(with_film, "K/W"),
+        "heat_path_resistance": value(result.heat_path_resistance, "K/W"),
         "nut_forces": [value(f, "N") for f in result.nut_forces],
-        "nuts": {f"nut{n.index}": _nut_summary(n) for n in result.nuts},
+        "nuts": {f"nut{n.index}": _nut_summary(n, paths[n.index]) for n in result.nuts},
         "models": {
             name: {
                 "resistance": value(m.resistance, "K/W"),
@@ -116,7 +147,8 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
 
 
 def _film_summary(result: ScrewTCR) -> dict[str, Any] | None:
-    """With ``[tcr] film_path``: each nut's films and its ball path with and without them."""
+    """With ``[tcr] film_path``: each nut's films and its ball path with and without them, a
+    lifted-off nut's included (``resistance`` is the screw's ball path with film)."""
     if not result.films:
         return None
     paths = {p.index: p for p in result.heat_paths()}
@@ -134,6 +166,8 @@ def _film_summary(result: ScrewTCR) -> dict[str, Any] | None:
                     }
                     for side in SIDES
                 },
+                **_path_summary(paths[f.index]),
+                # older names of ball_path_without_film and ball_path_with_film (kept)
                 "resistance_without_film": value(paths[f.index].without_film, "K/W"),
                 "resistance": value(paths[f.index].resistance, "K/W"),
             }
@@ -233,6 +267,7 @@ def figures(result: ScrewTCR) -> list[Figure]:
 def sections(result: ScrewTCR) -> list[Section]:
     """The report section: the screw's resistance, then each nut's."""
     case = result.case
+    paths = {p.index: p for p in result.heat_paths()}
     rows = tuple(
         (
             f"nut {n.index}",
@@ -242,10 +277,13 @@ def sections(result: ScrewTCR) -> list[Section]:
             n.nut.tcr.resistance,
             n.ball_resistance,
             n.resistance,
+            paths[n.index].constriction,
+            paths[n.index].ball_path_without_film,
             n.axial_stiffness * 1e-6,
         )
         for n in result.nuts
     )
+    with_film = result.ball_path_with_film
     return [
         Section(
             "Thermal contact resistance of the screw",
@@ -256,6 +294,7 @@ def sections(result: ScrewTCR) -> list[Section]:
                 "contact, screw and nut contact in series per ball, all loaded balls of "
                 "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "
                 "cell size Δ_f; compare results only at equal Δ_f.",
+                HEADLINE,
                 *(
                     (
                         "Elastic ball-load distribution: every ball of a nut is taken at the most "
@@ -275,6 +314,11 @@ def sections(result: ScrewTCR) -> list[Section]:
                         ("S, apparent area [mm²]", result.apparent_area * 1e6),
                         ("R″ = R·S [m²K/W]", result.resistance_per_area),
                         (
+                            "ball path without film, micro + constriction [K/W]",
+                            result.ball_path_without_film,
+                        ),
+                        *(() if with_film is None else (("ball path with film [K/W]", with_film),)),
+                        (
                             "F1, F2 [N]",
                             f"{result.nut_forces[0]:.1f}, {result.nut_forces[1]:.1f}",
                         ),
@@ -289,6 +333,8 @@ def sections(result: ScrewTCR) -> list[Section]:
                         "R_bn [K/W]",
                         "R_sbn [K/W]",
                         "R nut [K/W]",
+                        "R_cons [K/W]",
+                        "ball path without film [K/W]",
                         "stiffness [N/µm]",
                     ),
                     rows,
@@ -315,7 +361,9 @@ def _film_section(result: ScrewTCR) -> list[Section]:
             f.nut.conductance,
             f.screw.h0 * 1e6,
             f.screw.h_max * 1e6,
-            paths[f.index].without_film,
+            paths[f.index].micro,
+            paths[f.index].constriction,
+            paths[f.index].ball_path_without_film,
             paths[f.index].resistance,
         )
         for f in result.films
@@ -338,8 +386,10 @@ def _film_section(result: ScrewTCR) -> list[Section]:
                         "G_f nut [W/K]",
                         "h0 [µm]",
                         "h_max [µm]",
-                        "R without film [K/W]",
-                        "R with film [K/W]",
+                        "R micro [K/W]",
+                        "R_cons [K/W]",
+                        "ball path without film [K/W]",
+                        "ball path with film [K/W]",
                     ),
                     rows,
                 ),
