@@ -34,7 +34,7 @@ def csv(tmp_path: Path, header: str, values) -> Path:
 BAD_DATA = [
     ("friction_torque", np.zeros(N), r"friction_torque = 'largest value 0'"),
     ("friction_torque", -np.linspace(0.4, 0.2, N), r"largest value -0.2"),
-    ("friction_torque", np.full(N, 1e30), r"\(point 1\) = 1e\+30 .*\[0, 10000\] N\*m"),
+    ("friction_torque", np.full(N, 1e30), r"\(point 1\) = 1e\+30 .*\[-500, 10000\] N\*m"),
     ("friction_torque", np.r_[0.4, -0.3, np.full(N - 2, 0.4)], r"\(point 2\) = -0.3"),
     ("preload", np.full(N, 1e9), r"preload \(point 1\) = 1000000000.0 .*1e\+07\] N"),
     ("wear_depth", np.full(N, 1.0), r"wear_depth \(point 1\) = 1.0"),

@@ -21,9 +21,9 @@ File format (``ballscrew calibrate --measured FILE.csv``)::
   first row's: since revolution 0); :func:`ballscrew.calibrate` then runs the model on that
   programme instead of the case's ``[[wear.programme]]``.
 * The measured values must be physically plausible: some > 0, none above
-  :data:`PLAUSIBLE_MAX`; a friction torque none below 0 (the drag torque of a turning nut is
-  positive: a negative one is a sign or tare error), a preload or wear depth none below −5 % of
-  the largest (noise around 0); at most :data:`MAX_POINTS` rows.
+  :data:`PLAUSIBLE_MAX`, none below 0 except as noise around 0: down to −5 % of the largest
+  value where the neighbouring points are within 5 % of 0 too (a negative torque among
+  positive ones is a sign or data error); at most :data:`MAX_POINTS` rows.
 
 A table already in memory (a pandas DataFrame or a dict of columns) is read by
 :func:`read_table` with the same header rules: ``pandas.read_csv`` of a measured file gives
@@ -83,9 +83,6 @@ PLAUSIBLE_MAX: dict[str, float] = {
 }
 NOISE = 0.05
 """Negative values down to this share of the largest one are accepted as noise around 0."""
-NOISE_SHARE: dict[str, float] = {"friction_torque": 0.0, "preload": NOISE, "wear_depth": NOISE}
-"""Share of the largest value accepted below 0, per quantity: none for a friction torque (the
-drag torque of a turning nut is positive), :data:`NOISE` for a preload or wear depth."""
 MAX_REVOLUTIONS = 1.0e12
 """Largest plausible revolution count of a life test."""
 MAX_POINTS = 100_000
@@ -234,11 +231,12 @@ def check_values(
     values: NDArray[np.float64],
     lines: Sequence[int] | None = None,
 ) -> None:
-    """Measured values: some > 0, none above :data:`PLAUSIBLE_MAX`, none below
-    −:data:`NOISE_SHARE` × the peak.
+    """Measured values: some > 0, none above :data:`PLAUSIBLE_MAX`, none below 0 except as
+    noise around 0.
 
-    The quantities are ≥ 0; a preload or wear depth slightly below 0 is measurement noise
-    around 0, a larger negative value (and any negative friction torque) is a sign or data error.
+    The quantities are ≥ 0; a value below 0 is measurement noise when it and its neighbours lie
+    within NOISE × the largest value of 0 (the series is near 0 there); a larger negative value,
+    or a negative one among clearly positive neighbours, is a sign or data error.
     """
     unit = SI_UNITS[QUANTITIES[quantity]]
     bound = PLAUSIBLE_MAX[quantity]
@@ -247,11 +245,15 @@ def check_values(
         raise InputError(
             f"{source}: {quantity}", f"largest value {peak:g}", f"some values > 0 {unit}"
         )
-    low = 0.0 - NOISE_SHARE[quantity] * min(peak, bound)
-    allowed = f"a measured {quantity} in [{low:.3g}, {bound:g}] {unit}"
-    bad = np.flatnonzero(~((values >= low) & (values <= bound)))  # also NaN
-    if bad.size:
-        row = int(bad[0])
+    tol = NOISE * min(peak, bound)
+    allowed = f"a measured {quantity} in [{-tol:.3g}, {bound:g}] {unit}"
+    bad = np.flatnonzero(~((values >= -tol) & (values <= bound)))  # also NaN
+    near_zero = np.abs(values) <= tol
+    lone = (values < 0.0) & ~(np.r_[True, near_zero[:-1]] & np.r_[near_zero[1:], True])
+    if bad.size or np.any(lone):
+        row = int(bad[0]) if bad.size else int(np.flatnonzero(lone)[0])
+        if not bad.size:
+            allowed = f"≥ 0 {unit} (below 0 only as noise where the neighbours are near 0 too)"
         raise InputError(_at(source, quantity, row, lines), float(values[row]), allowed)
 
 
