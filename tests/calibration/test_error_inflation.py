@@ -85,8 +85,19 @@ def test_summary_and_report_say_what_the_errors_leave_out() -> None:
         fitted["standard_error"] * math.sqrt(30 / (n_eff - 1))
     )
     assert summary(result)["effective_points"] == pytest.approx(n_eff)
-    assert "model-form error" in summary(result)["standard_errors"]
+    assert "model-form error" in summary(result)["standard_errors_cover"]
     (section,) = sections(result)
     assert any("model-form error" in p for p in section.paragraphs)
     rows = dict(section.tables[0].rows)
     assert rows["effective points n_eff"] == pytest.approx(n_eff)
+
+
+def test_a_joint_history_leaves_out_errors_of_its_own_degrees_of_freedom() -> None:
+    """A history of a joint fit has the joint degrees of freedom: no per-history inflation."""
+    clean = exact(K_TRUE, MEASURED_AT).preload
+    data = measured_history(MEASURED_AT, clean + SIGMA * ar1(0.6, 7), "preload", "bench.csv")
+    result = fit_wear_coefficient(SyntheticModel(), data)
+    fitted = summary(result, inflated_errors=False)["fitted"]["wear_coefficient"]
+    assert fitted["standard_error_correlated_residuals"] is None
+    rows = dict(sections(result, inflated_errors=False)[0].tables[0].rows)
+    assert not any("correlated residuals" in str(label) for label in rows)

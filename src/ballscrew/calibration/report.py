@@ -45,11 +45,13 @@ DISPLAY: dict[str, tuple[str, str, float]] = {
 }
 
 
-def summary(result: CalibrationResult) -> dict[str, Any]:
-    """The fit as a JSON-ready dict (the fitted values first, then diagnostics)."""
+def summary(result: CalibrationResult, inflated_errors: bool = True) -> dict[str, Any]:
+    """The fit as a JSON-ready dict (the fitted values first, then diagnostics); without the
+    errors allowing for correlated residuals where ``inflated_errors`` is False (a history of a
+    joint fit, whose errors have the joint degrees of freedom)."""
     from ballscrew.calibration.multi import FIT_PARAMETERS
 
-    inflated = result.inflated_errors or {}
+    inflated = (result.inflated_errors if inflated_errors else None) or {}
     return {
         "case": result.case_name,
         "wear_coefficient": value(result.wear_coefficient, ""),
@@ -86,7 +88,7 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         ),
         "residual_diagnostics": dict(result.diagnostics),
         "effective_points": result.effective_points,
-        "standard_errors": STANDARD_ERRORS,
+        "standard_errors_cover": STANDARD_ERRORS,
         "calibrated_range": _range(result),
         "prediction_band": "95 % prediction band ŷ ± 1.96 √(gᵀ cov g + s²), delta method "
         "from the Jacobian covariance",
@@ -114,7 +116,7 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         "options": dict(result.options),
         "note": "K is confounded with the stroke and the revolution count of the case "
         "(theory manual, Wear); quote it with them. Standard errors assume the model is "
-        "right and the noise independent with equal variance (see standard_errors).",
+        "right and the noise independent with equal variance (see standard_errors_cover).",
     }
 
 
@@ -236,8 +238,9 @@ def data_notes(result: CalibrationResult) -> list[str]:
     return [f"What {result.source} says about its data: " + " ".join(result.data_notes)]
 
 
-def sections(result: CalibrationResult) -> list[Section]:
-    """The fitted values, their uncertainty and the method."""
+def sections(result: CalibrationResult, inflated_errors: bool = True) -> list[Section]:
+    """The fitted values, their uncertainty and the method (``inflated_errors``: as in
+    :func:`summary`)."""
     from ballscrew.calibration.multi import FIT_PARAMETERS
 
     label, unit, factor = DISPLAY[result.quantity]
@@ -282,6 +285,7 @@ def sections(result: CalibrationResult) -> list[Section]:
         rows.append(("runs-test p (residual signs)", result.diagnostics["runs_test_p_value"]))
         rows.append(("lag-1 autocorrelation", result.diagnostics["lag1_autocorrelation"]))
         rows.append(("effective points n_eff", result.effective_points))
+    if result.diagnostics and inflated_errors:
         inflated = result.inflated_errors
         rows += [
             (f"standard error of {name}, allowing for correlated residuals", e)
