@@ -71,15 +71,15 @@ def write(tmp_path: Path, text: str) -> Path:
     [
         (
             "# note\nrevolutions,friction_torque\n0,0.4\n1,nan\n",
-            r"^bench.csv: friction_torque \(point 2\) on line 4 = nan is not allowed: a finite",
+            r"^bench.csv: friction_torque \(point 2\) = nan is not allowed: a finite .*\(line 4\)$",
         ),
         (
             "revolutions,friction_torque [N*m]\n0,0.4\n1,-0.01\n2,0.3\n",
-            r"^bench.csv: friction_torque \(point 2\) on line 3 = -0.01 is not allowed: ≥ 0 ",
+            r"^bench.csv: friction_torque \(point 2\) = -0.01 is not allowed: ≥ 0 .*\(line 3\)$",
         ),
         (
             "revolutions,friction_torque\n0,0.4\n2,0.4\n2,0.3\n",
-            r"^bench.csv: revolutions \(point 3\) on line 4 = 2.0 .*strictly increasing",
+            r"^bench.csv: revolutions \(point 3\) = 2.0 .*strictly increasing.*\(line 4\)$",
         ),
     ],
 )

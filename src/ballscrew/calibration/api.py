@@ -112,7 +112,8 @@ def calibrate(
 
     Args:
         case: the case of the tested screw and its programme (``[wear]`` or ``[[duty]]``).
-        measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
+        measured: CSV path, DataFrame or dict of columns (CSV header rules), (n, 2) array or
+            :class:`MeasuredHistory`; a schedule
             (speed and axial-load columns) replaces the case's programme.
         fit: names from ``wear_coefficient``, ``torque_scale``, ``torque_offset``,
             ``film_factor``, ``running_in_depth``, ``preload`` (a comma-separated string also

@@ -155,23 +155,22 @@ def measured_history(
         bad = ~np.isfinite(arr)
         if np.any(bad):
             row = int(np.flatnonzero(bad)[0])
-            raise InputError(_at(source, name, row, lines), float(arr[row]), "a finite number")
+            raise _refuse(source, name, row, lines, arr[row], "a finite number")
     _check_count(source, rev.size)
     if rev.size and rev[-1] > MAX_REVOLUTIONS:
-        raise InputError(
-            _at(source, "revolutions", rev.size - 1, lines),
-            float(rev[-1]),
-            f"≤ {MAX_REVOLUTIONS:g}",
-        )
+        raise _refuse(source, "revolutions", rev.size - 1, lines, rev[-1], f"≤ {MAX_REVOLUTIONS:g}")
     check_values(source, quantity, val, lines)
     if rev.size and rev[0] < 0.0:
-        raise InputError(_at(source, "revolutions", 0, lines), float(rev[0]), "a count ≥ 0")
+        raise _refuse(source, "revolutions", 0, lines, rev[0], "a count ≥ 0")
     steps = np.diff(rev)
     if np.any(steps <= 0.0):
         row = int(np.flatnonzero(steps <= 0.0)[0]) + 1
-        raise InputError(
-            _at(source, "revolutions", row, lines),
-            float(rev[row]),
+        raise _refuse(
+            source,
+            "revolutions",
+            row,
+            lines,
+            rev[row],
             f"strictly increasing revolutions (previous point: {rev[row - 1]:g})",
         )
     if rev.size < min_points:
@@ -188,10 +187,13 @@ def measured_history(
     )
 
 
-def _at(source: str, column: str, row: int, lines: Sequence[int] | None) -> str:
-    """Where a bad value is: ``bench.csv: preload (point 5) on line 7`` (0-based ``row``)."""
-    line = "" if lines is None else f" on line {lines[row]}"
-    return f"{source}: {column} (point {row + 1}){line}"
+def _refuse(
+    source: str, column: str, row: int, lines: Sequence[int] | None, value: float, allowed: str
+) -> InputError:
+    """The error of a bad ``value`` at 0-based ``row``: ``bench.csv: preload (point 5) = -3.0
+    is not allowed: … (line 7)``, the file's line where ``lines`` gives it."""
+    line = "" if lines is None else f" (line {lines[row]})"
+    return InputError(f"{source}: {column} (point {row + 1})", float(value), allowed + line)
 
 
 def _check_schedule(
@@ -208,7 +210,7 @@ def _check_schedule(
         if bad.size:
             row = int(bad[0])
             allowed = f"in [0, {high:g}] {unit}"
-            raise InputError(_at(source, name, row, lines), float(values[row]), allowed)
+            raise _refuse(source, name, row, lines, values[row], allowed)
     if not np.any(plan[:, 0] > 0.0):
         raise InputError(f"{source}: speed", "all 0", "a turning screw in some rows")
     plan.setflags(write=False)
@@ -254,7 +256,7 @@ def check_values(
         row = int(bad[0]) if bad.size else int(np.flatnonzero(lone)[0])
         if not bad.size:
             allowed = f"≥ 0 {unit} (below 0 only as noise where the neighbours are near 0 too)"
-        raise InputError(_at(source, quantity, row, lines), float(values[row]), allowed)
+        raise _refuse(source, quantity, row, lines, values[row], allowed)
 
 
 def _unit_factor(source: str, name: str, unit: str | None, kind: str) -> float:
