@@ -82,7 +82,8 @@ PLAUSIBLE_MAX: dict[str, float] = {
     "wear_depth": 1.0e-2,
 }
 NOISE = 0.05
-"""Negative values down to this share of the largest one are accepted as noise around 0."""
+"""Negative values down to this share of the largest one are noise around 0 where their
+neighbours lie within it of 0 too."""
 MAX_REVOLUTIONS = 1.0e12
 """Largest plausible revolution count of a life test."""
 MAX_POINTS = 100_000
