@@ -29,6 +29,7 @@ from ballscrew.calibration.measured import (
     MeasuredHistory,
     measured_history,
     read_measured,
+    read_table,
 )
 from ballscrew.calibration.multi import FIT_PARAMETERS, CalibrationWarning, fit_parameters
 from ballscrew.calibration.result import CalibrationError, CalibrationResult
@@ -52,5 +53,6 @@ __all__ = [
     "fit_wear_coefficient",
     "measured_history",
     "read_measured",
+    "read_table",
     "residual_diagnostics",
 ]

@@ -14,7 +14,12 @@ import numpy as np
 
 from ballscrew.analyses.result import recorded_warnings
 from ballscrew.budget import BudgetError
-from ballscrew.calibration.measured import QUANTITIES, MeasuredHistory, measured_history
+from ballscrew.calibration.measured import (
+    TABLES,
+    MeasuredHistory,
+    measured_history,
+    read_table,
+)
 from ballscrew.calibration.measured import read_measured as read_file
 from ballscrew.calibration.multi import (
     FIT_PARAMETERS,
@@ -43,25 +48,19 @@ DEFAULT_FIT: tuple[str, ...] = ("wear_coefficient", "torque_scale")
 
 
 def as_measured(measured: Any, quantity: str = "friction_torque") -> MeasuredHistory:
-    """A :class:`MeasuredHistory` from a CSV path, a DataFrame (``revolutions`` and one measured
-    column, SI) or an (n, 2) array of revolutions and ``quantity`` (SI)."""
+    """A :class:`MeasuredHistory` from a CSV path, a pandas DataFrame or a dict of columns (read
+    with the CSV header rules: :func:`~ballscrew.calibration.measured.read_table`) or an (n, 2)
+    array of revolutions and ``quantity`` (SI)."""
     if isinstance(measured, MeasuredHistory):
         return measured
     if isinstance(measured, str | Path):
         return read_file(measured)
-    columns = getattr(measured, "columns", None)
-    if columns is not None:
-        names = [c for c in QUANTITIES if c in columns]
-        if "revolutions" not in columns or len(names) != 1:
-            raise InputError(
-                "measured",
-                list(columns),
-                f"'revolutions' and exactly one of {', '.join(QUANTITIES)}",
-            )
-        return measured_history(
-            measured["revolutions"].to_numpy(), measured[names[0]].to_numpy(), names[0], "DataFrame"
-        )
-    array = np.asarray(measured, dtype=float)
+    if isinstance(measured, Mapping) or hasattr(measured, "columns"):
+        return read_table(measured)
+    try:
+        array = np.asarray(measured, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError("measured", type(measured).__name__, TABLES) from None
     if array.ndim != 2 or array.shape[1] != 2:
         raise InputError("measured", f"array of shape {array.shape}", "an (n, 2) array")
     return measured_history(array[:, 0], array[:, 1], quantity, "array")
@@ -113,7 +112,8 @@ def calibrate(
 
     Args:
         case: the case of the tested screw and its programme (``[wear]`` or ``[[duty]]``).
-        measured: CSV path, DataFrame, (n, 2) array or :class:`MeasuredHistory`; a schedule
+        measured: CSV path, DataFrame or dict of columns (CSV header rules), (n, 2) array or
+            :class:`MeasuredHistory`; a schedule
             (speed and axial-load columns) replaces the case's programme.
         fit: names from ``wear_coefficient``, ``torque_scale``, ``torque_offset``,
             ``film_factor``, ``running_in_depth``, ``preload`` (a comma-separated string also

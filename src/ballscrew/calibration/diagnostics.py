@@ -11,6 +11,18 @@
 
 Residuals are called systematic when p < :data:`ALPHA` or z₁ > the one-sided normal quantile of
 :data:`ALPHA`.
+
+The least-squares standard errors come from the residual scatter alone, s² = RSS/(n − p), as if
+the residuals were independent. Positively correlated residuals carry less information than n
+independent ones: with lag-1 autocorrelation r₁ > 0 (an AR(1) process) the effective number of
+points is
+
+    n_eff = n (1 − r₁)/(1 + r₁)                       (Bayley & Hammersley 1946)
+
+and the residual variance over n_eff − p degrees of freedom, s_eff² = RSS/(n_eff − p), inflates
+every standard error by √((n − p)/(n_eff − p)) (the rule for trend errors of Santer et al. 2000;
+Zięba 2010 for the standard uncertainty of correlated measurements). Neither error covers the
+model-form error: a model whose shape misses the data's is not made right by wider errors.
 """
 
 from __future__ import annotations
@@ -22,7 +34,13 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.special import ndtr, ndtri
 
-__all__ = ["ALPHA", "ResidualDiagnostics", "residual_diagnostics"]
+__all__ = [
+    "ALPHA",
+    "ResidualDiagnostics",
+    "effective_points",
+    "error_inflation",
+    "residual_diagnostics",
+]
 
 ALPHA = 0.01
 """Significance level of both tests (one-sided)."""
@@ -79,3 +97,16 @@ def residual_diagnostics(residuals: ArrayLike) -> ResidualDiagnostics:
     r1 = float(e[:-1] @ e[1:]) / total if m > 1 and total > 0.0 else 0.0
     z1 = (r1 + 1.0 / m) * math.sqrt(m) if m > 1 else 0.0
     return ResidualDiagnostics(runs, expected, p, r1, z1)
+
+
+def effective_points(n: int, r1: float) -> float:
+    """n_eff = n (1 − r₁)/(1 + r₁) for r₁ > 0, else n (Bayley & Hammersley 1946)."""
+    return n * (1.0 - r1) / (1.0 + r1) if r1 > 0.0 else float(n)
+
+
+def error_inflation(n: int, p: int, r1: float) -> float | None:
+    """√((n − p)/(n_eff − p)), the factor on a standard error of p parameters fitted to n
+    residuals of lag-1 autocorrelation r₁ (1 for r₁ ≤ 0); None when n_eff ≤ p: the residuals
+    are too correlated to determine any error."""
+    n_eff = effective_points(n, r1)
+    return math.sqrt((n - p) / (n_eff - p)) if n_eff > p else None

@@ -22,7 +22,7 @@ __all__ = ["fields", "figures", "fit_table", "sections", "summary"]
 def _history_summary(history: CalibrationResult) -> dict[str, Any]:
     """One history's summary; its fit block counts the parameters it has in the joint fit,
     while the standard errors use the joint degrees of freedom (the top level's)."""
-    out = report.summary(history)
+    out = report.summary(history, inflated_errors=False)
     fit = out["fit"]
     fit["parameters_in_this_history"] = fit.pop("parameters")
     fit.pop("degrees_of_freedom")
@@ -61,7 +61,16 @@ def summary(result: JointCalibrationResult) -> dict[str, Any]:
         "note": "One wear coefficient for every history of the screw type; the separate "
         "parameters (e.g. each specimen's torque scale and offset) per history. Standard errors "
         "from the stacked Jacobian, one noise level for all histories.",
+        "standard_errors_cover": JOINT_ERRORS,
     }
+
+
+JOINT_ERRORS = (
+    "The standard errors come from the residual scatter only: they leave out the model-form "
+    "error and understate the uncertainty when the residuals are correlated (each history's "
+    "lag-1 autocorrelation is in its residual diagnostics)."
+)
+"""What the joint fit's standard errors cover."""
 
 
 def fields(result: JointCalibrationResult) -> dict[str, xr.Dataset]:
@@ -113,13 +122,13 @@ def sections(result: JointCalibrationResult) -> list[Section]:
                 f"on the stacked residuals: shared {', '.join(result.shared)}; per history "
                 f"{', '.join(result.separate) or 'nothing'}. Standard errors and correlations "
                 "from the stacked Jacobian, cov = RSS/(n − p)·(JᵀJ)⁻¹, one noise level for all "
-                "histories.",
+                "histories. " + JOINT_ERRORS,
             ),
             tables=(Table(("quantity", "value"), tuple(rows)),),
         )
     ]
     for j, history in enumerate(result.histories):
-        (section,) = report.sections(history)
+        (section,) = report.sections(history, inflated_errors=False)
         out.append(
             Section(
                 f"History {j + 1}: {history.source}",

@@ -21,10 +21,16 @@ File format (``ballscrew calibrate --measured FILE.csv``)::
   first row's: since revolution 0); :func:`ballscrew.calibrate` then runs the model on that
   programme instead of the case's ``[[wear.programme]]``.
 * The measured values must be physically plausible: some > 0, none above
-  :data:`PLAUSIBLE_MAX`, none below −5 % of the largest (noise around 0); at most
-  :data:`MAX_POINTS` rows.
+  :data:`PLAUSIBLE_MAX`, none below 0 except as noise around 0: down to −5 % of the largest
+  value where the neighbouring points are within 5 % of 0 too (a negative torque among
+  positive ones is a sign or data error); at most :data:`MAX_POINTS` rows.
 
-Every problem raises :class:`ballscrew.errors.InputError` naming the file and the column.
+A table already in memory (a pandas DataFrame or a dict of columns) is read by
+:func:`read_table` with the same header rules: ``pandas.read_csv`` of a measured file gives
+the same history as :func:`read_measured`.
+
+Every problem raises :class:`ballscrew.errors.InputError` naming the file, the column, the row
+(the file's line) and the value.
 """
 
 from __future__ import annotations
@@ -32,6 +38,7 @@ from __future__ import annotations
 import csv
 import math
 import re
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -51,6 +58,7 @@ __all__ = [
     "check_values",
     "measured_history",
     "read_measured",
+    "read_table",
 ]
 
 #: Measured quantities a history may hold: column name → physical kind (see units.SI_UNITS).
@@ -74,7 +82,8 @@ PLAUSIBLE_MAX: dict[str, float] = {
     "wear_depth": 1.0e-2,
 }
 NOISE = 0.05
-"""Negative values down to this share of the largest one are accepted as noise around 0."""
+"""Negative values down to this share of the largest one are noise around 0 where their
+neighbours lie within it of 0 too."""
 MAX_REVOLUTIONS = 1.0e12
 """Largest plausible revolution count of a life test."""
 MAX_POINTS = 100_000
@@ -125,8 +134,11 @@ def measured_history(
     min_points: int = 2,
     schedule: ArrayLike | None = None,
     notes: tuple[str, ...] = (),
+    lines: Sequence[int] | None = None,
 ) -> MeasuredHistory:
     """Validate arrays (SI) and return them as a read-only :class:`MeasuredHistory`.
+
+    ``lines`` (the file's line of each point) names the line in error messages.
 
     Raises:
         InputError: unknown quantity, shapes that differ, non-finite numbers, negative or not
@@ -144,21 +156,22 @@ def measured_history(
         bad = ~np.isfinite(arr)
         if np.any(bad):
             row = int(np.flatnonzero(bad)[0])
-            raise InputError(f"{source}: {name} (point {row + 1})", arr[row], "a finite number")
+            raise _refuse(source, name, row, lines, arr[row], "a finite number")
     _check_count(source, rev.size)
     if rev.size and rev[-1] > MAX_REVOLUTIONS:
-        raise InputError(
-            f"{source}: revolutions (point {rev.size})", float(rev[-1]), f"≤ {MAX_REVOLUTIONS:g}"
-        )
-    check_values(source, quantity, val)
+        raise _refuse(source, "revolutions", rev.size - 1, lines, rev[-1], f"≤ {MAX_REVOLUTIONS:g}")
+    check_values(source, quantity, val, lines)
     if rev.size and rev[0] < 0.0:
-        raise InputError(f"{source}: revolutions (point 1)", float(rev[0]), "a count ≥ 0")
+        raise _refuse(source, "revolutions", 0, lines, rev[0], "a count ≥ 0")
     steps = np.diff(rev)
     if np.any(steps <= 0.0):
         row = int(np.flatnonzero(steps <= 0.0)[0]) + 1
-        raise InputError(
-            f"{source}: revolutions (point {row + 1})",
-            float(rev[row]),
+        raise _refuse(
+            source,
+            "revolutions",
+            row,
+            lines,
+            rev[row],
             f"strictly increasing revolutions (previous point: {rev[row - 1]:g})",
         )
     if rev.size < min_points:
@@ -169,13 +182,24 @@ def measured_history(
         )
     rev.setflags(write=False)
     val.setflags(write=False)
-    plan = None if schedule is None else _check_schedule(source, schedule, rev.size)
+    plan = None if schedule is None else _check_schedule(source, schedule, rev.size, lines)
     return MeasuredHistory(
         revolutions=rev, values=val, quantity=quantity, source=source, schedule=plan, notes=notes
     )
 
 
-def _check_schedule(source: str, schedule: ArrayLike, points: int) -> NDArray[np.float64]:
+def _refuse(
+    source: str, column: str, row: int, lines: Sequence[int] | None, value: float, allowed: str
+) -> InputError:
+    """The error of a bad ``value`` at 0-based ``row``: ``bench.csv: preload (point 5) = -3.0
+    is not allowed: … (line 7)``, the file's line where ``lines`` gives it."""
+    line = "" if lines is None else f" (line {lines[row]})"
+    return InputError(f"{source}: {column} (point {row + 1})", float(value), allowed + line)
+
+
+def _check_schedule(
+    source: str, schedule: ArrayLike, points: int, lines: Sequence[int] | None = None
+) -> NDArray[np.float64]:
     plan = np.array(schedule, dtype=np.float64)
     if plan.shape != (points, 2):
         raise InputError(
@@ -187,7 +211,7 @@ def _check_schedule(source: str, schedule: ArrayLike, points: int) -> NDArray[np
         if bad.size:
             row = int(bad[0])
             allowed = f"in [0, {high:g}] {unit}"
-            raise InputError(f"{source}: {name} (point {row + 1})", float(values[row]), allowed)
+            raise _refuse(source, name, row, lines, values[row], allowed)
     if not np.any(plan[:, 0] > 0.0):
         raise InputError(f"{source}: speed", "all 0", "a turning screw in some rows")
     plan.setflags(write=False)
@@ -204,11 +228,18 @@ def _check_count(source: str, points: int) -> None:
         )
 
 
-def check_values(source: str, quantity: str, values: NDArray[np.float64]) -> None:
-    """Measured values: some > 0, none above :data:`PLAUSIBLE_MAX`, none below −NOISE × the peak.
+def check_values(
+    source: str,
+    quantity: str,
+    values: NDArray[np.float64],
+    lines: Sequence[int] | None = None,
+) -> None:
+    """Measured values: some > 0, none above :data:`PLAUSIBLE_MAX`, none below 0 except as
+    noise around 0.
 
-    The quantities are ≥ 0; a value slightly below 0 is measurement noise around 0 (NOISE of
-    the largest value), a larger negative value is a sign or data error.
+    The quantities are ≥ 0; a value below 0 is measurement noise when it and its neighbours lie
+    within NOISE × the largest value of 0 (the series is near 0 there); a larger negative value,
+    or a negative one among clearly positive neighbours, is a sign or data error.
     """
     unit = SI_UNITS[QUANTITIES[quantity]]
     bound = PLAUSIBLE_MAX[quantity]
@@ -217,12 +248,16 @@ def check_values(source: str, quantity: str, values: NDArray[np.float64]) -> Non
         raise InputError(
             f"{source}: {quantity}", f"largest value {peak:g}", f"some values > 0 {unit}"
         )
-    low = -NOISE * min(peak, bound)
-    allowed = f"a measured {quantity} in [{low:.3g}, {bound:g}] {unit}"
-    bad = np.flatnonzero(~((values >= low) & (values <= bound)))  # also NaN
-    if bad.size:
-        row = int(bad[0])
-        raise InputError(f"{source}: {quantity} (point {row + 1})", float(values[row]), allowed)
+    tol = NOISE * min(peak, bound)
+    allowed = f"a measured {quantity} in [{-tol:.3g}, {bound:g}] {unit}"
+    bad = np.flatnonzero(~((values >= -tol) & (values <= bound)))  # also NaN
+    near_zero = np.abs(values) <= tol
+    lone = (values < 0.0) & ~(np.r_[True, near_zero[:-1]] & np.r_[near_zero[1:], True])
+    if bad.size or np.any(lone):
+        row = int(bad[0]) if bad.size else int(np.flatnonzero(lone)[0])
+        if not bad.size:
+            allowed = f"≥ 0 {unit} (below 0 only as noise where the neighbours are near 0 too)"
+        raise _refuse(source, quantity, row, lines, values[row], allowed)
 
 
 def _unit_factor(source: str, name: str, unit: str | None, kind: str) -> float:
@@ -264,6 +299,85 @@ def _parse_header(source: str, header: list[str]) -> dict[str, tuple[int, str | 
     return columns
 
 
+@dataclass(frozen=True)
+class _Layout:
+    """What a table's header says: the measured quantity and, per column to read, its header
+    position and the factor to SI (revolutions, measured quantity, then the schedule)."""
+
+    quantity: str
+    columns: tuple[tuple[str, int, float], ...]
+    scheduled: bool
+
+
+def _layout(source: str, header: Sequence[str]) -> _Layout:
+    """Read a header row: ``revolutions``, exactly one measured column, optional schedule."""
+    columns = _parse_header(source, header)
+    if "revolutions" not in columns:
+        raise InputError(
+            f"{source}: header", ",".join(header), "a 'revolutions' column (screw revolutions)"
+        )
+    measured = [name for name in QUANTITIES if name in columns]
+    allowed = "exactly one of " + ", ".join(QUANTITIES)
+    if len(measured) != 1:
+        raise InputError(f"{source}: measured column", measured or ",".join(header), allowed)
+    quantity = measured[0]
+    rev_index, rev_unit = columns["revolutions"]
+    if rev_unit is not None and rev_unit.strip() not in ("", "rev", "revolutions", "1"):
+        raise InputError(f"{source}: column 'revolutions'", f"[{rev_unit}]", "no unit or [rev]")
+    scheduled = [name for name in SCHEDULE if name in columns]
+    if scheduled and len(scheduled) != len(SCHEDULE):
+        raise InputError(f"{source}: schedule columns", scheduled, "both speed and axial_load")
+    kinds = {quantity: QUANTITIES[quantity]} | {name: SCHEDULE[name] for name in scheduled}
+    read = [("revolutions", rev_index, 1.0)] + [
+        (name, columns[name][0], _unit_factor(source, name, columns[name][1], kind))
+        for name, kind in kinds.items()
+    ]
+    return _Layout(quantity, tuple(read), bool(scheduled))
+
+
+def _numbers(
+    source: str, name: str, cells: Sequence[object], where: Callable[[int], str]
+) -> NDArray[np.float64]:
+    """The cells of one column as floats; a cell that is no number names its row."""
+    numbers = np.empty(len(cells))
+    for row, cell in enumerate(cells):
+        text = cell.strip() if isinstance(cell, str) else cell
+        try:
+            numbers[row] = float(text)  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            shown = text if isinstance(text, str | int | float) else repr(text)
+            field = f"{source}: {where(row)}, column {name!r}"
+            raise InputError(field, shown, "a number") from None
+    return numbers
+
+
+def _history(
+    source: str,
+    layout: _Layout,
+    cells: Mapping[str, Sequence[object]],
+    where: Callable[[int], str],
+    lines: Sequence[int] | None,
+    min_points: int,
+    notes: tuple[str, ...] = (),
+) -> MeasuredHistory:
+    """The history of a table's cells (column name → cells), converted to SI."""
+    values = {
+        name: _numbers(source, name, cells[name], where) * factor
+        for name, _, factor in layout.columns
+    }
+    schedule = np.column_stack([values[name] for name in SCHEDULE]) if layout.scheduled else None
+    return measured_history(
+        values["revolutions"],
+        values[layout.quantity],
+        layout.quantity,
+        source=source,
+        min_points=min_points,
+        schedule=schedule,
+        notes=notes,
+        lines=lines,
+    )
+
+
 def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
     """Read a measured history from a CSV file (format in the module docstring).
 
@@ -300,62 +414,74 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
         raise InputError("--measured", str(path), "a CSV file with a header row and data rows")
     _check_count(source, len(numbered) - 1)
     rows = list(csv.reader(line for _, line in numbered))
-    columns = _parse_header(source, rows[0])
-    if "revolutions" not in columns:
-        raise InputError(
-            f"{source}: header", ",".join(rows[0]), "a 'revolutions' column (screw revolutions)"
-        )
-    measured = [name for name in QUANTITIES if name in columns]
-    allowed = "exactly one of " + ", ".join(QUANTITIES)
-    if len(measured) != 1:
-        raise InputError(f"{source}: measured column", measured or ",".join(rows[0]), allowed)
-    quantity = measured[0]
-    rev_index, rev_unit = columns["revolutions"]
-    if rev_unit is not None and rev_unit.strip() not in ("", "rev", "revolutions", "1"):
-        raise InputError(f"{source}: column 'revolutions'", f"[{rev_unit}]", "no unit or [rev]")
-    val_index, val_unit = columns[quantity]
-    factor = _unit_factor(source, quantity, val_unit, QUANTITIES[quantity])
-    scheduled = [name for name in SCHEDULE if name in columns]
-    if scheduled and len(scheduled) != len(SCHEDULE):
-        raise InputError(f"{source}: schedule columns", scheduled, "both speed and axial_load")
-    rev: list[float] = []
-    val: list[float] = []
-    plan: dict[str, list[float]] = {name: [] for name in scheduled}
-    wanted = [("revolutions", rev_index, rev), (quantity, val_index, val)]
-    wanted += [(name, columns[name][0], plan[name]) for name in scheduled]
-    for (line_number, _), row in zip(numbered[1:], rows[1:], strict=True):
-        if any(cell.strip() for cell in row[len(rows[0]) :]):
+    header, rows = rows[0], rows[1:]
+    layout = _layout(source, header)
+    lines = [number for number, _ in numbered[1:]]
+    for line_number, row in zip(lines, rows, strict=True):
+        if any(cell.strip() for cell in row[len(header) :]):
             raise InputError(
                 f"{source}: line {line_number}",
                 ",".join(row),
-                f"at most {len(rows[0])} cells, one per header column ({','.join(rows[0])})",
+                f"at most {len(header)} cells, one per header column ({','.join(header)})",
             )
-        for name, index, store in wanted:
-            cell = row[index].strip() if index < len(row) else ""
-            try:
-                number = float(cell)
-            except ValueError:
-                raise InputError(
-                    f"{source}: line {line_number}, column {name!r}", cell, "a number"
-                ) from None
-            store.append(number)
-    schedule = None
-    if scheduled:
-        schedule = np.column_stack(
-            [
-                np.asarray(plan[name]) * _unit_factor(source, name, columns[name][1], kind)
-                for name, kind in SCHEDULE.items()
-            ]
-        )
-    return measured_history(
-        rev,
-        np.asarray(val) * factor,
-        quantity,
-        source=source,
-        min_points=min_points,
-        schedule=schedule,
+    cells = {
+        name: [row[index] if index < len(row) else "" for row in rows]
+        for name, index, _ in layout.columns
+    }
+    return _history(
+        source,
+        layout,
+        cells,
+        lambda row: f"line {lines[row]}",
+        lines,
+        min_points,
         notes=_leading_comments(text),
     )
+
+
+def read_table(table: object, min_points: int = 2) -> MeasuredHistory:
+    """Read a measured history from a table in memory with the header rules of a CSV file.
+
+    Args:
+        table: a pandas DataFrame (e.g. ``pandas.read_csv(path, comment="#")`` of a measured
+            file) or a dict of columns (``{"revolutions": [...], "wear_depth [um]": [...]}``);
+            the column names carry the units as in a CSV header.
+        min_points: the least number of rows accepted.
+
+    Raises:
+        InputError: a table of another kind, or anything :func:`read_measured` refuses (the
+            rows are named ``row N``, counted from 1).
+    """
+    if isinstance(table, Mapping):
+        source, names = "dict", list(table)
+    elif hasattr(table, "columns") and hasattr(table, "__getitem__"):
+        source, names = "DataFrame", list(table.columns)  # type: ignore[attr-defined]
+    else:
+        raise InputError("measured", type(table).__name__, TABLES)
+    bad = [name for name in names if not isinstance(name, str)]
+    if bad:
+        raise InputError(f"{source}: column name", bad[0], "a name such as 'wear_depth [um]'")
+    layout = _layout(source, names)
+    cells = {name: _cells(table[names[index]]) for name, index, _ in layout.columns}  # type: ignore[index]
+    lengths = {len(values) for values in cells.values()}
+    if len(lengths) > 1:
+        raise InputError(f"{source}: column lengths", sorted(lengths), "columns of one length")
+    _check_count(source, lengths.pop())
+    return _history(source, layout, cells, lambda row: f"row {row + 1}", None, min_points)
+
+
+TABLES = (
+    "a CSV path, a pandas DataFrame or a dict of columns with a 'revolutions' column and one "
+    f"of {', '.join(QUANTITIES)} (units in brackets), an (n, 2) array or a MeasuredHistory"
+)
+"""What :func:`ballscrew.calibrate` accepts as measured data, for error messages."""
+
+
+def _cells(column: object) -> Sequence[object]:
+    """A column's cells as a flat sequence (a pandas Series, list, tuple or array)."""
+    values = getattr(column, "to_numpy", None)
+    array = np.asarray(values() if callable(values) else column, dtype=object)
+    return list(array.reshape(-1)) if array.ndim else [array.item()]
 
 
 def _leading_comments(text: str) -> tuple[str, ...]:

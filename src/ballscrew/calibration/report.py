@@ -16,7 +16,26 @@ from ballscrew.plotting import plain, pyplot, revolutions_axis
 if TYPE_CHECKING:
     from ballscrew.calibration.result import CalibrationResult
 
-__all__ = ["DISPLAY", "figures", "fit_dataset", "fit_plot", "fit_table", "sections", "summary"]
+__all__ = [
+    "DISPLAY",
+    "STANDARD_ERRORS",
+    "figures",
+    "fit_dataset",
+    "fit_plot",
+    "fit_table",
+    "sections",
+    "summary",
+]
+
+STANDARD_ERRORS = (
+    "Standard errors come from the residual scatter only, cov = RSS/(n − p)·(JᵀJ)⁻¹, as if the "
+    "model were right and the residuals independent: they leave out the model-form error (a "
+    "model whose shape misses the data's) and understate the uncertainty when the residuals "
+    "are correlated. The errors 'allowing for correlated residuals' use n_eff = n(1 − r₁)/(1 + "
+    "r₁) points (lag-1 autocorrelation r₁ > 0; Bayley & Hammersley 1946) in place of n; they "
+    "still leave out the model-form error."
+)
+"""What the calibration's standard errors cover and what they leave out."""
 
 #: Label and display unit (name, factor from SI) of each measured quantity.
 DISPLAY: dict[str, tuple[str, str, float]] = {
@@ -26,10 +45,13 @@ DISPLAY: dict[str, tuple[str, str, float]] = {
 }
 
 
-def summary(result: CalibrationResult) -> dict[str, Any]:
-    """The fit as a JSON-ready dict (the fitted values first, then diagnostics)."""
+def summary(result: CalibrationResult, inflated_errors: bool = True) -> dict[str, Any]:
+    """The fit as a JSON-ready dict (the fitted values first, then diagnostics); without the
+    errors allowing for correlated residuals where ``inflated_errors`` is False (a history of a
+    joint fit, whose errors have the joint degrees of freedom)."""
     from ballscrew.calibration.multi import FIT_PARAMETERS
 
+    inflated = (result.inflated_errors if inflated_errors else None) or {}
     return {
         "case": result.case_name,
         "wear_coefficient": value(result.wear_coefficient, ""),
@@ -53,6 +75,7 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
             name: {
                 "value": v,
                 "standard_error": result.errors.get(name),
+                "standard_error_correlated_residuals": inflated.get(name),
                 "unit": FIT_PARAMETERS[name].unit,
             }
             for name, v in result.values.items()
@@ -64,6 +87,8 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
             else None
         ),
         "residual_diagnostics": dict(result.diagnostics),
+        "effective_points": result.effective_points,
+        "standard_errors_cover": STANDARD_ERRORS,
         "calibrated_range": _range(result),
         "prediction_band": "95 % prediction band ŷ ± 1.96 √(gᵀ cov g + s²), delta method "
         "from the Jacobian covariance",
@@ -91,7 +116,7 @@ def summary(result: CalibrationResult) -> dict[str, Any]:
         "options": dict(result.options),
         "note": "K is confounded with the stroke and the revolution count of the case "
         "(theory manual, Wear); quote it with them. Standard errors assume the model is "
-        "right and the noise independent with equal variance.",
+        "right and the noise independent with equal variance (see standard_errors_cover).",
     }
 
 
@@ -213,8 +238,9 @@ def data_notes(result: CalibrationResult) -> list[str]:
     return [f"What {result.source} says about its data: " + " ".join(result.data_notes)]
 
 
-def sections(result: CalibrationResult) -> list[Section]:
-    """The fitted values, their uncertainty and the method."""
+def sections(result: CalibrationResult, inflated_errors: bool = True) -> list[Section]:
+    """The fitted values, their uncertainty and the method (``inflated_errors``: as in
+    :func:`summary`)."""
     from ballscrew.calibration.multi import FIT_PARAMETERS
 
     label, unit, factor = DISPLAY[result.quantity]
@@ -258,6 +284,15 @@ def sections(result: CalibrationResult) -> list[Section]:
     if result.diagnostics:
         rows.append(("runs-test p (residual signs)", result.diagnostics["runs_test_p_value"]))
         rows.append(("lag-1 autocorrelation", result.diagnostics["lag1_autocorrelation"]))
+        rows.append(("effective points n_eff", result.effective_points))
+    if result.diagnostics and inflated_errors:
+        inflated = result.inflated_errors
+        rows += [
+            (f"standard error of {name}, allowing for correlated residuals", e)
+            for name, e in (inflated or {}).items()
+        ]
+        if inflated is None:
+            rows.append(("standard errors allowing for correlated residuals", "not determined"))
     rows += [
         (f"RMS residual [{unit}]", result.rms_residual * factor),
         ("measured points", result.n_points),
@@ -277,8 +312,7 @@ def sections(result: CalibrationResult) -> list[Section]:
                 "model's sensitivity); a runs test and the lag-1 autocorrelation check that the "
                 "residuals are noise.",
                 "K is confounded with the stroke and the revolution count of the case: quote "
-                "it together with them. The standard errors cover measurement noise only, not "
-                "the model's own uncertainty.",
+                "it together with them. " + STANDARD_ERRORS,
                 *data_notes(result),
             ),
             tables=(Table(("quantity", "value"), tuple(rows)),),

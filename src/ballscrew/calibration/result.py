@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses.result import Presented
 from ballscrew.calibration import report as calibration_report
+from ballscrew.calibration.diagnostics import effective_points, error_inflation
 from ballscrew.calibration.measured import MeasuredHistory
 from ballscrew.case.inputs import resolved_inputs
 from ballscrew.errors import BallscrewError, InputError
@@ -150,6 +151,24 @@ class CalibrationResult(Presented):
     def relative_error(self) -> float:
         """σ_K / K."""
         return self.standard_error / self.wear_coefficient
+
+    @property
+    def effective_points(self) -> float | None:
+        """n_eff = n (1 − r₁)/(1 + r₁) of the fitted residuals (Bayley & Hammersley 1946; n
+        for r₁ ≤ 0); None without residual diagnostics."""
+        r1 = self.diagnostics.get("lag1_autocorrelation")
+        return None if r1 is None else effective_points(self.n_fit or self.n_points, r1)
+
+    @property
+    def inflated_errors(self) -> dict[str, float] | None:
+        """:attr:`errors` with the residual variance over n_eff − p degrees of freedom instead
+        of n − p (:func:`~ballscrew.calibration.diagnostics.error_inflation`): the errors
+        allowing for correlated residuals; None when n_eff ≤ p or without diagnostics. Like
+        :attr:`errors` they leave out the model-form error."""
+        r1 = self.diagnostics.get("lag1_autocorrelation")
+        n = self.n_fit or self.n_points
+        factor = None if r1 is None else error_inflation(n, self.parameters, r1)
+        return None if factor is None else {k: e * factor for k, e in self.errors.items()}
 
     @property
     def residuals(self) -> NDArray[np.float64]:
