@@ -83,7 +83,7 @@ PLAUSIBLE_MAX: dict[str, float] = {
 }
 NOISE = 0.05
 """Negative values down to this share of the largest one are noise around 0 where their
-neighbours lie within it of 0 too."""
+neighbours lie within it of 0 too [GUESS: a data-cleaning threshold, not a measured rule]."""
 MAX_REVOLUTIONS = 1.0e12
 """Largest plausible revolution count of a life test."""
 MAX_POINTS = 100_000
