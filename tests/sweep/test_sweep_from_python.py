@@ -118,16 +118,13 @@ def test_is_guarded_finds_the_main_block():
     assert is_guarded("def (:", 1)  # unparsable: not refused
 
 
-def test_an_unguarded_script_gets_one_error_and_starts_no_cluster(gao_case_path, tmp_path):
+def test_an_unguarded_script_gets_one_error_and_starts_no_cluster(tmp_path):
     """A script calling run_sweep at its top level got pages of 'Nanny failed to start': each
-    spawned worker ran the script again (researcher's walkthrough, session 24)."""
-    body = (
-        f"case = ballscrew.load_case({str(gao_case_path)!r})\n"
-        "axes = [parse_axis('operating.axial_load=0:2000:2')]\n"
-        f"run_sweep(case, axes, 'thermal-network', None, {str(tmp_path / 'out')!r}, workers=1)\n"
-    )
+    spawned worker ran the script again (researcher's walkthrough, session 24). The script here
+    asks for the local cluster of run_sweep directly, to spare the case's imports."""
     script = tmp_path / "study.py"
-    script.write_text(SCRIPT.format(body=body), encoding="utf-8")
+    body = "from ballscrew.sweep.cluster import shared_client\n\nclient = shared_client(None, 1)\n"
+    script.write_text(body, encoding="utf-8")
     env = {**os.environ, "PYTHONPATH": str(SRC)}
     done = subprocess.run(
         [sys.executable, str(script)], capture_output=True, text=True, env=env, timeout=60
@@ -135,7 +132,7 @@ def test_an_unguarded_script_gets_one_error_and_starts_no_cluster(gao_case_path,
     assert done.returncode == 1
     assert "Nanny" not in done.stderr and "bootstrapping" not in done.stderr
     last = done.stderr.strip().splitlines()[-1]
-    assert last.startswith(f"ballscrew.sweep.entry_guard.UnguardedScriptError: {script}:7 ")
+    assert last.startswith(f"ballscrew.sweep.entry_guard.UnguardedScriptError: {script}:3 ")
     assert 'if __name__ == "__main__":' in last and "scheduler=" in last
 
 
@@ -174,3 +171,22 @@ def test_the_users_cluster_closes_without_errors_after_a_sweep(gao_case_path, tm
         assert (stored["analysis"], stored["function"]) == ("load", f"{__name__}.load_in_kn")
     with pytest.raises(InputError, match=r"load \(.*twice_the_load\)' is not allowed: 'load \("):
         run_sweep(ref, AXES, twice_the_load, "load", tmp_path, scheduler=DEAD)
+
+
+def test_the_command_refuses_a_folder_of_another_analysis(gao_case_path, tmp_path):
+    from typer.testing import CliRunner
+
+    from ballscrew.cli import app
+    from ballscrew.results.folder import SWEEP_PATTERNS, write_marker
+
+    out = tmp_path / "sweep"
+    _stored(out, "thermal-network", "thermal-network")
+    write_marker(out, "sweep", SWEEP_PATTERNS)  # the folder of an earlier, interrupted sweep
+    args = ["sweep", str(gao_case_path), "--vary", "operating.axial_load=0,1000"]
+    result = CliRunner().invoke(app, [*args, "--analysis", "tcr", "--out", str(out)])
+    assert result.exit_code == 2, result.output
+    errors = [line for line in result.output.splitlines() if line.startswith("error:")]
+    assert errors == [
+        f"error: analysis of the sweep store {out} = 'tcr' is not allowed: 'thermal-network', "
+        "the analysis its points were computed with (use another store)"
+    ]
