@@ -209,13 +209,15 @@ def run_sweep(
     if progress:
         progress(done, len(points))
     if todo:
-        with sweep_client(scheduler, workers) as client:
-            with closing(_run_chunks(client, function, cases, points, todo)) as finished:
-                for i, record in finished:
-                    _save(folder / f"{keys[i]}.json", record, name, identity)
-                    done += 1
-                    if progress:
-                        progress(done, len(points))
+        with (
+            sweep_client(scheduler, workers) as client,
+            closing(_run_chunks(client, function, cases, points, todo)) as finished,
+        ):
+            for i, record in finished:
+                _save(folder / f"{keys[i]}.json", record, name, identity)
+                done += 1
+                if progress:
+                    progress(done, len(points))
     records = [_load(folder / f"{key}.json") for key in keys]
     return assemble(axes, records, name, base), len(todo)
 
