@@ -9,6 +9,7 @@ from typing import Annotated
 import typer
 
 from ballscrew.commands._common import Output, finish, writes_results
+from ballscrew.errors import InputError
 
 #: The analyses a sweep can run, as ``--help`` lists them: those of
 #: ``ballscrew.sweep.registry.SWEEPABLE`` (a test holds the two equal), written out so that
@@ -70,6 +71,17 @@ def console_warnings(warnings: list[str], failed: int) -> list[str]:
     return shown + warnings[failed:]
 
 
+#: Arguments of :func:`ballscrew.sweep.run_sweep` that the command takes as options.
+OPTIONS = ("scheduler", "workers")
+
+
+def as_option(error: InputError) -> InputError:
+    """``error`` naming the command's option (``--scheduler``) where Python names the argument."""
+    if error.field not in OPTIONS:
+        return error
+    return InputError(f"--{error.field}", error.value, error.allowed)
+
+
 @writes_results
 def sweep(
     case_file: SweepCaseArg,
@@ -111,9 +123,12 @@ def sweep(
 
     with output.claim(case_file) as folder:
         prepare_sweep_folder(folder)
-        dataset, computed = run_sweep(
-            case, axes, function, name, folder, scheduler, workers, progress, retry_failed
-        )
+        try:
+            dataset, computed = run_sweep(
+                case, axes, function, name, folder, scheduler, workers, progress, retry_failed
+            )
+        except InputError as error:
+            raise as_option(error) from None
         written = write_sweep(dataset, folder, computed, case, axes, export=output.formats)
         summary = json.loads((written / "summary.json").read_text(encoding="utf-8"))
         for message in console_warnings(summary["warnings"], summary["failed"]):

@@ -1,8 +1,10 @@
-"""One Dask client per scheduler and worker count, reused by every sweep of the process.
+"""Dask clients of the sweeps: one local cluster per worker count, kept for the process.
 
 Starting a local cluster costs seconds (worker processes import numpy, scipy and ballscrew); a
-notebook or script that runs several sweeps pays it once. The clients are closed when the
-interpreter exits, or by :func:`close_clients`.
+notebook or script that runs several sweeps pays it once. The local clients are closed when the
+interpreter exits, or by :func:`close_clients`. A scheduler given by address belongs to the
+user: its client lives for one sweep (:func:`sweep_client`), so none outlives the user's
+cluster.
 
 A local worker runs one task thread, and its BLAS, OpenMP and FFT pools one thread each
 (:data:`WORKER_ENV`): the sweep's parallelism is its workers, one per core, and a second pool
@@ -14,10 +16,13 @@ from __future__ import annotations
 import atexit
 import logging
 import os
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 from ballscrew.budget import check_memory
 from ballscrew.errors import InputError
+from ballscrew.sweep.entry_guard import check_entry_guard
 from ballscrew.validation import integer_at_least
 
 log = logging.getLogger(__name__)
@@ -41,7 +46,7 @@ WORKER_ENV = {
 #: Dask settings of a local worker.
 WORKER_CONFIG = {"distributed.worker.profile.enabled": False}
 
-_CLIENTS: dict[tuple[str | None, int | None], tuple[Any, Any]] = {}
+_CLIENTS: dict[int | None, tuple[Any, Any]] = {}
 
 
 def _quiet_dask() -> None:
@@ -62,17 +67,20 @@ def _connect(scheduler: str) -> Any:
     except Exception as exc:  # any failure to reach it is the address's
         reason = (str(exc).splitlines() or [type(exc).__name__])[0][:200]
         raise InputError(
-            "--scheduler",
+            "scheduler",
             scheduler,
             f"the address of a running Dask scheduler, e.g. tcp://host:8786 ({reason})",
         ) from None
 
 
-def check_workers(workers: int | None) -> None:
-    """Refuse a local worker count below 1 or whose processes exceed the memory budget."""
+def check_workers(workers: int | None, field: str = "--workers") -> None:
+    """Refuse a local worker count below 1 or whose processes exceed the memory budget.
+
+    ``field`` names the count in the message: the command's option, or ``workers`` from Python.
+    """
     if workers is not None:
-        integer_at_least("--workers", workers, 1)
-        check_memory("--workers", workers, workers * WORKER_BYTES, f"{workers} local workers")
+        integer_at_least(field, workers, 1)
+        check_memory(field, workers, workers * WORKER_BYTES, f"{workers} local workers")
 
 
 def _local(workers: int | None) -> tuple[Any, Any]:
@@ -98,21 +106,37 @@ def _local(workers: int | None) -> tuple[Any, Any]:
 
 
 def shared_client(scheduler: str | None = None, workers: int | None = None) -> Any:
-    """The process's client of ``scheduler`` (an address) or of a local cluster of ``workers``.
+    """The process's client of a local cluster of ``workers``, or a new client of ``scheduler``.
 
-    A client that has been closed is replaced. A scheduler given by address is trusted: Dask
-    exchanges pickled functions and results with it.
+    The local client is kept for later sweeps (a closed one is replaced); a client of a scheduler
+    given by address is the caller's to close (:func:`sweep_client` does). Such a scheduler is
+    trusted: Dask exchanges pickled functions and results with it.
     """
-    key = (scheduler, None if scheduler else workers)
-    cached = _CLIENTS.get(key)
+    _quiet_dask()
+    if scheduler:
+        return _connect(scheduler)
+    cached = _CLIENTS.get(workers)
     if cached is not None and cached[0].status == "running":
         return cached[0]
-    _quiet_dask()
-    if not scheduler:
-        check_workers(workers)
-    entry = (_connect(scheduler), None) if scheduler else _local(workers)
-    _CLIENTS[key] = entry
-    return entry[0]
+    check_workers(workers, "workers")
+    check_entry_guard()
+    _CLIENTS[workers] = _local(workers)
+    return _CLIENTS[workers][0]
+
+
+@contextmanager
+def sweep_client(scheduler: str | None = None, workers: int | None = None) -> Iterator[Any]:
+    """:func:`shared_client` for one sweep: a client of ``scheduler`` is closed at the end.
+
+    Closing it releases what the sweep scattered and stops its heartbeats, so the user may then
+    close their own cluster without Dask logging the lost client's reconnection attempts.
+    """
+    client = shared_client(scheduler, workers)
+    try:
+        yield client
+    finally:
+        if scheduler:
+            client.close()
 
 
 @atexit.register

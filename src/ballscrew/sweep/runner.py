@@ -18,18 +18,21 @@ import logging
 import math
 import time
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import closing
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import xarray as xr
 
 from ballscrew.backend import limited_fft_threads, single_thread_pools
 from ballscrew.case import Case
+from ballscrew.errors import InputError
 from ballscrew.files import atomic_file
 from ballscrew.sweep.axes import SweepAxis, grid_points, validate_points
-from ballscrew.sweep.cluster import shared_client
+from ballscrew.sweep.cluster import sweep_client
 from ballscrew.sweep.spec import check_sweep_size
 from ballscrew.thread_warnings import record_warnings
 
@@ -123,9 +126,9 @@ def point_key(analysis_name: str, case: Case) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:20]
 
 
-def _save(path: Path, record: PointRecord) -> None:
+def _save(path: Path, record: PointRecord, name: str, identity: str) -> None:
     with atomic_file(path) as scratch:
-        scratch.write_text(json.dumps(record.__dict__))
+        scratch.write_text(json.dumps({**record.__dict__, "analysis": name, "function": identity}))
 
 
 def _load(path: Path) -> PointRecord:
@@ -145,11 +148,36 @@ def _needs_run(path: Path, retry_failed: bool) -> bool:
     return retry_failed and record.error is not None
 
 
+def check_store(folder: Path, name: str, identity: str, store: str | Path) -> None:
+    """Refuse to resume a store whose points another analysis computed.
+
+    Each point file names its analysis; the first readable one speaks for the store (a store
+    holds one analysis). Points stored before the analysis was recorded are taken as this one's.
+    """
+    for path in folder.glob("*.json"):
+        try:
+            raw = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            continue
+        if not isinstance(raw, dict) or "function" not in raw:
+            return
+        held, held_identity = str(raw.get("analysis")), str(raw["function"])
+        if held_identity != identity:
+            given = name if name == identity else f"{name} ({identity})"
+            found = held if held == held_identity else f"{held} ({held_identity})"
+            raise InputError(
+                f"analysis of the sweep store {store}",
+                given,
+                f"{found!r}, the analysis its points were computed with (use another store)",
+            )
+        return
+
+
 def run_sweep(
     base: Case,
     axes: Sequence[SweepAxis],
-    analysis: Analysis,
-    analysis_name: str,
+    analysis: Analysis | str,
+    analysis_name: str | None,
     store: str | Path,
     scheduler: str | None = None,
     workers: int | None = None,
@@ -158,71 +186,102 @@ def run_sweep(
 ) -> tuple[xr.Dataset, int]:
     """Run every point of the grid not already in ``store/points`` and assemble the Dataset.
 
-    Points that failed earlier count as done unless ``retry_failed``. Returns the Dataset and
-    the number of points computed in this call (0 when all were done).
+    ``analysis`` is a sweepable analysis's name (``"tcr"``), its function, or a function of the
+    user's; ``analysis_name`` labels a user's function and may be ``None`` (its qualified name),
+    and for a built-in analysis must be ``None`` or its own name
+    (:func:`ballscrew.sweep.registry.resolve_analysis`). A store holds one analysis: resuming
+    it with another is refused before any cluster is reached. Points that failed earlier count
+    as done unless ``retry_failed``. Returns the Dataset and the number of points computed in
+    this call (0 when all were done).
     """
+    from ballscrew.sweep.registry import resolve_analysis  # it imports every analysis
+
     check_sweep_size(axes)
     points = grid_points(axes)
     cases = validate_points(base, points)
+    function, name, identity = resolve_analysis(analysis, analysis_name)
     folder = Path(store) / "points"
+    check_store(folder, name, identity, store)
     folder.mkdir(parents=True, exist_ok=True)
-    keys = [point_key(analysis_name, case) for case in cases]
+    keys = [point_key(name, case) for case in cases]
     todo = [i for i, key in enumerate(keys) if _needs_run(folder / f"{key}.json", retry_failed)]
     done = len(points) - len(todo)
     if progress:
         progress(done, len(points))
     if todo:
-        from distributed import as_completed
-
-        client = shared_client(scheduler, workers)
-        chunks = chunk_indices(todo, sum(client.nthreads().values()))
-        [shipped] = client.scatter([analysis], broadcast=True, hash=False)  # sent once
-        futures = {
-            client.submit(
-                run_chunk,
-                shipped,
-                [cases[i] for i in chunk],
-                [points[i] for i in chunk],
-                pure=False,
-            ): chunk
-            for chunk in chunks
-        }
-        try:
-            for future in as_completed(futures, loop=client.loop):
-                for i, record in zip(futures[future], future.result(), strict=True):
-                    _save(folder / f"{keys[i]}.json", record)
-                    done += 1
-                    if progress:
-                        progress(done, len(points))
-        finally:
-            client.cancel(list(futures))  # an interrupted sweep leaves no work behind
+        with (
+            sweep_client(scheduler, workers) as client,
+            closing(_run_chunks(client, function, cases, points, todo)) as finished,
+        ):
+            for i, record in finished:
+                _save(folder / f"{keys[i]}.json", record, name, identity)
+                done += 1
+                if progress:
+                    progress(done, len(points))
     records = [_load(folder / f"{key}.json") for key in keys]
-    return assemble(axes, records, analysis_name, base), len(todo)
+    return assemble(axes, records, name, base), len(todo)
+
+
+def _run_chunks(
+    client: Any,
+    analysis: Analysis,
+    cases: Sequence[Case],
+    points: Sequence[dict[str, float]],
+    todo: Sequence[int],
+) -> Iterator[tuple[int, PointRecord]]:
+    """Each point of ``todo`` with its record, as the chunks finish on ``client``'s workers.
+
+    The analysis is scattered once; on any exit the unfinished chunks are cancelled and the
+    scattered analysis released, so an interrupted sweep leaves no work or data behind.
+    """
+    from distributed import as_completed
+
+    chunks = chunk_indices(todo, sum(client.nthreads().values()))
+    [shipped] = client.scatter([analysis], broadcast=True, hash=False)  # sent once
+    futures = {
+        client.submit(
+            run_chunk,
+            shipped,
+            [cases[i] for i in chunk],
+            [points[i] for i in chunk],
+            pure=False,
+        ): chunk
+        for chunk in chunks
+    }
+    try:
+        for future in as_completed(futures, loop=client.loop):
+            yield from zip(futures[future], future.result(), strict=True)
+    finally:
+        client.cancel([*futures, shipped])
 
 
 def warm_workers(
-    analysis: Analysis, case: Case, scheduler: str | None = None, workers: int | None = None
+    analysis: Analysis | str, case: Case, scheduler: str | None = None, workers: int | None = None
 ) -> dict[str, float]:
-    """Run ``case`` once on every worker of the shared client and discard the result.
+    """Run ``case`` once on every worker of the sweep's client and discard the result.
 
     A worker's first point imports the physics and builds its FFT plans and caches; a timed
     sweep (points per second) starts after this. The results of later points do not change.
-    Returns each worker's seconds for its point.
+    ``analysis`` is a name or a function, as in :func:`run_sweep`. Returns each worker's
+    seconds for its point.
     """
-    client = shared_client(scheduler, workers)
-    futures = {
-        worker: client.submit(
-            run_chunk,
-            analysis,
-            [case],
-            [{}],
-            workers=[worker],
-            allow_other_workers=False,
-            pure=False,
-        )
-        for worker in client.nthreads()
-    }
-    return {worker: future.result()[0].seconds for worker, future in futures.items()}
+    from ballscrew.sweep.registry import resolve_analysis
+
+    function = resolve_analysis(analysis)[0]
+    with sweep_client(scheduler, workers) as client:
+        futures = {
+            worker: client.submit(
+                run_chunk,
+                function,
+                [case],
+                [{}],
+                workers=[worker],
+                allow_other_workers=False,
+                pure=False,
+            )
+            for worker in client.nthreads()
+        }
+        return {worker: future.result()[0].seconds for worker, future in futures.items()}
 
 
 def assemble(
