@@ -59,7 +59,7 @@ def test_level0_rolling_speed_with_lead_is_the_same_at_both_contacts(gao):
 
 
 def test_unknown_entrainment_rule_names_the_case_key(ref_geometry):
-    with pytest.raises(InputError, match="kinematics.entrainment"):
+    with pytest.raises(InputError, match=r"kinematics\.entrainment"):
         ball_motion(ref_geometry, 1.0).entrainment("screw", "mean")
 
 
