@@ -217,7 +217,15 @@ def test_calibrate_on_the_example_history(tmp_path, wear_case_path):
     measured = Path(__file__).parents[1] / "examples" / "measured" / "step_stress_torque.csv"
     out = tmp_path / "cal"
     result = run(
-        "calibrate", wear_case_path, "--measured", measured, "--out", out, "--fit-torque-scale"
+        "calibrate",
+        wear_case_path,
+        "--measured",
+        measured,
+        "--out",
+        out,
+        "--fit-torque-scale",
+        "--set",
+        "kinematics.entrainment=ball_centre",  # the history's film: at the ball-centre speed
     )
     assert result.exit_code == 0, result.output
     summary = json.loads((out / "summary.json").read_text())

@@ -92,6 +92,12 @@ def quick_case(tmp_path) -> Path:
     return write_case(tmp_path, "gao2019_tcr.toml", QUICK)
 
 
+@pytest.fixture
+def quiet_case(tmp_path) -> Path:
+    """The quick case with a film thick enough (Λ ≈ 2) that the operating point warns nothing."""
+    return write_case(tmp_path, "gao2019_tcr.toml", {**QUICK, "medium.viscosity": "0.2 Pa*s"})
+
+
 @pytest.mark.parametrize(
     ("setting", "message"),
     [
@@ -174,12 +180,12 @@ def test_a_run_with_set_export_and_a_warning(tmp_path, quick_case, fake_export):
 
 
 def test_a_failing_export_writes_nothing_and_keeps_the_previous_folder(
-    tmp_path, quick_case, monkeypatch
+    tmp_path, quiet_case, monkeypatch
 ):
     """An export that fails (here: a full disk) is one line and exit status 2; the folder of
     the earlier run stays as it was and a new folder is not written at all."""
     out = tmp_path / "out"
-    assert run("operating-point", quick_case, "-q", "--out", out).exit_code == 0
+    assert run("operating-point", quiet_case, "-q", "--out", out).exit_code == 0
     before = {p.name: p.read_bytes() for p in out.iterdir()}
 
     def full_disk(folder, formats):
@@ -188,19 +194,19 @@ def test_a_failing_export_writes_nothing_and_keeps_the_previous_folder(
 
     monkeypatch.setattr(writer, "export_results", full_disk)
     for folder in (out, tmp_path / "new"):
-        result = run("operating-point", quick_case, "--out", folder, "--export", "csv")
+        result = run("operating-point", quiet_case, "--out", folder, "--export", "csv")
         assert result.exit_code == 2
         assert result.output.strip().splitlines() == [
             f"error: cannot write the results {folder.resolve()}: No space left on device"
         ]
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert not (tmp_path / "new").exists()
-    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([quick_case.name, "out"])
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([quiet_case.name, "out"])
 
 
-def test_quiet_after_the_command_prints_only_the_folder(tmp_path, quick_case):
+def test_quiet_after_the_command_prints_only_the_folder(tmp_path, quiet_case):
     out = tmp_path / "out"
-    result = run("operating-point", quick_case, "-q", "--out", out)
+    result = run("operating-point", quiet_case, "-q", "--out", out)
     assert result.exit_code == 0, result.output
     assert result.output.strip() == f"results: {out.resolve()}"
 

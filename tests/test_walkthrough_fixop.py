@@ -107,9 +107,11 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     assert result.exit_code == 0, result.output
     summary = json.loads((out / "summary.json").read_text())
     slow, fast_ = summary["lubrication"]
-    assert slow["part"] == "level 1" and 0.5 < slow["film_parameter"]["value"] < 3.0
+    # Λ = h/σ with σ over the roughness measurement's band (E6.6), ψ from the asperity model
+    assert slow["part"] == "level 1" and 0.05 < slow["film_parameter"]["value"] < 1.0
     assert slow["asperity_share"]["value"] > 0.1
-    assert fast_["film_parameter"]["value"] > 3.0 and fast_["asperity_share"]["value"] < 1e-6
+    assert fast_["film_parameter"]["value"] > 3.0 * slow["film_parameter"]["value"]
+    assert fast_["asperity_share"]["value"] < 1e-6
     depth = [lv["max_wear_depth"]["value"] for lv in summary["levels"]]
     assert depth[0] > 0.0 and depth[1] - depth[0] < 1e-3 * depth[0]
     warnings = summary["warnings"]

@@ -196,7 +196,10 @@ def test_the_torque_is_reported_by_part_with_its_regime(case):
     )
     assert "Λ = " in section.paragraphs[0] and "μ = " in section.paragraphs[0]
     catalogue = operating_point(case, speed=100 * RPM).summary()
-    assert "preload" in catalogue["torque_parts"] and "film_parameter" not in catalogue
+    # Λ is the operating point's, not the friction model's: the catalogue model reports it too
+    assert "preload" in catalogue["torque_parts"] and "traction_coefficient" not in catalogue
+    assert 0.0 < catalogue["film_parameter"]["value"] < 1.0  # 58 nm over σ = 302 nm
+    assert catalogue["lubrication_regime"] == "boundary"
 
 
 def test_a_steady_field_draws_no_empty_time_axis(case, tmp_path, monkeypatch):

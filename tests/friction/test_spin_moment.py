@@ -124,7 +124,9 @@ def test_reported_traction_coefficient_follows_the_regime(wear_case_path, law, b
     rest, mixed, fast = (friction_torque(case, speed=w) for w in (0.0, OMEGA, 3000.0 * RPM))
     assert rest.traction_coefficient == pytest.approx(boundary)
     assert film < mixed.traction_coefficient < boundary
-    assert fast.film_parameter > 3.0
+    # Λ = h_c/σ over the measurement band (E6.6); the traction share ψ comes from the asperity
+    # model's own cell σ, so the film's cap is reached while Λ is still below 1
+    assert fast.film_parameter > 2.0 * mixed.film_parameter
     assert fast.traction_coefficient == pytest.approx(film, abs=0.005)
     catalogue = ballscrew.load_case(wear_case_path, {"friction.model": "catalogue"})
     assert friction_torque(catalogue, speed=OMEGA).traction_coefficient is None

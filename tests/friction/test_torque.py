@@ -180,8 +180,8 @@ def test_film_parameter_is_the_screw_contacts_separation_over_the_roughness(ball
         if n.force > 0.0
     )
     state = solve_ball(model, 100.0, force, flank, level)
-    sharing = model.sharing(state.load_screw, abs(state.ball_speed))
-    expected = sharing.separation / model.surface.rms_height
+    sharing = model.sharing(state.load_screw, model.entrainment_speed(state.motion))
+    expected = sharing.separation / model.surface.film_roughness
     losses = ball_losses(model, 100.0, ((force, flank),), level=level)
     assert losses.film_parameter == pytest.approx(expected, rel=1e-9)
     nut_side = model.sharing(state.load_nut, abs(state.ball_speed), "nut").separation

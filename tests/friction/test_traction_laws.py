@@ -69,7 +69,8 @@ def test_unknown_law_is_a_one_line_error(wear_case_path):
 
 @pytest.mark.parametrize(
     ("level", "rpm", "total"),
-    # the ball model's torques before the rival law existed (commit 795fb9e), default law
+    # the ball model's torques before the rival law existed (commit 795fb9e), default law, at
+    # the entrainment speed of that time (the ball-centre speed V)
     [
         (1, 100.0, 0.19186219023576206),
         (1, 3000.0, 0.2626266321093834),
@@ -78,7 +79,11 @@ def test_unknown_law_is_a_one_line_error(wear_case_path):
 )
 def test_default_numbers_are_unchanged(physics_case, level, rpm, total):
     case = physics_case.model_copy(
-        update={"kinematics": physics_case.kinematics.model_copy(update={"level": level})}
+        update={
+            "kinematics": physics_case.kinematics.model_copy(
+                update={"level": level, "entrainment": "ball_centre"}
+            )
+        }
     )
     assert friction_torque(case, speed=rpm * RPM).total == pytest.approx(total, rel=1e-9)
     if level == 1:

@@ -61,7 +61,8 @@ def test_writes_a_complete_results_folder(tmp_path, wear_case_path):
     assert abs(nut["spin_nut"]["value"]) < 1e-9
     assert nut["load_screw"]["unit"] == "N" and nut["angle_nut"]["unit"] == "rad"
     assert 0.0 < nut["asperity_share"] < 1.0
-    assert nut["film_thickness_central"]["value"] == pytest.approx(55e-9, rel=0.05)
+    # at the rolling speed u_e ≈ V(1 + γ) of A (E2.8); 55 nm at the ball-centre speed V
+    assert nut["film_thickness_central"]["value"] == pytest.approx(59e-9, rel=0.05)
     torque = summary["drag_torque"]
     assert torque["catalogue"]["value"] == pytest.approx(0.4231, rel=5e-4)
     assert 0 < torque["contact_losses"]["value"] < torque["catalogue"]["value"]

@@ -33,6 +33,7 @@ from ballscrew.analyses import kinematics_report
 from ballscrew.analyses.ball_contact import solve_raceway_contact
 from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
 from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.analyses.roughness import roughness_input
 from ballscrew.case import Case
 from ballscrew.case.base import MAX_SPEED
 from ballscrew.case.plausibility import speed_hint
@@ -259,7 +260,9 @@ def speed_sweep(
     rows = []
     for omega in omegas:  # one quasi-static solve per speed
         state = solve_ball(model, float(omega), force, flank, lvl)
-        sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
+        sharing = state.sharing or model.sharing(
+            state.load_screw, model.entrainment_speed(state.motion)
+        )
         rows.append(
             (
                 state.load_screw,
@@ -297,6 +300,7 @@ def ball_model(case: Case, viscosity: float | None = None) -> BallModel:
         e_star=e_star,
         hardness=params.screw.hardness,
         cell_area=spec.micro_contact_size**2,
+        roughness=roughness_input(case),
     )
     state = lubricant_state(case, viscosity)
     model = BallModel(
@@ -317,6 +321,7 @@ def ball_model(case: Case, viscosity: float | None = None) -> BallModel:
         limiting_shear=spec.limiting_shear,
         traction_cells=spec.traction_cells,
         traction_law=case.friction.traction,
+        entrainment=spec.entrainment,
     )
     changes: dict[str, object] = {}
     if state is not None:
@@ -424,7 +429,9 @@ def contact_fields(case: Case, model: BallModel, state: BallState) -> ContactFie
     closed = sliding_field_closed_form(
         model.geometry, state.screw_speed, x, y, state.flank, curvature=True
     )
-    sharing = state.sharing or model.sharing(state.load_screw, abs(state.ball_speed))
+    sharing = state.sharing or model.sharing(
+        state.load_screw, model.entrainment_speed(state.motion)
+    )
     pressure = np.asarray(contact.solution.pressure)
     return ContactFields(
         state, contact, sliding, closed, sharing, asperity_pressure(pressure, sharing.psi)
@@ -466,6 +473,10 @@ class KinematicsRun(Presented):
     """The case that was solved."""
     warnings: tuple[str, ...] = ()
     """Speed-limit messages and warnings raised while solving (one line each)."""
+    nut_sharing: LoadSharing | None = None
+    """JGP load sharing and film at the nut contact B of nut 1 (``fields.sharing`` is A's)."""
+    entrainment: tuple[float, float] = (0.0, 0.0)
+    """Entrainment speeds u_e at A and B of nut 1 at the case speed (E2.8) [m/s]."""
 
     analysis: ClassVar[str] = "kinematics"
     presentation: ClassVar[ModuleType] = kinematics_report
@@ -519,6 +530,11 @@ def run_kinematics(
                 [_model_torque(model, free, omega, lvl, preload=float(fp)) for fp in preloads]
             )
     model_torque = sum(model.balls * d.dissipation_torque for d in drags.values())
+    first = states[1]
+    entrainment = (
+        model.entrainment_speed(first.motion, "screw"),
+        model.entrainment_speed(first.motion, "nut"),
+    )
     return KinematicsRun(
         case_name=case.name,
         level=lvl,
@@ -539,4 +555,6 @@ def run_kinematics(
         lubricated=model.lubricated,
         case=case,
         warnings=tuple(dict.fromkeys(messages + raised)),
+        nut_sharing=model.sharing(first.load_nut, entrainment[1], "nut"),
+        entrainment=entrainment,
     )

@@ -54,6 +54,7 @@ def _state_summary(
         film = fields.sharing.film
         out["film_thickness_central"] = value(film.central if film else math.nan, "m")
         out["film_thickness_minimum"] = value(film.minimum if film else math.nan, "m")
+        out["film_contact"] = "screw contact A at its film-borne load (JGP)"
         out["asperity_share"] = fields.sharing.psi
         out["peak_pressure"] = value(fields.contact.solution.peak_pressure, "Pa")
     return out
@@ -68,6 +69,13 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
         fields = run.fields if number == 1 else None
         entry = _state_summary(state, run.drags[number], balls, fields)
         nuts[f"nut{number}"] = entry
+    nut_film = run.nut_sharing.film if run.nut_sharing is not None else None
+    nuts["nut1"] |= {
+        "film_thickness_central_nut": value(nut_film.central if nut_film else math.nan, "m"),
+        "film_thickness_minimum_nut": value(nut_film.minimum if nut_film else math.nan, "m"),
+        "entrainment_speed_screw": value(run.entrainment[0], "m/s"),
+        "entrainment_speed_nut": value(run.entrainment[1], "m/s"),
+    }
     sweep = run.sweep
     return {
         "case": run.case_name,
@@ -294,6 +302,7 @@ def sections(run: KinematicsRun) -> list[Section]:
     """The report sections: ball state and loads, lubrication at A, drag torque."""
     case = run.case
     film = run.fields.sharing.film
+    nut_film = run.nut_sharing.film if run.nut_sharing is not None else None
     return [
         Section(
             "Ball kinematics and loads at the case speed",
@@ -323,7 +332,7 @@ def sections(run: KinematicsRun) -> list[Section]:
             ),
         ),
         Section(
-            "Lubrication at A (nut 1)",
+            "Lubrication at A and B (nut 1)",
             paragraphs=(
                 "Hamrock–Dowson film at the film-borne load, Johnson–Greenwood–Poon load "
                 "sharing with the Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
@@ -336,8 +345,12 @@ def sections(run: KinematicsRun) -> list[Section]:
                 Table(
                     ("quantity", "value"),
                     (
-                        ("h_c [nm]", film.central * 1e9 if film else "—"),
-                        ("h_min [nm]", film.minimum * 1e9 if film else "—"),
+                        ("u_e at A [m/s]", run.entrainment[0]),
+                        ("h_c at A [nm]", film.central * 1e9 if film else "—"),
+                        ("h_min at A [nm]", film.minimum * 1e9 if film else "—"),
+                        ("u_e at B [m/s]", run.entrainment[1]),
+                        ("h_c at B [nm]", nut_film.central * 1e9 if nut_film else "—"),
+                        ("h_min at B [nm]", nut_film.minimum * 1e9 if nut_film else "—"),
                         ("asperity share ψ", run.fields.sharing.psi),
                     ),
                 ),

@@ -67,6 +67,10 @@ NUT_WARNING_TEMPERATURE = 333.15
 above ambient)."""
 
 
+BOUNDARY_FILM_PARAMETER = 1.0
+"""Λ below which the contact runs in boundary lubrication (Hamrock 1994: < 1 boundary)."""
+
+
 class OperatingPointWarning(UserWarning):
     """The operating point is outside what the screw or the models are made for."""
 
@@ -91,13 +95,29 @@ class OperatingPoint(Presented):
     viscosity: float
     """Dynamic viscosity of the lubricant at the contact temperature [Pa s]."""
     film_thickness: float
-    """Central film thickness at the screw contact of nut 1 [m] (NaN when dry or at rest)."""
+    """Central EHL film thickness h_c at the screw contact A of a ball of the loaded nut (nut 1)
+    at its whole ball load [m] (NaN when dry or at rest); the name is kept for compatibility."""
     iterations: int
     field: ThermalField
     warnings: tuple[str, ...] = ()
+    film_thickness_minimum: float = math.nan
+    """Minimum EHL film thickness h_min at the same contact A [m] (NaN when dry or at rest)."""
+    film_thickness_nut: float = math.nan
+    """Central EHL film thickness h_c at the nut contact B of the same ball [m]."""
+    film_roughness: float = math.nan
+    """Composite RMS roughness σ_Λ of the screw raceway for Λ = h_c/σ_Λ (E6.6) [m]."""
+    viscosity_source: str = ""
+    """Where :attr:`viscosity` comes from: the named lubricant's law at the contact temperature
+    or the fixed ``medium.viscosity``."""
 
     analysis: ClassVar[str] = "operating-point"
     presentation: ClassVar[ModuleType] = operating_point_report
+
+    @property
+    def film_parameter(self) -> float:
+        """Λ = h_c/σ_Λ at the screw contact A (E6.6), whatever the friction model; NaN when dry
+        or at rest."""
+        return self.film_thickness / self.film_roughness
 
     @property
     def friction_torque(self) -> float:
@@ -168,20 +188,47 @@ def _viscosity_law(case: Case) -> Callable[[float], tuple[float | None, float | 
     return lambda temperature: law(temperature)[:2]
 
 
-def _warnings(case: Case, omega: float, nut: float, friction: FrictionTorque) -> list[str]:
-    """What the user must know about an operating point."""
+def viscosity_source(case: Case) -> tuple[str, str | None]:
+    """(where the operating point's viscosity comes from, a warning or None): the fixed
+    ``medium.viscosity`` wins over a named lubricant, which is then used for nothing else."""
+    medium = case.medium
+    named = medium.lubricant or case.kinematics.lubricant
+    if medium.viscosity is None:
+        if _library_lubricant(case) is None:
+            return "no lubricant data", None
+        return (
+            f"lubricant {named or 'of [medium] viscosity_40/100'}, at the contact temperature",
+            None,
+        )
+    given = "medium.viscosity, fixed at every temperature"
+    if named is None and medium.viscosity_40 is None:
+        return given, None
+    key = "medium.viscosity_40/100" if named is None else f"lubricant = {named!r}"
+    return given, (
+        f"medium.viscosity = {medium.viscosity:g} Pa s is given beside {key}: it wins and stays "
+        "fixed at every temperature; leave medium.viscosity out to follow the lubricant's "
+        "viscosity against temperature"
+    )
+
+
+def _warnings(
+    case: Case, omega: float, nut: float, friction: FrictionTorque, lam: float
+) -> list[str]:
+    """What the user must know about an operating point (``lam``: Λ at A, NaN when dry)."""
     out = speed_limit_messages(case, omega) if omega > 0.0 else []
     if nut > NUT_WARNING_TEMPERATURE:
         out.append(
             f"the nut runs at {nut - 273.15:.0f} °C, above "
             f"{NUT_WARNING_TEMPERATURE - 273.15:.0f} °C: check its cooling and mounting"
         )
-    film = friction.film_parameter
-    if film is not None and film < 1.0:
+    if lam < BOUNDARY_FILM_PARAMETER:
         out.append(
-            f"film parameter Λ = {film:.2g} < 1 at the screw contact: boundary lubrication, "
-            "outside the range of the EHL film and traction models"
+            f"film parameter Λ = h_c/σ = {lam:.2g} < {BOUNDARY_FILM_PARAMETER:g} at the screw "
+            "contact: boundary lubrication, outside the range of the EHL film and traction models"
         )
+    note = viscosity_source(case)[1]
+    if note is not None:
+        out.append(note)
     if friction.model != "catalogue" and omega > 0.0:
         params = ScrewParameters.from_case(case)
         g = params.geometry
@@ -289,14 +336,10 @@ def operating_point(
                 break
             contact += relaxation * new
             friction = trial
-        for text in _warnings(base, omega, nut, friction):
+        eta, alpha = law(contact)
+        films = _films(base, omega, eta, alpha)
+        for text in _warnings(base, omega, nut, friction, films[0] / films[3]):
             warnings.warn(text, OperatingPointWarning, stacklevel=2)
-    eta, alpha = law(contact)
-    params = ScrewParameters.from_case(base)
-    balls = ball_model(base)
-    if eta is not None:
-        balls = dataclasses.replace(balls, viscosity=eta, pressure_viscosity=alpha)
-    film = balls.film(params.loaded_nut.ball_load, entrainment_speed(params.geometry, omega))
     return OperatingPoint(
         case=base,
         speed=omega,
@@ -305,10 +348,37 @@ def operating_point(
         nut_temperature=nut,
         screw_temperature=screw,
         viscosity=math.nan if eta is None else eta,
-        film_thickness=film.central if film is not None else math.nan,
+        film_thickness=films[0],
         iterations=iterations,
         field=field,
         warnings=tuple(messages),
+        film_thickness_minimum=films[1],
+        film_thickness_nut=films[2],
+        film_roughness=films[3],
+        viscosity_source=viscosity_source(base)[0],
+    )
+
+
+def _films(
+    case: Case, omega: float, eta: float | None, alpha: float | None
+) -> tuple[float, float, float, float]:
+    """(h_c at A, h_min at A, h_c at B, σ_Λ) of a ball of the loaded nut at its whole ball load,
+    Level-0 motion, lubricant (η, α_p) [m]; films NaN when dry or at rest."""
+    params = ScrewParameters.from_case(case)
+    balls = ball_model(case)
+    if eta is not None:
+        balls = dataclasses.replace(balls, viscosity=eta, pressure_viscosity=alpha)
+    load = params.loaded_nut.ball_load
+    a, b = (
+        balls.film(load, entrainment_speed(params.geometry, omega, balls.entrainment, side), side)
+        for side in ("screw", "nut")
+    )
+    nan = math.nan
+    return (
+        a.central if a is not None else nan,
+        a.minimum if a is not None else nan,
+        b.central if b is not None else nan,
+        balls.surface.film_roughness,
     )
 
 

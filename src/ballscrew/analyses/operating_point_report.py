@@ -9,6 +9,7 @@ import xarray as xr
 
 from ballscrew.analyses import thermal_report
 from ballscrew.analyses.result import Figure, Section, Table, quantity
+from ballscrew.friction.ball_losses import regime
 
 if TYPE_CHECKING:
     from ballscrew.analyses.operating_point import OperatingPoint
@@ -30,7 +31,12 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         "screw_temperature": quantity(result.screw_temperature, "K"),
         "max_temperature": quantity(result.max_temperature, "K"),
         "viscosity": quantity(result.viscosity, "Pa*s"),
+        "viscosity_source": result.viscosity_source,
+        "viscosity_temperature": quantity(result.contact_temperature, "K"),
         "film_thickness": quantity(result.film_thickness, "m"),
+        "film_thickness_minimum": quantity(result.film_thickness_minimum, "m"),
+        "film_thickness_nut": quantity(result.film_thickness_nut, "m"),
+        "film_roughness": quantity(result.film_roughness, "m"),
         "iterations": result.iterations,
         "thermal_model": result.field.model,
     }
@@ -41,9 +47,9 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
     scalars["friction_model"] = friction.model
     scalars["friction_part"] = quantity(result.friction_part, "N*m")
     scalars["torque_parts"] = {k: quantity(v, "N*m") for k, v in friction.parts.items()}
-    if friction.film_parameter is not None:
-        scalars["film_parameter"] = quantity(friction.film_parameter, "")
-        scalars["lubrication_regime"] = friction.regime
+    if math.isfinite(result.film_parameter):
+        scalars["film_parameter"] = quantity(result.film_parameter, "")
+        scalars["lubrication_regime"] = regime(result.film_parameter)
     if friction.traction_coefficient is not None:
         scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
     return scalars
@@ -80,10 +86,11 @@ def _torque_section(result: OperatingPoint) -> Section:
     friction = result.friction
     rows = [(PART_NAMES.get(k, k), 1e3 * v) for k, v in friction.parts.items()]
     notes = [f"Friction model {friction.model!r}; the parts add up to the screw torque T."]
-    if friction.film_parameter is not None:
+    lam = result.film_parameter
+    if math.isfinite(lam):
         notes.append(
-            f"Film parameter Λ = {friction.film_parameter:.3g} at the screw contact of the "
-            f"loaded nut ({friction.regime} lubrication)"
+            f"Film parameter Λ = h_c/σ = {lam:.3g} at the screw contact of the "
+            f"loaded nut ({regime(lam)} lubrication)"
             + (
                 f", traction coefficient μ = {friction.traction_coefficient:.3g}."
                 if friction.traction_coefficient is not None
@@ -107,7 +114,12 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("screw temperature under the nut [°C]", result.screw_temperature - CELSIUS),
         ("largest temperature of the field [°C]", result.max_temperature - CELSIUS),
         ("lubricant viscosity at the contacts [mPa·s]", 1e3 * result.viscosity),
-        ("central film thickness, screw contact [nm]", 1e9 * result.film_thickness),
+        ("viscosity from", result.viscosity_source),
+        ("central film h_c, screw contact A of nut 1 [nm]", 1e9 * result.film_thickness),
+        ("minimum film h_min, screw contact A [nm]", 1e9 * result.film_thickness_minimum),
+        ("central film h_c, nut contact B [nm]", 1e9 * result.film_thickness_nut),
+        ("raceway roughness σ of Λ [nm]", 1e9 * result.film_roughness),
+        ("film parameter Λ = h_c/σ [-]", result.film_parameter),
         ("fixed-point iterations", result.iterations),
     ]
     coupled = Section(

@@ -107,7 +107,9 @@ def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: 
     data, else (or when thinner) the raceway's RMS roughness σ (the ball is smooth) [m]."""
     sigma = gaussian_joint(params, case.tcr, side).sigma
     lub = params.lubrication
-    speed = entrainment_speed(params.geometry, case.operating.speed)
+    speed = entrainment_speed(
+        params.geometry, case.operating.speed, case.kinematics.entrainment, side
+    )
     if not lub.lubricated or speed == 0.0:
         return sigma
     c = raceway.contact

@@ -20,6 +20,7 @@ from ballscrew.analyses import wear_report
 from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
+from ballscrew.analyses.roughness import roughness_input
 from ballscrew.analyses.wear_duty import duty_programme, warn_outside_range
 from ballscrew.analyses.wear_film import PartFilm, part_films, warn_full_film
 from ballscrew.budget import check_memory, contact_grid_bytes
@@ -164,6 +165,7 @@ def wear_setup(case: Case) -> WearSetup:
         e_star=e_star,
         hardness=hardness,
         cell_area=dx * dy,
+        roughness=roughness_input(case),
     )
     length = working_raceway_length(
         spec.stroke,
@@ -207,6 +209,7 @@ def wear_setup(case: Case) -> WearSetup:
         max_iterations=case.numerics.max_iterations,
         body_compliance=_preload_loop_compliance(case, params),
         film_model=params.lubrication.film_model,
+        entrainment=case.kinematics.entrainment,
         ball_classes=classes,
         torque_offset=spec.torque_offset,
     )

@@ -72,6 +72,13 @@ class KinematicsSpec(Model):
         description="named lubricant of the library (ballscrew.lubrication.LUBRICANT_LIBRARY) "
         "for medium values that are not given; the same as medium.lubricant; None = [medium] only",
     )
+    entrainment: Literal["rolling", "ball_centre"] = Field(
+        "rolling",
+        description="entrainment speed u_e of the EHL film, load sharing, traction and rolling "
+        "resistance (E2.8): 'rolling' = the surfaces' rolling speed past each contact; "
+        "'ball_centre' = the ball-centre speed V (the wear paper's simplification, about "
+        "1 + γ smaller)",
+    )
     boundary_friction: Annotated[
         float,
         Field(

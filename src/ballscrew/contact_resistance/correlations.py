@@ -31,7 +31,8 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.special import erfcinv
 
 from ballscrew.errors import InputError
-from ballscrew.fractal import profile_rms_roughness, validate_dimension
+from ballscrew.fractal import validate_dimension
+from ballscrew.lubrication import composite_roughness
 from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative_array, positive
 
@@ -92,12 +93,13 @@ def fractal_roughness(
 ) -> tuple[float, float]:
     """(σ, m) of a Majumdar–Bhushan profile over the band of wavelengths [l_c, L_u].
 
-    σ from the PSD integral (:func:`ballscrew.fractal.profile_rms_roughness` with ω_h = 1/l_c),
+    σ from the PSD integral (:func:`ballscrew.lubrication.composite_roughness`, the σ of the
+    film parameter),
     m from :func:`rms_profile_slope`. The band is a convention and must be stated with the
     result: L_u is the sampling length of the roughness measurement (σ grows as L_u^(2−D)) and
     l_c its shortest resolved wavelength (m grows as l_c^(1−D)).
     """
-    sigma = profile_rms_roughness(D, G, sampling_length, 1.0 / cutoff_length, gamma)
+    sigma = composite_roughness(D, G, sampling_length, cutoff_length, gamma)
     return sigma, rms_profile_slope(D, G, sampling_length, cutoff_length, gamma)
 
 

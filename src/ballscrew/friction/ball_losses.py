@@ -206,7 +206,7 @@ def _groove_slip_torque(
     """Screw torque of the differential slip at B of one ball (P_H/ω_s; dry at ω_s = 0), at the
     rolling rate about the axis across the groove, ω_r = Ω·Y_B (the nut is at rest)."""
     rate = heathcote_rate(unit.angular_velocity, unit.nut_contact)
-    u_e = abs(state.ball_speed)
+    u_e = model.entrainment_speed(state.motion, "nut")
     sharing = model.sharing(state.load_nut, u_e, "nut")
     law = traction_weights(model, sharing.psi, state.screw_speed if u_e > 0.0 else 0.0)
     power = differential_slip_power(
@@ -360,7 +360,7 @@ def ball_losses(
     returns = pushes + sum(_recirculation_torque(model, state, nut) for state in trains)
     film = 0.0
     if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
-        film = film_parameter(separation, model.surface.rms_height)
+        film = film_parameter(separation, model.surface.film_roughness)
     return BallLosses(
         sliding=float(sliding),
         groove_slip=float(groove),

@@ -259,9 +259,10 @@ def _level2_forces(model: BallModel, omega: float, s: int, x: FloatArray, dynami
         screw_contact=contact_axes(frame, c.direction_screw),
         nut_contact=contact_axes(frame, c.direction_nut),
     )
-    u_e = abs(v) if dynamic else 0.0
+    u_a = model.entrainment_speed(motion, "screw") if dynamic else 0.0
+    u_b = model.entrainment_speed(motion, "nut") if dynamic else 0.0
     q_a = c.load_screw
-    sharing = model.sharing(q_a, u_e) if q_a > 0 else LoadSharing(1.0, 0.0, 0.0, None)
+    sharing = model.sharing(q_a, u_a) if q_a > 0 else LoadSharing(1.0, 0.0, 0.0, None)
     if q_a > 0:
         a, b = model.hertz_semi_axes("screw", q_a)
         gx, gy, p = hertz_pressure_grid(a, b, q_a, model.traction_cells)
@@ -283,8 +284,8 @@ def _level2_forces(model: BallModel, omega: float, s: int, x: FloatArray, dynami
         traction = ContactTraction(_ZERO.copy(), _ZERO.copy(), 0.0, 0.0)
     # Rolling resistance on the ball, through its centre, against its motion over each raceway.
     relative_screw = v - float(motion.screw_velocity(frame.centre) @ frame.t)
-    f_ra = -math.copysign(model.rolling_resistance(q_a, u_e, "screw"), relative_screw) * frame.t
-    f_rb = -math.copysign(model.rolling_resistance(c.load_nut, u_e, "nut"), v) * frame.t
+    f_ra = -math.copysign(model.rolling_resistance(q_a, u_a, "screw"), relative_screw) * frame.t
+    f_rb = -math.copysign(model.rolling_resistance(c.load_nut, u_b, "nut"), v) * frame.t
     w_c = v * math.cos(g.lead_angle) / g.pitch_radius
     f_c = centrifugal_force(model.mass, g.pitch_radius, w_c) if dynamic else 0.0
     m_g = gyroscopic_moment(model.inertia, w_c, frame.axis, spin) if dynamic else _ZERO.copy()

@@ -21,6 +21,7 @@ from ballscrew.geometry import RacewayCurvature, ScrewGeometry, raceway_curvatur
 from ballscrew.geometry.screw import SIDES, Side
 from ballscrew.kinematics.frames import BallFrame, ball_frame
 from ballscrew.kinematics.inertia import ball_inertia, ball_mass
+from ballscrew.kinematics.motion import BallMotion
 from ballscrew.kinematics.sliding import deformed_radius
 from ballscrew.lubrication import (
     AsperitySurface,
@@ -58,6 +59,8 @@ class BallModel:
     lubricant_density: float = 870.0
     """ρ [kg/m³] for the kinematic viscosity ν = η₀/ρ of the ``skf`` traction law (GUESS: a
     mineral oil near 40 °C, the density the friction model takes without a named lubricant)."""
+    entrainment: str = "rolling"
+    """Rule for the entrainment speed u_e (``ballscrew.kinematics.motion.ENTRAINMENT_RULES``)."""
     film_model: str | FilmModel = "hamrock_dowson"
     """Registered film-thickness model (``ballscrew.lubrication.FILM_MODELS``), or one bound to
     the supply state (``ballscrew.lubrication.supply``)."""
@@ -113,6 +116,10 @@ class BallModel:
         """Harris R_d = 2 r_g r_b/(r_g + r_b) of the contact surface across the groove [m]."""
         return deformed_radius(self.geometry.groove_radius(contact), self.geometry.ball_radius)
 
+    def entrainment_speed(self, motion: BallMotion, contact: Side = "screw") -> float:
+        """u_e of ``contact`` for ``motion`` by the model's entrainment rule (E2.8) [m/s]."""
+        return motion.entrainment(contact, self.entrainment)
+
     def film(self, load: float, speed: float, contact: Side = "screw") -> FilmThickness | None:
         """EHL film carrying the whole load (None without lubricant or motion)."""
         if not self.lubricated or speed == 0.0 or load <= 0.0:
@@ -146,7 +153,7 @@ class BallModel:
     def _ehl_inputs(
         self, load: float, speed: float, contact: Side
     ) -> tuple[float, float, float, float, float, float, float]:
-        """(R_x, R_y, E′ = 2E*, η₀, α_p, u_e = |V|, Q) of contact ``contact``: the inputs of a
+        """(R_x, R_y, E′ = 2E*, η₀, α_p, u_e, Q) of contact ``contact``: the inputs of a
         film model (E6.1) and of the rolling resistance (E3.4)."""
         c = self.curvature(contact)
         return (

@@ -73,8 +73,9 @@ def ball_drag(model: BallModel, state: BallState) -> BallDrag:
     """Drag of one ball in ``state`` (any level); zero for an unloaded ball.
 
     Levels 0/1: traction (E3.3) on the Hertz grid at Q_A with the state's kinematics and the JGP
-    share at u_e = V, rolling forces (E3.4) at A and B. Level 2: the balance's own forces. At
-    ω_s = 0 the limit ω_s → 0⁺ is returned (dry contact, directions of a slowly turning screw).
+    share at the entrainment speed u_e (E2.8), rolling forces (E3.4) at A and B. Level 2: the
+    balance's own forces. At ω_s = 0 the limit ω_s → 0⁺ is returned (dry contact, directions of
+    a slowly turning screw).
     """
     frame = model.frame
     if state.load_screw <= 0.0:
@@ -90,7 +91,7 @@ def ball_drag(model: BallModel, state: BallState) -> BallDrag:
             angle_nut=state.angle_nut,
         )
     omega = motion.screw_speed
-    u_e = abs(state.ball_speed)
+    u_e = model.entrainment_speed(state.motion, "screw")
     if state.traction_screw is not None:
         traction = state.traction_screw
         psi = state.sharing.psi if state.sharing is not None else 1.0
@@ -117,7 +118,8 @@ def ball_drag(model: BallModel, state: BallState) -> BallDrag:
         )
         relative = motion.ball_speed - float(motion.screw_velocity(frame.centre) @ frame.t)
         f_a = model.rolling_resistance(state.load_screw, u_e, "screw")
-        f_b = model.rolling_resistance(state.load_nut, u_e, "nut")
+        u_b = model.entrainment_speed(state.motion, "nut")
+        f_b = model.rolling_resistance(state.load_nut, u_b, "nut")
         rolling_screw = -np.copysign(f_a, relative) * frame.t
         rolling_nut = -np.copysign(f_b, motion.ball_speed) * frame.t
     v_screw_a = motion.screw_velocity(motion.screw_contact.origin)

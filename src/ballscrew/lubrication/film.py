@@ -110,8 +110,9 @@ def hamrock_dowson(
     printed in the paper's abstract (J. Lubr. Technol. 99(2):264). ``rx`` along the entrainment
     direction, ``ry`` across it [m]; ``e_prime`` = E′ = 2E* [Pa]; ``viscosity`` η₀ [Pa s];
     ``pressure_viscosity`` α_p [1/Pa]; ``entrainment_speed`` u_e [m/s] (mean rolling speed; a
-    ball screw: u_e = V, E2.8); ``load`` Q_f [N], the load the film carries. u_e = 0 gives a
-    zero film. Q_f → 0 makes the film grow without bound (W^−0.067); Q_f = 0 is rejected.
+    ball screw: the rolling speed of the contact, E2.8); ``load`` Q_f [N], the load the film
+    carries. u_e = 0 gives a zero film. Q_f → 0 makes the film grow without bound (W^−0.067);
+    Q_f = 0 is rejected.
 
     Contact A of the reference screw of ``examples/wear_step_stress.toml`` (R_x = 2.820 mm, R_y =
     34.93 mm, η₀ = 0.06 Pa s, α_p = 2.1e-8 1/Pa, u_e = 0.09333 m/s, Q = 39.41 N): h_c = 53.30 nm,

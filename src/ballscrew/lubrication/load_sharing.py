@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.errors import InputError
+from ballscrew.fractal import majumdar_bhushan as mb
 from ballscrew.fractal import yan_komvopoulos as yk
 from ballscrew.lubrication.film import (
     FilmModel,
@@ -33,12 +34,26 @@ __all__ = [
     "AsperitySurface",
     "LoadSharing",
     "asperity_pressure",
+    "composite_roughness",
     "load_sharing_residual",
     "share_load",
     "share_loads",
 ]
 
 _T_MIN = math.log(1e-300)
+
+
+def composite_roughness(
+    D: float, G: float, sampling_length: float, cutoff_length: float, gamma: float = 1.5
+) -> float:
+    """RMS roughness σ of a raceway for the film parameter Λ = h/σ (E6.6), m.
+
+    The Majumdar–Bhushan (1990) profile (D, G) over the wavelengths [l_c, L_u] of a roughness
+    measurement, (F3): σ² = G^(2(D−1)) (L_u^(4−2D) − l_c^(4−2D)) / (2 ln γ (4 − 2D)). The
+    ball is smooth beside the raceway, so this is the composite √(σ₁² + σ₂²) of the contact
+    (Tallian 1967). The same σ is the one of the TCR correlations and of their film path.
+    """
+    return mb.profile_rms_roughness(D, G, sampling_length, 1.0 / cutoff_length, gamma)
 
 
 @dataclass(frozen=True)
@@ -58,7 +73,11 @@ class AsperitySurface:
     gamma: float = 1.5
     """W-M frequency density parameter γ."""
     sigma: float | None = None
-    """RMS height σ [m]; None = (E5.3) with the sampling length L_s = √ΔA."""
+    """RMS height σ [m] of the asperities in one cell; None = (E5.3) with the sampling length
+    L_s = √ΔA."""
+    roughness: float | tuple[float, float] | None = None
+    """Composite RMS roughness σ_Λ of the film parameter Λ = h/σ_Λ (E6.6): a measured σ [m], or
+    the band (L_u, l_c) [m] of the roughness measurement for (F3); None = :attr:`rms_height`."""
 
     @cached_property
     def rms_height(self) -> float:
@@ -66,6 +85,17 @@ class AsperitySurface:
         if self.sigma is not None:
             return float(self.sigma)
         return yk.rms_height(self.Ds, self.G, math.sqrt(self.cell_area), self.gamma)
+
+    @cached_property
+    def film_roughness(self) -> float:
+        """σ_Λ of the film parameter (E6.6), m: :func:`composite_roughness` of the profile
+        (D = Ds − 1, G) over the band :attr:`roughness`, a measured σ as given, or
+        :attr:`rms_height` without either."""
+        if self.roughness is None:
+            return self.rms_height
+        if isinstance(self.roughness, tuple):
+            return composite_roughness(self.Ds - 1.0, self.G, *self.roughness, gamma=self.gamma)
+        return float(self.roughness)
 
     def pressure(self, separation: ArrayLike) -> NDArray[np.float64]:
         """Mean asperity pressure F_asp,cell(a_l(h))/ΔA at mean-plane separation h, (E6.3), Pa."""

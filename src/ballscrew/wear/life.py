@@ -8,10 +8,11 @@ programme (theory manual, *Wear*):
    F_2 = 0 and no wear from that nut).
 2. For each screw flank s = ±1 and each nut force: ball load Q = F/(Z sinβ cosλ) (E1.6), the
    Polonsky–Keer pressure on the fixed grid over the worn gap g_0 + h_s(y) (E8.5), warm-started
-   from the previous pressure of the same flank and nut; the JGP asperity share ψ at u_e = V
-   (E2.4, E2.8, E6.4) with A_n = the loaded cells' area and ΔA = the grid cell; the sliding speed
-   of (E2.7) with the curvature term; the cell wear rates of Model A or C (E7.2, E7.3); strips
-   (E8.1), Z balls over L_w (E8.2–E8.3), reciprocation ½ F_1 + ½ F_2 (E8.4).
+   from the previous pressure of the same flank and nut; the JGP asperity share ψ at the
+   entrainment speed u_e (E2.4, E2.8, E6.4) with A_n = the loaded cells' area and ΔA = the grid
+   cell; the sliding speed of (E2.7) with the curvature term; the cell wear rates of Model A or
+   C (E7.2, E7.3); strips (E8.1), Z balls over L_w (E8.2–E8.3), reciprocation ½ F_1 + ½ F_2
+   (E8.4).
 3. Explicit step ΔN = min(max_depth_step / max_j ḣ_j, revolutions to the next level end or
    torque sample); h_s += ḣ_s ΔN.
 4. Preload from the largest depth (E1.13) with C_a of the Hertz constants (E1.8); drag torque

@@ -54,6 +54,8 @@ class WearSetup:
     film_model: str | FilmModel = "hamrock_dowson"
     """Film-thickness model: a registered name (``ballscrew.lubrication.FILM_MODELS``) or that
     model corrected for the supply state and inlet heating (``ballscrew.lubrication.supply``)."""
+    entrainment: str = "rolling"
+    """Entrainment-speed rule of the film (``ballscrew.kinematics.motion.ENTRAINMENT_RULES``)."""
     body_compliance: float = 0.0
     """c_b of shaft and nut body in the preload loop, per nut [m/N] (0: rigid bodies)."""
     ball_classes: tuple[tuple[float, tuple[LoadClasses, LoadClasses]], ...] = ()

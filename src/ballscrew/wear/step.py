@@ -18,6 +18,8 @@ import numpy as np
 from ballscrew.budget import check_memory, contact_batch_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.geometry import ScrewGeometry
+from ballscrew.geometry.screw import Side
+from ballscrew.kinematics.motion import ball_motion
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.lubrication import share_loads
 from ballscrew.wear.profile import worn_gap
@@ -60,17 +62,18 @@ class FlankRate:
     worn surface); None when dry or at rest."""
 
 
-def entrainment_speed(geometry: ScrewGeometry, screw_speed: float) -> float:
-    """u_e = V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ), (E2.4), (E2.8), m/s (REF 100 rpm: 0.09333)."""
-    lam, beta = geometry.lead_angle, geometry.contact_angle
-    return (
-        0.5
-        * screw_speed
-        * (
-            geometry.pitch_radius / math.cos(lam)
-            - geometry.ball_radius * math.cos(beta) * math.cos(lam)
-        )
-    )
+def entrainment_speed(
+    geometry: ScrewGeometry, screw_speed: float, rule: str = "rolling", contact: Side = "screw"
+) -> float:
+    """Entrainment speed u_e of ``contact`` at the Level-0 motion (E2.4), (E2.8), m/s, signed
+    as ω_s.
+
+    ``rule`` ``"rolling"``: the rolling speed of the surfaces past the contact
+    (:meth:`ballscrew.kinematics.motion.BallMotion.entrainment_speed`; REF 100 rpm: 0.1037);
+    ``"ball_centre"``: the ball-centre speed V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ) (0.09333).
+    """
+    motion = ball_motion(geometry, abs(screw_speed))
+    return math.copysign(motion.entrainment(contact, rule), screw_speed)
 
 
 @dataclass(frozen=True)
@@ -150,7 +153,12 @@ def _asperity_shares(
         eta, alpha = setup.lubricant(c.level)
         if eta is not None and alpha is not None:
             surface = setup.surface_at(float(np.max(c.depth)))
-            key = (surface, eta, alpha, entrainment_speed(setup.geometry, c.speed))
+            key = (
+                surface,
+                eta,
+                alpha,
+                entrainment_speed(setup.geometry, c.speed, setup.entrainment),
+            )
             groups.setdefault(key, []).append(i)
     films: list[tuple[float, float | None]] = [(1.0, None)] * len(contacts)
     for (surface, eta, alpha, speed), group in groups.items():
@@ -167,7 +175,7 @@ def _asperity_shares(
             film_factor=setup.spec.film_factor,
         )
         for i, share in zip(group, shares, strict=True):
-            film = None if share.film is None else share.separation / surface.rms_height
+            film = None if share.film is None else share.separation / surface.film_roughness
             films[i] = (share.psi, film)
     return films
 
