@@ -20,6 +20,7 @@ from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
+    PCG_HINT,
     PRECISIONS,
     SOLVER,
     _finish,
@@ -144,7 +145,8 @@ def solve_normal_batch(
         )
         if not iterate.converged and raise_on_failure:
             raise ConvergenceError(
-                f"{SOLVER} (contact {b} of the batch)", iterate.iterations, iterate.residual, tol
-            )
+                f"{SOLVER} (contact {b} of the batch)", iterate.iterations, iterate.residual, tol,
+                PCG_HINT,
+            )  # fmt: skip
         results.append(_finish(iterate, problem, raise_on_failure))
     return tuple(results)
