@@ -38,3 +38,7 @@ class ConvergenceError(BallscrewError, RuntimeError):
             f"{solver} did not converge: residual {residual:.3e} > tolerance {tolerance:.1e} "
             f"after {iterations} iterations" + (f"; {hint}" if hint else "")
         )
+
+
+class ImplausibleValueWarning(UserWarning):
+    """A value is valid but physically implausible (a unit is likely missing)."""

@@ -28,7 +28,12 @@ from typing import Any
 import numpy as np
 
 from ballscrew.backend import array_module, blas_single_thread
-from ballscrew.contact._validation import finite_grid, integer_at_least, positive
+from ballscrew.contact._validation import (
+    composite_modulus_checked,
+    gap_grid,
+    integer_at_least,
+    positive,
+)
 from ballscrew.contact.convolution import DCFFTOperator
 from ballscrew.contact.preconditioned import solve_batch
 from ballscrew.contact.result import ContactResult
@@ -295,10 +300,12 @@ def _problem(
     max_iterations: int,
     operator: DCFFTOperator | None,
 ) -> _Problem:
-    """Check the inputs (InputError naming the argument) and find the grid's DC-FFT operator."""
+    """Check the inputs (InputError naming the argument; the memory budget before anything is
+    allocated) and find the grid's DC-FFT operator."""
     xp = array_module(gap)
-    h = finite_grid("gap", gap, xp)
-    dx, dy, e_star = positive("dx", dx), positive("dy", dy), positive("e_star", e_star)
+    h = gap_grid("gap", gap, xp)
+    dx, dy = positive("dx", dx), positive("dy", dy)
+    e_star = composite_modulus_checked("e_star", e_star, stacklevel=4)
     tol = positive("tol", tol)
     max_iterations = integer_at_least("max_iterations", max_iterations, 1)
     if operator is None:
