@@ -219,8 +219,9 @@ def sections(result: BallContacts) -> list[Section]:
                 f"raceway plus discretisation. CG iterations: {iterations}. The numerical "
                 "semi-axes are half the distance of the contact edges, each extrapolated "
                 "between cells from the square of the pressure (linear to zero at a smooth "
-                f"edge); half-cells {cells}. On Hertz's own gap they are within 0.4 % of "
-                "Hertz's semi-axes at 64 cells across.",
+                f"edge), which places them to a fraction of the half-cells ({cells}); on "
+                "Hertz's own gap they are within 0.4 % of Hertz's semi-axes at 64 cells "
+                "across.",
             ),
             tables=(
                 Table(

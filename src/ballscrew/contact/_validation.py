@@ -71,7 +71,7 @@ def gap_grid(name: str, array: Any, xp: ModuleType, ndim: int = 2) -> Any:
             name, f"an array of {dtype}", "a float array of gaps in metres (integers hold no µm)"
         )
     shape = tuple(array.shape) if hasattr(array, "shape") else np.shape(array)
-    if len(shape) == ndim:  # else finite_grid refuses it
+    if len(shape) == ndim and all(shape):  # else finite_grid refuses it
         count = shape[0] if ndim == 3 else 1
         nx, ny = shape[-2:]
         what = f"{count} normal contact solve{'s' * (count > 1)} on {nx} × {ny} cells"
