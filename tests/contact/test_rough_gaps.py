@@ -7,7 +7,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscrew.contact import cell_centres, hertz, solve_normal
+from ballscrew.contact import (
+    cell_centres,
+    hertz,
+    solve_normal,
+    solve_normal_batch,
+    solve_normal_displacement,
+)
 from ballscrew.errors import ConvergenceError
 from ballscrew.surface import read_profile
 
@@ -69,6 +75,24 @@ def test_default_solver_converges_on_random_roughness(rq, seed):
 def test_default_solver_converges_on_a_rough_gap_of_a_finer_grid():
     """The cycling was worse on finer grids (pk 81 iterations, pcg residual 1.8 at 128²)."""
     assert assert_agree(*profile_gap(128)) <= 80
+
+
+def test_rough_gaps_under_displacement_control_and_in_a_batch():
+    """The re-entry serves all paths: displacement control at pk's approach gives pk's load and
+    pressure; a batch of three rough gaps with their own cells equals pk contact by contact."""
+    gaps = [profile_gap(), random_gap(0.2e-6, 1), random_gap(0.05e-6, 0)]
+    plain = [solve_normal(*g, E_STAR, LOAD, method="pk") for g in gaps]
+    for g, reference in zip(gaps, plain, strict=True):
+        result = solve_normal_displacement(*g, E_STAR, reference.approach, max_iterations=400)
+        assert result.load == pytest.approx(LOAD, rel=1e-6)
+        peak = reference.pressure.max()
+        np.testing.assert_allclose(result.pressure, reference.pressure, atol=1e-6 * peak)
+    stack = np.stack([g[0] for g in gaps])
+    cells = [g[1] for g in gaps], [g[2] for g in gaps]
+    batch = solve_normal_batch(stack, *cells, E_STAR, [LOAD] * 3, max_iterations=400)
+    for result, reference in zip(batch, plain, strict=True):
+        peak = reference.pressure.max()
+        np.testing.assert_allclose(result.pressure, reference.pressure, atol=1e-6 * peak)
 
 
 def test_a_pcg_that_does_not_converge_names_its_residual_and_suggests_pk():
