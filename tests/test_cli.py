@@ -51,7 +51,7 @@ def test_contact_writes_a_complete_results_folder(tmp_path, example, request):
         assert fields["screw_x"].attrs["units"] == "m"
     html = (out / "report.html").read_text()
     assert "data:image/png;base64," in html and "Hertz" in html
-    assert "good to half a cell (screw " in html  # '+0.000 %' semi-axes are grid-limited
+    assert "extrapolated between cells" in html and "half-cells (screw " in html
 
 
 BAD_EDITS = [

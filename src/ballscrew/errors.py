@@ -27,12 +27,18 @@ class InputError(BallscrewError, ValueError):
 class ConvergenceError(BallscrewError, RuntimeError):
     """An iterative solver stopped before reaching its tolerance."""
 
-    def __init__(self, solver: str, iterations: int, residual: float, tolerance: float) -> None:
+    def __init__(
+        self, solver: str, iterations: int, residual: float, tolerance: float, hint: str = ""
+    ) -> None:
         self.solver = solver
         self.iterations = iterations
         self.residual = residual
         self.tolerance = tolerance
         super().__init__(
             f"{solver} did not converge: residual {residual:.3e} > tolerance {tolerance:.1e} "
-            f"after {iterations} iterations"
+            f"after {iterations} iterations" + (f"; {hint}" if hint else "")
         )
+
+
+class ImplausibleValueWarning(UserWarning):
+    """A value is valid but physically implausible (a unit is likely missing)."""

@@ -52,14 +52,9 @@ class RacewayContact:
 
     @property
     def semi_axes(self) -> tuple[float, float]:
-        """Half-extents of the loaded cells along x and y [m] (± half a cell)."""
-        loaded = self.solution.pressure > 0
-        rows = np.flatnonzero(loaded.any(axis=1))
-        cols = np.flatnonzero(loaded.any(axis=0))
-        return (
-            0.5 * (rows[-1] - rows[0] + 1) * self.solution.dx,
-            0.5 * (cols[-1] - cols[0] + 1) * self.solution.dy,
-        )
+        """Half-widths of the contact along x and y, edges interpolated between cells [m]
+        (:attr:`ballscrew.contact.ContactResult.semi_axes`)."""
+        return self.solution.semi_axes
 
 
 @dataclass(frozen=True)

@@ -217,9 +217,11 @@ def sections(result: BallContacts) -> list[Section]:
                 f"{case.numerics.gap_model} raceway gap. Hertz: exact elliptical solution of "
                 "the quadratic gap. The difference is the non-Hertzian effect of the helical "
                 f"raceway plus discretisation. CG iterations: {iterations}. The numerical "
-                "semi-axes are the half-extents of the loaded cells, good to half a cell "
-                f"({cells}); on a grid sized to the Hertz ellipse a difference below that is "
-                "not resolved.",
+                "semi-axes are half the distance of the contact edges, each extrapolated "
+                "between cells from the square of the pressure (linear to zero at a smooth "
+                f"edge), which places them to a fraction of the half-cells ({cells}); on "
+                "Hertz's own gap they are within 0.4 % of Hertz's semi-axes at 64 cells "
+                "across.",
             ),
             tables=(
                 Table(

@@ -11,6 +11,7 @@ import math
 from collections.abc import Callable
 
 from ballscrew.case.models import Case
+from ballscrew.errors import ImplausibleValueWarning
 from ballscrew.units import DISPLAY_UNITS, format_number, format_quantity
 
 __all__ = [
@@ -35,10 +36,6 @@ MAX_PLAUSIBLE_DN = 200_000.0
 """Largest d·n = pitch diameter [mm] × speed [rpm] of any ball screw (standard nuts are rated
 50 000–70 000, the makers' high-speed series 120 000–160 000 and up to about 200 000, e.g.
 THK's and NSK's high-speed catalogues). A speed above it was most likely meant in rpm."""
-
-
-class ImplausibleValueWarning(UserWarning):
-    """A case value is valid but physically implausible (a unit is likely missing)."""
 
 
 def unit_hint(value: float, kind: str, plausible: Callable[[float], bool]) -> str:

@@ -36,7 +36,7 @@ from ballscrew.contact.polonsky_keer import (
     solve_normal,
     solve_normal_displacement,
 )
-from ballscrew.contact.result import ContactResult
+from ballscrew.contact.result import ContactResult, contact_semi_axes
 
 __all__ = [
     "DEFAULT_BOX_FACTOR",
@@ -51,6 +51,7 @@ __all__ = [
     "GridContactResult",
     "HertzContact",
     "cell_centres",
+    "contact_semi_axes",
     "direct_convolution",
     "grid_cells",
     "hamrock_brewe",

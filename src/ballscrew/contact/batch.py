@@ -15,11 +15,18 @@ from typing import Any
 import numpy as np
 
 from ballscrew.backend import array_module
-from ballscrew.contact._validation import finite_grid, integer_at_least, positive
+from ballscrew.contact._validation import (
+    composite_modulus_checked,
+    finite_grid,
+    gap_grid,
+    integer_at_least,
+    positive,
+)
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
+    PCG_HINT,
     PRECISIONS,
     SOLVER,
     _finish,
@@ -47,11 +54,14 @@ def _per_contact(field: str, values: Any, batch: int, unit: str) -> np.ndarray:
 def _cells(dx: Any, dy: Any, e_star: Any, batch: int) -> tuple[Any, Any, Any]:
     """dx, dy [m] and E* [Pa] as three floats if all contacts share them, else three (B,) arrays."""
     if all(np.ndim(v) == 0 for v in (dx, dy, e_star)):
-        return positive("dx", dx, "m"), positive("dy", dy, "m"), positive("e_star", e_star)
+        e_star = composite_modulus_checked("e_star", e_star, stacklevel=4)
+        return positive("dx", dx, "m"), positive("dy", dy, "m"), e_star
     cells = [
         _per_contact(field, value, batch, unit)
         for field, value, unit in (("dx", dx, "m"), ("dy", dy, "m"), ("e_star", e_star, "Pa"))
     ]
+    for value in set(cells[2].tolist()):
+        composite_modulus_checked("e_star", value, stacklevel=4)
     if all(bool((v == v[0]).all()) for v in cells):  # one operator serves all
         return float(cells[0][0]), float(cells[1][0]), float(cells[2][0])
     return cells[0], cells[1], cells[2]
@@ -104,7 +114,7 @@ def solve_normal_batch(
         One result per contact, in the order of the stack.
     """
     xp = array_module(gaps)
-    h = finite_grid("gaps", gaps, xp, ndim=3)
+    h = gap_grid("gaps", gaps, xp, ndim=3)
     batch, nx, ny = h.shape
     dx, dy, e_star = _cells(dx, dy, e_star, batch)
     tol = positive("tol", tol)
@@ -144,7 +154,8 @@ def solve_normal_batch(
         )
         if not iterate.converged and raise_on_failure:
             raise ConvergenceError(
-                f"{SOLVER} (contact {b} of the batch)", iterate.iterations, iterate.residual, tol
-            )
+                f"{SOLVER} (contact {b} of the batch)", iterate.iterations, iterate.residual, tol,
+                PCG_HINT,
+            )  # fmt: skip
         results.append(_finish(iterate, problem, raise_on_failure))
     return tuple(results)

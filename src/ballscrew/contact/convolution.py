@@ -150,8 +150,6 @@ class DCFFTStack:
         self.operators = tuple(operators)
         first = self.operators[0]
         self.shape, self.xp, self.dtype = first.shape, first.xp, first.dtype
-        self.self_coefficient = np.array([op.self_coefficient for op in self.operators])
-        """(B,) K(0, 0) of each contact [m/Pa]."""
         if kernel_pairs is None and self.xp is not np:
             kernel_pairs = self.xp.stack([op._kernel_pairs for op in self.operators])
         self._kernel_pairs = kernel_pairs  # CuPy: (B, 2nx, 2ny + 2), one batched multiply

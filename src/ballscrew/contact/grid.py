@@ -27,6 +27,7 @@ from ballscrew.contact.hertz import HertzContact, hertz
 from ballscrew.contact.polonsky_keer import (
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
+    PCG_HINT,
     SOLVER,
     solve_normal,
 )
@@ -339,7 +340,7 @@ def _solve_round(
             if estimate is not grids[i].estimate:
                 where.append(f"extra load {estimate.load:.4g} N")
             solver = f"{SOLVER} ({', '.join(where)})" if where else SOLVER
-            raise ConvergenceError(solver, solution.iterations, solution.residual, tol)
+            raise ConvergenceError(solver, solution.iterations, solution.residual, tol, PCG_HINT)
     start = 0
     for k, g, x, y, gap in zip(keys, grids, xs, ys, gaps, strict=True):
         mine = solutions[start : start + 1 + len(g.extra)]

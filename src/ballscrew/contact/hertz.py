@@ -14,7 +14,7 @@ from scipy.optimize import brentq
 from scipy.special import elliprd, elliprf
 
 from ballscrew.backend import array_module
-from ballscrew.contact._validation import positive
+from ballscrew.contact._validation import composite_modulus_checked, positive
 
 __all__ = ["HertzContact", "hamrock_brewe", "hertz"]
 
@@ -94,7 +94,7 @@ def hertz(rx: float, ry: float, e_star: float, load: float) -> HertzContact:
     load [N]. The semi-axis ``a`` lies along x.
     """
     rx, ry = positive("rx", rx), positive("ry", ry)
-    e_star, load = positive("e_star", e_star), positive("load", load)
+    e_star, load = composite_modulus_checked("e_star", e_star), positive("load", load)
     if rx == ry:
         radius = rx
         a = (3.0 * load * radius / (4.0 * e_star)) ** (1.0 / 3.0)
@@ -127,7 +127,7 @@ def hamrock_brewe(rx: float, ry: float, e_star: float, load: float) -> HertzCont
     The major axis D_y lies along the larger radius; ``a`` of the result lies along x.
     """
     rx, ry = positive("rx", rx), positive("ry", ry)
-    e_star, load = positive("e_star", e_star), positive("load", load)
+    e_star, load = composite_modulus_checked("e_star", e_star), positive("load", load)
     r_small, r_large = sorted((rx, ry))
     alpha_r = r_large / r_small
     e_prime = 2.0 * e_star

@@ -28,7 +28,12 @@ from typing import Any
 import numpy as np
 
 from ballscrew.backend import array_module, blas_single_thread
-from ballscrew.contact._validation import finite_grid, integer_at_least, positive
+from ballscrew.contact._validation import (
+    composite_modulus_checked,
+    gap_grid,
+    integer_at_least,
+    positive,
+)
 from ballscrew.contact.convolution import DCFFTOperator
 from ballscrew.contact.preconditioned import solve_batch
 from ballscrew.contact.result import ContactResult
@@ -44,6 +49,8 @@ __all__ = [
 ]
 
 SOLVER = "Polonsky-Keer conjugate gradient"
+PCG_HINT = 'try method="pk" (the plain Polonsky-Keer CG) or a larger max_iterations'
+"""What a :class:`~ballscrew.errors.ConvergenceError` of the preconditioned solver suggests."""
 DEFAULT_METHOD = "pcg"
 """Solver of :func:`solve_normal` (a name of :data:`NORMAL_SOLVERS`)."""
 PRECISIONS = {"float64": np.float64, "mixed": np.float32}
@@ -293,10 +300,12 @@ def _problem(
     max_iterations: int,
     operator: DCFFTOperator | None,
 ) -> _Problem:
-    """Check the inputs (InputError naming the argument) and find the grid's DC-FFT operator."""
+    """Check the inputs (InputError naming the argument; the memory budget before anything is
+    allocated) and find the grid's DC-FFT operator."""
     xp = array_module(gap)
-    h = finite_grid("gap", gap, xp)
-    dx, dy, e_star = positive("dx", dx), positive("dy", dy), positive("e_star", e_star)
+    h = gap_grid("gap", gap, xp)
+    dx, dy = positive("dx", dx), positive("dy", dy)
+    e_star = composite_modulus_checked("e_star", e_star, stacklevel=4)
     tol = positive("tol", tol)
     max_iterations = integer_at_least("max_iterations", max_iterations, 1)
     if operator is None:
@@ -322,11 +331,17 @@ def _initial_pressure(initial: Any, h: Any, xp: ModuleType) -> Any:
 
 
 def _finish(
-    state: _Iterate, problem: _Problem, raise_on_failure: bool, approach: float | None = None
+    state: _Iterate,
+    problem: _Problem,
+    raise_on_failure: bool,
+    approach: float | None = None,
+    method: str = DEFAULT_METHOD,
 ) -> ContactResult:
-    """Check convergence, recompute u = K ∗ p exactly, and collect the result."""
+    """Check convergence (the error of ``method`` "pcg" suggests "pk"), recompute u = K ∗ p
+    exactly, and collect the result."""
     if not state.converged and raise_on_failure:
-        raise ConvergenceError(SOLVER, state.iterations, state.residual, problem.tol)
+        hint = PCG_HINT if method == "pcg" else ""
+        raise ConvergenceError(SOLVER, state.iterations, state.residual, problem.tol, hint)
     h, p = problem.h, state.pressure
     u = problem.operator.apply(p) if state.displacement is None else state.displacement
     contact = p > 0.0
@@ -418,7 +433,7 @@ def solve_normal(
         p = _initial_pressure(initial, h, xp)
         p *= total / float(p.sum())
     state = solver(h, p, op, problem.tol, problem.max_iterations, total, bool(nested), dtype)
-    return _finish(state, problem, raise_on_failure)
+    return _finish(state, problem, raise_on_failure, method=method)
 
 
 def solve_normal_displacement(
@@ -451,9 +466,9 @@ def solve_normal_displacement(
     h_shifted = h - approach
     p = xp.maximum(-h_shifted, 0.0) if initial is None else _initial_pressure(initial, h, xp)
     if not float(p.sum()) > 0.0:  # No interference anywhere: the bodies do not touch.
-        return _finish(_Iterate(p, 0, 0.0, True), problem, raise_on_failure, approach)
+        return _finish(_Iterate(p, 0, 0.0, True), problem, raise_on_failure, approach, method)
     if initial is None:
         with _reductions_context(xp):
             p *= -float(xp.vdot(p, h_shifted)) / float(xp.vdot(p, op.apply(p)))
     state = solver(h_shifted, p, op, problem.tol, problem.max_iterations, None, False, dtype)
-    return _finish(state, problem, raise_on_failure, approach)
+    return _finish(state, problem, raise_on_failure, approach, method)

@@ -180,7 +180,11 @@ def _pcg(
     ``h`` = h − δ). Per contact and iteration (Polonsky & Keer 1999 with z in place of g):
     g = (u + h − ḡ)·[p > 0];  z = P(M ∗ g);  β = (g·z)/(g·z)_old (0 after a re-entry);
     t = z + β t;  r = K ∗ t;  τ = (g·t)/(r·t − r̄ Σt);  p ← max(p − τ t, 0);
-    cells with p = 0 and u + h < ḡ re-enter with p = (ḡ − u − h)/K(0, 0);  p ← p·total/Σp.
+    cells e with p = 0 and g = u + h − ḡ < 0 re-enter with p = −τ·min(M ∗ g_e, 0) (Polonsky &
+    Keer's Eq. 37, p = −τ g, with the preconditioned gap; τ = 1 if the step was 0, as M ≈ K⁻¹);
+    p ← p·total/Σp. The re-entry step 1/K(0, 0) of a lone cell, applied to hundreds of
+    neighbouring cells at once on a rough gap, overshoots by their mutual influence and was
+    measured to make the iterations cycle at Σ|Δp|/Σp ≈ 1 (docs/theory/contact.md).
     u ← (u − τ r)·total/Σp, recomputed as K ∗ p after an iteration that clipped or re-entered a
     cell (skipping that, and letting u drift, was measured to multiply the iterations by 1.3-40).
     Converged contacts leave the working stack; ``p`` is modified in place.
@@ -200,7 +204,6 @@ def _pcg(
     r, q, s, c, p_old = (xp.empty_like(pw) for _ in range(5))
     rho_old = np.ones(batch)
     conjugate = np.zeros(batch, dtype=bool)
-    lone_step = _per_contact(1.0 / operator.self_coefficient, xp)
     for iteration in range(1, max_iterations + 1):
         xp.add(u, hw, out=q)
         xp.greater(pw, 0.0, out=c)
@@ -235,9 +238,12 @@ def _pcg(
         xp.multiply(q, c, out=s)
         xp.minimum(s, 0.0, out=s)
         readmitted = _host(s.min(axis=(1, 2))) < 0.0
-        if readmitted.any():
-            s *= lone_step
-            pw -= s
+        if readmitted.any():  # p = −τ·min(M ∗ g, 0) on the re-entering cells (g < 0 there)
+            entry = preconditioner.apply(s, dtype)
+            entry *= s < 0.0
+            xp.minimum(entry, 0.0, out=entry)
+            entry *= _col(xp.asarray(np.where(tau > 0.0, tau, 1.0)))
+            pw -= entry
         conjugate = ~readmitted
         current = _host(_sums(pw))
         alive = current > 0.0
@@ -269,15 +275,9 @@ def _pcg(
             work, rho_old, conjugate = work[keep], rho_old[keep], conjugate[keep]
             totw = None if totw is None else totw[keep]
             operator, preconditioner = operator.take(keep), preconditioner.take(keep)
-            lone_step = _per_contact(1.0 / operator.self_coefficient, xp)
     else:
         p[xp.asarray(work)] = pw
     return p, iterations, residual, done
-
-
-def _per_contact(value: Any, xp: ModuleType) -> Any:
-    """A scalar as it is, a (B,) vector of one value per contact as a (B, 1, 1) column."""
-    return value if np.ndim(value) == 0 else _col(xp.asarray(value))
 
 
 def _host(a: Any) -> np.ndarray:
@@ -354,7 +354,7 @@ def _nested_start(h: Any, setting: _Setting, coarse: bool) -> tuple[Any, Any]:
     p = xp.zeros(h.shape)
     fine = p[:, 2 * rows.start : 2 * rows.stop, 2 * cols.start : 2 * cols.stop]
     fine[...] = _refine_axis(_refine_axis(state.pressure[:, rows, cols], 1), 2)
-    fine *= _col(xp.asarray(total) / _sums(fine))
+    fine *= _col(xp.asarray(total) / _sums(p))  # the whole grid: the bits of a contact alone
     return p, (state.iterations + state.coarse_work) / 4.0
 
 
