@@ -33,10 +33,11 @@ def test_without_film_path_every_loaded_nut_has_its_ball_path() -> None:
         assert path.micro == pytest.approx(nut.resistance, rel=1e-12)
         assert path.micro == pytest.approx(MICRO, rel=1e-9)
         assert path.constriction == pytest.approx(CONSTRICTION, rel=1e-9)
-        assert path.ball_path_without_film == path.resistance == path.without_film
+        assert path.without_film == path.ball_path_without_film
+        assert path.resistance == pytest.approx(path.ball_path_without_film, rel=1e-12)
     expected = 0.5 * (MICRO + CONSTRICTION)
     assert result.ball_path_without_film == pytest.approx(expected, rel=1e-9)
-    assert result.heat_path_resistance == result.ball_path_without_film
+    assert result.heat_path_resistance == pytest.approx(result.ball_path_without_film, rel=1e-12)
     assert result.ball_path_with_film is None
     summary = result.summary()
     assert summary["ball_path_with_film"] is None and summary["film_path"] is None

@@ -170,7 +170,8 @@ def test_option_off_keeps_the_chain() -> None:
     film (they were empty, and heat_path_resistance NaN, before both modes were given them)."""
     off, on = _tcr(0.0, "none"), _tcr(0.0, "meniscus")
     assert off.films == () and [p.film for p in off.heat_paths()] == [False, False]
-    assert off.heat_path_resistance == off.ball_path_without_film < math.inf
+    assert off.ball_path_without_film < math.inf
+    assert off.heat_path_resistance == pytest.approx(off.ball_path_without_film, rel=1e-12)
     assert on.resistance == off.resistance  # the micro TCR is not touched
     # at 0 kN both nuts carry their patch: each one's film lowers that nut's own path
     paths = on.heat_paths()
