@@ -190,22 +190,19 @@ def _row(fit: FractalFit) -> list[object]:
     ]
 
 
-def fields(result: SurfaceCharacterisation) -> dict[str, xr.Dataset]:
-    """The periodogram and the structure function that were fitted, with units."""
-    fit, data = result.fit, {}
+def fields(result: SurfaceCharacterisation) -> xr.Dataset:
+    """The periodogram (dimension ``frequency``) and the structure function (dimension
+    ``lag``) that were fitted, with units, in one dataset."""
+    fit, data, coords = result.fit, {}, {}
     if fit.spectrum is not None:
         f, s = fit.spectrum
-        data["spectrum"] = xr.Dataset(
-            {"psd": ("frequency", s, {"units": "m^3", "long_name": "one-sided PSD"})},
-            coords={"frequency": ("frequency", f, {"units": "1/m"})},
-        )
+        data["psd"] = ("frequency", s, {"units": "m^3", "long_name": "one-sided PSD"})
+        coords["frequency"] = ("frequency", f, {"units": "1/m"})
     if fit.structure is not None:
         lag, sf = fit.structure
-        data["structure_function"] = xr.Dataset(
-            {"structure_function": ("lag", sf, {"units": "m^2"})},
-            coords={"lag": ("lag", lag, {"units": "m"})},
-        )
-    return data
+        data["structure_function"] = ("lag", sf, {"units": "m^2"})
+        coords["lag"] = ("lag", lag, {"units": "m"})
+    return xr.Dataset(data, coords=coords)
 
 
 def figures(result: SurfaceCharacterisation) -> list[Figure]:

@@ -30,6 +30,9 @@ def _c(kelvin: float) -> float:
     return kelvin - CELSIUS
 
 
+_NOT_REACHED = "95 % of the steady rise is not reached within thermal.transient.duration"
+
+
 def summary(result: ThermalField) -> dict[str, Any]:
     """The scalars of a thermal analysis, each with its unit."""
     sol = result.solution
@@ -62,7 +65,7 @@ def summary(result: ThermalField) -> dict[str, Any]:
                 "z": value(s.z, "m"),
                 "steady": value(s.steady, "K"),
                 "final": value(s.final, "K"),
-                "time_to_95": value(s.time_to_95, "s"),
+                "time_to_95": value(s.time_to_95, "s", _NOT_REACHED),
             }
             for s in sensors
         ],
@@ -145,8 +148,8 @@ def summary(result: ThermalField) -> dict[str, Any]:
             "fraction_of_steady_rise": float(t.max_rise[-1] / result.max_temperature_rise)
             if result.max_temperature_rise > 0
             else None,
-            "time_to_95": value(result.time_to_95, "s"),
-            "elongation_time_to_95": value(result.elongation_time_to_95, "s"),
+            "time_to_95": value(result.time_to_95, "s", _NOT_REACHED),
+            "elongation_time_to_95": value(result.elongation_time_to_95, "s", _NOT_REACHED),
             "sensors": {s.name: value(s.final, "K") for s in sensors},
         }
     return summary
@@ -222,11 +225,15 @@ def fields(result: ThermalField) -> xr.Dataset:
         for row, (name, long_name) in enumerate(node_axes):
             data[name] = ("node", fe_mesh.mesh.p[row], {"units": "m", "long_name": long_name})
         data.update(
-            element_nodes=(("element", "corner"), fe_mesh.mesh.t.T),
+            element_nodes=(
+                ("element", "corner"),
+                fe_mesh.mesh.t.T,
+                {"units": "1", "long_name": "node numbers of each element"},
+            ),
             element_body=(
                 "element",
                 fe_mesh.body,
-                {"long_name": "0 = screw shaft, 1 = nut assembly"},
+                {"units": "1", "long_name": "0 = screw shaft, 1 = nut assembly"},
             ),
             temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),
         )

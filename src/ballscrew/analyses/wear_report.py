@@ -122,9 +122,9 @@ def summary(result: WearResult) -> dict[str, Any]:
     }
 
 
-def fields(result: WearResult) -> dict[str, xr.Dataset]:
-    """The datasets of the results folder: ``history.nc``."""
-    return {"history": history(result)}
+def fields(result: WearResult) -> xr.Dataset:
+    """The dataset of the results folder, ``history.nc``: :func:`history`."""
+    return history(result)
 
 
 def history(result: WearResult) -> xr.Dataset:
