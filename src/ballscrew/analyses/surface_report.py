@@ -11,7 +11,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain, pyplot
+from ballscrew.plotting import plain, pyplot, save_figure
 from ballscrew.surface.fit import FractalFit, SurfaceFit
 from ballscrew.surface.profile import Profile
 from ballscrew.surface.structure_function import band_limited_ratio
@@ -123,9 +123,7 @@ def psd_plot(fit: SurfaceFit, path: Path) -> Path:
     ax.set_title(f"PSD: D = {r.D:.4f}, G = {r.G:.3g} m, R² = {r.r_squared:.4f}", fontsize=10)
     ax.set_ylim(max(s[s > 0].min(), r.y.min() * 1e-4), s.max() * 10)
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
@@ -151,9 +149,7 @@ def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
         fontsize=10,
     )
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def profile_plot(profile: Profile, path: Path) -> Path:
@@ -170,9 +166,7 @@ def profile_plot(profile: Profile, path: Path) -> Path:
     ax.set_title(
         plain(f"{Path(profile.source).name or 'profile'} (first complete row)"), fontsize=10
     )
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _row(fit: FractalFit) -> list[object]:

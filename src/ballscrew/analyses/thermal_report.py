@@ -12,7 +12,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import label_box, legend_outside, plain, pyplot
+from ballscrew.plotting import label_box, legend_outside, plain, pyplot, save_figure
 from ballscrew.thermal.elongation import displacement_profile
 from ballscrew.thermal.mesh3d import circle_angles
 from ballscrew.units import format_number
@@ -343,9 +343,7 @@ def field_3d(result: ThermalField, path: Path) -> Path:
     axes[1].set_title("screw surface, unrolled", fontsize=9)
     fig.colorbar(image, ax=axes, label="steady temperature [°C]")
     fig.suptitle(plain(f"{result.case_name}: steady temperature (3-D model)"), fontsize=10)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def temperature_map(result: ThermalField, path: Path) -> Path:
@@ -405,9 +403,7 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
     axes[1].set_xlim((ring_lo - pad) * 1e3, (ring_hi + pad) * 1e3)
     axes[0].set_title(plain(f"{result.case_name}: steady temperature ({result.model} model)"))
     axes[1].set_title("around the nut (sensors circled)", fontsize=9)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def temperature_rise(result: ThermalField, path: Path) -> Path:
@@ -431,9 +427,7 @@ def temperature_rise(result: ThermalField, path: Path) -> Path:
     ax.set_title("Temperature rise from ambient (dashed: steady state)", fontsize=10)
     legend_outside(ax, fontsize=7)
     ax.grid(alpha=0.3)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def elongation_plot(result: ThermalField, path: Path) -> Path:
@@ -459,9 +453,7 @@ def elongation_plot(result: ThermalField, path: Path) -> Path:
     profile.set_xlabel("z [mm]")
     profile.set_ylabel("steady screw mean rise [K]", color="r")
     profile.grid(alpha=0.3)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _transient(sensor: SensorReading) -> tuple[object, str]:
