@@ -13,7 +13,7 @@ import xarray as xr
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import label_box, legend_outside, plain, pyplot, save_figure
-from ballscrew.thermal.elongation import displacement_profile
+from ballscrew.thermal.elongation import shaft_displacement
 from ballscrew.thermal.mesh3d import circle_angles
 from ballscrew.units import format_number
 
@@ -166,6 +166,7 @@ def fields(result: ThermalField) -> xr.Dataset:
         return {"units": "K", "long_name": long_name}
 
     alpha = problem.expansion
+    stations, displacement = shaft_displacement(disc.axis_z, sol.axis, alpha, problem.shaft_length)
     data: dict[str, Any] = {
         "axis_temperature": (
             "axis_z",
@@ -173,9 +174,13 @@ def fields(result: ThermalField) -> xr.Dataset:
             kelvin("steady cross-section mean temperature of the screw"),
         ),
         "axis_displacement": (
-            "axis_z",
-            displacement_profile(disc.axis_z, sol.axis, alpha),
-            {"units": "m", "long_name": "steady axial thermal displacement α∫ΔT̄ dz from z = 0"},
+            "displacement_z",
+            displacement,
+            {
+                "units": "m",
+                "long_name": "steady axial thermal displacement α∫ΔT̄ dz from z = 0; "
+                "at the end face z = L it is the elongation",
+            },
         ),
         "sensor_temperature_steady": (
             "sensor",
@@ -188,6 +193,11 @@ def fields(result: ThermalField) -> xr.Dataset:
     }
     coords: dict[str, Any] = {
         "axis_z": ("axis_z", disc.axis_z, {"units": "m", "long_name": "axial position"}),
+        "displacement_z": (
+            "displacement_z",
+            stations,
+            {"units": "m", "long_name": "axial position: the profile's stations and both ends"},
+        ),
         "sensor": ("sensor", [s.name for s in problem.sensors]),
     }
     t = sol.transient
