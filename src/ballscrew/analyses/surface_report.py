@@ -34,6 +34,11 @@ __all__ = [
 _NAMES = {"psd": "power spectrum (F2)", "structure_function": "structure function (F4)"}
 
 
+def _stderr(error: float | None) -> str:
+    """A standard error for the report's table: "–" when not given (None or NaN)."""
+    return "–" if error is None or not np.isfinite(error) else f"{error:.2g}"
+
+
 def _fit_summary(fit: FractalFit) -> dict[str, Any]:
     unit = "1/m" if fit.method == "psd" else "m"
     return {
@@ -47,6 +52,7 @@ def _fit_summary(fit: FractalFit) -> dict[str, Any]:
         },
         "D_standard_error": fit.D_stderr,
         "lnG_standard_error": fit.lnG_stderr,
+        **({"standard_error_reason": fit.stderr_reason} if fit.stderr_reason else {}),
         "r_squared": fit.r_squared,
         "points": fit.points,
         "profiles": fit.profiles,
@@ -176,8 +182,8 @@ def _row(fit: FractalFit) -> list[object]:
         fit.D,
         fit.surface_dimension,
         fit.G,
-        f"{fit.D_stderr:.2g}" if np.isfinite(fit.D_stderr) else "–",
-        f"{fit.lnG_stderr:.2g}" if np.isfinite(fit.lnG_stderr) else "–",
+        _stderr(fit.D_stderr),
+        _stderr(fit.lnG_stderr),
         f"{fit.fit_range[0]:.4g} – {fit.fit_range[1]:.4g} {unit}",
         fit.r_squared,
         fit.points,

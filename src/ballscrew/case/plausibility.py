@@ -14,10 +14,10 @@ from ballscrew.case.models import Case
 from ballscrew.units import DISPLAY_UNITS, format_number, format_quantity
 
 __all__ = [
+    "ENGINEERING_D",
+    "ENGINEERING_G",
     "MAX_PLAUSIBLE_DN",
     "NUT_LENGTH_FACTOR",
-    "PLAUSIBLE_D",
-    "PLAUSIBLE_G",
     "ImplausibleValueWarning",
     "implausible_values",
     "speed_hint",
@@ -39,13 +39,13 @@ MAX_PLAUSIBLE_DN = 200_000.0
 THK's and NSK's high-speed catalogues). A speed above it was most likely meant in rpm."""
 
 
-PLAUSIBLE_D = (1.2, 1.9)
+ENGINEERING_D = (1.2, 1.9)
 """Usual profile fractal dimension D of engineering surfaces. Majumdar and Bhushan (1990,
 1991) and Majumdar and Tien (1990) report about 1.3 to 1.8 for machined, ground, lapped and
 magnetic-media surfaces; the range is widened by 0.1 each side, as D near 1 or 2 is a
 degenerate surface (smooth, or all roughness at the finest scale) rather than a unit slip."""
 
-PLAUSIBLE_G = (1e-16, 1e-8)
+ENGINEERING_G = (1e-16, 1e-8)
 """Usual fractal roughness G of engineering surfaces [m]. The same sources report about
 1e-14 to 1e-9 m for machined and ground surfaces; the upper end is raised to 1e-8 m so that
 published parameter studies stay quiet (Gao et al., 2019, vary G up to 5e-9 m) and the lower
@@ -113,14 +113,14 @@ def implausible_values(case: Case) -> list[str]:
 
 
 def _roughness(case: Case) -> list[str]:
-    """Fractal D and G of the raceways (and the ball) outside :data:`PLAUSIBLE_D` and
-    :data:`PLAUSIBLE_G`."""
+    """Fractal D and G of the raceways (and the ball) outside :data:`ENGINEERING_D` and
+    :data:`ENGINEERING_G`."""
     surfaces = [("surface", case.surface)]
     if case.surface.ball is not None:
         surfaces.append(("surface.ball", case.surface.ball))
     found = []
     for key, surface in surfaces:
-        (d_lo, d_hi), (g_lo, g_hi) = PLAUSIBLE_D, PLAUSIBLE_G
+        (d_lo, d_hi), (g_lo, g_hi) = ENGINEERING_D, ENGINEERING_G
         if not d_lo <= surface.D <= d_hi:
             found.append(
                 f"{key}.D = {format_number(surface.D)} is outside the usual {d_lo:g} to "
