@@ -16,8 +16,12 @@ import pytest
 import xarray as xr
 
 import ballscrew
+from ballscrew.analyses.ball_contact import solve_ball_contacts
 from ballscrew.analyses.catalog import ANALYSES
+from ballscrew.analyses.duty_thermal import thermal_duty
+from ballscrew.analyses.kinematics import run_kinematics
 from ballscrew.analyses.result import AnalysisResult, json_ready, quantity
+from ballscrew.analyses.surface import surface_characterisation
 from ballscrew.case import with_overrides
 from quick_cases import EXAMPLES, QUICK, QUICK_WEAR
 
@@ -53,44 +57,22 @@ def _joint_calibration() -> Any:
     return fit_joint(joint_parts(measured), ["wear_coefficient"])
 
 
-def _run(name: str) -> Callable[[], Any]:
-    from ballscrew.analyses.ball_contact import solve_ball_contacts
-    from ballscrew.analyses.duty_thermal import thermal_duty
-    from ballscrew.analyses.kinematics import run_kinematics
-    from ballscrew.analyses.surface import surface_characterisation
-
-    return {
-        "contact": lambda: solve_ball_contacts(gao()),
-        "tcr": lambda: ballscrew.screw_tcr(gao()),
-        "thermal": lambda: ballscrew.thermal_field(gao()),
-        "thermal-network": lambda: ballscrew.thermal_field(gao(), model="network"),
-        "thermal-fe": lambda: ballscrew.thermal_field(gao(), model="axisymmetric"),
-        "operating-point": lambda: ballscrew.operating_point(gao()),
-        "duty": lambda: thermal_duty(gao(), model="network"),
-        "check": lambda: ballscrew.design_check(gao()),
-        "kinematics": lambda: run_kinematics(gao(), level=0),
-        "wear": lambda: ballscrew.wear_life(wear_case()),
-        "calibrate": _calibration,
-        "calibrate-joint": _joint_calibration,
-        "surface": lambda: surface_characterisation(PROFILE, gamma=1.6, resolution=1e-6),
-    }[name]
-
-
-RUNS = [
-    "contact",
-    "tcr",
-    "thermal",
-    "thermal-network",
-    "thermal-fe",
-    "operating-point",
-    "duty",
-    "check",
-    "kinematics",
-    "wear",
-    "calibrate",
-    "calibrate-joint",
-    "surface",
-]
+#: analysis name → a quick run of it (the joint calibration is the second result of "calibrate")
+RUNS: dict[str, Callable[[], Any]] = {
+    "contact": lambda: solve_ball_contacts(gao()),
+    "tcr": lambda: ballscrew.screw_tcr(gao()),
+    "thermal": lambda: ballscrew.thermal_field(gao()),
+    "thermal-network": lambda: ballscrew.thermal_field(gao(), model="network"),
+    "thermal-fe": lambda: ballscrew.thermal_field(gao(), model="axisymmetric"),
+    "operating-point": lambda: ballscrew.operating_point(gao()),
+    "duty": lambda: thermal_duty(gao(), model="network"),
+    "check": lambda: ballscrew.design_check(gao()),
+    "kinematics": lambda: run_kinematics(gao(), level=0),
+    "wear": lambda: ballscrew.wear_life(wear_case()),
+    "calibrate": _calibration,
+    "calibrate-joint": _joint_calibration,
+    "surface": lambda: surface_characterisation(PROFILE, gamma=1.6, resolution=1e-6),
+}
 
 
 def test_every_registered_analysis_has_a_run_here():
@@ -100,7 +82,7 @@ def test_every_registered_analysis_has_a_run_here():
 @pytest.mark.filterwarnings("ignore")
 @pytest.mark.parametrize("name", RUNS)
 def test_result_is_one_dataset_and_a_plain_json_summary(name):
-    result = _run(name)()
+    result = RUNS[name]()
     assert isinstance(result, AnalysisResult)
     data = result.to_xarray()
     assert type(data) is xr.Dataset
