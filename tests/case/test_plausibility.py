@@ -75,3 +75,43 @@ def test_a_case_changed_by_overrides_warns_only_about_what_the_overrides_bring(t
     with pytest.warns(ImplausibleValueWarning) as caught:
         with_overrides(case, {"operating.speed": 1500.0})
     assert [str(w.message).split(": ", 1)[1].split(" = ")[0] for w in caught] == ["operating.speed"]
+
+
+def test_a_fractal_roughness_far_outside_engineering_surfaces_is_warned(tmp_path):
+    """G = 9e-4 m (for 9e-10 m) moves Mikic's R″ by ×2000; D = 1.95 is near the degenerate 2."""
+    messages = warnings_of(tmp_path, {"surface.G": 9e-4, "surface.D": 1.95})
+    assert messages == [
+        "surface.D = 1.95 is outside the usual 1.2 to 1.9 of engineering surfaces",
+        "surface.G = 9×10⁻⁴ m is outside the usual 1×10⁻¹⁶ to 1×10⁻⁸ m of engineering surfaces "
+        "(G sets the asperity heights: the contact resistance changes by orders of magnitude)",
+    ]
+
+
+def test_published_roughness_studies_stay_quiet(tmp_path):
+    """Gao et al. (2019), Fig. 11: D from 1.4 to 1.7 and G from 5e-11 to 5e-9 m."""
+    for d, g in ((1.4, 5e-11), (1.7, 5e-9), (1.475, 1.38e-10)):
+        case = ballscrew.load_case(
+            write_case(tmp_path, "gao2019_tcr.toml", {"surface.D": d, "surface.G": g})
+        )
+        assert implausible_values(case) == []
+
+
+def test_the_warning_points_at_the_callers_line_not_the_loader(tmp_path):
+    from ballscrew.case import with_overrides
+
+    case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", {}))
+    with pytest.warns(ImplausibleValueWarning) as caught:
+        with_overrides(case, {"surface.G": 9e-4})
+    assert [w.filename for w in caught] == [__file__]
+
+
+def test_the_rpm_hint_is_given_only_for_a_whole_number():
+    """1500 (rpm typed without a unit) gets the hint; 628.3 rad/s (6000 rpm, converted on
+    purpose) only the d·n warning. The reference screw: d_m = 40 mm."""
+    from ballscrew.case.plausibility import speed_hint
+
+    assert speed_hint(1500.0, 0.040) == (
+        "; if given without a unit (rad/s), did you mean '1500 rpm'?"
+    )
+    assert speed_hint(628.3, 0.040) == ""
+    assert speed_hint(6000 * 3.141592653589793 / 30, 0.040) == ""

@@ -69,8 +69,8 @@ class _Result:
             "model": "axisymmetric",
         }
 
-    def to_xarray(self) -> dict[str, xr.Dataset]:
-        return _fields()
+    def to_xarray(self) -> xr.Dataset:
+        return _fields()["fields"]
 
     def figures(self) -> list:
         return []
@@ -79,9 +79,16 @@ class _Result:
         return []
 
 
+def _write(out: Path, export: list[str] | None = None) -> Path:
+    """The folder of :class:`_Result` with a second NetCDF file, ``sweep.nc``, beside its own
+    ``fields.nc`` (a command's extra file): the exports cover every NetCDF file of a folder."""
+    sweep = bytes(_fields()["sweep"].to_netcdf(engine="h5netcdf"))
+    return write_results(_Result(), out, extra_files={"sweep.nc": sweep}, export=export or [])
+
+
 @pytest.fixture
 def folder(tmp_path) -> Path:
-    return write_results(_Result(), tmp_path / "run", export=["csv", "xlsx", "mat"])
+    return _write(tmp_path / "run", export=["csv", "xlsx", "mat"])
 
 
 def _read_csv(path: Path) -> tuple[list[str], list[list[str]]]:
@@ -150,7 +157,7 @@ def test_exports_are_listed_in_the_marker_so_a_rerun_may_replace_them(folder):
 
 
 def test_export_after_the_write_adds_to_the_marker(tmp_path):
-    folder = write_results(_Result(), tmp_path / "run")
+    folder = _write(tmp_path / "run")
     written = export_results(folder, ["mat"])
     assert [p.name for p in written] == ["fields.mat", "sweep.mat"]
     assert "sweep.mat" in json.loads((folder / MARKER_NAME).read_text())["files"]
@@ -158,13 +165,13 @@ def test_export_after_the_write_adds_to_the_marker(tmp_path):
 
 
 def test_unknown_format_is_refused_before_anything_is_written(tmp_path):
-    folder = write_results(_Result(), tmp_path / "run")
+    folder = _write(tmp_path / "run")
     before = sorted(p.name for p in folder.iterdir())
     with pytest.raises(InputError, match=r"--export.*pdf.*csv, xlsx, mat"):
         export_results(folder, ["csv", "pdf"])
     assert sorted(p.name for p in folder.iterdir()) == before
     with pytest.raises(InputError, match="--export"):
-        write_results(_Result(), tmp_path / "other", export=["hdf"])
+        _write(tmp_path / "other", export=["hdf"])
     assert not (tmp_path / "other").exists()
 
 

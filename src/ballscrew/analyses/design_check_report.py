@@ -15,7 +15,7 @@ from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.loads.distribution import Distribution, lift_off_load
-from ballscrew.plotting import legend_outside, pyplot
+from ballscrew.plotting import legend_outside, pyplot, save_figure
 from ballscrew.units import in_display_units
 
 if TYPE_CHECKING:
@@ -202,9 +202,7 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
         ax.set_ylim(bottom=0)
         ax.set_xlim(-0.04 * loads.max(), 1.02 * loads.max())  # a line at 0 kN stays visible
     legend_outside(axes[1], fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _ball_figure(result: DesignCheck, path: Path) -> Path:
@@ -222,9 +220,7 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
     ax.set_ylabel("normal ball load [N]")
     ax.set_ylim(0.0, 1.1 * max(float(dist.loads.max()), 1e-9))
     ax.legend(fontsize=8, loc="lower center")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _life_figure(result: DesignCheck, path: Path) -> Path:
@@ -250,9 +246,7 @@ def _life_figure(result: DesignCheck, path: Path) -> Path:
     ax.set_xlabel("axial load [N]")
     ax.set_ylabel("rating life [rev]")
     legend_outside(ax, fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def figures(result: DesignCheck) -> list[Figure]:

@@ -10,7 +10,7 @@ import numpy as np
 import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table, quantity
-from ballscrew.plotting import legend_outside, line_styles, plain, pyplot
+from ballscrew.plotting import legend_outside, line_styles, plain, pyplot, save_figure
 from ballscrew.units import format_quantity
 
 if TYPE_CHECKING:
@@ -93,9 +93,7 @@ def day_plot(result: DutyThermal, path: Path) -> Path:
     bottom.set_xlabel("time [h] (shaded: the screw turns)")
     legend_outside(bottom, fontsize=8)
     fig.suptitle(plain(f"{result.case.name}: duty cycle ({result.model} model)"), fontsize=10)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def figures(result: DutyThermal) -> list[Figure]:

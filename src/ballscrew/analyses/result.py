@@ -3,9 +3,13 @@
 A result is immutable and knows how to present itself:
 
 * :meth:`AnalysisResult.summary` — scalars, each ``{"value": …, "unit": …}`` in SI (nested
-  dictionaries allowed); ``summary.json`` is this plus the warnings and the inputs;
-* :meth:`AnalysisResult.to_xarray` — fields and histories with ``units`` attributes, one
-  dataset or a mapping ``file stem → dataset``;
+  dictionaries and lists allowed), in plain JSON types only (:func:`json_ready`): a number
+  that is not defined (NaN) is ``{"value": None, "unit": …, "reason": …}``; ``summary.json``
+  is this plus the warnings and the inputs;
+* :meth:`AnalysisResult.to_xarray` — fields and histories with ``units`` attributes, always
+  one :class:`xarray.Dataset` (several histories or spectra of different lengths each have
+  their own dimension), written as ``<dataset_name>.nc`` (``fields.nc`` unless the result
+  names it);
 * :meth:`AnalysisResult.figures` — :class:`Figure` objects that draw a PNG on demand;
 * :meth:`AnalysisResult.report` — the report's :class:`Section` objects;
 * :attr:`AnalysisResult.inputs` — the resolved case, each value with its unit;
@@ -18,6 +22,7 @@ sweeps and the index page.
 
 from __future__ import annotations
 
+import math
 import warnings
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -26,6 +31,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any, ClassVar, Protocol, runtime_checkable
 
+import numpy as np
 import xarray as xr
 
 from ballscrew.case.inputs import resolved_inputs
@@ -40,14 +46,49 @@ __all__ = [
     "Presented",
     "Section",
     "Table",
+    "json_ready",
     "quantity",
     "recorded_warnings",
 ]
 
 
-def quantity(number: float, unit: str) -> dict[str, Any]:
-    """A summary scalar with its SI unit, e.g. ``{"value": 1.35e9, "unit": "Pa"}``."""
-    return {"value": float(number), "unit": unit}
+#: Why a summary number is None when its producer gives no reason of its own.
+UNDEFINED = "not defined for this run (the computation gave no finite number)"
+
+
+def quantity(number: float, unit: str, undefined: str = UNDEFINED) -> dict[str, Any]:
+    """A summary scalar with its SI unit, e.g. ``{"value": 1.35e9, "unit": "Pa"}``.
+
+    JSON has no NaN: a number that is not finite is ``{"value": None, "unit": unit, "reason":
+    undefined}``, ``undefined`` saying why (e.g. "not reached within the transient").
+    """
+    number = float(number)
+    if math.isfinite(number):
+        return {"value": number, "unit": unit}
+    return {"value": None, "unit": unit, "reason": undefined}
+
+
+def json_ready(obj: Any) -> Any:
+    """``obj`` in plain JSON types, so ``json.dumps(obj, allow_nan=False)`` always works.
+
+    NumPy scalars and arrays become Python numbers and lists, tuples lists, keys strings; a
+    non-finite float becomes None, and a ``{"value": …, "unit": …}`` quantity whose value is
+    None gets a ``reason`` (:data:`UNDEFINED` unless it has one).
+    """
+    if isinstance(obj, Mapping):
+        out = {str(k): json_ready(v) for k, v in obj.items()}
+        if "unit" in out and "value" in out and out["value"] is None:
+            out.setdefault("reason", UNDEFINED)
+        return out
+    if isinstance(obj, list | tuple):
+        return [json_ready(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return json_ready(obj.tolist())
+    if isinstance(obj, np.generic):
+        return json_ready(obj.item())
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    return obj
 
 
 @contextmanager
@@ -117,10 +158,10 @@ class AnalysisResult(Protocol):
         """Warnings about the numbers, one line each."""
 
     def summary(self) -> dict[str, Any]:
-        """Scalars with their SI units."""
+        """Scalars with their SI units, in plain JSON types (:func:`json_ready`)."""
 
-    def to_xarray(self) -> xr.Dataset | Mapping[str, xr.Dataset]:
-        """Fields and histories with units."""
+    def to_xarray(self) -> xr.Dataset:
+        """Fields and histories with units, one dataset."""
 
     def figures(self) -> Sequence[Figure]:
         """The figures of the report."""
@@ -134,18 +175,21 @@ class Presented:
 
     The class sets ``presentation`` to a module with ``summary(result)``, ``fields(result)``,
     ``figures(result)`` and ``sections(result)``; ``inputs`` resolves the result's ``case``.
+    ``summary()`` is made JSON-ready here, so a presentation may hand back NumPy values.
     """
 
     presentation: ClassVar[ModuleType]
+    dataset_name: ClassVar[str] = "fields"
+    """File stem of :meth:`to_xarray` in a results folder (``fields`` → ``fields.nc``)."""
 
     @property
     def inputs(self) -> dict[str, Any]:
         return resolved_inputs(self.case)  # type: ignore[attr-defined]
 
     def summary(self) -> dict[str, Any]:
-        return self.presentation.summary(self)
+        return json_ready(self.presentation.summary(self))
 
-    def to_xarray(self) -> xr.Dataset | Mapping[str, xr.Dataset]:
+    def to_xarray(self) -> xr.Dataset:
         return self.presentation.fields(self)
 
     def figures(self) -> list[Figure]:

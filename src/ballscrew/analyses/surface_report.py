@@ -11,7 +11,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain, pyplot
+from ballscrew.plotting import plain, pyplot, save_figure
 from ballscrew.surface.fit import FractalFit, SurfaceFit
 from ballscrew.surface.profile import Profile
 from ballscrew.surface.structure_function import band_limited_ratio
@@ -34,6 +34,11 @@ __all__ = [
 _NAMES = {"psd": "power spectrum (F2)", "structure_function": "structure function (F4)"}
 
 
+def _stderr(error: float | None) -> str:
+    """A standard error for the report's table: "–" when not given (None or NaN)."""
+    return "–" if error is None or not np.isfinite(error) else f"{error:.2g}"
+
+
 def _fit_summary(fit: FractalFit) -> dict[str, Any]:
     unit = "1/m" if fit.method == "psd" else "m"
     return {
@@ -47,6 +52,7 @@ def _fit_summary(fit: FractalFit) -> dict[str, Any]:
         },
         "D_standard_error": fit.D_stderr,
         "lnG_standard_error": fit.lnG_stderr,
+        **({"standard_error_reason": fit.stderr_reason} if fit.stderr_reason else {}),
         "r_squared": fit.r_squared,
         "points": fit.points,
         "profiles": fit.profiles,
@@ -123,9 +129,7 @@ def psd_plot(fit: SurfaceFit, path: Path) -> Path:
     ax.set_title(f"PSD: D = {r.D:.4f}, G = {r.G:.3g} m, R² = {r.r_squared:.4f}", fontsize=10)
     ax.set_ylim(max(s[s > 0].min(), r.y.min() * 1e-4), s.max() * 10)
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
@@ -151,9 +155,7 @@ def structure_function_plot(fit: SurfaceFit, path: Path) -> Path:
         fontsize=10,
     )
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def profile_plot(profile: Profile, path: Path) -> Path:
@@ -170,9 +172,7 @@ def profile_plot(profile: Profile, path: Path) -> Path:
     ax.set_title(
         plain(f"{Path(profile.source).name or 'profile'} (first complete row)"), fontsize=10
     )
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _row(fit: FractalFit) -> list[object]:
@@ -182,30 +182,27 @@ def _row(fit: FractalFit) -> list[object]:
         fit.D,
         fit.surface_dimension,
         fit.G,
-        f"{fit.D_stderr:.2g}" if np.isfinite(fit.D_stderr) else "–",
-        f"{fit.lnG_stderr:.2g}" if np.isfinite(fit.lnG_stderr) else "–",
+        _stderr(fit.D_stderr),
+        _stderr(fit.lnG_stderr),
         f"{fit.fit_range[0]:.4g} – {fit.fit_range[1]:.4g} {unit}",
         fit.r_squared,
         fit.points,
     ]
 
 
-def fields(result: SurfaceCharacterisation) -> dict[str, xr.Dataset]:
-    """The periodogram and the structure function that were fitted, with units."""
-    fit, data = result.fit, {}
+def fields(result: SurfaceCharacterisation) -> xr.Dataset:
+    """The periodogram (dimension ``frequency``) and the structure function (dimension
+    ``lag``) that were fitted, with units, in one dataset."""
+    fit, data, coords = result.fit, {}, {}
     if fit.spectrum is not None:
         f, s = fit.spectrum
-        data["spectrum"] = xr.Dataset(
-            {"psd": ("frequency", s, {"units": "m^3", "long_name": "one-sided PSD"})},
-            coords={"frequency": ("frequency", f, {"units": "1/m"})},
-        )
+        data["psd"] = ("frequency", s, {"units": "m^3", "long_name": "one-sided PSD"})
+        coords["frequency"] = ("frequency", f, {"units": "1/m"})
     if fit.structure is not None:
         lag, sf = fit.structure
-        data["structure_function"] = xr.Dataset(
-            {"structure_function": ("lag", sf, {"units": "m^2"})},
-            coords={"lag": ("lag", lag, {"units": "m"})},
-        )
-    return data
+        data["structure_function"] = ("lag", sf, {"units": "m^2"})
+        coords["lag"] = ("lag", lag, {"units": "m"})
+    return xr.Dataset(data, coords=coords)
 
 
 def figures(result: SurfaceCharacterisation) -> list[Figure]:

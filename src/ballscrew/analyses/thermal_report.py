@@ -12,8 +12,8 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import label_box, legend_outside, plain, pyplot
-from ballscrew.thermal.elongation import displacement_profile
+from ballscrew.plotting import label_box, legend_outside, plain, pyplot, save_figure
+from ballscrew.thermal.elongation import shaft_displacement
 from ballscrew.thermal.mesh3d import circle_angles
 from ballscrew.units import format_number
 
@@ -28,6 +28,9 @@ CELSIUS = 273.15
 
 def _c(kelvin: float) -> float:
     return kelvin - CELSIUS
+
+
+_NOT_REACHED = "95 % of the steady rise is not reached within thermal.transient.duration"
 
 
 def summary(result: ThermalField) -> dict[str, Any]:
@@ -62,7 +65,7 @@ def summary(result: ThermalField) -> dict[str, Any]:
                 "z": value(s.z, "m"),
                 "steady": value(s.steady, "K"),
                 "final": value(s.final, "K"),
-                "time_to_95": value(s.time_to_95, "s"),
+                "time_to_95": value(s.time_to_95, "s", _NOT_REACHED),
             }
             for s in sensors
         ],
@@ -145,8 +148,8 @@ def summary(result: ThermalField) -> dict[str, Any]:
             "fraction_of_steady_rise": float(t.max_rise[-1] / result.max_temperature_rise)
             if result.max_temperature_rise > 0
             else None,
-            "time_to_95": value(result.time_to_95, "s"),
-            "elongation_time_to_95": value(result.elongation_time_to_95, "s"),
+            "time_to_95": value(result.time_to_95, "s", _NOT_REACHED),
+            "elongation_time_to_95": value(result.elongation_time_to_95, "s", _NOT_REACHED),
             "sensors": {s.name: value(s.final, "K") for s in sensors},
         }
     return summary
@@ -163,6 +166,7 @@ def fields(result: ThermalField) -> xr.Dataset:
         return {"units": "K", "long_name": long_name}
 
     alpha = problem.expansion
+    stations, displacement = shaft_displacement(disc.axis_z, sol.axis, alpha, problem.shaft_length)
     data: dict[str, Any] = {
         "axis_temperature": (
             "axis_z",
@@ -170,9 +174,13 @@ def fields(result: ThermalField) -> xr.Dataset:
             kelvin("steady cross-section mean temperature of the screw"),
         ),
         "axis_displacement": (
-            "axis_z",
-            displacement_profile(disc.axis_z, sol.axis, alpha),
-            {"units": "m", "long_name": "steady axial thermal displacement α∫ΔT̄ dz from z = 0"},
+            "displacement_z",
+            displacement,
+            {
+                "units": "m",
+                "long_name": "steady axial thermal displacement α∫ΔT̄ dz from z = 0; "
+                "at the end face z = L it is the elongation",
+            },
         ),
         "sensor_temperature_steady": (
             "sensor",
@@ -185,6 +193,11 @@ def fields(result: ThermalField) -> xr.Dataset:
     }
     coords: dict[str, Any] = {
         "axis_z": ("axis_z", disc.axis_z, {"units": "m", "long_name": "axial position"}),
+        "displacement_z": (
+            "displacement_z",
+            stations,
+            {"units": "m", "long_name": "axial position: the profile's stations and both ends"},
+        ),
         "sensor": ("sensor", [s.name for s in problem.sensors]),
     }
     t = sol.transient
@@ -222,11 +235,15 @@ def fields(result: ThermalField) -> xr.Dataset:
         for row, (name, long_name) in enumerate(node_axes):
             data[name] = ("node", fe_mesh.mesh.p[row], {"units": "m", "long_name": long_name})
         data.update(
-            element_nodes=(("element", "corner"), fe_mesh.mesh.t.T),
+            element_nodes=(
+                ("element", "corner"),
+                fe_mesh.mesh.t.T,
+                {"units": "1", "long_name": "node numbers of each element"},
+            ),
             element_body=(
                 "element",
                 fe_mesh.body,
-                {"long_name": "0 = screw shaft, 1 = nut assembly"},
+                {"units": "1", "long_name": "0 = screw shaft, 1 = nut assembly"},
             ),
             temperature_steady=("node", amb + sol.steady[nodal], kelvin("steady temperature")),
         )
@@ -336,9 +353,7 @@ def field_3d(result: ThermalField, path: Path) -> Path:
     axes[1].set_title("screw surface, unrolled", fontsize=9)
     fig.colorbar(image, ax=axes, label="steady temperature [°C]")
     fig.suptitle(plain(f"{result.case_name}: steady temperature (3-D model)"), fontsize=10)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def temperature_map(result: ThermalField, path: Path) -> Path:
@@ -398,9 +413,7 @@ def temperature_map(result: ThermalField, path: Path) -> Path:
     axes[1].set_xlim((ring_lo - pad) * 1e3, (ring_hi + pad) * 1e3)
     axes[0].set_title(plain(f"{result.case_name}: steady temperature ({result.model} model)"))
     axes[1].set_title("around the nut (sensors circled)", fontsize=9)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def temperature_rise(result: ThermalField, path: Path) -> Path:
@@ -424,9 +437,7 @@ def temperature_rise(result: ThermalField, path: Path) -> Path:
     ax.set_title("Temperature rise from ambient (dashed: steady state)", fontsize=10)
     legend_outside(ax, fontsize=7)
     ax.grid(alpha=0.3)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def elongation_plot(result: ThermalField, path: Path) -> Path:
@@ -452,9 +463,7 @@ def elongation_plot(result: ThermalField, path: Path) -> Path:
     profile.set_xlabel("z [mm]")
     profile.set_ylabel("steady screw mean rise [K]", color="r")
     profile.grid(alpha=0.3)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _transient(sensor: SensorReading) -> tuple[object, str]:

@@ -58,6 +58,7 @@ class WearResult(Presented):
 
     analysis: ClassVar[str] = "wear"
     presentation: ClassVar[ModuleType] = wear_report
+    dataset_name: ClassVar[str] = "history"
 
     def __getattr__(self, name: str) -> Any:
         life = vars(self).get("life")

@@ -19,7 +19,7 @@ from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.analyses.wear_film import FULL_FILM_SHARE
 from ballscrew.case import Case
-from ballscrew.plotting import legend_outside, pyplot, revolutions_axis
+from ballscrew.plotting import legend_outside, pyplot, revolutions_axis, save_figure
 from ballscrew.units import format_number
 from ballscrew.wear.history import WearLife
 
@@ -122,9 +122,9 @@ def summary(result: WearResult) -> dict[str, Any]:
     }
 
 
-def fields(result: WearResult) -> dict[str, xr.Dataset]:
-    """The datasets of the results folder: ``history.nc``."""
-    return {"history": history(result)}
+def fields(result: WearResult) -> xr.Dataset:
+    """The dataset of the results folder, ``history.nc``: :func:`history`."""
+    return history(result)
 
 
 def history(result: WearResult) -> xr.Dataset:
@@ -183,9 +183,7 @@ def _torque_preload(life: WearLife, path: Path) -> Path:
         ax.set_xlabel(label)
         ax.set_ylim(bottom=0)
     axes[0].legend(fontsize=8, loc="lower left")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _profiles(life: WearLife, path: Path) -> Path:
@@ -197,9 +195,7 @@ def _profiles(life: WearLife, path: Path) -> Path:
     ax.set_xlabel("y, across the groove [µm]")
     ax.set_ylabel("wear depth [µm]")
     legend_outside(ax, fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _depth(life: WearLife, path: Path) -> Path:
@@ -210,9 +206,7 @@ def _depth(life: WearLife, path: Path) -> Path:
     _levels(ax, life, unit)
     ax.set_xlabel(label)
     ax.set_ylabel("largest wear depth h_max [µm]")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def figures(result: WearResult) -> list[Figure]:

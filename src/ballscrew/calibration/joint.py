@@ -94,6 +94,7 @@ class JointCalibrationResult(Presented):
 
     analysis: ClassVar[str] = "calibrate"
     presentation: ClassVar[ModuleType] = joint_report
+    dataset_name: ClassVar[str] = "fit"
 
     @property
     def title(self) -> str:
@@ -118,7 +119,7 @@ class JointCalibrationResult(Presented):
         """Each history's held-out RMS error (None without ``fit_until``)."""
         return tuple(h.prediction_rmse for h in self.histories)
 
-    def to_xarray(self) -> dict[str, xr.Dataset]:
+    def to_xarray(self) -> xr.Dataset:
         return joint_report.fields(self)
 
 

@@ -73,9 +73,17 @@ JOINT_ERRORS = (
 """What the joint fit's standard errors cover."""
 
 
-def fields(result: JointCalibrationResult) -> dict[str, xr.Dataset]:
-    """Each history's measured, model and residual (:func:`report.fit_dataset`)."""
-    return {f"fit_{j + 1}": report.fit_dataset(h) for j, h in enumerate(result.histories)}
+def fields(result: JointCalibrationResult) -> xr.Dataset:
+    """Each history's measured, model and residual (:func:`report.fit_dataset`) in one
+    dataset: history j's variables and dimension end in ``_j`` (``measured_2`` over
+    ``point_2``), as the histories differ in length and may differ in quantity."""
+    parts = []
+    for j, history in enumerate(result.histories, start=1):
+        data = report.fit_dataset(history)
+        part = data.rename({name: f"{name}_{j}" for name in (*data.variables, *data.dims)})
+        part.attrs = {f"{key}_{j}": text for key, text in data.attrs.items()}
+        parts.append(part)
+    return xr.merge(parts, combine_attrs="no_conflicts")
 
 
 def fit_table(result: JointCalibrationResult) -> str:

@@ -128,6 +128,7 @@ class CalibrationResult(Presented):
 
     analysis: ClassVar[str] = "calibrate"
     presentation: ClassVar[ModuleType] = calibration_report
+    dataset_name: ClassVar[str] = "fit"
 
     @property
     def title(self) -> str:
@@ -142,10 +143,10 @@ class CalibrationResult(Presented):
     def inputs(self) -> dict[str, Any]:
         return resolved_inputs(self.case) if self.case is not None else {}
 
-    def to_xarray(self) -> dict[str, xr.Dataset]:
+    def to_xarray(self) -> xr.Dataset:
         from ballscrew.calibration import report
 
-        return {"fit": report.fit_dataset(self)}
+        return report.fit_dataset(self)
 
     @property
     def relative_error(self) -> float:

@@ -7,6 +7,7 @@ import difflib
 import math
 import os
 import stat
+import sys
 import tomllib
 import warnings
 from collections.abc import Mapping, Sequence
@@ -140,8 +141,20 @@ def case_from_dict(
 
     for message in implausible_values(case):
         if message not in known:
-            warnings.warn(f"{source}: {message}", ImplausibleValueWarning, stacklevel=2)
+            warnings.warn(
+                f"{source}: {message}", ImplausibleValueWarning, stacklevel=_caller_level()
+            )
     return case
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` that attributes a warning of the calling function to the first frame
+    outside the ballscrew package: the user's script or notebook cell, not the loader."""
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+    frame, level = sys._getframe(1), 1
+    while frame is not None and os.path.abspath(frame.f_code.co_filename).startswith(package):
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 def with_overrides(case: Case, overrides: Mapping[str, Any]) -> Case:

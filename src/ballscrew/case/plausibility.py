@@ -15,6 +15,8 @@ from ballscrew.errors import ImplausibleValueWarning
 from ballscrew.units import DISPLAY_UNITS, format_number, format_quantity
 
 __all__ = [
+    "ENGINEERING_D",
+    "ENGINEERING_G",
     "MAX_PLAUSIBLE_DN",
     "NUT_LENGTH_FACTOR",
     "ImplausibleValueWarning",
@@ -36,6 +38,20 @@ MAX_PLAUSIBLE_DN = 200_000.0
 """Largest d·n = pitch diameter [mm] × speed [rpm] of any ball screw (standard nuts are rated
 50 000–70 000, the makers' high-speed series 120 000–160 000 and up to about 200 000, e.g.
 THK's and NSK's high-speed catalogues). A speed above it was most likely meant in rpm."""
+
+
+ENGINEERING_D = (1.2, 1.9)
+"""Usual profile fractal dimension D of engineering surfaces. Majumdar and Bhushan (1990,
+1991) and Majumdar and Tien (1990) report about 1.3 to 1.8 for machined, ground, lapped and
+magnetic-media surfaces; the range is widened by 0.1 each side, as D near 1 or 2 is a
+degenerate surface (smooth, or all roughness at the finest scale) rather than a unit slip."""
+
+ENGINEERING_G = (1e-16, 1e-8)
+"""Usual fractal roughness G of engineering surfaces [m]. The same sources report about
+1e-14 to 1e-9 m for machined and ground surfaces; the upper end is raised to 1e-8 m so that
+published parameter studies stay quiet (Gao et al., 2019, vary G up to 5e-9 m) and the lower
+to 1e-16 m. A G outside it changes the asperity heights and the contact resistance by orders
+of magnitude (Mikic's R″ by about ×2000 from G = 9e-10 m to 9e-4 m)."""
 
 
 def unit_hint(value: float, kind: str, plausible: Callable[[float], bool]) -> str:
@@ -79,6 +95,7 @@ def implausible_values(case: Case) -> list[str]:
             f"design.static_load_rating = {format_quantity(rating, 'force')} (C_0a)"
         )
     found += _speeds(case)
+    found += _roughness(case)
     for part in ("ball", "screw", "nut"):
         material = getattr(case.materials, part)
         for name in ("youngs_modulus", "hardness"):
@@ -92,12 +109,41 @@ def implausible_values(case: Case) -> list[str]:
     return found
 
 
+def _roughness(case: Case) -> list[str]:
+    """Fractal D and G of the raceways (and the ball) outside :data:`ENGINEERING_D` and
+    :data:`ENGINEERING_G`."""
+    surfaces = [("surface", case.surface)]
+    if case.surface.ball is not None:
+        surfaces.append(("surface.ball", case.surface.ball))
+    found = []
+    for key, surface in surfaces:
+        (d_lo, d_hi), (g_lo, g_hi) = ENGINEERING_D, ENGINEERING_G
+        if not d_lo <= surface.D <= d_hi:
+            found.append(
+                f"{key}.D = {format_number(surface.D)} is outside the usual {d_lo:g} to "
+                f"{d_hi:g} of engineering surfaces"
+            )
+        if not g_lo <= surface.G <= g_hi:
+            found.append(
+                f"{key}.G = {format_number(surface.G)} m is outside the usual "
+                f"{format_number(g_lo)} to {format_number(g_hi)} m of engineering surfaces (G sets "
+                "the asperity heights: the contact resistance changes by orders of magnitude)"
+            )
+    return found
+
+
 def speed_hint(speed: float, pitch_diameter: float) -> str:
     """``"; if given without a unit (rad/s), did you mean '1500 rpm'?"`` when ``speed``
     [rad/s] on a screw of ``pitch_diameter`` [m] exceeds :data:`MAX_PLAUSIBLE_DN` but would not
-    in rpm; ``""`` otherwise (the case holds SI values: how the speed was typed is unknown)."""
+    in rpm, and the number looks like a speed typed in rpm; ``""`` otherwise (the case holds SI
+    values: how the speed was typed is unknown).
+
+    Rule: people type a speed in rpm as a whole number (1500, 3000), while a speed meant in
+    rad/s is usually converted from rpm (628.3 rad/s = 6000 rpm) and is not whole; only a whole
+    number gets the hint (the d·n warning itself stays).
+    """
     highest = MAX_PLAUSIBLE_DN / (1e3 * pitch_diameter) * math.pi / 30.0  # rad/s
-    if speed <= highest or speed * math.pi / 30.0 > highest:
+    if speed <= highest or speed * math.pi / 30.0 > highest or speed != round(speed):
         return ""
     return f"; if given without a unit (rad/s), did you mean '{format_number(speed)} rpm'?"
 

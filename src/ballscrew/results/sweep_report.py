@@ -18,7 +18,7 @@ import xarray as xr
 from ballscrew.analyses.case_reads import case_reads
 from ballscrew.case import Case
 from ballscrew.case.inputs import guessed_defaults, resolved_inputs
-from ballscrew.plotting import legend_outside, line_styles, pyplot, zero_noise
+from ballscrew.plotting import legend_outside, line_styles, pyplot, save_figure, zero_noise
 from ballscrew.results.display import engineering, engineering_array, readable
 from ballscrew.results.export import export_results, parse_formats
 from ballscrew.results.folder import (
@@ -47,10 +47,8 @@ def _axis(ds: xr.Dataset, name: str) -> tuple[np.ndarray, str]:
 
 
 def _save(fig: Figure, path: Path) -> Path:
-    plt = pyplot()
     with atomic_file(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+        save_figure(fig, tmp)
     return path
 
 

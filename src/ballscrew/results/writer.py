@@ -5,7 +5,8 @@ A results folder holds
 * ``summary.json`` — the result's scalars (SI, each with its unit), its warnings, the keys of
   the inputs it reads (:mod:`ballscrew.analyses.case_reads`) left at a default that is only a
   guess (``guessed_defaults``) and the resolved inputs;
-* ``<stem>.nc`` — the result's xarray datasets (NetCDF, ``units`` attributes);
+* ``<dataset_name>.nc`` — the result's xarray dataset (NetCDF, ``units`` attributes;
+  ``fields.nc`` unless the result names it);
 * ``<figure>.png`` — its figures;
 * ``report.html`` — one self-contained page: the inputs, the warnings, then the result's own
   sections with their figures embedded;
@@ -25,8 +26,6 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-import xarray as xr
-
 from ballscrew.analyses.case_reads import case_reads
 from ballscrew.analyses.result import AnalysisResult
 from ballscrew.case import Case
@@ -38,11 +37,6 @@ from ballscrew.results.report import Section, inputs_warnings_sections, write_re
 from ballscrew.results.summary import write_summary
 
 __all__ = ["result_warnings", "write_results"]
-
-
-def _datasets(result: AnalysisResult) -> Mapping[str, xr.Dataset]:
-    data = result.to_xarray()
-    return {"fields": data} if isinstance(data, xr.Dataset) else data
 
 
 def result_warnings(result: AnalysisResult) -> list[str]:
@@ -97,8 +91,9 @@ def write_results(
         )
         if case_file is not None:
             shutil.copyfile(case_file, folder / "case.toml")
-        for stem, dataset in _datasets(result).items():
-            write_netcdf(dataset, folder / f"{stem}.nc")
+        dataset = result.to_xarray()
+        if dataset.data_vars:  # a result with no fields or histories writes no NetCDF
+            write_netcdf(dataset, folder / f"{getattr(result, 'dataset_name', 'fields')}.nc")
         drawn = {f.name: (f.draw(folder / f"{f.name}.png"), f.caption) for f in result.figures()}
         sections = inputs_warnings_sections(result.inputs, warnings, result.analysis, guesses)
         sections += _headline_section(summary)

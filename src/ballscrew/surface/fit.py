@@ -40,7 +40,8 @@ G is ill-conditioned: it is the level of the power law extrapolated from the fit
 ω_c ≈ 10⁴–10⁵ cycles/m) to the scale G (≈ 10⁻¹⁰ m), so d ln G/dD = −ln(ω_c G)/(D − 1), about
 12/(D − 1). A measured (random) profile scatters from one record to the next: for a Brownian
 profile (D = 1.5) of 2¹⁶ points by ≈ 2 % in D and a factor ≈ 1.7 in G. ``FractalFit.D_stderr``
-and ``lnG_stderr`` (PSD) estimate this. Average several profiles (rows of an areal file) and
+and ``lnG_stderr`` (PSD) estimate this; the structure function gives none
+(``FractalFit.stderr_reason``). Average several profiles (rows of an areal file) and
 compare G values only at equal D.
 
 Sources: Majumdar, A. & Bhushan, B. (1990), J. Tribol. 112:205 and Wear 136:313; Berry, M. V. &
@@ -91,6 +92,13 @@ SF_MIN_DECADES = 10.0
 MIN_RELATIVE_RMS = 1.0e-9
 #: Physically plausible fractal roughness G, m; a fit outside it is refused.
 PLAUSIBLE_G: Range = (1.0e-30, 1.0e-2)
+#: Why the structure-function fit gives no standard errors.
+SF_STDERR_REASON = (
+    "not computed for the structure function: its lags are differences of one record, "
+    "correlated over the whole fit range, so the least-squares covariance of the log–log line "
+    "would understate the error (σ_D ≈ 0.001 against a miss of 0.02 on a W–M profile); the "
+    "PSD fit's standard errors estimate it"
+)
 #: Points per smoothing width on the evaluation grid of the fits.
 _GRID_PER_WIDTH = 4
 _SUBBINS = 16
@@ -114,12 +122,13 @@ class FractalFit:
             :mod:`ballscrew.surface.fit`; x in cycles/m or m.
         gamma: W–M frequency ratio γ used for G.
         D_stderr, lnG_stderr: standard errors of D and of ln G (≈ the relative error of G) for
-            a Gaussian random profile, PSD fit only (NaN otherwise): the periodogram bins are
-            taken as independent with variance mean²/rows (delta method through the
-            smoothing and the line fit). Rows of an areal measurement are not independent at
-            long wavelengths, so for them it is a lower bound; a W–M profile, whose line
-            amplitudes are fixed, scatters much less. G is ill-conditioned:
+            a Gaussian random profile, PSD fit only (NaN when D is not determined): the
+            periodogram bins are taken as independent with variance mean²/rows (delta method
+            through the smoothing and the line fit). Rows of an areal measurement are not
+            independent at long wavelengths, so for them it is a lower bound; a W–M profile,
+            whose line amplitudes are fixed, scatters much less. G is ill-conditioned:
             d ln G/dD = −ln(ω_c G)/(D − 1) at the centre ω_c of the fit range, e.g. ≈ 20.
+            None for the structure function, for the reason :attr:`stderr_reason` gives.
         notes: anything the caller should know (narrowed range, slope out of range…).
         x, y: the smoothed, corrected points that were fitted (for plots).
     """
@@ -135,11 +144,16 @@ class FractalFit:
     slope: float
     intercept: float
     gamma: float = 1.5
-    D_stderr: float = float("nan")
-    lnG_stderr: float = float("nan")
+    D_stderr: float | None = float("nan")
+    lnG_stderr: float | None = float("nan")
     notes: tuple[str, ...] = ()
     x: FloatArray = field(default_factory=lambda: np.empty(0), repr=False, compare=False)
     y: FloatArray = field(default_factory=lambda: np.empty(0), repr=False, compare=False)
+
+    @property
+    def stderr_reason(self) -> str | None:
+        """Why :attr:`D_stderr` and :attr:`lnG_stderr` are None (None when they are given)."""
+        return SF_STDERR_REASON if self.D_stderr is None else None
 
     @property
     def surface_dimension(self) -> float:
@@ -157,6 +171,7 @@ class FractalFit:
         out.pop("y")
         out["fit_range"] = list(self.fit_range)
         out["notes"] = list(self.notes)
+        out["stderr_reason"] = self.stderr_reason
         return out
 
 
@@ -522,6 +537,8 @@ def fit_structure_function(
         slope=slope,
         intercept=intercept,
         gamma=g,
+        D_stderr=None,
+        lnG_stderr=None,
         notes=tuple(notes),
         x=np.exp(x),
         y=np.exp(y),

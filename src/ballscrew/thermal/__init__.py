@@ -25,6 +25,7 @@ from ballscrew.thermal.convection import (
 )
 from ballscrew.thermal.elongation import (
     displacement_profile,
+    shaft_displacement,
     thermal_elongation,
     thermoelastic_elongation,
 )
@@ -77,6 +78,7 @@ __all__ = [
     "palmgren_torque",
     "pipe_coefficient",
     "rotating_cylinder",
+    "shaft_displacement",
     "simulate",
     "thermal_elongation",
     "thermoelastic_elongation",

@@ -43,6 +43,32 @@ def displacement_profile(
     return expansion * (u - u_fixed[..., None])
 
 
+def shaft_displacement(
+    z: NDArray[np.float64],
+    mean_rise: NDArray[np.float64],
+    expansion: float,
+    length: float,
+    fixed: float = 0.0,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """(stations, u): :func:`displacement_profile` from the shaft's start z = 0 to its end face
+    z = ``length``, so the end face moves by the elongation α∫θ̄ dz over the whole shaft.
+
+    Stations that stop short of the ends (the network's cell centres) get the two end faces
+    added, θ̄ held at the outer stations' values out to them (a network cell has one temperature
+    up to its faces): then u(length) equals the network's elongation Σ α θ̄_i Δz_i exactly on
+    uniform cells and to second order in the cell-size change otherwise, and the FE model's
+    α/A ∫θ dV to its quadrature.
+    """
+    z, theta = np.asarray(z, dtype=float), np.asarray(mean_rise, dtype=float)
+    tol = 1e-9 * length
+    if z[0] > tol:
+        z, theta = np.concatenate([[0.0], z]), np.concatenate([theta[..., :1], theta], axis=-1)
+    if z[-1] < length - tol:
+        z = np.concatenate([z, [length]])
+        theta = np.concatenate([theta, theta[..., -1:]], axis=-1)
+    return z, displacement_profile(z, theta, expansion, fixed)
+
+
 def thermoelastic_elongation(
     disc: Discretisation, theta: NDArray[np.float64], youngs_modulus: float, poisson: float
 ) -> float:
