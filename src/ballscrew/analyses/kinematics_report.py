@@ -14,7 +14,7 @@ from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
-from ballscrew.plotting import legend_outside, plain, pyplot, zero_noise
+from ballscrew.plotting import legend_outside, plain, pyplot, save_figure, zero_noise
 
 if TYPE_CHECKING:
     from ballscrew.analyses.kinematics import ContactFields, KinematicsRun
@@ -177,10 +177,7 @@ def sliding_map(fields: ContactFields, title: str, path: str | Path, arrows: int
     ax.set_xlabel("y along Y_A, across the groove [µm] (axes not to scale)")
     ax.set_ylabel("x along X_A, rolling direction [µm]")
     ax.set_title(plain(title), fontsize=10)
-    path = Path(path)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _loads_angles(run: KinematicsRun, path: Path) -> Path:
@@ -198,9 +195,7 @@ def _loads_angles(run: KinematicsRun, path: Path) -> Path:
         ax.set_xlabel("screw speed [rpm]")
         legend_outside(ax, fontsize=8)
     fig.suptitle(f"Ball of nut 1 versus speed (level {run.level})", fontsize=10)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _torques(run: KinematicsRun, path: Path) -> Path:
@@ -219,9 +214,7 @@ def _torques(run: KinematicsRun, path: Path) -> Path:
         ax.set_ylabel("drag torque [N·m]")
         ax.set_ylim(bottom=0)
         legend_outside(ax, fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 NOISE = 1e-9

@@ -11,7 +11,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.plotting import plain, pyplot, revolutions_axis
+from ballscrew.plotting import plain, pyplot, revolutions_axis, save_figure
 
 if TYPE_CHECKING:
     from ballscrew.calibration.result import CalibrationResult
@@ -198,10 +198,7 @@ def fit_plot(result: CalibrationResult, title: str, path: str | Path) -> Path:
     axr.plot(result.revolutions / rev_scale, result.residuals * factor, "o", color="tab:red", ms=3)
     axr.set_xlabel(rev_label)
     axr.set_ylabel(f"model − measured [{unit}]", fontsize=8)
-    path = Path(path)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def fit_dataset(result: CalibrationResult) -> xr.Dataset:
