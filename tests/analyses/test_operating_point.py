@@ -204,15 +204,15 @@ def test_the_torque_is_reported_by_part_with_its_regime(case):
 
 def test_a_steady_field_draws_no_empty_time_axis(case, tmp_path, monkeypatch):
     """Without a transient the elongation figure had an empty 0–1 min time axis."""
-    import matplotlib.pyplot as plt
-
     from ballscrew.analyses import thermal_report
 
     point = operating_point(case, speed=1500 * RPM)
     drawn = []
-    original = plt.Figure.savefig
+    original = thermal_report.save_figure
     monkeypatch.setattr(
-        plt.Figure, "savefig", lambda fig, *a, **k: drawn.append(fig) or original(fig, *a, **k)
+        thermal_report,
+        "save_figure",
+        lambda fig, *a, **k: drawn.append(fig) or original(fig, *a, **k),
     )
     thermal_report.elongation_plot(point.field, tmp_path / "e.png")
     [ax] = drawn[0].axes
