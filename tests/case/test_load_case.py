@@ -4,6 +4,7 @@ import pytest
 
 from ballscrew import load_case
 from ballscrew.case import CaseError, with_overrides
+from ballscrew.case.inputs import guessed_defaults
 
 
 def test_reference_case_reads_in_si(gao_case_path):
@@ -181,3 +182,21 @@ def test_errors_inside_a_table_array_name_the_entry(wear_case_path):
     typo = [{"axial_load": 2000.0, "speed": 1.0, "revolutions": 1e5, "sped": 1.0}]
     with pytest.raises(CaseError, match=r"wear\.programme\.0\.sped: unknown key"):
         load_case(wear_case_path, {"wear.programme": typo})
+
+
+def test_a_preload_method_error_names_the_field_once(gao_case_path):
+    with pytest.raises(CaseError) as info:
+        load_case(gao_case_path, {"screw.nuts": 1, "screw.preload_method": "spacer"})
+    message = str(info.value)
+    assert "screw.preload_method = 'spacer' is not allowed with screw.nuts = 1" in message
+    assert "screw.screw." not in message
+
+
+def test_the_single_nut_preload_method_default_is_listed_as_a_guess(gao_case_path):
+    """A single nut's preload method left out is a guess (oversized balls); a double nut's is
+    not (only the spacer fits), nor a method the case gives."""
+    single = load_case(gao_case_path, {"screw.nuts": 1})
+    assert "GUESS" in guessed_defaults(single)["screw.preload_method"]
+    assert "screw.preload_method" not in guessed_defaults(load_case(gao_case_path))
+    given = load_case(gao_case_path, {"screw.nuts": 1, "screw.preload_method": "oversized_balls"})
+    assert "screw.preload_method" not in guessed_defaults(given)

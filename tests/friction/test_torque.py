@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import warnings
 
 import pytest
 
@@ -10,7 +11,7 @@ import ballscrew
 from ballscrew.analyses.friction import FourPointContactWarning, friction_torque, seal_torque
 from ballscrew.analyses.kinematics import ball_model, computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
-from ballscrew.case import CaseError
+from ballscrew.case import CaseError, with_overrides
 from ballscrew.errors import InputError
 from ballscrew.friction import (
     FRICTION_MODELS,
@@ -219,3 +220,26 @@ def test_oversized_ball_nut_friction_is_below_the_double_nut(wear_case_path):
         rs = friction_torque(single, speed=100.0)
     assert rs.parts["sliding"] == pytest.approx(rd.parts["sliding"], rel=1e-9)
     assert rs.parts["drag"] == pytest.approx(0.5 * rd.parts["drag"], rel=1e-9)
+
+
+def test_offset_lead_halves_share_the_nut_circuits(wear_case_path):
+    """An offset-lead nut is one body with ``friction.circuits`` circuits, half of them in each
+    half: its return loss is the four-point nut's (same body and balls, same ball speed), not
+    twice it, and an odd circuit count cannot be split."""
+    base = {
+        "friction.model": "ball_model",
+        "operating.axial_load": 0.0,
+        "operating.speed": "1000 rpm",
+        "screw.nuts": 1,
+    }
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FourPointContactWarning)
+        four = friction_torque(ballscrew.load_case(wear_case_path, base))
+    offset_case = ballscrew.load_case(
+        wear_case_path, {**base, "screw.preload_method": "offset_lead"}
+    )
+    offset = friction_torque(offset_case)
+    assert offset.parts["recirculation"] == pytest.approx(four.parts["recirculation"], rel=0.05)
+    odd = with_overrides(offset_case, {"friction.circuits": 3})
+    with pytest.raises(InputError, match=r"friction\.circuits = 3 .*even number"):
+        friction_torque(odd)

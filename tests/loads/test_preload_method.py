@@ -109,6 +109,10 @@ def test_both_contact_pairs_widen_one_ring() -> None:
 
 def test_flank_forces_of_one_and_two_flanks() -> None:
     assert flank_forces(FP, 500.0, 1) == (2000.0, 0.0)
-    assert flank_forces(FP, 500.0, 2) == nut_forces(FP, 500.0)
+    # two flanks: the contact-only double-nut law, F1 − F2 = F_a and equal and opposite
+    # Hertz approaches, F1^(2/3) + F2^(2/3) = 2 F_p^(2/3) (below lift-off)
+    f1, f2 = flank_forces(FP, 500.0, 2)
+    assert f1 - f2 == pytest.approx(500.0, rel=1e-12)
+    assert f1 ** (2 / 3) + f2 ** (2 / 3) == pytest.approx(2 * FP ** (2 / 3), rel=1e-9)
     with pytest.raises(InputError, match="flanks"):
         flank_forces(FP, 500.0, 3)

@@ -56,14 +56,26 @@ def seal_torque(case: Case) -> float:
 
 
 def nut_loss_parameters(case: Case) -> NutLossParameters:
-    """Ball–ball, drag and ball-return parameters of ``[friction]`` (the lubricant's density is
-    the ball model's, see :func:`~ballscrew.analyses.kinematics.ball_model`)."""
+    """Ball–ball, drag and ball-return parameters of ``[friction]`` per loaded flank (the
+    lubricant's density is the ball model's, see
+    :func:`~ballscrew.analyses.kinematics.ball_model`). The two halves of an offset-lead nut
+    are run as two flanks, each with half of the nut's ``friction.circuits``."""
     spec = case.friction
+    circuits = spec.circuits
+    if case.screw.resolved_preload_method == "offset_lead":
+        if circuits % 2:
+            raise InputError(
+                "friction.circuits",
+                circuits,
+                'an even number with screw.preload_method = "offset_lead" (each half of the '
+                "nut has its own circuits)",
+            )
+        circuits //= 2
     return NutLossParameters(
         ball_ball_load_ratio=spec.ball_ball_load_ratio,
         ball_ball_friction=spec.ball_ball_friction,
         lubricant_fill=spec.lubricant_fill,
-        circuits=spec.circuits,
+        circuits=circuits,
         ball_train=spec.ball_train,
         return_friction=spec.return_friction,
         return_fraction=spec.return_fraction,

@@ -123,6 +123,9 @@ def _guessed(model: BaseModel, prefix: str) -> dict[str, str]:
             text = field_description(info)
             if (value is not None or "None = " in text) and any(m in text for m in GUESS_MARKS):
                 found[key] = text
+    conditional = getattr(model, "guessed_inputs", None)  # guesses that depend on other inputs
+    if callable(conditional):
+        found |= {prefix + name: text for name, text in conditional().items()}
     declared = getattr(model, "assumed", None)  # the case's own [assumed] table
     if isinstance(declared, dict):
         for dotted, why in declared.items():

@@ -69,18 +69,29 @@ class ScrewSpec(Model):
         """``preload_method``, or its default for ``nuts``."""
         return self.preload_method or ("spacer" if self.nuts == 2 else "oversized_balls")
 
+    def guessed_inputs(self) -> dict[str, str]:
+        """Inputs left at a default that is a guess only in this configuration: the preload
+        method of a single nut (a double nut has only the spacer)."""
+        if self.nuts == 1 and self.preload_method is None:
+            return {
+                "preload_method": "oversized_balls for a single nut [GUESS: makers preload "
+                "single nuts mostly by oversized balls, many also by an offset lead; it "
+                "matters only with a preload]"
+            }
+        return {}
+
     @model_validator(mode="after")
     def _preload_method_fits(self) -> ScrewSpec:
         method = self.resolved_preload_method
         if (method == "spacer") != (self.nuts == 2):
             allowed = "spacer" if self.nuts == 2 else "oversized_balls or offset_lead"
             raise ValueError(
-                f"screw.preload_method = {method!r} is not allowed with screw.nuts = "
+                f"preload_method = {method!r} is not allowed with screw.nuts = "
                 f"{self.nuts}: {allowed}"
             )
         if method == "offset_lead" and self.balls_per_nut % 2:
             raise ValueError(
-                f"screw.balls_per_nut = {self.balls_per_nut} is not allowed with "
+                f"balls_per_nut = {self.balls_per_nut} is not allowed with "
                 'screw.preload_method = "offset_lead": an even number (two equal halves)'
             )
         return self

@@ -17,7 +17,9 @@ from typing import Any
 __all__ = ["NUT_WALL_BALLS", "check_nut_body", "least_nut_outer_diameter"]
 
 NUT_WALL_BALLS = 0.5
-"""Least wall of the nut body beyond its groove bottom, in ball diameters (radial)."""
+"""Least wall of the nut body beyond its groove bottom, in ball diameters (radial) [GUESS: the
+elastic ring's Newton solve was seen to fail 0.4–1.5 mm over the groove on the example screw;
+real nuts have walls of several balls]."""
 
 
 def least_nut_outer_diameter(pitch_diameter: float, ball_diameter: float) -> float:
@@ -35,8 +37,9 @@ def check_nut_body(case: Any) -> Any:
     least = least_nut_outer_diameter(d_m, d_w)
     if not d_o >= least:
         raise ValueError(
-            f"loads.nut_outer_diameter = {d_o:g} m is not allowed: at least d_m + 2·D_b = "
-            f"{least:g} m (the groove bottom d_m + D_b = {d_m + d_w:g} m and a wall of half "
-            "a ball around it, which the nut's elastic ring needs)"
+            f"loads.nut_outer_diameter = {d_o:g} m ({d_o * 1e3:.4g} mm) is not allowed: at least "
+            f"d_m + 2·D_b = {least:g} m ({least * 1e3:.4g} mm; the groove bottom d_m + D_b = "
+            f"{(d_m + d_w) * 1e3:.4g} mm and a wall of half a ball around it, which the nut's "
+            "elastic ring needs)"
         )
     return case

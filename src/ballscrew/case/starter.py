@@ -208,6 +208,13 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     d0, d_m, lead, ball = sheet.nominal_diameter, sheet.d_m, sheet.lead, sheet.ball_diameter
     per_circuit = circuit_ball_count(d_m, ball, lead, sheet.turns)
     balls = per_circuit * sheet.circuits
+    if sheet.preload_method == "offset_lead" and balls % 2:
+        raise InputError(
+            "--preload-method",
+            "offset_lead",
+            f"two equal halves of the nut's balls; --turns {sheet.turns:g}x{sheet.circuits} "
+            f"gives {balls}: give an even number of circuits or oversized_balls",
+        )
     geometry = ScrewGeometry(d_m, lead, ball, CONFORMITY, CONFORMITY, math.pi / 4.0)
     ca = dynamic_load_rating(geometry, balls)
     preload = sheet.preload
