@@ -104,3 +104,13 @@ def test_a_number_that_is_not_defined_is_none_with_its_reason():
     assert plain["t"]["value"] is None and "finite" in plain["t"]["reason"]
     assert plain["x"] == [0, 1] and type(plain["x"][0]) is int
     assert plain["3"] == [1]
+
+
+def test_an_infinite_number_says_it_is_infinite():
+    """+∞ (a lifted-off nut's resistance) is not 'not defined': its reason says infinite."""
+    plain = json_ready(
+        {"r": {"value": math.inf, "unit": "K/W"}, "s": {"value": -np.inf, "unit": ""}}
+    )
+    assert plain["r"] == {"value": None, "unit": "K/W", "reason": "infinite (+∞): no limit"}
+    assert plain["s"]["value"] is None and plain["s"]["reason"].startswith("infinite (−∞)")
+    json.dumps(plain, allow_nan=False)

@@ -54,6 +54,8 @@ __all__ = [
 
 #: Why a summary number is None when its producer gives no reason of its own.
 UNDEFINED = "not defined for this run (the computation gave no finite number)"
+INFINITE = {True: "infinite (+∞): no limit", False: "infinite (−∞)"}
+"""The reason given for a value of ±∞ (a lifted-off nut's resistance, a life without load)."""
 
 
 def quantity(number: float, unit: str, undefined: str = UNDEFINED) -> dict[str, Any]:
@@ -78,7 +80,9 @@ def json_ready(obj: Any) -> Any:
     if isinstance(obj, Mapping):
         out = {str(k): json_ready(v) for k, v in obj.items()}
         if "unit" in out and "value" in out and out["value"] is None:
-            out.setdefault("reason", UNDEFINED)
+            raw = obj["value"]
+            infinite = isinstance(raw, float | np.floating) and math.isinf(raw)
+            out.setdefault("reason", INFINITE[raw > 0] if infinite else UNDEFINED)
         return out
     if isinstance(obj, list | tuple):
         return [json_ready(v) for v in obj]
