@@ -5,6 +5,7 @@ same balls per flank and with hand numbers."""
 from __future__ import annotations
 
 import pytest
+from tests.quick_cases import EXAMPLES
 
 from ballscrew.analyses.kinematics import (
     ball_kinematics,
@@ -18,7 +19,6 @@ from ballscrew.analyses.thermal_setup import build_problem
 from ballscrew.case import load_case, with_overrides
 from ballscrew.contact_resistance import parallel_resistance
 from ballscrew.kinematics.torque import ball_drag
-from tests.quick_cases import EXAMPLES
 
 FOUR = {"screw.nuts": 1}
 OFFSET = {"screw.nuts": 1, "screw.preload_method": "offset_lead"}
