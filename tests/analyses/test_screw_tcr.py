@@ -105,13 +105,14 @@ def test_t_tr3_axial_load_through_lift_off(doc_case):
 
 def test_single_nut_tcr_takes_its_loaded_flank(gao_case_path):
     """A preloaded single nut (oversized balls, the default) carries F1 of (P1) on its loaded
-    flank, not F_p + F_a (the old one-flank single nut, the bug fixed here); without preload it
-    carries F_a."""
+    flank, not F_p + F_a (the old one-flank single nut, the bug fixed here), and F2 on the other
+    (left out before, a bug fixed here too); without preload it carries F_a."""
     over = {"screw.nuts": 1, "operating.axial_load": 500.0, "numerics.cells_across": 24}
     result = ballscrew.screw_tcr(load_case(gao_case_path, over))
-    assert result.nut_forces == pytest.approx((float(nut_forces(1500.0, 500.0).f1), 0.0))
+    forces = nut_forces(1500.0, 500.0)
+    assert result.nut_forces == pytest.approx((float(forces.f1), float(forces.f2)))
     assert result.nut_forces[0] == pytest.approx(1756.957, rel=1e-6)
-    assert len(result.nuts) == 1
+    assert [n.index for n in result.nuts] == [1, 2]  # both flanks (the four-point pairs)
     bare = ballscrew.screw_tcr(load_case(gao_case_path, {**over, "operating.preload": 0.0}))
     assert bare.nut_forces == (500.0, 0.0)
 

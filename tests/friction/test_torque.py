@@ -159,9 +159,21 @@ def test_case_names_come_from_the_registry(wear_case_path):
         ballscrew.load_case(wear_case_path, {"friction.seals": -1})
 
 
-def test_ball_parts_are_the_kinematics_drag_plus_hysteresis(wear_case_path):
+@pytest.mark.parametrize(
+    "single",
+    [
+        {},
+        {"screw.nuts": 1, "screw.preload_method": "oversized_balls"},
+        {"screw.nuts": 1, "screw.preload_method": "offset_lead"},
+    ],
+    ids=["double", "four_point", "offset_lead"],
+)
+@pytest.mark.filterwarnings("ignore:screw.preload_method = oversized_balls")
+def test_ball_parts_are_the_kinematics_drag_plus_hysteresis(wear_case_path, single):
+    """Double nut and preloaded single nuts: the kinematics drag counts the same flanks and balls
+    per flank as the friction ball model."""
     case = ballscrew.load_case(
-        wear_case_path, {"friction.model": "ball_model", "operating.axial_load": 0.0}
+        wear_case_path, {"friction.model": "ball_model", "operating.axial_load": 0.0, **single}
     )
     r = friction_torque(case, speed=100.0)
     drag = computed_drag_torque(case, speed=100.0)

@@ -191,6 +191,6 @@ def test_bad_input_before_any_work(ref_case, monkeypatch):
     dry = updated(ref_case, medium={"viscosity": None, "pressure_viscosity": None})
     with pytest.raises(InputError, match="viscosity"):
         ballscrew.ball_kinematics(dry, level=2)
-    single = updated(ref_case, screw={"nuts": 1})
-    with pytest.raises(InputError, match="nut"):
+    single = updated(ref_case, screw={"nuts": 1}, operating={"preload": 0.0, "axial_load": 500.0})
+    with pytest.raises(InputError, match="nut"):  # one loaded flank (a preloaded one has two)
         ballscrew.ball_kinematics(single, nut=2)

@@ -208,13 +208,14 @@ class NutBallLoad:
 
 
 def chain_ball_loads(case: Case, params: ScrewParameters) -> tuple[NutBallLoad, ...]:
-    """Per nut (nut 1 first) the force and ball load the contact and TCR chains use; a single
-    nut preloaded on both flanks gives its loaded flank only."""
+    """Per loaded flank (flank 1 first: the nuts of a double nut, the two contact pairs of a
+    four-point nut, the two halves of an offset-lead nut) the force and ball load the contact
+    and TCR chains use."""
     if case.loads.distribution == "uniform":
-        return tuple(NutBallLoad(n.force, n.ball_load, 1.0) for n in params.nuts)
+        return tuple(NutBallLoad(n.force, n.ball_load, 1.0) for n in params.flank_loads)
     result = ball_loads(case)
     rows = zip(result.axial_forces, result.loads, strict=True)
     return tuple(
         NutBallLoad(float(force), float(q.max()), float(q.max() / q.mean()) if q.max() > 0 else 1.0)
-        for force, q in list(rows)[: len(params.nuts)]
+        for force, q in rows
     )

@@ -22,7 +22,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 from typing import Any, ClassVar
 
@@ -132,10 +132,12 @@ def prepare(
 
 
 def nut_loads(case: Case, preload: float | None = None) -> list[tuple[int, float, int]]:
-    """(nut number, axial force, flank) of each nut, from :class:`ScrewParameters`.
+    """(nut number, axial force, flank) of each loaded flank, from :class:`ScrewParameters`.
 
-    Nut 1 carries F_1 on flank s = +1 and nut 2 carries F_2 on s = −1; a single nut its loaded
-    flank's F_1 (preloaded on both flanks, (P1)) or F_a (no preload) on s = +1. ``preload``
+    Nut 1 carries F_1 on flank s = +1 and nut 2 carries F_2 on s = −1. A single nut preloaded
+    on both flanks (P1) gives both: F_1 on s = +1 as number 1 and F_2 on s = −1 as number 2 (the
+    two contact pairs of a four-point ball, or the two halves of an offset-lead nut, each with
+    ``params.flanks.balls`` balls); without preload its one flank, F_a on s = +1. ``preload``
     overrides the case's.
     """
     fp = case.operating.preload if preload is None else float(preload)
@@ -144,7 +146,7 @@ def nut_loads(case: Case, preload: float | None = None) -> list[tuple[int, float
     if case.screw.nuts == 2 and fp <= 0.0:
         raise InputError("preload", fp, "a preload > 0 N for a double nut")
     params = ScrewParameters.from_case(case).with_loads(preload=fp)
-    return [(n.index, n.force, n.flank) for n in params.nuts]
+    return [(n.index, n.force, n.flank) for n in params.flank_loads]
 
 
 def ball_kinematics(
@@ -184,8 +186,12 @@ def drag_torque(case: Case, preload: float | None = None) -> float:
 def _model_torque(
     model: BallModel, case: Case, omega: float, level: int, preload: float | None = None
 ) -> float:
+    loads = nut_loads(case, preload)  # checks the preload
+    if preload is not None:  # a single nut's flanks (and balls per flank) follow the preload
+        params = ScrewParameters.from_case(case).with_loads(preload=float(preload))
+        model = replace(model, balls=params.flanks.balls)
     total = 0.0
-    for _, force, flank in nut_loads(case, preload):
+    for _, force, flank in loads:
         if force > 0.0:
             state = solve_ball(model, omega, force, flank, level)
             total += model.balls * ball_drag(model, state).dissipation_torque

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import xarray as xr
 
+from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.kinematics.balance import BallState
@@ -63,7 +64,7 @@ def _state_summary(
 def summary(run: KinematicsRun) -> dict[str, Any]:
     """Scalars at the case speed, the curves versus speed and the options used."""
     case = run.case
-    balls = case.screw.balls_per_nut
+    balls = ScrewParameters.from_case(case).flanks.balls  # per loaded flank
     nuts = {}
     for number, state in run.states.items():
         fields = run.fields if number == 1 else None

@@ -7,7 +7,9 @@ manual: *Contact resistance*).
 
 Every ball of a nut carries the same load (the paper's assumption). The two nuts load opposite
 flanks; the flank mirrors the gap (h₋₁(x, y) = h₊₁(−x, −y)) and leaves the resistance unchanged,
-so one solve serves every contact of equal load and side.
+so one solve serves every contact of equal load and side. A preloaded single nut has the same
+two flank rows: a four-point nut's are the two contact pairs of each of its balls, an
+offset-lead nut's its two halves; both run in parallel into the one nut body.
 """
 
 from __future__ import annotations
@@ -56,9 +58,9 @@ class NutTCR:
     """One nut: its force, ball load, the two contacts of a ball, and what they add up to."""
 
     index: int
-    """1 = the nut the axial load presses on, 2 = the one it unloads."""
+    """1 = the nut (flank) the axial load presses on, 2 = the one it unloads."""
     force: float
-    """Axial force on the nut [N]."""
+    """Axial force on the nut (flank) [N]."""
     ball_load: float
     """Normal load of each of its balls [N]."""
     balls: int
@@ -104,9 +106,13 @@ class ScrewTCR(Presented):
 
     The results depend on it (theory manual, *Contact resistance*)."""
     nut_forces: tuple[float, float]
-    """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
+    """(F1, F2): axial force on the loaded and the unloaded flank [N] (the two nuts of a
+    double nut, the two flanks of a preloaded single nut; F2 = 0 for one loaded flank)."""
     nuts: tuple[NutTCR, ...]
-    """The nuts that carry load (a lifted-off nut is absent)."""
+    """One entry per loaded flank (a lifted-off one is absent): the nuts of a double nut; the
+    two contact pairs of the same balls of a four-point nut, or the two halves of an
+    offset-lead nut (``params.flanks.balls`` balls each), whose paths run in parallel into the
+    one nut body."""
     case: Case
     """The case that was solved."""
     warnings: tuple[str, ...] = ()
@@ -250,7 +256,8 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}
     with recorded_warnings() as early:  # the distribution's (a ball above the contact-law table)
         chain = chain_ball_loads(case, params)
-    loaded = [(nut, used) for nut, used in zip(params.nuts, chain, strict=True) if used.force > 0.0]
+    flanks = params.flank_loads
+    loaded = [(nut, used) for nut, used in zip(flanks, chain, strict=True) if used.force > 0.0]
     keys: dict[tuple[Side, float], int] = {}  # (side, Q) → flank: the distinct contacts
     for nut, used in loaded:
         for side in SIDES:
@@ -285,7 +292,7 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
                     index=nut.index,
                     force=used.force,
                     ball_load=used.ball_load,
-                    balls=params.balls_per_nut,
+                    balls=params.flanks.balls,
                     screw=screw_side,
                     nut=nut_side,
                     axial_deflection=approach / params.axial_projection,
@@ -296,7 +303,7 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         compared, spread = compare_models(params, case.tcr, models, nuts, area)
         films = ()
         if case.tcr.film_path != "none":
-            films = nut_films(case, params, nuts, [n.index for n in params.nuts])
+            films = nut_films(case, params, nuts, [n.index for n in flanks])
     return ScrewTCR(
         case_name=case.name,
         variant=models["screw"].variant,

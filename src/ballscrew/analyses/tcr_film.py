@@ -152,7 +152,9 @@ def _radii(params: ScrewParameters, side: Side) -> tuple[float, float]:
 def nut_films(
     case: Case, params: ScrewParameters, nuts: Sequence[NutTCR], indices: Sequence[int]
 ) -> tuple[NutFilm, ...]:
-    """The film of every nut of ``indices``; one missing from ``nuts`` (lifted off) is unloaded.
+    """The film of every loaded flank of ``indices`` (a nut of a double nut; a flank of a
+    preloaded single nut, ``params.flanks.balls`` balls); one missing from ``nuts`` (lifted
+    off) is unloaded.
 
     A loaded contact's film fills the deformed Hertz gap from h0 (:func:`_separation`) to h_max
     (:func:`_edge`); contacts of equal side and ball load (both nuts at zero axial load) share
@@ -187,7 +189,7 @@ def nut_films(
             g = ellipse_gap_conductance(lam, *radii[side], h0, edges[side], rarefaction)
             paths[side] = FilmPath(g, h0, edges[side])
         films.append(
-            NutFilm(index, params.balls_per_nut, paths["screw"], paths["nut"], False, radii)
+            NutFilm(index, params.flanks.balls, paths["screw"], paths["nut"], False, radii)
         )
     return tuple(films)
 

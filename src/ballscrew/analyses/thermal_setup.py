@@ -32,6 +32,7 @@ from ballscrew.analyses.thermal_cooling import (
 from ballscrew.budget import check_memory
 from ballscrew.case import Case, with_overrides
 from ballscrew.case.thermal_spec import ThermalSpec
+from ballscrew.contact_resistance import parallel_resistance
 from ballscrew.errors import InputError
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
 from ballscrew.thermal.boundary import fixed_point, mounting_coefficient
@@ -276,18 +277,19 @@ def build_problem(
             r_pp = float(contact.resistance_per_area)
             interfaces.append(NutInterface(name, r_pp / bore_area, 0.0, float("nan"), bore_area))
             continue
-        path = paths.get(k + 1)
-        with_film = path.resistance if path is not None and tcr.films else None
-        nut = by_index.get(k + 1)
-        if nut is None:  # lifted off: nothing, or its balls' films
+        flanks = _body_flanks(k + 1, nuts_count)
+        films = [paths[i].resistance for i in flanks if i in paths] if tcr.films else []
+        with_film = _parallel(films) if films else None
+        loaded = [by_index[i] for i in flanks if i in by_index]
+        if not loaded:  # lifted off: nothing, or its balls' films
             interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area, with_film))
             continue
-        r = micro[nut.index]
-        interfaces.append(
-            NutInterface(
-                name, r, paths[nut.index].constriction, r * nut.apparent_area, bore_area, with_film
-            )
-        )
+        r = _parallel([micro[n.index] for n in loaded])
+        cons = _parallel([micro[n.index] + paths[n.index].constriction for n in loaded]) - r
+        if len(loaded) == 1:  # one flank: its own split, bit for bit
+            cons = paths[loaded[0].index].constriction
+        area = sum(n.apparent_area for n in loaded)
+        interfaces.append(NutInterface(name, r, cons, r * area, bore_area, with_film))
 
     nut_parts = [
         RingPart(
@@ -532,17 +534,31 @@ def check_mesh(spec: ThermalSpec, problem: ThermalProblem, model: str) -> None:
             raise InputError(f"thermal.bearings.{k}.width", bearing.width, cell)
 
 
+def _parallel(resistances: list[float]) -> float:
+    """1/Σ(1/R_i) [K/W]; one resistance is returned unchanged (bit for bit)."""
+    return resistances[0] if len(resistances) == 1 else float(parallel_resistance(resistances))
+
+
+def _body_flanks(body: int, nuts: int) -> tuple[int, ...]:
+    """The loaded flanks (rows of the TCR chain) whose balls touch nut body ``body``: its own
+    flank for a double nut, both flanks of a preloaded single nut (their paths in parallel)."""
+    return (body,) if nuts == 2 else (1, 2)
+
+
 def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = None) -> tuple:
     """:class:`~ballscrew.thermal.threed.BallPatches` of each part of ``problem`` (3-D model).
 
     Loaded balls and Hertz semi-axes of the screw contact from the TCR chain (a, along the
     rolling direction; b·cos β across the groove projected on the cylinder); with a given R″
-    the balls per nut of the case and mesh-sized patches. Spacers: None.
+    the balls per nut of the case and mesh-sized patches. Spacers: None. A preloaded single nut
+    takes the balls of both flanks (a four-point ball once) and the patch of the more loaded
+    flank 1.
     """
     from ballscrew.thermal.threed import BallPatches
 
     screw = case.screw
-    beta = ScrewParameters.from_case(case).geometry.contact_angle
+    params = ScrewParameters.from_case(case)
+    beta = params.geometry.contact_angle
     by_index = {}
     if thermal_spec(case).contact.source == "tcr":
         tcr = tcr if tcr is not None else _cached_tcr(case)
@@ -554,12 +570,13 @@ def ball_patches(case: Case, problem: ThermalProblem, tcr: ScrewTCR | None = Non
             out.append(None)
             continue
         k += 1
-        nut = by_index.get(k)
-        if nut is None:
+        loaded = [by_index[i] for i in _body_flanks(k, screw.nuts) if i in by_index]
+        if not loaded:
             out.append(BallPatches(screw.balls_per_nut, screw.lead))
             continue
-        h = nut.screw.contact.hertz
-        out.append(BallPatches(nut.balls, screw.lead, (h.a, h.b * math.cos(beta))))
+        balls = loaded[0].balls if params.flanks.shared else sum(n.balls for n in loaded)
+        h = loaded[0].screw.contact.hertz
+        out.append(BallPatches(balls, screw.lead, (h.a, h.b * math.cos(beta))))
     return tuple(out)
 
 
