@@ -100,3 +100,14 @@ def test_kinematics_report_entries_add_up_to_the_contact_losses(case):
     total = summary["drag_torque"]["contact_losses"]["value"]
     assert len(parts) == 2
     assert sum(parts) == pytest.approx(total, rel=1e-12)
+
+
+def test_the_tcr_report_says_nut_1_and_2_are_the_flanks_of_a_single_nut(case, double):
+    from ballscrew.analyses.tcr_report import sections
+
+    def text(result) -> str:
+        return " ".join(sections(result)[0].paragraphs)
+
+    assert "four-point contact" in text(screw_tcr(case(**FOUR)))
+    assert "two halves" in text(screw_tcr(case(**OFFSET)))
+    assert "loaded flanks" not in text(double)

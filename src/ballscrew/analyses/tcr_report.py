@@ -264,6 +264,23 @@ def figures(result: ScrewTCR) -> list[Figure]:
     return out
 
 
+def _single_nut_note(screw: Any) -> tuple[str, ...]:
+    """For a preloaded single nut: "nut 1" and "nut 2" of the tables are its two flanks."""
+    method = screw.resolved_preload_method
+    if screw.nuts != 1 or method == "spacer":
+        return ()
+    what = {
+        "oversized_balls": "the two contact pairs of the same balls (four-point contact), "
+        "in parallel into the one nut body",
+        "offset_lead": "its two halves (half the balls each), in parallel into the one nut body",
+    }[method]
+    return (
+        f"A single nut preloaded by {method.replace('_', ' ')}: 'nut 1' and 'nut 2' below are "
+        f"its two loaded flanks, {what} (nut 2 is absent when it is lifted off or without "
+        "preload).",
+    )
+
+
 def sections(result: ScrewTCR) -> list[Section]:
     """The report section: the screw's resistance, then each nut's."""
     case = result.case
@@ -295,6 +312,7 @@ def sections(result: ScrewTCR) -> list[Section]:
                 "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "
                 "cell size Δ_f; compare results only at equal Δ_f.",
                 HEADLINE,
+                *_single_nut_note(case.screw),
                 *(
                     (
                         "Elastic ball-load distribution: every ball of a nut is taken at the most "
