@@ -52,3 +52,18 @@ def test_ball_model_and_tcr_film_path_share_one_sigma(measured):
     case = ballscrew.load_case("examples/gao2019_tcr.toml", overrides)
     tcr = gaussian_joint(ScrewParameters.from_case(case), case.tcr, "screw").sigma
     assert ball_model(case).surface.film_roughness == pytest.approx(tcr, rel=1e-12)
+
+
+def test_a_rough_ball_adds_its_sigma_in_quadrature():
+    """σ_Λ = √(σ_raceway² + σ_ball²) over the same band (Tallian 1967): a ball as rough as the
+    raceway gives √2 × the smooth-ball value, a ball of another (D, G) its own band σ."""
+    smooth = ballscrew.load_case("examples/gao2019_tcr.toml")
+    sigma = ball_model(smooth).surface.film_roughness
+    twin = {"surface.ball": {"D": smooth.surface.D, "G": smooth.surface.G}}
+    rough = ballscrew.load_case("examples/gao2019_tcr.toml", twin)
+    assert ball_model(rough).surface.film_roughness == pytest.approx(math.sqrt(2) * sigma)
+    ball = {"D": 1.5, "G": 1e-10}
+    other = ballscrew.load_case("examples/gao2019_tcr.toml", {"surface.ball": ball})
+    band = (smooth.tcr.sampling_length, smooth.tcr.cutoff_length)
+    expected = math.hypot(sigma, composite_roughness(1.5, 1e-10, *band))
+    assert ball_model(other).surface.film_roughness == pytest.approx(expected, rel=1e-12)

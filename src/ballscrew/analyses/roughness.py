@@ -8,15 +8,24 @@ E6.6). The fractal asperity model keeps its own σ over one micro-contact cell (
 
 from __future__ import annotations
 
+import math
+
 from ballscrew.case import Case
+from ballscrew.lubrication import composite_roughness
 
 __all__ = ["roughness_input"]
 
 
 def roughness_input(case: Case) -> float | tuple[float, float]:
-    """``AsperitySurface.roughness`` of the case's raceway: the measured σ [m] or the band
-    (L_u, l_c) [m] of (F3)."""
+    """``AsperitySurface.roughness`` of the case's contact: the measured σ [m], the band
+    (L_u, l_c) [m] of (F3) for a smooth ball, or with a rough ball (``surface.ball``) the
+    composite σ = √(σ_raceway² + σ_ball²) of both profiles over that band (Tallian 1967)."""
     tcr = case.tcr
     if tcr.rms_roughness is not None:
         return float(tcr.rms_roughness)
-    return (tcr.sampling_length, tcr.cutoff_length)
+    band = (tcr.sampling_length, tcr.cutoff_length)
+    ball = case.surface.ball
+    if ball is None:
+        return band
+    raceway = composite_roughness(case.surface.D, case.surface.G, *band)
+    return math.hypot(raceway, composite_roughness(ball.D, ball.G, *band))

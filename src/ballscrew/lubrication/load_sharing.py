@@ -49,9 +49,10 @@ def composite_roughness(
     """RMS roughness σ of a raceway for the film parameter Λ = h/σ (E6.6), m.
 
     The Majumdar–Bhushan (1990) profile (D, G) over the wavelengths [l_c, L_u] of a roughness
-    measurement, (F3): σ² = G^(2(D−1)) (L_u^(4−2D) − l_c^(4−2D)) / (2 ln γ (4 − 2D)). The
-    ball is smooth beside the raceway, so this is the composite √(σ₁² + σ₂²) of the contact
-    (Tallian 1967). The same σ is the one of the TCR correlations and of their film path.
+    measurement, (F3): σ² = G^(2(D−1)) (L_u^(4−2D) − l_c^(4−2D)) / (2 ln γ (4 − 2D)). With a
+    smooth ball this is the composite √(σ₁² + σ₂²) of the contact (Tallian 1967); a rough ball's
+    own σ over the same band adds in quadrature. The same σ is the one of the TCR correlations
+    and of their film path.
     """
     return mb.profile_rms_roughness(D, G, sampling_length, 1.0 / cutoff_length, gamma)
 
