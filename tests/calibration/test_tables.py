@@ -39,6 +39,8 @@ def test_a_dict_of_columns_follows_the_header_rules() -> None:
         }
     )
     assert scheduled.values[0] == pytest.approx(1500.0)
+    generated = read_table({"revolutions": (r for r in (0, 1)), "preload": (p for p in (9, 8))})
+    np.testing.assert_allclose(generated.values, [9.0, 8.0])
     np.testing.assert_allclose(scheduled.schedule, [[20 * np.pi, 1e3], [20 * np.pi, 2e3]])
 
 
@@ -52,6 +54,7 @@ def test_a_dict_of_columns_follows_the_header_rules() -> None:
         ({0: [0, 1], "preload": [1, 2]}, "dict: column name = 0"),
         ({"revolutions": [0, 1], "preload": [None, 2]}, "dict: row 1, column 'preload' = 'None'"),
         (object(), "measured = 'object' .*a pandas DataFrame or a dict of columns"),
+        ({"revolutions": [0, 1], "preload": [True, 2]}, "dict: row 1, column 'preload' = True"),
     ],
 )
 def test_bad_tables_are_refused_in_one_line(table: object, message: str) -> None:

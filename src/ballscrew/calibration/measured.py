@@ -38,7 +38,7 @@ from __future__ import annotations
 import csv
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -343,6 +343,8 @@ def _numbers(
     for row, cell in enumerate(cells):
         text = cell.strip() if isinstance(cell, str) else cell
         try:
+            if isinstance(text, bool | np.bool_):  # float(True) is 1.0: no measured number
+                raise TypeError
             numbers[row] = float(text)  # type: ignore[arg-type]
         except (TypeError, ValueError):
             shown = text if isinstance(text, str | int | float) else repr(text)
@@ -480,6 +482,8 @@ TABLES = (
 def _cells(column: object) -> Sequence[object]:
     """A column's cells as a flat sequence (a pandas Series, list, tuple or array)."""
     values = getattr(column, "to_numpy", None)
+    if isinstance(column, Iterator):  # a generator: its items, not one cell holding it
+        column = list(column)
     array = np.asarray(values() if callable(values) else column, dtype=object)
     return list(array.reshape(-1)) if array.ndim else [array.item()]
 
