@@ -28,7 +28,6 @@ from types import ModuleType
 from typing import Any, ClassVar
 
 import numpy as np
-import xarray as xr
 
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.calibration import joint_report
@@ -118,9 +117,6 @@ class JointCalibrationResult(Presented):
     def prediction_rmse(self) -> tuple[float | None, ...]:
         """Each history's held-out RMS error (None without ``fit_until``)."""
         return tuple(h.prediction_rmse for h in self.histories)
-
-    def to_xarray(self) -> xr.Dataset:
-        return joint_report.fields(self)
 
 
 def joint_columns(

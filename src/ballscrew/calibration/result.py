@@ -144,9 +144,7 @@ class CalibrationResult(Presented):
         return resolved_inputs(self.case) if self.case is not None else {}
 
     def to_xarray(self) -> xr.Dataset:
-        from ballscrew.calibration import report
-
-        return report.fit_dataset(self)
+        return calibration_report.fit_dataset(self)
 
     @property
     def relative_error(self) -> float:
@@ -154,11 +152,16 @@ class CalibrationResult(Presented):
         return self.standard_error / self.wear_coefficient
 
     @property
+    def _n_residuals(self) -> int:
+        """The number of fitted residuals (the diagnostics' n)."""
+        return self.n_fit or self.n_points
+
+    @property
     def effective_points(self) -> float | None:
         """n_eff = n (1 − r₁)/(1 + r₁) of the fitted residuals (Bayley & Hammersley 1946; n
         for r₁ ≤ 0); None without residual diagnostics."""
         r1 = self.diagnostics.get("lag1_autocorrelation")
-        return None if r1 is None else effective_points(self.n_fit or self.n_points, r1)
+        return None if r1 is None else effective_points(self._n_residuals, r1)
 
     @property
     def inflated_errors(self) -> dict[str, float] | None:
@@ -167,8 +170,7 @@ class CalibrationResult(Presented):
         allowing for correlated residuals; None when n_eff ≤ p or without diagnostics. Like
         :attr:`errors` they leave out the model-form error."""
         r1 = self.diagnostics.get("lag1_autocorrelation")
-        n = self.n_fit or self.n_points
-        factor = None if r1 is None else error_inflation(n, self.parameters, r1)
+        factor = None if r1 is None else error_inflation(self._n_residuals, self.parameters, r1)
         return None if factor is None else {k: e * factor for k, e in self.errors.items()}
 
     @property
