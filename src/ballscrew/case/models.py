@@ -33,8 +33,15 @@ from ballscrew.contact import (
 from ballscrew.contact_resistance.correlations import CORRELATIONS
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
+from ballscrew.loads.preload_method import PRELOAD_METHODS
 from ballscrew.lubrication.film import FILM_MODELS
 from ballscrew.materials import MATERIALS, material_properties
+
+
+def preload_methods(nuts: int) -> tuple[str, ...]:
+    """The ``screw.preload_method`` values a nut assembly of ``nuts`` nuts allows, its default
+    first: a double nut the spacer, a single nut oversized balls or an offset lead."""
+    return PRELOAD_METHODS[:1] if nuts == 2 else PRELOAD_METHODS[1:]
 
 
 class ScrewSpec(Model):
@@ -67,7 +74,7 @@ class ScrewSpec(Model):
     @property
     def resolved_preload_method(self) -> str:
         """``preload_method``, or its default for ``nuts``."""
-        return self.preload_method or ("spacer" if self.nuts == 2 else "oversized_balls")
+        return self.preload_method or preload_methods(self.nuts)[0]
 
     def guessed_inputs(self) -> dict[str, str]:
         """Inputs left at a default that is a guess only in this configuration: the preload
@@ -82,12 +89,11 @@ class ScrewSpec(Model):
 
     @model_validator(mode="after")
     def _preload_method_fits(self) -> ScrewSpec:
-        method = self.resolved_preload_method
-        if (method == "spacer") != (self.nuts == 2):
-            allowed = "spacer" if self.nuts == 2 else "oversized_balls or offset_lead"
+        method, allowed = self.resolved_preload_method, preload_methods(self.nuts)
+        if method not in allowed:
             raise ValueError(
                 f"preload_method = {method!r} is not allowed with screw.nuts = "
-                f"{self.nuts}: {allowed}"
+                f"{self.nuts}: {' or '.join(allowed)}"
             )
         if method == "offset_lead" and self.balls_per_nut % 2:
             raise ValueError(

@@ -28,6 +28,7 @@ import tomllib
 from dataclasses import dataclass
 
 from ballscrew.case.design_spec import DesignSpec
+from ballscrew.case.models import preload_methods
 from ballscrew.design import (
     MAX_PRELOAD_SHARE,
     accuracy_factor,
@@ -239,7 +240,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         balls=balls,
         nuts=_plural(sheet.nuts, "nut"),
         nut_count=sheet.nuts,
-        preload_method=sheet.preload_method or ("spacer" if sheet.nuts == 2 else "oversized_balls"),
+        preload_method=sheet.preload_method or preload_methods(sheet.nuts)[0],
         conformity=CONFORMITY,
         oil_name=json.dumps(oil.name),
         oil_key=json.dumps(_OIL),

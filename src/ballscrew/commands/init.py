@@ -70,6 +70,7 @@ def init(
     name: Annotated[str, typer.Option(help="case name")] = "my_screw",
 ) -> None:
     """Print a complete case (TOML) for a screw from a maker's table; redirect it to a file."""
+    from ballscrew.case.models import preload_methods
     from ballscrew.case.starter import CatalogueSheet, parse_turns, starter_case
     from ballscrew.errors import InputError
 
@@ -78,7 +79,7 @@ def init(
 
     if nuts not in (1, 2):
         raise InputError("--nuts", nuts, "1 or 2")
-    methods = ("spacer",) if nuts == 2 else ("oversized_balls", "offset_lead")
+    methods = preload_methods(nuts)
     if preload_method is not None and preload_method not in methods:
         raise InputError(
             "--preload-method", preload_method, f"{' or '.join(methods)} for {nuts} nut(s)"
