@@ -14,7 +14,6 @@ __all__ = [
     "field_unit",
     "guessed_defaults",
     "input_rows",
-    "is_read",
     "resolved_inputs",
 ]
 
@@ -100,10 +99,10 @@ def guessed_defaults(
     found = _guessed(model, prefix)
     if reads is None:
         return found
-    return {key: text for key, text in found.items() if is_read(key[len(prefix) :], reads)}
+    return {key: text for key, text in found.items() if _is_read(key[len(prefix) :], reads)}
 
 
-def is_read(key: str, reads: Sequence[str]) -> bool:
+def _is_read(key: str, reads: Sequence[str]) -> bool:
     """Whether the input ``key`` (``friction.circuits``, ``duty[0].stroke``) is one of or
     inside the dotted prefixes ``reads`` (``friction``, ``duty``)."""
     return any(key == p or key.startswith((p + ".", p + "[")) for p in reads)

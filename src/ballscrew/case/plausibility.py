@@ -115,9 +115,9 @@ def _roughness(case: Case) -> list[str]:
     surfaces = [("surface", case.surface)]
     if case.surface.ball is not None:
         surfaces.append(("surface.ball", case.surface.ball))
+    (d_lo, d_hi), (g_lo, g_hi) = ENGINEERING_D, ENGINEERING_G
     found = []
     for key, surface in surfaces:
-        (d_lo, d_hi), (g_lo, g_hi) = ENGINEERING_D, ENGINEERING_G
         if not d_lo <= surface.D <= d_hi:
             found.append(
                 f"{key}.D = {format_number(surface.D)} is outside the usual {d_lo:g} to "
