@@ -100,3 +100,18 @@ def test_a_slightly_negative_value_near_zero_is_still_noise(tmp_path: Path) -> N
     assert read_measured(path).values[0] == pytest.approx(-1e-8)
     lost = write(tmp_path, "revolutions,friction_torque\n0,0.4\n1,0.01\n2,-0.005\n3,0.002\n")
     assert read_measured(lost).values[2] == -0.005
+
+
+def test_numeric_array_columns_are_read_at_once_as_their_cells_would_be() -> None:
+    """A NumPy column of ints or floats is converted as a whole (no cell-by-cell check): the
+    same history as the same numbers given as a list; a boolean array is still refused."""
+    revolutions = np.arange(0, 5000, 1000, dtype=np.int64)
+    depth = np.array([0.0, 0.4, 0.7, 0.9, 1.0])
+    fast = read_table({"revolutions": revolutions, "wear_depth [um]": depth})
+    cells = read_table({"revolutions": revolutions.tolist(), "wear_depth [um]": depth.tolist()})
+    np.testing.assert_array_equal(fast.revolutions, cells.revolutions)
+    np.testing.assert_array_equal(fast.values, cells.values)
+    assert fast.values[1] == pytest.approx(0.4e-6)
+    flags = {"revolutions": revolutions[:2], "wear_depth": np.array([True, False])}
+    with pytest.raises(InputError, match=r"dict: row 1, column 'wear_depth' = True"):
+        read_table(flags)

@@ -38,9 +38,10 @@ from __future__ import annotations
 import csv
 import math
 import re
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -335,10 +336,18 @@ def _layout(source: str, header: Sequence[str]) -> _Layout:
     return _Layout(quantity, tuple(read), bool(scheduled))
 
 
+_Column = Sequence[object] | NDArray[Any]
+"""A table column's cells: a sequence of cells, or a numeric array (:func:`_cells`)."""
+
+
 def _numbers(
-    source: str, name: str, cells: Sequence[object], where: Callable[[int], str]
+    source: str, name: str, cells: _Column, lines: Sequence[int] | None
 ) -> NDArray[np.float64]:
-    """The cells of one column as floats; a cell that is no number names its row."""
+    """The cells of one column as floats; a cell that is no number names its row (the file's
+    ``line`` where ``lines`` gives it, else ``row`` counted from 1). A numeric array (a NumPy or
+    pandas column of ints or floats, :func:`_cells`) holds no cell to check: converted at once."""
+    if isinstance(cells, np.ndarray) and cells.dtype.kind in "fiu":
+        return cells.astype(np.float64)
     numbers = np.empty(len(cells))
     for row, cell in enumerate(cells):
         text = cell.strip() if isinstance(cell, str) else cell
@@ -348,23 +357,22 @@ def _numbers(
             numbers[row] = float(text)  # type: ignore[arg-type]
         except (TypeError, ValueError):
             shown = text if isinstance(text, str | int | float) else repr(text)
-            field = f"{source}: {where(row)}, column {name!r}"
-            raise InputError(field, shown, "a number") from None
+            where = f"row {row + 1}" if lines is None else f"line {lines[row]}"
+            raise InputError(f"{source}: {where}, column {name!r}", shown, "a number") from None
     return numbers
 
 
 def _history(
     source: str,
     layout: _Layout,
-    cells: Mapping[str, Sequence[object]],
-    where: Callable[[int], str],
+    cells: Mapping[str, _Column],
     lines: Sequence[int] | None,
     min_points: int,
     notes: tuple[str, ...] = (),
 ) -> MeasuredHistory:
     """The history of a table's cells (column name → cells), converted to SI."""
     values = {
-        name: _numbers(source, name, cells[name], where) * factor
+        name: _numbers(source, name, cells[name], lines) * factor
         for name, _, factor in layout.columns
     }
     schedule = np.column_stack([values[name] for name in SCHEDULE]) if layout.scheduled else None
@@ -430,15 +438,14 @@ def read_measured(path: str | Path, min_points: int = 2) -> MeasuredHistory:
         name: [row[index] if index < len(row) else "" for row in rows]
         for name, index, _ in layout.columns
     }
-    return _history(
-        source,
-        layout,
-        cells,
-        lambda row: f"line {lines[row]}",
-        lines,
-        min_points,
-        notes=_leading_comments(text),
-    )
+    return _history(source, layout, cells, lines, min_points, _leading_comments(text))
+
+
+TABLES = (
+    "a CSV path, a pandas DataFrame or a dict of columns with a 'revolutions' column and one "
+    f"of {', '.join(QUANTITIES)} (units in brackets), an (n, 2) array or a MeasuredHistory"
+)
+"""What :func:`ballscrew.calibrate` accepts as measured data, for error messages."""
 
 
 def read_table(table: object, min_points: int = 2) -> MeasuredHistory:
@@ -469,22 +476,20 @@ def read_table(table: object, min_points: int = 2) -> MeasuredHistory:
     if len(lengths) > 1:
         raise InputError(f"{source}: column lengths", sorted(lengths), "columns of one length")
     _check_count(source, lengths.pop())
-    return _history(source, layout, cells, lambda row: f"row {row + 1}", None, min_points)
+    return _history(source, layout, cells, None, min_points)
 
 
-TABLES = (
-    "a CSV path, a pandas DataFrame or a dict of columns with a 'revolutions' column and one "
-    f"of {', '.join(QUANTITIES)} (units in brackets), an (n, 2) array or a MeasuredHistory"
-)
-"""What :func:`ballscrew.calibrate` accepts as measured data, for error messages."""
-
-
-def _cells(column: object) -> Sequence[object]:
-    """A column's cells as a flat sequence (a pandas Series, list, tuple or array)."""
-    values = getattr(column, "to_numpy", None)
+def _cells(column: object) -> _Column:
+    """A column's cells as a flat sequence (a pandas Series, list, tuple, array or generator);
+    a numeric NumPy or pandas column stays an array (its cells are numbers: no check by cell)."""
     if isinstance(column, Iterator):  # a generator: its items, not one cell holding it
         column = list(column)
-    array = np.asarray(values() if callable(values) else column, dtype=object)
+    to_numpy = getattr(column, "to_numpy", None)
+    if callable(to_numpy):
+        column = to_numpy()
+    if isinstance(column, np.ndarray) and column.dtype.kind in "fiu":
+        return column.reshape(-1)
+    array = np.asarray(column, dtype=object)
     return list(array.reshape(-1)) if array.ndim else [array.item()]
 
 
