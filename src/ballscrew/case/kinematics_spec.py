@@ -27,6 +27,7 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, quantity
+from ballscrew.kinematics.motion import ENTRAINMENT_RULES
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 
 Mounting = Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"]
@@ -72,7 +73,7 @@ class KinematicsSpec(Model):
         description="named lubricant of the library (ballscrew.lubrication.LUBRICANT_LIBRARY) "
         "for medium values that are not given; the same as medium.lubricant; None = [medium] only",
     )
-    entrainment: Literal["rolling", "ball_centre"] = Field(
+    entrainment: Literal[tuple(ENTRAINMENT_RULES)] = Field(  # type: ignore[valid-type]
         "rolling",
         description="entrainment speed u_e of the EHL film, load sharing, traction and rolling "
         "resistance (E2.8): 'rolling' = the surfaces' rolling speed past each contact; "

@@ -64,7 +64,7 @@ class ScrewSpec(Model):
     )
     balls_per_nut: Annotated[int, Field(ge=1, le=10_000, description="loaded balls per nut")]
     nuts: Literal[1, 2] = Field(2, description="1 (single nut) or 2 (preloaded double nut)")
-    preload_method: Literal["spacer", "oversized_balls", "offset_lead"] | None = Field(
+    preload_method: Literal[PRELOAD_METHODS] | None = Field(  # type: ignore[valid-type]
         None,
         description="how the nut is preloaded: spacer (double nut), oversized_balls "
         "(single nut, four-point contact) or offset_lead (single nut, lead shift); "
