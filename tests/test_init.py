@@ -151,3 +151,15 @@ def test_init_writes_the_preload_method() -> None:
     assert offset.exit_code == 0 and 'preload_method = "offset_lead"' in offset.output
     bad = CliRunner().invoke(app, [*base, "--preload-method", "oversized_balls"])
     assert bad.exit_code == 2 and "--preload-method" in bad.output and "spacer" in bad.output
+
+
+def test_an_offset_lead_needs_an_even_ball_count() -> None:
+    """d0 40, lead 20, 2.5 turns: 49 balls per circuit, which an offset lead cannot split into
+    two equal halves; two circuits (98 balls) can."""
+    base = ["init", "--d0", "40", "--lead", "20", "--ball", "6.35", "--nuts", "1"]
+    offset = ["--preload-method", "offset_lead"]
+    odd = CliRunner().invoke(app, [*base, "--turns", "2.5x1", *offset])
+    assert odd.exit_code == 2, odd.output
+    assert odd.output.startswith("error: --preload-method") and "gives 49" in odd.output
+    even = CliRunner().invoke(app, [*base, "--turns", "2.5x2", *offset])
+    assert even.exit_code == 0 and "balls_per_nut = 98" in even.output

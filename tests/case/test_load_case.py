@@ -200,3 +200,10 @@ def test_the_single_nut_preload_method_default_is_listed_as_a_guess(gao_case_pat
     assert "screw.preload_method" not in guessed_defaults(load_case(gao_case_path))
     given = load_case(gao_case_path, {"screw.nuts": 1, "screw.preload_method": "oversized_balls"})
     assert "screw.preload_method" not in guessed_defaults(given)
+
+
+def test_an_offset_lead_nut_with_an_odd_ball_count_is_refused(gao_case_path):
+    offset = {"screw.nuts": 1, "screw.preload_method": "offset_lead"}
+    with pytest.raises(CaseError, match=r"balls_per_nut = 49 is not allowed .*an even number"):
+        load_case(gao_case_path, offset | {"screw.balls_per_nut": 49})
+    assert load_case(gao_case_path, offset | {"screw.balls_per_nut": 48}).screw.balls_per_nut == 48
