@@ -207,3 +207,11 @@ def test_an_offset_lead_nut_with_an_odd_ball_count_is_refused(gao_case_path):
     with pytest.raises(CaseError, match=r"balls_per_nut = 49 is not allowed .*an even number"):
         load_case(gao_case_path, offset | {"screw.balls_per_nut": 49})
     assert load_case(gao_case_path, offset | {"screw.balls_per_nut": 48}).screw.balls_per_nut == 48
+
+
+def test_a_mistyped_lubricant_and_key_name_the_nearest_spelling(gao_case_path):
+    """Both hints come from one helper (``case.base.nearest_hint``)."""
+    with pytest.raises(CaseError, match=r"'ISO VG 66' .*\(did you mean 'iso_vg_68'\?\); known"):
+        load_case(gao_case_path, {"kinematics.lubricant": "ISO VG 66"})
+    with pytest.raises(CaseError, match=r"screw\.leed: unknown key \(did you mean 'lead'\?\)"):
+        load_case(gao_case_path, {"screw.leed": "10 mm"})

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import difflib
 import unicodedata
+from collections.abc import Iterable
 from functools import partial
 from typing import Annotated, Any, Literal, get_args, get_origin
 
@@ -24,6 +26,12 @@ MAX_SPEED = 1e5
 
 #: Largest force a case accepts (preload, axial loads), N.
 MAX_FORCE = 1e8
+
+
+def nearest_hint(name: str, allowed: Iterable[str]) -> str:
+    """``" (did you mean 'lead'?)"``: the ``allowed`` name nearest ``name`` (difflib), or ``""``."""
+    near = difflib.get_close_matches(name, list(allowed), n=1)
+    return f" (did you mean '{near[0]}'?)" if near else ""
 
 
 def quantity(kind: str, description: str, **constraints: float) -> Any:

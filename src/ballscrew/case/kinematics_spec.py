@@ -19,14 +19,13 @@ section where given, else from ``[design]`` (which ``ballscrew init`` writes).
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from typing import Annotated, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from ballscrew.case.base import MAX_SPEED, Model, quantity
+from ballscrew.case.base import MAX_SPEED, Model, nearest_hint, quantity
 from ballscrew.kinematics.motion import ENTRAINMENT_RULES
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 
@@ -40,8 +39,7 @@ def known_lubricant(cls: type, name: str | None) -> str | None:
         return None
     key = re.sub(r"[\s\-]+", "_", name.strip().lower())
     if key not in LUBRICANT_LIBRARY:
-        near = difflib.get_close_matches(key, LUBRICANT_LIBRARY, n=1)
-        hint = f" (did you mean '{near[0]}'?)" if near else ""
+        hint = nearest_hint(key, LUBRICANT_LIBRARY)
         known = ", ".join(sorted(LUBRICANT_LIBRARY))
         raise ValueError(f"is not allowed: not a lubricant of the library{hint}; known: {known}")
     return key

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import copy
-import difflib
 import math
 import os
 import stat
@@ -18,6 +17,7 @@ from typing import Annotated, Any, Union, get_args, get_origin
 
 from pydantic import BaseModel, ValidationError
 
+from ballscrew.case.base import nearest_hint
 from ballscrew.case.models import Case
 from ballscrew.errors import BallscrewError
 from ballscrew.units import parse_quantity, to_si
@@ -398,8 +398,7 @@ def field_spec(loc: tuple[Any, ...] | list[Any]) -> FieldSpec:
 
 def unknown_key_message(dotted: str, key: str, allowed: list[str], where: str) -> str:
     """'unknown key' line with the nearest allowed spelling."""
-    near = difflib.get_close_matches(key, allowed, n=1)
-    hint = f" (did you mean '{near[0]}'?)" if near else ""
+    hint = nearest_hint(key, allowed)
     return f"{dotted}: unknown key{hint}; allowed in {where}: {', '.join(allowed)}"
 
 
