@@ -15,6 +15,7 @@ from ballscrew.calibration import (
     measured_history,
 )
 from ballscrew.case import load_case, with_overrides
+from ballscrew.errors import InputError
 from ballscrew.loads import preload_after_wear, preload_drag_torque
 
 from .conftest import BETA, C_A, LAMBDA, LEAD, MEASURED_AT, PRELOAD0, History, exact
@@ -115,3 +116,16 @@ def test_calibrate_starts_the_preload_from_the_case_and_writes_it_back(wear_case
         result = calibrate(case, measured(), fit="preload,torque_scale", model=model)
     assert result.values["preload"] == pytest.approx(PRELOAD0, rel=0.01)
     assert calibrated_case(result).operating.preload == result.values["preload"]
+
+
+def test_a_case_without_preload_cannot_start_the_preload_fit(wear_case_path) -> None:
+    """F_p is fitted as ln F_p from the case's value: a single nut with no preload (0 N) is
+    refused in one line (it was a bare ``math domain error``), before any model run."""
+
+    def model(case) -> History:
+        raise AssertionError("no model run")
+
+    single = {"screw.nuts": 1, "operating.preload": 0.0, "wear.coefficient": 1.3e-4}
+    case = with_overrides(load_case(wear_case_path), single)
+    with pytest.raises(InputError, match=r"--fit = 'preload' .*operating\.preload ≥ 1 N"):
+        calibrate(case, measured(), fit="preload,torque_scale", model=model)

@@ -240,6 +240,9 @@ def case_setup(
             raise InputError("--fit", "running_in_depth", "a case with a [wear.running_in] section")
         start["running_in_depth"] = running.depth
     if "preload" in names:
+        least = FIT_PARAMETERS["preload"].lower  # the fit works on ln F_p: it starts above 0
+        if not case.operating.preload >= least:
+            raise InputError("--fit", "preload", f"a case with operating.preload ≥ {least:g} N")
         start["preload"] = case.operating.preload
     scale0 = getattr(wear, "torque_scale", None) or 1.0
     offset0 = float(getattr(wear, "torque_offset", 0.0) or 0.0)
