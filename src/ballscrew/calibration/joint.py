@@ -203,7 +203,7 @@ def fit_joint(
         stacked(lambda part: part.jacobian),
         difference,
         x0,
-        (list(lower), list(upper)),
+        (lower, upper),
         n,
         max_evaluations,
         label,

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
 __all__ = [
     "DISPLAY",
     "STANDARD_ERRORS",
+    "data_notes",
     "figures",
     "fit_dataset",
     "fit_plot",
