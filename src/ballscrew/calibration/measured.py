@@ -494,11 +494,12 @@ def _cells(column: object) -> _Column:
 
 
 def _leading_comments(text: str) -> tuple[str, ...]:
-    """The ``#`` lines before the first other non-blank line, without their ``#``."""
+    """The ``#`` lines before the first other non-blank line, without their ``#`` (blank ones
+    and a bare ``#`` left out)."""
     notes = []
-    for line in text.splitlines():
-        if line.strip() and not line.lstrip().startswith("#"):
+    for line in map(str.strip, text.splitlines()):
+        if line and not line.startswith("#"):
             break
-        if line.strip():
-            notes.append(line.lstrip()[1:].strip())
-    return tuple(note for note in notes if note)
+        if line[1:].strip():
+            notes.append(line[1:].strip())
+    return tuple(notes)
