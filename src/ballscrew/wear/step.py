@@ -8,6 +8,7 @@ solve); :func:`flank_rate` is one contact of it.
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from collections.abc import Sequence
@@ -72,8 +73,14 @@ def entrainment_speed(
     (:meth:`ballscrew.kinematics.motion.BallMotion.entrainment_speed`; REF 100 rpm: 0.1037);
     ``"ball_centre"``: the ball-centre speed V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ) (0.09333).
     """
-    motion = ball_motion(geometry, abs(screw_speed))
-    return math.copysign(motion.entrainment(contact, rule), screw_speed)
+    return math.copysign(_rolling_speed(geometry, abs(screw_speed), rule, contact), screw_speed)
+
+
+@functools.lru_cache(maxsize=256)
+def _rolling_speed(geometry: ScrewGeometry, speed: float, rule: str, contact: Side) -> float:
+    """|u_e| of :func:`entrainment_speed`, cached: every contact of every wear step asks it
+    again for the same screw and speed, and a Level-0 motion costs ~0.4 ms."""
+    return ball_motion(geometry, speed).entrainment(contact, rule)
 
 
 @dataclass(frozen=True)
