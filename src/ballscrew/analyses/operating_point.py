@@ -38,6 +38,7 @@ from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
+from ballscrew.friction.ball_losses import BOUNDARY_FILM_PARAMETER
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LibraryLubricant
@@ -65,10 +66,6 @@ MAX_ITERATIONS = 60
 NUT_WARNING_TEMPERATURE = 333.15
 """Nut temperature above which the result warns [K] (60 °C; nuts on machine axes run 5–30 K
 above ambient)."""
-
-
-BOUNDARY_FILM_PARAMETER = 1.0
-"""Λ below which the contact runs in boundary lubrication (Hamrock 1994: < 1 boundary)."""
 
 
 class OperatingPointWarning(UserWarning):

@@ -68,6 +68,9 @@ DEFAULT_HYSTERESIS = 0.01
 #: Share of a loss at the screw contact A that goes into the screw (Blok 1937, equal bodies).
 SCREW_SHARE_AT_A = 0.5
 
+#: Film parameter Λ below which a contact runs in boundary lubrication (Hamrock 1994).
+BOUNDARY_FILM_PARAMETER = 1.0
+
 
 def hysteresis_force(
     load: ArrayLike, semi_axis: ArrayLike, radius: ArrayLike, fraction: float
@@ -86,7 +89,7 @@ def film_parameter(film_thickness: float, rms_height: float) -> float:
 
 def regime(film: float) -> str:
     """Lubrication regime of a film parameter Λ (Hamrock 1994: <1 boundary, 1–3 mixed, >3 EHL)."""
-    if film < 1.0:
+    if film < BOUNDARY_FILM_PARAMETER:
         return "boundary"
     return "mixed" if film < 3.0 else "EHL"
 
