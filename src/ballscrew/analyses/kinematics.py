@@ -190,12 +190,15 @@ def _model_torque(
     if preload is not None:  # a single nut's flanks (and balls per flank) follow the preload
         params = ScrewParameters.from_case(case).with_loads(preload=float(preload))
         model = replace(model, balls=params.flanks.balls)
-    total = 0.0
-    for _, force, flank in loads:
-        if force > 0.0:
-            state = solve_ball(model, omega, force, flank, level)
-            total += model.balls * ball_drag(model, state).dissipation_torque
-    return total
+    states = [
+        solve_ball(model, omega, force, flank, level) for _, force, flank in loads if force > 0
+    ]
+    return _flanks_torque(model, states)
+
+
+def _flanks_torque(model: BallModel, states: list[BallState]) -> float:
+    """Ball-model drag torque Σ Z T_d of the loaded flanks' ball ``states`` [N m]."""
+    return sum((model.balls * ball_drag(model, state).dissipation_torque for state in states), 0.0)
 
 
 def computed_drag_torque(
@@ -262,10 +265,12 @@ def speed_sweep(
     """Ball of nut 1 and the drag torque at each speed (default :func:`curve_speeds`)."""
     omegas = curve_speeds(case) if speeds is None else np.asarray(speeds, dtype=float)
     model, lvl = prepare(case, omegas, level)
-    _, force, flank = nut_loads(case)[0]
+    (_, force, flank), *others = nut_loads(case)
     rows = []
-    for omega in omegas:  # one quasi-static solve per speed
+    for omega in omegas:  # one quasi-static solve per speed and loaded flank
         state = solve_ball(model, float(omega), force, flank, lvl)
+        loaded = [state] if force > 0.0 else []
+        loaded += [solve_ball(model, float(omega), f, s, lvl) for _, f, s in others if f > 0.0]
         sharing = state.sharing or model.sharing(
             state.load_screw, model.entrainment_speed(state.motion)
         )
@@ -280,7 +285,7 @@ def speed_sweep(
                 state.spin_screw,
                 sharing.psi,
                 sharing.separation if sharing.film is not None else math.nan,
-                _model_torque(model, case, float(omega), lvl),
+                _flanks_torque(model, loaded),  # the ball-model torque of all nuts
             )
         )
     cols = np.array(rows, dtype=float).T
