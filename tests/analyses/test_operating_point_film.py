@@ -11,7 +11,7 @@ import ballscrew
 from ballscrew.analyses.kinematics import ball_model
 from ballscrew.analyses.operating_point import operating_point
 from ballscrew.analyses.parameters import ScrewParameters, library_entry
-from ballscrew.wear.step import entrainment_speed
+from ballscrew.kinematics.motion import entrainment_speed
 
 RPM = 2 * math.pi / 60
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")

@@ -40,11 +40,11 @@ from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
 from ballscrew.friction.ball_losses import BOUNDARY_FILM_PARAMETER
 from ballscrew.friction.torque import FrictionTorque
+from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LibraryLubricant
 from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
 from ballscrew.validation import case_with
-from ballscrew.wear.step import entrainment_speed
 
 __all__ = [
     "OperatingPoint",
