@@ -140,13 +140,17 @@ def nut_loads(case: Case, preload: float | None = None) -> list[tuple[int, float
     ``params.flanks.balls`` balls); without preload its one flank, F_a on s = +1. ``preload``
     overrides the case's.
     """
+    return [(n.index, n.force, n.flank) for n in _loaded(case, preload).flank_loads]
+
+
+def _loaded(case: Case, preload: float | None) -> ScrewParameters:
+    """The case's parameters at ``preload`` [N] (None: the case's), checked."""
     fp = case.operating.preload if preload is None else float(preload)
     if not (math.isfinite(fp) and fp >= 0.0):
         raise InputError("preload", preload, "a force >= 0 N")
     if case.screw.nuts == 2 and fp <= 0.0:
         raise InputError("preload", fp, "a preload > 0 N for a double nut")
-    params = ScrewParameters.from_case(case).with_loads(preload=fp)
-    return [(n.index, n.force, n.flank) for n in params.flank_loads]
+    return ScrewParameters.from_case(case).with_loads(preload=fp)
 
 
 def ball_kinematics(
@@ -186,12 +190,11 @@ def drag_torque(case: Case, preload: float | None = None) -> float:
 def _model_torque(
     model: BallModel, case: Case, omega: float, level: int, preload: float | None = None
 ) -> float:
-    loads = nut_loads(case, preload)  # checks the preload
+    params = _loaded(case, preload)
     if preload is not None:  # a single nut's flanks (and balls per flank) follow the preload
-        params = ScrewParameters.from_case(case).with_loads(preload=float(preload))
         model = replace(model, balls=params.flanks.balls)
     states = [
-        solve_ball(model, omega, force, flank, level) for _, force, flank in loads if force > 0
+        solve_ball(model, omega, n.force, n.flank, level) for n in params.flank_loads if n.force > 0
     ]
     return _flanks_torque(model, states)
 
