@@ -11,7 +11,7 @@ import ballscrew
 from ballscrew.analyses.kinematics import ball_model
 from ballscrew.analyses.operating_point import operating_point
 from ballscrew.analyses.parameters import ScrewParameters, library_entry
-from ballscrew.wear.step import entrainment_speed
+from ballscrew.kinematics.motion import entrainment_speed
 
 RPM = 2 * math.pi / 60
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
@@ -87,3 +87,24 @@ def test_a_named_lubricant_follows_its_law_at_the_contact_temperature(case):
     summary = point.summary()
     assert "iso_vg_68" in summary["viscosity_source"]
     assert summary["viscosity_temperature"]["value"] == pytest.approx(point.contact_temperature)
+
+
+def test_film_follows_the_entrainment_rule_as_hamrock_dowsons_speed_power(case, slow):
+    """Only u_e differs between the two rules, so h_c(rolling)/h_c(ball centre) =
+    (u_roll/V)^0.67 at A and B (Hamrock & Dowson 1977: H_c ∝ U^0.67), with u_roll/V ≈ 1 + γ,
+    γ = D cosβ/d_m (1 + γ ≈ 1.11 here)."""
+    centre = operating_point(
+        ballscrew.case.with_overrides(case, {"kinematics.entrainment": "ball_centre"}),
+        speed=100 * RPM,
+    )
+    g = ScrewParameters.from_case(case).geometry
+    gamma = 2 * g.ball_radius * math.cos(g.contact_angle) / (2 * g.pitch_radius)
+    v = entrainment_speed(g, 100 * RPM, "ball_centre")
+    for side, rolling, at_centre in (
+        ("screw", slow.film_thickness, centre.film_thickness),
+        ("nut", slow.film_thickness_nut, centre.film_thickness_nut),
+    ):
+        ratio = entrainment_speed(g, 100 * RPM, contact=side) / v
+        assert ratio == pytest.approx(1 + gamma, rel=0.02)
+        assert rolling / at_centre == pytest.approx(ratio**0.67, rel=1e-9)
+    assert slow.film_roughness == centre.film_roughness

@@ -13,8 +13,7 @@ import ballscrew
 from ballscrew.analyses.kinematics import ball_model, run_kinematics
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.errors import InputError
-from ballscrew.kinematics.motion import ball_motion
-from ballscrew.wear.step import entrainment_speed
+from ballscrew.kinematics.motion import ball_motion, entrainment_speed
 
 from .conftest import RPM
 

@@ -7,7 +7,7 @@ import math
 import pytest
 
 import ballscrew
-from ballscrew.analyses.kinematics import computed_drag_torque
+from ballscrew.analyses.kinematics import computed_drag_torque, speed_sweep
 from ballscrew.kinematics.torque import efficiency_drag_torque
 
 from .conftest import OMEGA, RPM, updated
@@ -84,3 +84,15 @@ def test_e3_7_at_a_alone_needs_the_balance(ref_case):
     assert level0.traction.force @ model.frame.t > 0.05  # unbalanced Heathcote traction [N]
     assert level2.torque == pytest.approx(level2.dissipation_torque, rel=1e-7)
     assert level2.dissipation_torque == pytest.approx(level0.dissipation_torque, rel=0.15)
+
+
+@pytest.mark.parametrize("axial_load", [0.0, 5000.0], ids=["both_nuts", "nut2_lifted_off"])
+def test_speed_sweep_torque_is_the_drag_torque_of_every_loaded_nut(ref_case, axial_load):
+    """The sweep solves each loaded nut once per speed and reuses nut 1's ball for its row: its
+    torque is computed_drag_torque's at each speed, with nut 2 (0 N) and without it (5 kN lifts
+    it off, F_a > 2^1.5 F_p)."""
+    case = updated(ref_case, operating={"axial_load": axial_load})
+    speeds = [100 * RPM, 1000 * RPM]
+    sweep = speed_sweep(case, speeds, level=0)
+    for omega, torque in zip(speeds, sweep.model_torque, strict=True):
+        assert torque == pytest.approx(computed_drag_torque(case, omega, level=0), rel=1e-12)

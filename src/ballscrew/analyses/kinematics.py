@@ -140,13 +140,17 @@ def nut_loads(case: Case, preload: float | None = None) -> list[tuple[int, float
     ``params.flanks.balls`` balls); without preload its one flank, F_a on s = +1. ``preload``
     overrides the case's.
     """
+    return [(n.index, n.force, n.flank) for n in _loaded(case, preload).flank_loads]
+
+
+def _loaded(case: Case, preload: float | None) -> ScrewParameters:
+    """The case's parameters at ``preload`` [N] (None: the case's), checked."""
     fp = case.operating.preload if preload is None else float(preload)
     if not (math.isfinite(fp) and fp >= 0.0):
         raise InputError("preload", preload, "a force >= 0 N")
     if case.screw.nuts == 2 and fp <= 0.0:
         raise InputError("preload", fp, "a preload > 0 N for a double nut")
-    params = ScrewParameters.from_case(case).with_loads(preload=fp)
-    return [(n.index, n.force, n.flank) for n in params.flank_loads]
+    return ScrewParameters.from_case(case).with_loads(preload=fp)
 
 
 def ball_kinematics(
@@ -186,16 +190,18 @@ def drag_torque(case: Case, preload: float | None = None) -> float:
 def _model_torque(
     model: BallModel, case: Case, omega: float, level: int, preload: float | None = None
 ) -> float:
-    loads = nut_loads(case, preload)  # checks the preload
+    params = _loaded(case, preload)
     if preload is not None:  # a single nut's flanks (and balls per flank) follow the preload
-        params = ScrewParameters.from_case(case).with_loads(preload=float(preload))
         model = replace(model, balls=params.flanks.balls)
-    total = 0.0
-    for _, force, flank in loads:
-        if force > 0.0:
-            state = solve_ball(model, omega, force, flank, level)
-            total += model.balls * ball_drag(model, state).dissipation_torque
-    return total
+    states = [
+        solve_ball(model, omega, n.force, n.flank, level) for n in params.flank_loads if n.force > 0
+    ]
+    return _flanks_torque(model, states)
+
+
+def _flanks_torque(model: BallModel, states: list[BallState]) -> float:
+    """Ball-model drag torque Σ Z T_d of the loaded flanks' ball ``states`` [N m]."""
+    return sum((model.balls * ball_drag(model, state).dissipation_torque for state in states), 0.0)
 
 
 def computed_drag_torque(
@@ -262,10 +268,12 @@ def speed_sweep(
     """Ball of nut 1 and the drag torque at each speed (default :func:`curve_speeds`)."""
     omegas = curve_speeds(case) if speeds is None else np.asarray(speeds, dtype=float)
     model, lvl = prepare(case, omegas, level)
-    _, force, flank = nut_loads(case)[0]
+    (_, force, flank), *others = nut_loads(case)
     rows = []
-    for omega in omegas:  # one quasi-static solve per speed
+    for omega in omegas:  # one quasi-static solve per speed and loaded flank
         state = solve_ball(model, float(omega), force, flank, lvl)
+        loaded = [state] if force > 0.0 else []
+        loaded += [solve_ball(model, float(omega), f, s, lvl) for _, f, s in others if f > 0.0]
         sharing = state.sharing or model.sharing(
             state.load_screw, model.entrainment_speed(state.motion)
         )
@@ -280,7 +288,7 @@ def speed_sweep(
                 state.spin_screw,
                 sharing.psi,
                 sharing.separation if sharing.film is not None else math.nan,
-                _model_torque(model, case, float(omega), lvl),
+                _flanks_torque(model, loaded),  # the ball-model torque of all nuts
             )
         )
     cols = np.array(rows, dtype=float).T

@@ -25,7 +25,7 @@ import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import ModuleType
-from typing import Any, ClassVar
+from typing import Any, ClassVar, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -38,12 +38,13 @@ from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
+from ballscrew.friction.ball_losses import BOUNDARY_FILM_PARAMETER
 from ballscrew.friction.torque import FrictionTorque
+from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import preload_drag_torque
 from ballscrew.lubrication.lubricant_library import LibraryLubricant
 from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
 from ballscrew.validation import case_with
-from ballscrew.wear.step import entrainment_speed
 
 __all__ = [
     "OperatingPoint",
@@ -65,10 +66,6 @@ MAX_ITERATIONS = 60
 NUT_WARNING_TEMPERATURE = 333.15
 """Nut temperature above which the result warns [K] (60 °C; nuts on machine axes run 5–30 K
 above ambient)."""
-
-
-BOUNDARY_FILM_PARAMETER = 1.0
-"""Λ below which the contact runs in boundary lubrication (Hamrock 1994: < 1 boundary)."""
 
 
 class OperatingPointWarning(UserWarning):
@@ -338,7 +335,7 @@ def operating_point(
             friction = trial
         eta, alpha = law(contact)
         films = _films(base, omega, eta, alpha)
-        for text in _warnings(base, omega, nut, friction, films[0] / films[3]):
+        for text in _warnings(base, omega, nut, friction, films.central / films.roughness):
             warnings.warn(text, OperatingPointWarning, stacklevel=2)
     return OperatingPoint(
         case=base,
@@ -348,22 +345,32 @@ def operating_point(
         nut_temperature=nut,
         screw_temperature=screw,
         viscosity=math.nan if eta is None else eta,
-        film_thickness=films[0],
+        film_thickness=films.central,
         iterations=iterations,
         field=field,
         warnings=tuple(messages),
-        film_thickness_minimum=films[1],
-        film_thickness_nut=films[2],
-        film_roughness=films[3],
+        film_thickness_minimum=films.minimum,
+        film_thickness_nut=films.nut,
+        film_roughness=films.roughness,
         viscosity_source=viscosity_source(base)[0],
     )
 
 
-def _films(
-    case: Case, omega: float, eta: float | None, alpha: float | None
-) -> tuple[float, float, float, float]:
-    """(h_c at A, h_min at A, h_c at B, σ_Λ) of a ball of the loaded nut at its whole ball load,
-    Level-0 motion, lubricant (η, α_p) [m]; films NaN when dry or at rest."""
+class _Films(NamedTuple):
+    """The films of a ball of the loaded nut at its whole ball load [m] (NaN dry or at rest)."""
+
+    central: float
+    """h_c at the screw contact A."""
+    minimum: float
+    """h_min at A."""
+    nut: float
+    """h_c at the nut contact B."""
+    roughness: float
+    """σ_Λ of the film parameter (E6.6)."""
+
+
+def _films(case: Case, omega: float, eta: float | None, alpha: float | None) -> _Films:
+    """:class:`_Films` at the Level-0 motion and the lubricant (η, α_p)."""
     params = ScrewParameters.from_case(case)
     balls = ball_model(case)
     if eta is not None:
@@ -374,11 +381,11 @@ def _films(
         for side in ("screw", "nut")
     )
     nan = math.nan
-    return (
-        a.central if a is not None else nan,
-        a.minimum if a is not None else nan,
-        b.central if b is not None else nan,
-        balls.surface.film_roughness,
+    return _Films(
+        central=a.central if a is not None else nan,
+        minimum=a.minimum if a is not None else nan,
+        nut=b.central if b is not None else nan,
+        roughness=balls.surface.film_roughness,
     )
 
 

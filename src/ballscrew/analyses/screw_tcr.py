@@ -332,8 +332,8 @@ def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
         "ball_path_without_film": (result.ball_path_without_film, "K/W"),
         "heat_path_resistance": (result.heat_path_resistance, "K/W"),
     }
-    if result.films:
-        scalars["ball_path_with_film"] = (result.heat_path_resistance, "K/W")
+    if result.ball_path_with_film is not None:
+        scalars["ball_path_with_film"] = (result.ball_path_with_film, "K/W")
     for nut in result.nuts:
         scalars[f"nut{nut.index}_resistance"] = (nut.resistance, "K/W")
         scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")

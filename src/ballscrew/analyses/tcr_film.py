@@ -29,8 +29,8 @@ from ballscrew.contact_resistance.film_path import (
     with_film_path,
 )
 from ballscrew.geometry.curvature import raceway_curvature
+from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.lubrication.film import film_function
-from ballscrew.wear.step import entrainment_speed
 
 if TYPE_CHECKING:
     from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR

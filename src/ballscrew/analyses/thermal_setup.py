@@ -285,9 +285,10 @@ def build_problem(
             interfaces.append(NutInterface(name, math.inf, 0.0, math.inf, bore_area, with_film))
             continue
         r = _parallel([micro[n.index] for n in loaded])
-        cons = _parallel([micro[n.index] + paths[n.index].constriction for n in loaded]) - r
         if len(loaded) == 1:  # one flank: its own split, bit for bit
             cons = paths[loaded[0].index].constriction
+        else:  # both flanks of a single nut: what the constriction adds to their parallel R
+            cons = _parallel([micro[n.index] + paths[n.index].constriction for n in loaded]) - r
         area = sum(n.apparent_area for n in loaded)
         interfaces.append(NutInterface(name, r, cons, r * area, bore_area, with_film))
 

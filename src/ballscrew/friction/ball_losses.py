@@ -68,6 +68,9 @@ DEFAULT_HYSTERESIS = 0.01
 #: Share of a loss at the screw contact A that goes into the screw (Blok 1937, equal bodies).
 SCREW_SHARE_AT_A = 0.5
 
+#: Film parameter Λ below which a contact runs in boundary lubrication (Hamrock 1994).
+BOUNDARY_FILM_PARAMETER = 1.0
+
 
 def hysteresis_force(
     load: ArrayLike, semi_axis: ArrayLike, radius: ArrayLike, fraction: float
@@ -86,7 +89,7 @@ def film_parameter(film_thickness: float, rms_height: float) -> float:
 
 def regime(film: float) -> str:
     """Lubrication regime of a film parameter Λ (Hamrock 1994: <1 boundary, 1–3 mixed, >3 EHL)."""
-    if film < 1.0:
+    if film < BOUNDARY_FILM_PARAMETER:
         return "boundary"
     return "mixed" if film < 3.0 else "EHL"
 
@@ -232,16 +235,22 @@ def _contact_losses(
     semi_nut: tuple[float, float],
     nut: NutLossParameters,
     balls: NutBalls | None = None,
+    train: bool = True,
 ) -> tuple[tuple[float, ...], float, float, float]:
     """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball, the
     torque of pushing the return train of one nut (ball returns), the separation h at A [m]
-    and the JGP asperity share ψ at A."""
+    and the JGP asperity share ψ at A. ``train`` = False: the contact losses alone (ball–ball,
+    drag and push 0), for a flank whose balls' train is counted on another."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
     rolling = drag.dissipation_torque - sliding
     # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
     rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
+    film = (drag.separation, drag.psi)
+    slip = _groove_slip_torque(model, state, unit, semi_nut)
+    if not train:
+        return (sliding, rolling - rolling_b, rolling_b, 0.0, 0.0, slip), 0.0, *film
     speed = abs(state.ball_speed)
     force = 0.0  # drag of one ball in the lubricant, F_v = P_v/V
     if model.lubricated and state.screw_speed != 0.0 and speed > 0.0:
@@ -260,22 +269,11 @@ def _contact_losses(
     if nut.ball_train == "speed_spread":
         mu = _traction_coefficient(model, state, drag.psi)
         spread = _spread(model, unit, balls, mu, nut.circuits)
-    train = _train(model, state, nut, force, spread)
+    forces = _train(model, state, nut, force, spread)
     # the push's power n_c n_r f_r V per screw speed: V/ω of the unit motion (ω_s → 0⁺ at rest)
-    push = nut.circuits * train.return_push * abs(unit.ball_speed / unit.screw_speed)
-    return (
-        (
-            sliding,
-            rolling - rolling_b,
-            rolling_b,
-            _ball_ball_torque(model, unit, nut, train.contact),
-            viscous,
-            _groove_slip_torque(model, state, unit, semi_nut),
-        ),
-        push,
-        drag.separation,
-        drag.psi,
-    )
+    push = nut.circuits * forces.return_push * abs(unit.ball_speed / unit.screw_speed)
+    ball_ball = _ball_ball_torque(model, unit, nut, forces.contact)
+    return (sliding, rolling - rolling_b, rolling_b, ball_ball, viscous, slip), push, *film
 
 
 def _traction_coefficient(model: BallModel, state: BallState, psi: float) -> float:
@@ -340,11 +338,10 @@ def ball_losses(
     for state, unit, a, b, (*_, own) in zip(
         states, units, along[:, 1], across[:, 1], loaded, strict=True
     ):
+        # shared: the same balls on every flank, their train counted on the first one only
         torques, push, separation, psi = _contact_losses(
-            model, state, unit, (float(a), float(b)), nut, own
+            model, state, unit, (float(a), float(b)), nut, own, train=not shared or first is None
         )
-        if shared and first is not None:  # the same balls: their train counts once
-            torques, push = (*torques[:3], 0.0, 0.0, torques[5]), 0.0
         sums += torques
         pushes += push
         first = first or (separation, psi)

@@ -8,6 +8,7 @@ Horng 2009), and rolls without slip along t at the centre of the screw contact A
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -29,6 +30,7 @@ __all__ = [
     "ENTRAINMENT_RULES",
     "BallMotion",
     "ball_motion",
+    "entrainment_speed",
     "nut_controlled_spin_vector",
     "rolling_ball_speed",
     "screw_velocity",
@@ -209,3 +211,23 @@ def ball_motion(
         screw_contact=contact_axes(frame, e_a),
         nut_contact=contact_axes(frame, e_b),
     )
+
+
+def entrainment_speed(
+    geometry: ScrewGeometry, screw_speed: float, rule: str = "rolling", contact: Side = "screw"
+) -> float:
+    """Entrainment speed u_e of ``contact`` at the Level-0 motion (E2.4), (E2.8), m/s, signed
+    as ω_s.
+
+    ``rule`` ``"rolling"``: the rolling speed of the surfaces past the contact
+    (:meth:`BallMotion.entrainment_speed`; REF 100 rpm: 0.1037); ``"ball_centre"``: the
+    ball-centre speed V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ) (0.09333).
+    """
+    return math.copysign(_level0_speed(geometry, abs(screw_speed), rule, contact), screw_speed)
+
+
+@functools.lru_cache(maxsize=256)
+def _level0_speed(geometry: ScrewGeometry, speed: float, rule: str, contact: Side) -> float:
+    """|u_e| of :func:`entrainment_speed`, cached: every contact of every wear step asks it
+    again for the same screw and speed, and a Level-0 motion costs ~0.4 ms."""
+    return ball_motion(geometry, speed).entrainment(contact, rule)

@@ -8,7 +8,6 @@ solve); :func:`flank_rate` is one contact of it.
 
 from __future__ import annotations
 
-import math
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -17,9 +16,7 @@ import numpy as np
 
 from ballscrew.budget import check_memory, contact_batch_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
-from ballscrew.geometry import ScrewGeometry
-from ballscrew.geometry.screw import Side
-from ballscrew.kinematics.motion import ball_motion
+from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.kinematics.sliding import sliding_field_closed_form
 from ballscrew.lubrication import share_loads
 from ballscrew.wear.profile import worn_gap
@@ -60,20 +57,6 @@ class FlankRate:
     film_parameter: float | None = None
     """Λ = h/σ of the film that gives ψ (its mean-plane separation over the RMS roughness of the
     worn surface); None when dry or at rest."""
-
-
-def entrainment_speed(
-    geometry: ScrewGeometry, screw_speed: float, rule: str = "rolling", contact: Side = "screw"
-) -> float:
-    """Entrainment speed u_e of ``contact`` at the Level-0 motion (E2.4), (E2.8), m/s, signed
-    as ω_s.
-
-    ``rule`` ``"rolling"``: the rolling speed of the surfaces past the contact
-    (:meth:`ballscrew.kinematics.motion.BallMotion.entrainment_speed`; REF 100 rpm: 0.1037);
-    ``"ball_centre"``: the ball-centre speed V = (ω_s/2)(r_m/cosλ − r_b cosβ cosλ) (0.09333).
-    """
-    motion = ball_motion(geometry, abs(screw_speed))
-    return math.copysign(motion.entrainment(contact, rule), screw_speed)
 
 
 @dataclass(frozen=True)
