@@ -40,3 +40,17 @@ def test_offset_lead_without_preload_keeps_all_circuits_on_its_one_flank(wear_ca
          "operating.preload": "500 N"},
     )  # fmt: skip
     assert nut_loss_parameters(preloaded).circuits == 2
+
+
+def test_nut_balls_takes_the_earlier_params_argument(wear_case_path):
+    """``nut_balls(case, params)`` as before: the same per-ball states as ``nut_balls(case)``."""
+    from ballscrew.analyses.friction import nut_balls
+    from ballscrew.analyses.parameters import ScrewParameters
+
+    case = load_case(
+        wear_case_path, {"loads.distribution": "elastic", "friction.ball_train": "speed_spread"}
+    )
+    alone = nut_balls(case)
+    assert alone is not None and len(alone) == 2
+    for old, new in zip(nut_balls(case, ScrewParameters.from_case(case)), alone, strict=True):
+        assert old == new

@@ -86,11 +86,12 @@ def nut_loss_parameters(case: Case) -> NutLossParameters:
     )
 
 
-def nut_balls(case: Case) -> tuple[NutBalls, ...] | None:
+def nut_balls(case: Case, params: ScrewParameters | None = None) -> tuple[NutBalls, ...] | None:
     """Per nut the loads, contact angles and diameter excesses of its balls under the preload
     alone, for ``friction.ball_train = "speed_spread"`` with ``loads.distribution = "elastic"``
     (None otherwise: identical balls). Cached: a coupled operating point asks for the same
-    case at every temperature it tries."""
+    case at every temperature it tries. ``params`` is accepted for the callers of the earlier
+    ``nut_balls(case, params)``; the states follow from ``case`` alone (the cache's key)."""
     if case.friction.ball_train != "speed_spread" or case.loads.distribution != "elastic":
         return None
     return _NUT_BALLS(case)
