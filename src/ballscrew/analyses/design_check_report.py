@@ -210,8 +210,8 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
     dist = ball_distribution(result)
     q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
+    part = "flank" if result.case.screw.nuts == 1 else "nut"
     for k in range(dist.layout.nuts):
-        part = "flank" if result.case.screw.nuts == 1 else "nut"
         ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{part} {k + 1}")
         lifted = q[k] <= 0.0
         if lifted.any():
