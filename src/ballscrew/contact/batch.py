@@ -24,9 +24,9 @@ from ballscrew.contact._validation import (
 )
 from ballscrew.contact.convolution import DCFFTOperator, DCFFTStack
 from ballscrew.contact.polonsky_keer import (
+    BATCH_HINT,
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
-    PCG_HINT,
     PRECISIONS,
     SOLVER,
     _finish,
@@ -155,7 +155,7 @@ def solve_normal_batch(
         if not iterate.converged and raise_on_failure:
             raise ConvergenceError(
                 f"{SOLVER} (contact {b} of the batch)", iterate.iterations, iterate.residual, tol,
-                PCG_HINT,
+                BATCH_HINT,
             )  # fmt: skip
         results.append(_finish(iterate, problem, raise_on_failure))
     return tuple(results)
