@@ -111,3 +111,17 @@ def test_the_tcr_report_says_nut_1_and_2_are_the_flanks_of_a_single_nut(case, do
     assert "four-point contact" in text(screw_tcr(case(**FOUR)))
     assert "two halves" in text(screw_tcr(case(**OFFSET)))
     assert "loaded flanks" not in text(double)
+
+
+def test_screw_parameters_nut_forces_are_the_flanks_of_a_preloaded_single_nut(case):
+    """(F1, F2) of (P1)–(P3) for either preload method, as for the double nut; (F_a, 0) for a
+    single nut without preload (F2 was 0 for every single nut, its second flank left out)."""
+    from ballscrew.loads import nut_forces
+
+    expected = tuple(nut_forces(1500.0, 2000.0))
+    for overrides in ({}, FOUR, OFFSET):
+        params = ScrewParameters.from_case(case(**overrides, **LOAD))
+        assert params.preload == 1500.0
+        assert params.nut_forces == pytest.approx(expected, rel=1e-12)
+    bare = ScrewParameters.from_case(case(**OFFSET, **LOAD, **{"operating.preload": 0.0}))
+    assert bare.nut_forces == (2000.0, 0.0)

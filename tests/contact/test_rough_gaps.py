@@ -102,3 +102,19 @@ def test_a_pcg_that_does_not_converge_names_its_residual_and_suggests_pk():
     with pytest.raises(ConvergenceError) as plain:
         solve_normal(gap, dx, dy, E_STAR, LOAD, method="pk", max_iterations=3)
     assert "try" not in str(plain.value)
+
+
+def test_a_batch_or_grid_solve_that_does_not_converge_suggests_what_it_takes():
+    """solve_normal_batch and solve_contact take no ``method``: their hint names the arguments
+    they have and solve_normal's "pk" for the contact alone, not a ``method`` of their own."""
+    from ballscrew.contact import solve_contact
+
+    gap, dx, dy = profile_gap()
+    hint = (
+        r'try a larger max_iterations, or the contact alone by solve_normal\(\.\.\., method="pk"\)'
+    )
+    with pytest.raises(ConvergenceError, match=r"contact 0 of the batch.*" + hint):
+        solve_normal_batch(gap[None], dx, dy, E_STAR, [LOAD], max_iterations=3)
+    with pytest.raises(ConvergenceError, match=hint):
+        solve_contact(lambda x, y: x**2 / (2 * RX) + y**2 / (2 * RY), RX, RY, E_STAR, LOAD,
+                      max_iterations=3, warm_start=False)  # fmt: skip

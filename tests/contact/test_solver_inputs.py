@@ -112,6 +112,20 @@ def test_a_modulus_outside_engineering_solids_is_warned_at_the_callers_line(e_st
     assert {w.filename for w in implausible} == {__file__}
 
 
+def test_a_batch_of_implausible_moduli_warns_once():
+    """Eight contacts with E* in GPa without the unit (200 ... 207 'Pa'): one warning naming the
+    first, not one per value; a plausible E* among them is not the one named."""
+    moduli = [113.19e9, *np.arange(200.0, 207.0)]
+    gaps = np.repeat(GAP[None, ::32, ::32], len(moduli), axis=0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        solve_normal_batch(gaps, 32 * DX, 32 * DX, moduli, [10.0] * len(moduli),
+                           raise_on_failure=False)  # fmt: skip
+    implausible = [w for w in caught if issubclass(w.category, ImplausibleValueWarning)]
+    assert len(implausible) == 1 and "e_star = 200 Pa" in str(implausible[0].message)
+    assert implausible[0].filename == __file__
+
+
 def test_plausible_moduli_are_not_warned():
     """Two polymers (E* ≈ 0.6 GPa), steel on steel, diamond on diamond (≈ 530 GPa)."""
     with warnings.catch_warnings():

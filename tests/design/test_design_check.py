@@ -6,6 +6,7 @@ import math
 import tomllib
 from pathlib import Path
 
+import numpy as np
 import pytest
 from tests.protocol_check import assert_protocol_folder
 from tests.quick_cases import dump_toml
@@ -289,3 +290,28 @@ def test_a_preload_method_that_does_not_fit_the_nuts_is_a_case_error(screw, mess
     raw["screw"].update(screw)
     with pytest.raises(BallscrewError, match=message):
         case_from_dict(raw)
+
+
+def test_the_stiffness_curve_of_a_single_nut_without_preload() -> None:
+    """One flank, δ = C F^(2/3): the Hertz tangent stiffness is 1.5 F^(1/3)/C (closed form), the
+    curves start one step above zero load (no stiffness at F = 0, where the export used to fail
+    asking for a preload), and the elastic bodies only soften it."""
+    raw = raw_case()
+    raw["screw"]["nuts"] = 1
+    raw["operating"]["preload"] = "0 N"
+    result = design_check(case_from_dict(raw))
+    curve = result.to_xarray()
+    loads = curve["axial_load"].values
+    assert loads[0] > 0.0 and curve.attrs["nuts"] == 1
+    closed = 1.5 * loads ** (1.0 / 3.0) / result.compliance
+    np.testing.assert_allclose(curve["stiffness"].values, closed, rtol=1e-12)
+    np.testing.assert_allclose(
+        curve["deflection"].values, result.compliance * loads ** (2.0 / 3.0), rtol=1e-12
+    )
+    body_loads, body_k = curve["body_load"].values, curve["stiffness_bodies"].values
+    hertz_k = 1.5 * body_loads ** (1.0 / 3.0) / result.compliance
+    assert body_loads[0] > 0.0 and np.all(body_k > 0.0) and np.all(body_k < hertz_k)
+    # measured from the unloaded nut (x(0) = 0), so the bodies add to the contacts' deflection
+    hertz_x = result.compliance * body_loads ** (2.0 / 3.0)
+    body_x = curve["deflection_bodies"].values
+    assert np.all(body_x > hertz_x) and body_x[0] < 1.1 * hertz_x[0]

@@ -102,6 +102,13 @@ def test_hertz_stiffness_is_the_derivative_of_the_load_deflection_curve(nuts, lo
     assert k == pytest.approx(forward, rel=1e-5)
 
 
+@pytest.mark.parametrize("nuts", [0, 3])
+def test_a_nut_count_other_than_one_or_two_names_nuts(nuts) -> None:
+    for call in (design.nut_stiffness, design.nut_load_deflection):
+        with pytest.raises(InputError, match=rf"^nuts = {nuts} .*1 or 2"):
+            call(1000.0, 1500.0, COMPLIANCE, nuts)
+
+
 def test_lift_off_at_two_to_the_three_halves_preload() -> None:
     fp = 1500.0
     lift_off = design.LIFT_OFF_FACTOR * fp

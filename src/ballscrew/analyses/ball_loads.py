@@ -214,8 +214,7 @@ def chain_ball_loads(case: Case, params: ScrewParameters) -> tuple[NutBallLoad, 
     if case.loads.distribution == "uniform":
         return tuple(NutBallLoad(n.force, n.ball_load, 1.0) for n in params.flank_loads)
     result = ball_loads(case)
-    rows = zip(result.axial_forces, result.loads, strict=True)
     return tuple(
         NutBallLoad(float(force), float(q.max()), float(q.max() / q.mean()) if q.max() > 0 else 1.0)
-        for force, q in rows
+        for force, q in zip(result.axial_forces, result.loads, strict=True)
     )

@@ -103,8 +103,12 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     params, spec, numerics = _params(result), result.case.loads, result.case.numerics
     fp = params.preload
     loads = np.linspace(0.0 if fp > 0 else top / _BODY_POINTS, top, _BODY_POINTS)
-    first = elastic_distribution(
-        params, spec, result.root_diameter, axial_load=0.0, numerics=numerics
+    interference = (  # of the preload, found at zero axial load; none without preload
+        elastic_distribution(
+            params, spec, result.root_diameter, axial_load=0.0, numerics=numerics
+        ).interference
+        if fp > 0
+        else None
     )
     runs = [
         elastic_distribution(
@@ -112,7 +116,7 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
             spec,
             result.root_diameter,
             axial_load=f,
-            interference=first.interference,
+            interference=interference,
             numerics=numerics,
         )
         for f in loads
@@ -132,16 +136,19 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
             1e-4,
             contact=ball_contact_law(params, spec, numerics),
         )
-    return loads, x - x[0], np.array([r.stiffness for r in runs]), np.array(lift)
+    if fp > 0:  # from the preloaded state at zero load; without preload x(0) = 0 already
+        x = x - x[0]
+    return loads, x, np.array([r.stiffness for r in runs]), np.array(lift)
 
 
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     """Nut displacement and stiffness against the axial load: Hertz contacts only, and the
-    contacts with the elastic bodies, with units."""
+    contacts with the elastic bodies, with units. Without preload the curves start one step
+    above zero load, where the unloaded contacts have no stiffness to give."""
     fp, nuts = result.case.operating.preload, result.flanks
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
     top = max(1.5 * lift_off, 1.2 * max(result.spectrum.loads), 3.0 * fp, 1.0)
-    loads = np.linspace(0.0, top, _CURVE_POINTS)
+    loads = np.linspace(0.0 if fp > 0 else top / _CURVE_POINTS, top, _CURVE_POINTS)
     x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
     k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
     body_loads, body_x, body_k, body_lift = _body_curve(result, top)
@@ -187,8 +194,8 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
     axes[0].plot(loads, curve["deflection"].values * 1e6, label="contacts only")
     axes[0].plot(body, curve["deflection_bodies"].values * 1e6, label="contacts and bodies")
     axes[0].set_ylabel("nut displacement [µm]")
-    axes[1].plot(loads, curve["stiffness"].values * 1e-6)
-    axes[1].plot(body, curve["stiffness_bodies"].values * 1e-6)
+    axes[1].plot(loads, curve["stiffness"].values * 1e-6, label="contacts only")
+    axes[1].plot(body, curve["stiffness_bodies"].values * 1e-6, label="contacts and bodies")
     axes[1].set_ylabel("stiffness [N/µm]")
     for ax in axes:
         for key, color, text in (
@@ -210,8 +217,8 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
     dist = ball_distribution(result)
     q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
+    part = "flank" if result.case.screw.nuts == 1 else "nut"
     for k in range(dist.layout.nuts):
-        part = "flank" if result.case.screw.nuts == 1 else "nut"
         ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{part} {k + 1}")
         lifted = q[k] <= 0.0
         if lifted.any():

@@ -26,6 +26,7 @@ from ballscrew.friction import (
     nut_friction_torque,
 )
 from ballscrew.friction.speed_spread import NutBalls
+from ballscrew.loads import preload_flanks
 from ballscrew.loads.distribution import expand_errors
 from ballscrew.validation import nonnegative, positive
 
@@ -58,11 +59,14 @@ def seal_torque(case: Case) -> float:
 def nut_loss_parameters(case: Case) -> NutLossParameters:
     """Ball–ball, drag and ball-return parameters of ``[friction]`` per loaded flank (the
     lubricant's density is the ball model's, see
-    :func:`~ballscrew.analyses.kinematics.ball_model`). The two halves of an offset-lead nut
-    are run as two flanks, each with half of the nut's ``friction.circuits``."""
-    spec = case.friction
+    :func:`~ballscrew.analyses.kinematics.ball_model`). The two halves of a preloaded
+    offset-lead nut are run as two flanks, each with half of the nut's ``friction.circuits``;
+    without preload its one flank has all balls and circuits."""
+    spec, screw = case.friction, case.screw
     circuits = spec.circuits
-    if case.screw.resolved_preload_method == "offset_lead":
+    method = screw.resolved_preload_method
+    flanks = preload_flanks(method, screw.nuts, screw.balls_per_nut, case.operating.preload)
+    if flanks.balls < screw.balls_per_nut:  # the halves of one nut share its circuits
         if circuits % 2:
             raise InputError(
                 "friction.circuits",
@@ -82,11 +86,12 @@ def nut_loss_parameters(case: Case) -> NutLossParameters:
     )
 
 
-def nut_balls(case: Case) -> tuple[NutBalls, ...] | None:
+def nut_balls(case: Case, params: ScrewParameters | None = None) -> tuple[NutBalls, ...] | None:
     """Per nut the loads, contact angles and diameter excesses of its balls under the preload
     alone, for ``friction.ball_train = "speed_spread"`` with ``loads.distribution = "elastic"``
     (None otherwise: identical balls). Cached: a coupled operating point asks for the same
-    case at every temperature it tries."""
+    case at every temperature it tries. ``params`` is accepted for the callers of the earlier
+    ``nut_balls(case, params)``; the states follow from ``case`` alone (the cache's key)."""
     if case.friction.ball_train != "speed_spread" or case.loads.distribution != "elastic":
         return None
     return _NUT_BALLS(case)

@@ -249,8 +249,9 @@ class ScrewParameters:
 
     @property
     def nut_forces(self) -> tuple[float, float]:
-        """(F1, F2): axial force on the loaded and the unloaded nut [N] (F2 = 0 for one nut)."""
-        forces = [n.force for n in self.nuts]
+        """(F1, F2): axial force on the loaded and the unloaded nut, or flank of a preloaded
+        single nut [N] (F2 = 0 for a single nut without preload)."""
+        forces = [n.force for n in self.flank_loads]
         return forces[0], forces[1] if len(forces) > 1 else 0.0
 
     @property

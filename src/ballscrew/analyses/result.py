@@ -58,16 +58,23 @@ INFINITE = {True: "infinite (+∞): no limit", False: "infinite (−∞)"}
 """The reason given for a value of ±∞ (a lifted-off nut's resistance, a life without load)."""
 
 
-def quantity(number: float, unit: str, undefined: str = UNDEFINED) -> dict[str, Any]:
+def _reason(number: float) -> str:
+    """Why the non-finite ``number`` is given as None: :data:`INFINITE` for ±∞, else
+    :data:`UNDEFINED`."""
+    return INFINITE[number > 0] if math.isinf(number) else UNDEFINED
+
+
+def quantity(number: float, unit: str, undefined: str | None = None) -> dict[str, Any]:
     """A summary scalar with its SI unit, e.g. ``{"value": 1.35e9, "unit": "Pa"}``.
 
     JSON has no NaN: a number that is not finite is ``{"value": None, "unit": unit, "reason":
-    undefined}``, ``undefined`` saying why (e.g. "not reached within the transient").
+    …}``, the reason ``undefined`` where the caller says why (e.g. "not reached within the
+    transient"), else that of :func:`json_ready` (infinite for ±∞, not defined for NaN).
     """
     number = float(number)
     if math.isfinite(number):
         return {"value": number, "unit": unit}
-    return {"value": None, "unit": unit, "reason": undefined}
+    return {"value": None, "unit": unit, "reason": undefined or _reason(number)}
 
 
 def json_ready(obj: Any) -> Any:
@@ -81,8 +88,9 @@ def json_ready(obj: Any) -> Any:
         out = {str(k): json_ready(v) for k, v in obj.items()}
         if "unit" in out and "value" in out and out["value"] is None:
             raw = obj["value"]
-            infinite = isinstance(raw, float | np.floating) and math.isinf(raw)
-            out.setdefault("reason", INFINITE[raw > 0] if infinite else UNDEFINED)
+            out.setdefault(
+                "reason", _reason(raw) if isinstance(raw, float | np.floating) else UNDEFINED
+            )
         return out
     if isinstance(obj, list | tuple):
         return [json_ready(v) for v in obj]

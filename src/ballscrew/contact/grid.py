@@ -25,9 +25,9 @@ from ballscrew.contact._validation import finite_grid, integer_at_least, positiv
 from ballscrew.contact.batch import solve_normal_batch
 from ballscrew.contact.hertz import HertzContact, hertz
 from ballscrew.contact.polonsky_keer import (
+    BATCH_HINT,
     DEFAULT_MAX_ITERATIONS,
     DEFAULT_TOLERANCE,
-    PCG_HINT,
     SOLVER,
     solve_normal,
 )
@@ -340,7 +340,7 @@ def _solve_round(
             if estimate is not grids[i].estimate:
                 where.append(f"extra load {estimate.load:.4g} N")
             solver = f"{SOLVER} ({', '.join(where)})" if where else SOLVER
-            raise ConvergenceError(solver, solution.iterations, solution.residual, tol, PCG_HINT)
+            raise ConvergenceError(solver, solution.iterations, solution.residual, tol, BATCH_HINT)
     start = 0
     for k, g, x, y, gap in zip(keys, grids, xs, ys, gaps, strict=True):
         mine = solutions[start : start + 1 + len(g.extra)]

@@ -51,6 +51,11 @@ __all__ = [
 SOLVER = "Polonsky-Keer conjugate gradient"
 PCG_HINT = 'try method="pk" (the plain Polonsky-Keer CG) or a larger max_iterations'
 """What a :class:`~ballscrew.errors.ConvergenceError` of the preconditioned solver suggests."""
+BATCH_HINT = (
+    'try a larger max_iterations, or the contact alone by solve_normal(..., method="pk") '
+    "(the plain Polonsky-Keer CG)"
+)
+""":data:`PCG_HINT` where the caller (a batch, a grid-sized solve) has no ``method``."""
 DEFAULT_METHOD = "pcg"
 """Solver of :func:`solve_normal` (a name of :data:`NORMAL_SOLVERS`)."""
 PRECISIONS = {"float64": np.float64, "mixed": np.float32}

@@ -48,6 +48,8 @@ def catalogue_nut_rigidity(table_rigidity: float, load: float, reference_load: f
 
 
 def _half_forces(axial_load: float, preload: float, nuts: int) -> tuple[float, float]:
+    if nuts not in (1, 2):  # named as the caller's argument, not flank_forces' "flanks"
+        raise InputError("nuts", nuts, "1 or 2")
     f1, f2 = flank_forces(preload, axial_load, nuts)
     return float(f1), float(f2)
 

@@ -45,7 +45,7 @@ from ballscrew.backend import blas_single_thread
 from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.loads.ball_load import validate_angles, validate_balls
 from ballscrew.loads.contact_law import TabulatedContact
-from ballscrew.loads.double_nut import nut_forces
+from ballscrew.loads.preload_method import flank_forces
 from ballscrew.validation import positive
 
 __all__ = [
@@ -225,7 +225,8 @@ class Distribution:
     axial_load: float
     """External load F_a [N] (on nut 1)."""
     interference: float
-    """Interference g of the spacer (axial, per nut) [m]; 0 for a single nut."""
+    """Interference g of the preload (axial, per nut or flank) [m]: the spacer's, or a
+    preloaded single nut's ball oversize or lead offset; 0 for a nut without preload."""
     displacement: float
     """Axial displacement of the shaft at the loaded end relative to the nut flange [m]."""
     compliance: float
@@ -392,10 +393,7 @@ def solve_distribution(
     c = (s * sigma * expand_errors("lead_error", lead_error, layout)) / d_ref
     c = c + expand_errors("ball_excess", ball_excess, layout) / d_ref
     force_row = sigma / z_count
-    if layout.nuts == 1:
-        f1, f2 = fp + fa, 0.0
-    else:
-        f1, f2 = (float(v) for v in nut_forces(fp, fa))
+    f1, f2 = (float(v) for v in flank_forces(fp, fa, layout.nuts))
     q0 = np.where(sigma > 0, f1, f2) / f_ref  # rigid bodies, no errors
     law = _hertz_law if contact is None else _scaled_law(contact, q_ref, d_ref)
     if layout.nuts == 1:
