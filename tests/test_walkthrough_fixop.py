@@ -110,7 +110,11 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     # Λ = h/σ with σ over the roughness measurement's band (E6.6), ψ from the asperity model
     assert slow["part"] == "level 1" and 0.05 < slow["film_parameter"]["value"] < 1.0
     assert slow["asperity_share"]["value"] > 0.1
-    assert fast_["film_parameter"]["value"] > 3.0 * slow["film_parameter"]["value"]
+    # Hamrock & Dowson (1977): h_c ∝ u^0.67 Q^-0.067 at one viscosity; inlet heating,
+    # starvation and a warmer lubricant only thin the faster film, so this ratio is its ceiling
+    ceiling = 10.0**0.67 * (fast_["ball_load"]["value"] / slow["ball_load"]["value"]) ** -0.067
+    ratio = fast_["film_parameter"]["value"] / slow["film_parameter"]["value"]
+    assert 3.0 < ratio <= ceiling * (1 + 1e-9)
     assert fast_["asperity_share"]["value"] < 1e-6
     depth = [lv["max_wear_depth"]["value"] for lv in summary["levels"]]
     assert depth[0] > 0.0 and depth[1] - depth[0] < 1e-3 * depth[0]

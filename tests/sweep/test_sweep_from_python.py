@@ -86,6 +86,25 @@ def test_a_store_of_another_analysis_is_refused_before_the_scheduler(gao_case_pa
         run_sweep(ref, AXES, load_in_kn, "load", other, scheduler=DEAD)
 
 
+def test_points_stored_before_the_analysis_was_recorded_are_passed_over(tmp_path):
+    """A store of older points (no analysis recorded) resumes with any analysis; among them, one
+    point that records another analysis still refuses the store, wherever it lies."""
+    from ballscrew.sweep.runner import check_store
+
+    folder = tmp_path / "points"
+    folder.mkdir()
+    old = {"overrides": {}, "results": {}, "error": None, "seconds": 0.0}
+    for k in range(20):
+        (folder / f"{k:020d}.json").write_text(json.dumps(old), encoding="utf-8")
+    check_store(folder, "tcr", "tcr", tmp_path)
+    _stored(tmp_path / "mixed", "thermal-network", "thermal-network")
+    mixed = tmp_path / "mixed" / "points"
+    for k in range(20):
+        (mixed / f"{k + 1:020d}.json").write_text(json.dumps(old), encoding="utf-8")
+    with pytest.raises(InputError, match=r"= 'tcr' is not allowed: 'thermal-network'"):
+        check_store(mixed, "tcr", "tcr", tmp_path / "mixed")
+
+
 def test_python_errors_name_the_arguments_not_the_options(gao_case_path, tmp_path, monkeypatch):
     """A dead scheduler from Python was reported as '--scheduler = …', the command's option."""
     monkeypatch.setattr(sweep_cluster, "CONNECT_TIMEOUT", "1s")

@@ -151,9 +151,10 @@ for _analysis in (
     ANALYSES.add(_analysis.name, _analysis.title, _analysis)
 
 
-def sweep_function(name: str) -> Analysis:
-    """The descriptor of the sweepable analysis ``name`` (one-line error otherwise)."""
+def sweep_function(name: str, field: str = "--analysis") -> Analysis:
+    """The descriptor of the sweepable analysis ``name``; else an :class:`InputError` naming
+    ``field`` (the command's option, or ``analysis`` from Python)."""
     sweepable = [n for n, a in ANALYSES.items() if a.scalars is not None]
     if name not in sweepable:
-        raise InputError("--analysis", name, f"one of {', '.join(sweepable)}")
+        raise InputError(field, name, f"one of {', '.join(sweepable)}")
     return ANALYSES[name]

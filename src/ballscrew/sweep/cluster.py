@@ -145,5 +145,4 @@ def close_clients() -> None:
     while _CLIENTS:
         _, (client, cluster) = _CLIENTS.popitem()
         client.close()
-        if cluster is not None:
-            cluster.close()
+        cluster.close()

@@ -34,10 +34,8 @@ def resolve_analysis(
     the user's function by module and qualified name.
     """
     if isinstance(analysis, str):
-        if analysis not in SWEEPABLE:
-            raise InputError("analysis", analysis, f"one of {', '.join(SWEEPABLE)}")
         own = analysis
-        function = get_analysis(analysis)
+        function = sweep_function(analysis, "analysis").scalars
     else:
         function = analysis
         own = next((n for n in SWEEPABLE if get_analysis(n) is analysis), None)

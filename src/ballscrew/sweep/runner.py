@@ -151,8 +151,9 @@ def _needs_run(path: Path, retry_failed: bool) -> bool:
 def check_store(folder: Path, name: str, identity: str, store: str | Path) -> None:
     """Refuse to resume a store whose points another analysis computed.
 
-    Each point file names its analysis; the first readable one speaks for the store (a store
-    holds one analysis). Points stored before the analysis was recorded are taken as this one's.
+    Each point file names its analysis; the first readable one that does speaks for the store
+    (a store holds one analysis). Points stored before the analysis was recorded are passed
+    over, so a store of only such points is taken as this analysis's.
     """
     for path in folder.glob("*.json"):
         try:
@@ -160,7 +161,7 @@ def check_store(folder: Path, name: str, identity: str, store: str | Path) -> No
         except (OSError, ValueError):
             continue
         if not isinstance(raw, dict) or "function" not in raw:
-            return
+            continue
         held, held_identity = str(raw.get("analysis")), str(raw["function"])
         if held_identity != identity:
             given = name if name == identity else f"{name} ({identity})"
