@@ -7,7 +7,7 @@ import pytest
 from tests.loads.test_distribution import ALPHA, BALL, BETA, BODIES, D_M, LEAD, K
 
 from ballscrew.errors import InputError
-from ballscrew.loads import Flanks, flank_forces, nut_forces, preload_flanks
+from ballscrew.loads import Flanks, flank_forces, nut_forces, preload_flanks, preload_methods
 from ballscrew.loads.distribution import (
     NutBodies,
     ball_layout,
@@ -36,6 +36,14 @@ def test_flanks_of_each_method() -> None:
         preload_flanks("oversized_balls", 2, 54, FP)
     with pytest.raises(InputError, match=r"balls_per_nut = 53.*even"):
         preload_flanks("offset_lead", 1, 53, FP)
+
+
+def test_methods_per_nut_count_default_first() -> None:
+    assert preload_methods(2) == ("spacer",)
+    assert preload_methods(1) == ("oversized_balls", "offset_lead")
+    assert preload_methods(3) == ()
+    with pytest.raises(InputError, match=r"nuts = 3.*1 or 2"):
+        preload_flanks("spacer", 3, 54, FP)
 
 
 def test_four_point_layout_puts_both_flanks_on_the_same_balls() -> None:

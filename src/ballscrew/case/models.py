@@ -33,15 +33,9 @@ from ballscrew.contact import (
 from ballscrew.contact_resistance.correlations import CORRELATIONS
 from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
-from ballscrew.loads.preload_method import PRELOAD_METHODS
+from ballscrew.loads.preload_method import PRELOAD_METHODS, preload_methods
 from ballscrew.lubrication.film import FILM_MODELS
 from ballscrew.materials import MATERIALS, material_properties
-
-
-def preload_methods(nuts: int) -> tuple[str, ...]:
-    """The ``screw.preload_method`` values a nut assembly of ``nuts`` nuts allows, its default
-    first: a double nut the spacer, a single nut oversized balls or an offset lead."""
-    return PRELOAD_METHODS[:1] if nuts == 2 else PRELOAD_METHODS[1:]
 
 
 class ScrewSpec(Model):

@@ -28,7 +28,6 @@ import tomllib
 from dataclasses import dataclass
 
 from ballscrew.case.design_spec import DesignSpec
-from ballscrew.case.models import preload_methods
 from ballscrew.design import (
     MAX_PRELOAD_SHARE,
     accuracy_factor,
@@ -38,6 +37,7 @@ from ballscrew.design import (
 )
 from ballscrew.errors import InputError
 from ballscrew.geometry import ScrewGeometry
+from ballscrew.loads.preload_method import preload_methods
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.materials import material
 

@@ -70,9 +70,9 @@ def init(
     name: Annotated[str, typer.Option(help="case name")] = "my_screw",
 ) -> None:
     """Print a complete case (TOML) for a screw from a maker's table; redirect it to a file."""
-    from ballscrew.case.models import preload_methods
     from ballscrew.case.starter import CatalogueSheet, parse_turns, starter_case
     from ballscrew.errors import InputError
+    from ballscrew.loads import preload_methods
 
     def optional_mm(option: str, text: str | None) -> float | None:
         return None if text is None else _si(option, text, "length", _MM, 1e-3)

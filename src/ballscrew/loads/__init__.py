@@ -24,6 +24,7 @@ from ballscrew.loads.preload_method import (
     Flanks,
     flank_forces,
     preload_flanks,
+    preload_methods,
 )
 
 __all__ = [
@@ -41,6 +42,7 @@ __all__ = [
     "preload_after_wear",
     "preload_drag_torque",
     "preload_flanks",
+    "preload_methods",
     "preloaded_axial_stiffness",
     "validate_angles",
     "validate_balls",

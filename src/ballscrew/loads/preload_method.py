@@ -23,10 +23,16 @@ from ballscrew.errors import InputError
 from ballscrew.loads.ball_load import validate_balls
 from ballscrew.loads.double_nut import NutForces, nut_forces
 
-__all__ = ["PRELOAD_METHODS", "Flanks", "flank_forces", "preload_flanks"]
+__all__ = ["PRELOAD_METHODS", "Flanks", "flank_forces", "preload_flanks", "preload_methods"]
 
 PRELOAD_METHODS = ("spacer", "oversized_balls", "offset_lead")
 """Names of the preload methods (``screw.preload_method``)."""
+
+
+def preload_methods(nuts: int) -> tuple[str, ...]:
+    """The preload methods a nut assembly of ``nuts`` nuts allows, its default first: a double
+    nut the spacer, a single nut oversized balls or an offset lead; () for another count."""
+    return {1: PRELOAD_METHODS[1:], 2: PRELOAD_METHODS[:1]}.get(nuts, ())
 
 
 @dataclass(frozen=True)
@@ -48,8 +54,8 @@ def preload_flanks(method: str, nuts: int, balls_per_nut: int, preload: float) -
     (an even ball count: two equal halves) and has one flank when ``preload`` is 0.
     """
     balls = validate_balls(balls_per_nut)
-    allowed = {1: PRELOAD_METHODS[1:], 2: PRELOAD_METHODS[:1]}.get(nuts)
-    if allowed is None:
+    allowed = preload_methods(nuts)
+    if not allowed:
         raise InputError("nuts", nuts, "1 or 2")
     if method not in allowed:
         raise InputError("preload_method", method, f"{' or '.join(allowed)} for nuts = {nuts}")
