@@ -206,7 +206,8 @@ def test_cli_refuses_and_writes_nothing(tmp_path, gao):
 
 def test_contact_batch_counts_its_window_check(monkeypatch):
     """A batch of 32 contacts on 1024² grids: the budget between the solves' own memory (the old
-    estimate) and that plus the window check's run refuses it, naming the field."""
+    estimate) and that plus the window check's run refuses it, naming the field, both in
+    :func:`check_memory` and in the batched solver itself."""
     from ballscrew.budget import CHECK_BYTES_PER_CELL, contact_batch_bytes, contact_grid_bytes
 
     cells = 1024 * 1024
@@ -218,3 +219,10 @@ def test_contact_batch_counts_its_window_check(monkeypatch):
     refused = r"^numerics.cells = \[1024, 1024\] .* 32 contacts needs .* more than the"
     with pytest.raises(BudgetError, match=refused):
         check_memory("numerics.cells", [1024, 1024], estimate, "32 contacts")
+    # the batched solver counts it too: refused before any work (a broadcast view holds no cells)
+    gaps = np.broadcast_to(np.full((1, 1, 1), 1e-6), (32, 1024, 1024))
+    with pytest.raises(
+        BudgetError,
+        match=r"^gaps = 'array of shape \(32, 1024, 1024\)' .* 32 normal .* more than the budget",
+    ):
+        bs.contact.solve_normal_batch(gaps, 1e-6, 1e-6, 1e11, 1.0)
