@@ -129,3 +129,14 @@ def test_a_case_without_preload_cannot_start_the_preload_fit(wear_case_path) -> 
     case = with_overrides(load_case(wear_case_path), single)
     with pytest.raises(InputError, match=r"--fit = 'preload' .*operating\.preload ≥ 1 N"):
         calibrate(case, measured(), fit="preload,torque_scale", model=model)
+
+
+def test_fit_parameters_refuses_a_start_outside_its_log_bounds() -> None:
+    """Called directly, a zero preload start (ln 0) is refused naming the start, not a
+    ``math domain error``; so is a wear coefficient above its bound of 1."""
+    for name, value in (("preload", 0.0), ("wear_coefficient", 2.0)):
+        start = {**TRUE, name: value}
+        with pytest.raises(
+            InputError, match=rf"^start\['{name}'\] = {value} is not allowed: \S+ to "
+        ):
+            fit_parameters(Model(), measured(), (name, "torque_scale"), start)

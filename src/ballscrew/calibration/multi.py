@@ -312,6 +312,11 @@ class HistoryFit:
         for name in self.model_names:
             if name not in self.base:
                 raise InputError("fit", name, f"a parameter of the model ({', '.join(self.base)})")
+            spec = FIT_PARAMETERS[name]  # fitted as its logarithm: its start within the bounds
+            if not spec.lower <= self.base[name] <= spec.upper:
+                raise InputError(
+                    f"start[{name!r}]", self.base[name], f"{spec.lower:g} to {spec.upper:g}"
+                )
         self.start = dict(self.base)
         self.runs = ModelRuns(simulate, self.fitted_data, max_evaluations, label)
         self.y = self.fitted_data.values
