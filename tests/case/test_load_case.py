@@ -215,3 +215,17 @@ def test_a_mistyped_lubricant_and_key_name_the_nearest_spelling(gao_case_path):
         load_case(gao_case_path, {"kinematics.lubricant": "ISO VG 66"})
     with pytest.raises(CaseError, match=r"screw\.leed: unknown key \(did you mean 'lead'\?\)"):
         load_case(gao_case_path, {"screw.leed": "10 mm"})
+
+
+@pytest.mark.parametrize("key", ["kinematics.mounting", "design.mounting"])
+def test_mountings_are_those_the_shaft_formulas_know(gao_case_path, key):
+    """Both mounting fields take every end fixity of the buckling and whirling formulas and
+    nothing else (one list, ``design.MOUNTINGS``)."""
+    from ballscrew.design.shaft import END_FIXITY, MOUNTINGS
+
+    case = load_case(gao_case_path)
+    for mounting in MOUNTINGS:
+        assert mounting in END_FIXITY
+        with_overrides(case, {key: mounting})
+    with pytest.raises(CaseError, match=rf"{key} = 'fixed' is not allowed: .*'fixed-fixed'"):
+        with_overrides(case, {key: "fixed"})

@@ -27,10 +27,12 @@ from pydantic import Field
 from ballscrew.case.base import Model, model_choice, quantity
 from ballscrew.design.life import RELIABILITY_FACTORS
 from ballscrew.design.ratings import STATIC_RATING_MODELS
+from ballscrew.design.shaft import MOUNTINGS
 
 __all__ = ["DesignSpec"]
 
 Reliability = Literal[tuple(RELIABILITY_FACTORS)]  # type: ignore[valid-type]
+Mounting = Literal[MOUNTINGS]  # type: ignore[valid-type]
 
 
 class DesignSpec(Model):
@@ -69,9 +71,7 @@ class DesignSpec(Model):
         )
         | None
     ) = None
-    mounting: Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"] = (
-        Field("fixed-supported", description="end fixity of the screw shaft")
-    )
+    mounting: Mounting = Field("fixed-supported", description="end fixity of the screw shaft")
     unsupported_length: quantity(
         "length", "shaft length between the bearings (buckling, whirling)", gt=0, le=100.0
     )

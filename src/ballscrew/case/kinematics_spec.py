@@ -26,10 +26,9 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator, model_validator
 
 from ballscrew.case.base import MAX_SPEED, Model, nearest_hint, quantity
+from ballscrew.case.design_spec import Mounting
 from ballscrew.kinematics.motion import ENTRAINMENT_RULES
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
-
-Mounting = Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"]
 
 
 def known_lubricant(cls: type, name: str | None) -> str | None:
