@@ -63,7 +63,8 @@ def gap_grid(name: str, array: Any, xp: ModuleType, ndim: int = 2) -> Any:
     """The gaps of a normal contact solve (``ndim`` 3: a stack of them) as :func:`finite_grid`,
     after two checks that allocate nothing for an array (a list is converted to read its dtype
     and shape): an integer or boolean array is refused (a gap in metres is a fraction of a
-    millimetre; integers mean another unit or a mistake), and the solve's memory (:func:`~ballscrew.budget.contact_batch_bytes`) must fit the budget
+    millimetre; integers mean another unit or a mistake), and the solve's memory
+    (:func:`~ballscrew.budget.contact_batch_bytes`) must fit the budget
     (:class:`~ballscrew.budget.BudgetError` naming ``name`` and its shape)."""
     dtype = array.dtype if hasattr(array, "dtype") else np.asarray(array).dtype
     if dtype.kind in "biu":
