@@ -17,6 +17,7 @@ import pytest
 from ballscrew.analyses.ball_loads import nut_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.wear import _preload_loop_compliance, wear_life, wear_setup
+from ballscrew.calibration import calibrate, measured_history
 from ballscrew.case import with_overrides
 from ballscrew.errors import InputError
 from ballscrew.loads import preload_after_wear
@@ -125,3 +126,15 @@ def test_single_nut_without_preload_is_refused(coarse_case) -> None:
     with pytest.raises(InputError, match=r"^operating\.preload = 0\.0 .*backlash") as err:
         wear_life(case)
     assert "\n" not in str(err.value)
+
+
+@pytest.mark.filterwarnings("ignore::ballscrew.calibration.CalibrationWarning")
+def test_calibration_recovers_k_of_a_four_point_nut(coarse_case) -> None:
+    """``calibrate`` runs the single nut's wear model: the torque history of a four-point nut
+    at K = 2e-4 gives K back (noise-free data: the residuals' runs test warns, ignored)."""
+    case = with_overrides(coarse_case, FOUR_POINT)
+    life = wear_life(with_overrides(case, {"wear.coefficient": 2.0e-4}))
+    at = life.sampled
+    data = measured_history(life.revolutions[at], life.friction_torque[at], "friction_torque")
+    result = calibrate(case, data, fit="wear_coefficient")
+    assert result.wear_coefficient == pytest.approx(2.0e-4, rel=1e-3)

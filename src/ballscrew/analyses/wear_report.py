@@ -58,18 +58,22 @@ def _layout(case: Case) -> dict[str, Any]:
 
 def _single_nut_note(case: Case) -> tuple[str, ...]:
     """For a preloaded single nut: what its flank 1 and flank 2 are."""
-    layout = _layout(case)
-    what = {
-        "oversized_balls": "the two contact pairs of the same "
-        f"{layout['balls_per_flank']} balls (four-point contact)",
-        "offset_lead": f"its two halves of {layout['balls_per_flank']} balls each",
-    }.get(layout["preload_method"])
-    if case.screw.nuts != 1 or what is None:
+    if case.screw.nuts != 1:
         return ()
+    layout = _layout(case)
+    balls = layout["balls_per_flank"]
+    what = {
+        "oversized_balls": (
+            "oversized balls",
+            f"the two contact pairs of the same {balls} balls (four-point contact)",
+            "ball oversize",
+        ),
+        "offset_lead": ("an offset lead", f"its two halves of {balls} balls each", "lead offset"),
+    }[layout["preload_method"]]
     return (
-        f"A single nut preloaded by {layout['preload_method'].replace('_', ' ')}: flank 1 and "
-        f"flank 2 are {what}, each loaded and worn as one nut of a double nut; the preload "
-        "loss is that of the ball oversize or lead offset (theory manual, Wear).",
+        f"A single nut preloaded by {what[0]}: flank 1 and flank 2 are {what[1]}, each loaded "
+        f"and worn as one nut of a double nut; the wear eats into the {what[2]} (theory manual, "
+        "Wear).",
     )
 
 
