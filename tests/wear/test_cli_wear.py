@@ -129,3 +129,48 @@ def test_wear_life_refuses_what_is_not_a_case(bad) -> None:
     for call in (wear_life, wear_setup):
         with pytest.raises(InputError, match="case"):
             call(bad)
+
+
+@pytest.mark.parametrize(
+    ("method", "balls"),
+    [("oversized_balls", 54), ("offset_lead", 27)],
+    ids=["four_point", "offset"],
+)
+def test_wear_of_a_preloaded_single_nut(tmp_path, method, balls) -> None:
+    """``ballscrew wear --set screw.nuts=1 --set screw.preload_method=…``: the summary, history
+    and report name the two loaded flanks "flank 1"/"flank 2", not nuts."""
+    out = tmp_path / "out"
+    sets = ["--set", "screw.nuts=1", "--set", f"screw.preload_method={method}"]
+    result = runner.invoke(app, ["wear", str(small_case(tmp_path)), "--out", str(out), *sets])
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["nut"] == {"nuts": 1, "preload_method": method, "balls_per_flank": balls}
+    forces = summary["final_forces"]
+    assert set(forces) == {"flank 1", "flank 2"}
+    assert forces["flank 1"]["value"] - forces["flank 2"]["value"] == pytest.approx(4000.0)
+    assert summary["final_preload"]["value"] < summary["initial_preload"]["value"]
+    with xr.open_dataset(out / "history.nc", engine="h5netcdf") as ds:
+        assert "nut_force" not in ds and list(ds["flank_force"].dims) == ["step", "loaded_flank"]
+        assert ds["flank_force"].attrs["long_name"] == "axial force of flank 1 and flank 2"
+    report = (out / "report.html").read_text()
+    assert "flank 1 / flank 2" in report and "nut 1 / nut 2" not in report
+    assert "A single nut preloaded by" in report
+
+
+def test_double_nut_summary_names_the_nuts(tmp_path) -> None:
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["wear", str(small_case(tmp_path)), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    assert set(summary["final_forces"]) == {"nut 1", "nut 2"}
+    assert summary["nut"] == {"nuts": 2, "preload_method": "spacer", "balls_per_flank": 54}
+    assert "A single nut" not in (out / "report.html").read_text()
+
+
+def test_single_nut_without_preload_exits_2(tmp_path) -> None:
+    sets = ["--set", "screw.nuts=1", "--set", "operating.preload=0"]
+    result = runner.invoke(
+        app, ["wear", str(small_case(tmp_path)), "-o", str(tmp_path / "o"), *sets]
+    )
+    assert result.exit_code == 2
+    assert "backlash" in result.output

@@ -14,7 +14,7 @@ import ballscrew
 from ballscrew.analyses.wear import wear_life, wear_setup
 from ballscrew.case import with_overrides
 from ballscrew.errors import InputError
-from ballscrew.loads import nut_forces
+from ballscrew.loads import flank_forces, nut_forces
 from ballscrew.wear import GridEdgeWarning, flank_rate
 
 SPEED = 10.0 * math.pi / 3.0
@@ -166,25 +166,37 @@ def test_smaller_steps_converge(coarse_case, coarse_life) -> None:
     assert finer.max_wear_depth[-1] == pytest.approx(coarse_life.max_wear_depth[-1], rel=0.01)
 
 
-def test_volume_conservation(coarse_case, coarse_life) -> None:
+@pytest.mark.parametrize(
+    ("layout", "balls"),
+    [
+        ({}, 54),
+        ({"screw.nuts": 1, "screw.preload_method": "oversized_balls"}, 54),
+        ({"screw.nuts": 1, "screw.preload_method": "offset_lead"}, 27),
+    ],
+    ids=["double_nut", "four_point", "offset_lead"],
+)
+def test_volume_conservation(coarse_case, coarse_life, layout, balls) -> None:
     """Worn volume L_w ∫ h dy equals the time integral of Z ∫∫ w dA over the run (both flanks).
 
-    The rates are recomputed from the recorded profiles, preloads and levels step by step.
+    The rates are recomputed from the recorded profiles, preloads and levels step by step, with
+    the flank forces (P1) and Z the balls of a flank: per nut of the double nut, all balls of
+    the four-point nut, half of the offset-lead nut's.
     """
-    life = coarse_life
-    s = wear_setup(coarse_case)
-    programme = coarse_case.wear.programme
+    case = with_overrides(coarse_case, layout)
+    life = wear_life(case) if layout else coarse_life
+    s = wear_setup(case)
+    programme = case.wear.programme
     removed = np.zeros(2)
     for k in range(life.revolutions.size - 1):
         level = programme[int(life.level[k + 1])]
         dn = life.revolutions[k + 1] - life.revolutions[k]
-        f1, f2 = nut_forces(life.preload[k], level.axial_load)
+        f1, f2 = flank_forces(life.preload[k], level.axial_load, 2)
         for j, flank in enumerate((1, -1)):
             for force in (f1, f2):
                 if force <= 0.0:
                     continue
                 out = flank_rate(s, flank, force, level.speed, life.profiles[k, j])
-                volume_rate = s.balls * out.cell_rate.sum() * s.cell_area  # m³/s per flank
+                volume_rate = balls * out.cell_rate.sum() * s.cell_area  # m³/s per flank
                 removed[j] += 0.5 * volume_rate * dn * 2 * math.pi / level.speed
     worn = s.raceway_length * life.profiles[-1].sum(axis=1) * s.dy
     np.testing.assert_allclose(worn, removed, rtol=1e-5)

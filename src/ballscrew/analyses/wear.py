@@ -113,14 +113,25 @@ def _programme(case: Case, spec: WearSpec) -> tuple[WearLevel, ...]:
 
 
 def wear_setup(case: Case) -> WearSetup:
-    """Fixed grid, gaps, fractal surface, C_a, L_w and torque factor of a case with ``[wear]``."""
+    """Fixed grid, gaps, fractal surface, C_a, L_w and torque factor of a case with ``[wear]``.
+
+    A preloaded nut: a double nut, or a single nut preloaded by oversized balls (four-point
+    contact: both flanks carry all its balls) or by an offset lead (half the balls per flank);
+    the engine wears its two loaded flanks as the two nuts of a double nut. A single nut without
+    preload is refused (one loaded flank: backlash, not preload loss).
+    """
     case_with(case, "screw", "operating")
     spec = wear_options(case)
-    if case.screw.nuts != 2:
-        raise InputError("screw.nuts", case.screw.nuts, "2 (the wear life needs a double nut)")
+    if case.screw.nuts == 1 and not case.operating.preload > 0.0:
+        raise InputError(
+            "operating.preload",
+            case.operating.preload,
+            "> 0 N for screw.nuts = 1 (the wear life follows the loss of preload; a single nut "
+            "without preload wears into backlash, which is not modelled)",
+        )
     params = ScrewParameters.from_case(case)
     geometry = params.geometry
-    balls = params.balls_per_nut
+    balls = params.flanks.balls  # per loaded flank: a nut, a four-point nut's pairs, a half
     e_star = params.contact_modulus("screw")
     hardness = case.materials.screw.hardness
     ca = raceway_curvature(geometry, "screw")
@@ -219,7 +230,8 @@ def wear_setup(case: Case) -> WearSetup:
 def _ball_classes(
     case: Case, params: ScrewParameters, spec: WearOptions
 ) -> tuple[tuple[float, tuple[LoadClasses, LoadClasses]], ...]:
-    """Per axial load of the programme the ball-load classes of both nuts: the elastic
+    """Per axial load of the programme the ball-load classes of both loaded flanks (the nuts of
+    a double nut, the contact pairs or halves of a preloaded single nut): the elastic
     distribution (with the case's lead and ball-diameter errors) at the initial preload, split
     into ``spec.load_classes`` equal-count classes; empty for ``loads.distribution =
     "uniform"``. The class ratios stay fixed as the preload falls (ASSUMED)."""
@@ -239,10 +251,13 @@ def _ball_classes(
 
 
 def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
-    """c_b per nut: the spacer interference of the elastic distribution at the preload beyond
-    the contacts' approach, over F_p [m/N]; 0 for ``loads.distribution = "uniform"``. The
-    approach is C_a F_p^(2/3) (Hertz) or, for ``loads.contact = "numerical"``, δ(Q)/(sinβ cosα)
-    of the tabulated law at the nut's ball load Q = F_p/(n_b sinβ cosα)."""
+    """c_b per loaded flank: the preload interference of the elastic distribution (a double
+    nut's spacer, a four-point nut's ball oversize, an offset-lead nut's lead shift) at the
+    preload beyond the contacts' approach, over F_p [m/N]; 0 for ``loads.distribution =
+    "uniform"``. The approach is C_a F_p^(2/3) (Hertz) or, for ``loads.contact =
+    "numerical"``, δ(Q)/(sinβ cosα) of the tabulated law at the flank's ball load
+    Q = F_p/(n_b sinβ cosα), n_b its balls. A four-point nut's bars carry no net force at
+    F_a = 0, so its c_b is the ring's alone, 2 cos²β c_r n_t/(L n_b s²) (theory manual, *Wear*)."""
     if case.loads.distribution == "uniform":
         return 0.0
     fp = params.preload
@@ -253,7 +268,7 @@ def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
         approach = params.nut_compliance * fp ** (2.0 / 3.0)
     else:
         projection = params.axial_projection
-        approach = law.approach(fp / (params.balls_per_nut * projection)) / projection
+        approach = law.approach(fp / (params.flanks.balls * projection)) / projection
     return max(g.interference - approach, 0.0) / fp
 
 
@@ -306,7 +321,8 @@ def wear_life(
         :class:`WearResult` (the :class:`~ballscrew.wear.WearLife` history with the case). The
         step-stress example
         (examples/wear_step_stress.toml, K = 1.304e-4) gives h_max = 2.43 µm and F_p = 244 N at
-        1.44e6 rev.
+        1.44e6 rev. A preloaded single nut (``screw.nuts = 1``, ``screw.preload_method``) runs
+        through the same engine, its two loaded flanks in place of the two nuts.
     """
     case_with(case, "screw", "operating")
     with recorded_warnings() as messages:

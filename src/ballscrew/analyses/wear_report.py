@@ -19,6 +19,7 @@ from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.analyses.wear_film import FULL_FILM_SHARE
 from ballscrew.case import Case
+from ballscrew.loads import preload_flanks
 from ballscrew.plotting import legend_outside, pyplot, revolutions_axis, save_figure
 from ballscrew.units import format_number
 from ballscrew.wear.history import WearLife
@@ -37,6 +38,42 @@ def _provenance(case: Case) -> str:
     return (
         "calibrated so that h_max = 2.43 µm at 1.44×10⁶ rev on the step-stress example screw "
         "(examples/wear_step_stress.toml: Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m)"
+    )
+
+
+def _member(case: Case) -> str:
+    """What the two loaded members are called: "nut" (nut 1, nut 2) of a double nut, "flank"
+    (flank 1, flank 2) of a preloaded single nut (two contact pairs of the same balls, or two
+    halves)."""
+    return "nut" if case.screw.nuts == 2 else "flank"
+
+
+def _layout(case: Case) -> dict[str, Any]:
+    """How the nut is preloaded and how many balls load each flank."""
+    screw = case.screw
+    method = screw.resolved_preload_method
+    flanks = preload_flanks(method, screw.nuts, screw.balls_per_nut, case.operating.preload)
+    return {"nuts": screw.nuts, "preload_method": method, "balls_per_flank": flanks.balls}
+
+
+def _single_nut_note(case: Case) -> tuple[str, ...]:
+    """For a preloaded single nut: what its flank 1 and flank 2 are."""
+    if case.screw.nuts != 1:
+        return ()
+    layout = _layout(case)
+    balls = layout["balls_per_flank"]
+    what = {
+        "oversized_balls": (
+            "oversized balls",
+            f"the two contact pairs of the same {balls} balls (four-point contact)",
+            "ball oversize",
+        ),
+        "offset_lead": ("an offset lead", f"its two halves of {balls} balls each", "lead offset"),
+    }[layout["preload_method"]]
+    return (
+        f"A single nut preloaded by {what[0]}: flank 1 and flank 2 are {what[1]}, each loaded "
+        f"and worn as one nut of a double nut; the wear eats into the {what[2]} (theory manual, "
+        "Wear).",
     )
 
 
@@ -83,6 +120,13 @@ def summary(result: WearResult) -> dict[str, Any]:
         "final_preload": value(float(life.preload[-1]), "N"),
         "initial_torque": value(float(life.friction_torque[0]), "N*m"),
         "final_torque": value(float(life.friction_torque[-1]), "N*m"),
+        "final_forces": {
+            name: value(float(force), "N")
+            for name, force in zip(
+                (f"{_member(case)} 1", f"{_member(case)} 2"), life.nut_forces[-1], strict=True
+            )
+        },
+        "nut": _layout(case),
         "wear_coefficient": {"value": life.coefficient, "unit": "", "source": _provenance(case)},
         "lubrication": [
             {
@@ -131,6 +175,9 @@ def history(result: WearResult) -> xr.Dataset:
     """History over revolutions: wear profiles of both flanks, h_max, preload, forces, torque."""
     life, case = result.life, result.case
     step = np.arange(life.revolutions.size)
+    member = _member(case)
+    force = "nut_force" if member == "nut" else "flank_force"
+    pair = "nut" if member == "nut" else "loaded_flank"
     return xr.Dataset(
         {
             "revolutions": ("step", life.revolutions, {"units": "1", "long_name": "revolutions"}),
@@ -141,7 +188,11 @@ def history(result: WearResult) -> xr.Dataset:
                 life.friction_torque,
                 {"units": "N m", "long_name": "no-load drag torque (E9.1)"},
             ),
-            "nut_force": (("step", "nut"), life.nut_forces, {"units": "N"}),
+            force: (
+                ("step", pair),
+                life.nut_forces,
+                {"units": "N", "long_name": f"axial force of {member} 1 and {member} 2"},
+            ),
             "level": ("step", life.level, {"units": "1", "long_name": "level index (0-based)"}),
             "torque_sample": ("step", life.sampled.astype(np.int8), {"units": "1"}),
             "wear_depth": (
@@ -154,7 +205,7 @@ def history(result: WearResult) -> xr.Dataset:
         },
         coords={
             "step": step,
-            "nut": [1, 2],
+            pair: [1, 2],
             "flank": [1, -1],
             "y": ("y", life.y, {"units": "m", "long_name": "across the groove"}),
             "level_index": np.arange(life.level_loads.size),
@@ -231,6 +282,7 @@ def sections(result: WearResult) -> list[Section]:
     """The report section: final wear, contact width, preload and torque, level by level."""
     life = result.life
     data = summary(result)
+    member = _member(result.case)
     rows = tuple(
         (
             f"level {k + 1}",
@@ -252,6 +304,7 @@ def sections(result: WearResult) -> list[Section]:
                 "The largest wear depth sets the preload every step (E1.13); the torque is "
                 "the catalogue drag torque of the preload (E9.1). The running-in drop of "
                 "the measured torque is not modelled.",
+                *_single_nut_note(result.case),
             ),
             tables=(
                 Table(
@@ -271,6 +324,10 @@ def sections(result: WearResult) -> list[Section]:
                         (
                             "torque, initial / final [N·m]",
                             f"{life.friction_torque[0]:.4f} / {life.friction_torque[-1]:.4f}",
+                        ),
+                        (
+                            f"axial force at the end, {member} 1 / {member} 2 [N]",
+                            f"{life.nut_forces[-1, 0]:.1f} / {life.nut_forces[-1, 1]:.1f}",
                         ),
                     ),
                 ),
@@ -301,7 +358,8 @@ def _film_section(result: WearResult) -> list[Section]:
         "The wear law acts on the asperity-borne part ψQ of the ball load Q only (Johnson, "
         "Greenwood & Poon 1972): where the EHL film separates the surfaces (Λ = h/σ of a few, "
         "ψ → 0) a level wears practically nothing, so the wear depth can stop growing from one "
-        "level to the next. Λ and ψ of the mean ball of the more loaded nut at the start of each "
+        "level to the next. Λ and ψ of the mean ball of the more loaded "
+        f"{_member(result.case)} at the start of each "
         "level (the raceway worn and the preload lost by the earlier levels), as the wear engine "
         f"applies them; below ψ = {FULL_FILM_SHARE:g} a warning says so."
     )

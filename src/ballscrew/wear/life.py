@@ -1,4 +1,7 @@
-"""Wear life of a preloaded double-nut screw: the integrator over the load programme.
+"""Wear life of a preloaded nut: the integrator over the load programme.
+
+A double nut, or a single nut preloaded on both flanks (four-point contact or an offset lead):
+"nut 1" and "nut 2" below are then its two loaded flanks with the set-up's balls per flank.
 
 The set-up is :mod:`.setup`, one contact of a step :mod:`.step`, the history :mod:`.history`
 and the checkpoint files :mod:`.checkpoint`. The time integration of the wear over a load

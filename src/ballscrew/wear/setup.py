@@ -19,7 +19,8 @@ __all__ = ["FLANKS", "WearSetup", "nut_force_pair"]
 
 FloatArray = NDArray[np.float64]
 FLANKS: tuple[int, int] = (1, -1)
-"""The two flanks of the screw groove: +1 loaded by nut 1, −1 by nut 2."""
+"""The two flanks of the screw groove: +1 loaded by nut 1, −1 by nut 2 (the two loaded flanks
+of a preloaded single nut)."""
 
 
 @dataclass(frozen=True)
@@ -29,6 +30,8 @@ class WearSetup:
     geometry: ScrewGeometry
     spec: WearOptions
     balls: int
+    """Balls Z on each loaded flank: per nut of a double nut, all of a four-point nut, half of
+    an offset-lead nut."""
     e_star: float
     hardness: float
     surface: AsperitySurface
@@ -130,7 +133,8 @@ class WearSetup:
 
 
 def nut_force_pair(preload: float, axial_load: float) -> tuple[float, float]:
-    """(F_1, F_2) of the double nut (E1.10–E1.11); without preload F_1 = F_a, F_2 = 0."""
+    """(F_1, F_2) of the double nut or the two flanks of a preloaded single nut (E1.10–E1.11);
+    without preload F_1 = F_a, F_2 = 0."""
     if preload <= 0.0:
         return float(axial_load), 0.0
     f = nut_forces(preload, axial_load)
