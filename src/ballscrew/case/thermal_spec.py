@@ -292,7 +292,7 @@ class ContactSpec(Model):
     tcr_model: str | None = Field(
         None,
         description="micro TCR of the balls from this model of screw_tcr's side-by-side models "
-        "(source = 'tcr'); None = the headline model ([tcr] variant)",
+        "(source = 'tcr'); None = the headline model ([tcr] headline)",
     )
 
     @field_validator("tcr_model")
