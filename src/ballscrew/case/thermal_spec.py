@@ -275,7 +275,7 @@ class ContactSpec(Model):
 
     source: Literal["tcr", "given"] = Field(
         "tcr",
-        description="'tcr': R of each nut from the fractal TCR chain (screw_tcr); 'given': "
+        description="'tcr': R of each nut from the TCR chain (screw_tcr, [tcr] headline); 'given': "
         "resistance_per_area over the nut bore",
     )
     resistance_per_area: (
