@@ -15,33 +15,29 @@ the patch models 3 (V2, V1) and 1 (MT).
 from __future__ import annotations
 
 import math
+import tomllib
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from ballscrew.contact_resistance import FractalTCRModel, element_tcr
-from ballscrew.contact_resistance.correlations import gas_rarefaction_parameter
 
 from .test_tcr import AIR_STEEL
 from .test_tcr import SOURCE as VENDOR
-from .test_tcr_sources import E_STAR as BECU_E_STAR
-from .test_tcr_sources import HARDNESS_BECU, LAMBDA_STEEL
+from .test_tcr_sources import BECU_AIR
 from .test_tcr_textbook import (
-    AIR,
     ASSUMPTIONS,
-    BAND,
     LIENHARD_PRESSURE,
     METALS,
     MPA,
     STAINLESS,
     TOLERANCE_BASIS,
-    VACUUM_LAMBDA_F,
-    D,
-    Metal,
-    _fractal_g,
+    element_model,
 )
 
+DATA = Path(__file__).parent / "data" / "tcr.toml"
 SPECIMEN_AREA = math.pi * 0.0254**2 / 4  # m², a 1 in disc (ASSUMED: the sources give none)
 PATCH_MODELS = ("V2", "V1", "MT")
 SPECIMEN = (
@@ -72,25 +68,33 @@ def _h(model: FractalTCRModel, pressure: float) -> float:
     return float(1.0 / result.unit_area_resistance[0])
 
 
-def _textbook(variant: str, pressure: float, medium: str, metal: Metal) -> float:
-    """The joint of ``test_tcr_textbook.py`` (σ = 1.41 µm) in vacuum or air."""
-    lam = metal.conductivity
-    lambda_f, rarefaction = AIR if medium == "air" else (VACUUM_LAMBDA_F, 0.0)
-    model = FractalTCRModel(
-        D=D,
-        G=_fractal_g(),
-        E_star=metal.e_star,
-        H=metal.hardness,
-        lambda_1=lam,
-        lambda_2=lam,
-        lambda_f=lambda_f,
-        variant=variant,
-    )
-    if medium == "air":
-        model = replace(
-            model, gap_model="mean_plane", sampling_length=BAND[0], rarefaction=rarefaction
-        )
-    return _h(model, pressure)
+def _textbook_rows() -> list[tuple[str, str, float, str, str, float, float]]:
+    """(row id, dataset key, pressure [Pa], medium, metal, low, high [W/(m² K)]) of every
+    Fried and Lienhard row of ``test_tcr_textbook.py``."""
+    with DATA.open("rb") as fh:
+        data = tomllib.load(fh)
+    rows = []
+    fs, fm = data["fried_stainless_vacuum"], data["fried_metals_vacuum"]
+    for i, mpa in enumerate(fs["pressure_MPa"]):
+        low, high = 1.0 / fs["resistance_high_m2K_W"][i], 1.0 / fs["resistance_low_m2K_W"][i]
+        rows.append((f"fried_stainless_vacuum_{mpa:g}MPa", "fried_stainless_vacuum", mpa * MPA,
+                     "vacuum", "stainless", low, high))  # fmt: skip
+    for m, name in enumerate(fm["metals"]):
+        for i, mpa in enumerate(fm["pressure_MPa"]):
+            low = 1.0 / fm["resistance_high_m2K_W"][m][i]
+            high = 1.0 / fm["resistance_low_m2K_W"][m][i]
+            rows.append((f"fried_{name}_vacuum_{mpa:g}MPa", "fried_metals_vacuum", mpa * MPA,
+                         "vacuum", name, low, high))  # fmt: skip
+    for key, names, media in (
+        ("lienhard_stainless", ["stainless", "stainless"], data["lienhard_stainless"]["media"]),
+        ("lienhard_metals_air", data["lienhard_metals_air"]["metals"], ["air", "air"]),
+    ):
+        entry = data[key]
+        for i, (name, medium) in enumerate(zip(names, media, strict=True)):
+            low, high = entry["conductance_low_W_m2K"][i], entry["conductance_high_W_m2K"][i]
+            rows.append((f"lienhard_{name}_{medium}", key, LIENHARD_PRESSURE, medium, name,
+                         low, high))  # fmt: skip
+    return rows
 
 
 def _check(validation, data, row, variant, predicted, low, high, assumptions) -> None:
@@ -112,50 +116,13 @@ def _check(validation, data, row, variant, predicted, low, high, assumptions) ->
 
 
 @pytest.mark.parametrize("variant", PATCH_MODELS)
-@pytest.mark.parametrize("index", [0, 1])
-def test_fried_stainless_vacuum(validation, dataset, variant, index) -> None:
-    data = dataset("tcr", "fried_stainless_vacuum")
-    pressure = data["pressure_MPa"][index]
-    low = 1.0 / data["resistance_high_m2K_W"][index]
-    high = 1.0 / data["resistance_low_m2K_W"][index]
-    h = _textbook(variant, pressure * MPA, "vacuum", STAINLESS)
-    row = f"fried_stainless_vacuum_{pressure:g}MPa"
-    _check(validation, data, row, variant, h, low, high, ASSUMPTIONS)
-
-
-@pytest.mark.parametrize("variant", PATCH_MODELS)
-@pytest.mark.parametrize("index", [0, 1])
-def test_lienhard_stainless(validation, dataset, variant, index) -> None:
-    data = dataset("tcr", "lienhard_stainless")
-    medium = data["media"][index]
-    low, high = data["conductance_low_W_m2K"][index], data["conductance_high_W_m2K"][index]
-    h = _textbook(variant, LIENHARD_PRESSURE, medium, STAINLESS)
-    _check(validation, data, f"lienhard_stainless_{medium}", variant, h, low, high, ASSUMPTIONS)
-
-
-@pytest.mark.parametrize("variant", PATCH_MODELS)
-@pytest.mark.parametrize("index", [0, 1])
-@pytest.mark.parametrize("metal", [0, 1])
-def test_fried_metals_vacuum(validation, dataset, variant, index, metal) -> None:
-    data = dataset("tcr", "fried_metals_vacuum")
-    name = data["metals"][metal]
-    pressure = data["pressure_MPa"][index]
-    low = 1.0 / data["resistance_high_m2K_W"][metal][index]
-    high = 1.0 / data["resistance_low_m2K_W"][metal][index]
-    h = _textbook(variant, pressure * MPA, "vacuum", METALS[name])
-    row = f"fried_{name}_vacuum_{pressure:g}MPa"
-    _check(validation, data, row, variant, h, low, high, (METALS[name].note, *ASSUMPTIONS[2:]))
-
-
-@pytest.mark.parametrize("variant", PATCH_MODELS)
-@pytest.mark.parametrize("metal", [0, 1])
-def test_lienhard_metals_air(validation, dataset, variant, metal) -> None:
-    data = dataset("tcr", "lienhard_metals_air")
-    name = data["metals"][metal]
-    low, high = data["conductance_low_W_m2K"][metal], data["conductance_high_W_m2K"][metal]
-    h = _textbook(variant, LIENHARD_PRESSURE, "air", METALS[name])
-    row = f"lienhard_{name}_air"
-    _check(validation, data, row, variant, h, low, high, (METALS[name].note, *ASSUMPTIONS[2:]))
+@pytest.mark.parametrize("row", _textbook_rows(), ids=lambda row: row[0])
+def test_textbook_rows(validation, dataset, variant, row) -> None:
+    row_id, key, pressure, medium, name, low, high = row
+    metal = STAINLESS if name == "stainless" else METALS[name]
+    h = _h(element_model(variant, medium, metal), pressure)
+    assumptions = ASSUMPTIONS if metal is STAINLESS else (metal.note, *ASSUMPTIONS[2:])
+    _check(validation, dataset("tcr", key), row_id, variant, h, low, high, assumptions)
 
 
 @pytest.mark.parametrize("variant", PATCH_MODELS)
@@ -174,28 +141,7 @@ def test_moldflow_steel_air_steel(validation, dataset, variant, index) -> None:
 def test_moldflow_becu_air_steel(validation, dataset, variant) -> None:
     data = dataset("tcr", "moldflow_becu_air_steel")
     measured = data["conductance_W_m2K"]
-    model = FractalTCRModel(
-        D=1.59,
-        G=9e-10,
-        E_star=BECU_E_STAR,
-        H=HARDNESS_BECU,
-        lambda_1=130.0,
-        lambda_2=LAMBDA_STEEL,
-        lambda_f=0.026,
-        variant=variant,
-        gap_model="mean_plane",
-        sampling_length=8e-4,
-        rarefaction=gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71),
-    )
-    h = _h(model, data["pressure_MPa"] * MPA)
+    h = _h(replace(BECU_AIR, variant=variant), data["pressure_MPa"] * MPA)
     basis = (f"{VENDOR}: BeCu–steel, air, 330 MPa, as test_tcr_sources.py",)
-    _check(
-        validation,
-        data,
-        "moldflow_becu_air_steel_330MPa",
-        variant,
-        h,
-        0.5 * measured,
-        1.5 * measured,
-        basis,
-    )
+    row = "moldflow_becu_air_steel_330MPa"
+    _check(validation, data, row, variant, h, 0.5 * measured, 1.5 * measured, basis)
