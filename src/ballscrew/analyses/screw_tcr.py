@@ -384,7 +384,7 @@ def _correlation(
 
 
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
-    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units: the headline
+    """Sweepable scalars of :func:`screw_tcr` (case's headline) with their units: the headline
     micro TCR, the ball path without film and the one the thermal model takes
     (``heat_path_resistance``; with ``[tcr] film_path`` also ``ball_path_with_film``)."""
     result = screw_tcr(case)

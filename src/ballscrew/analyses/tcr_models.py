@@ -158,7 +158,7 @@ def contact_model(
     cell model) or on the whole patch (``V2/patch``), or a correlation integrated over the field."""
     if name.endswith(PATCH):
         variant = name.removesuffix(PATCH)
-        description = f"{variant} on the whole Hertz patch (no fractal cell size)"
+        description = f"{variant} on the whole Hertz patch, no fractal cell size"
         return _element_resistance(element_models, options, variant, patch=True), description
     if name in ELEMENT_MODELS:
         description = f"{ELEMENT_MODELS.entry(name).description}, on Δ_f cells (Gao et al.)"
