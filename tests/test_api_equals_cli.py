@@ -30,7 +30,7 @@ PROFILE = EXAMPLES / "profiles" / "synthetic_wm_D1.59_G9e-10.sdf"
 GAO_OPTIONS = QUICK | {
     "numerics.gap_model": "quadratic",
     "operating.axial_load": 2500.0,
-    "tcr.variant": "MT",
+    "tcr.headline": "MT",
     "thermal.model": "network",
     "kinematics.level": 1,
 }
@@ -116,7 +116,7 @@ TCR_NUMBERS: dict[str, Callable[[Any], float]] = {
 TCR = gao(
     "tcr",
     {on_case(screw_tcr): TCR_NUMBERS, on_case(ballscrew.screw_tcr): TCR_NUMBERS},
-    {"options.variant": "MT", "options.contact_gap_model": "quadratic"},
+    {"options.headline": "MT", "options.variant": "MT", "options.contact_gap_model": "quadratic"},
 )
 
 THERMAL_NUMBERS: dict[str, Callable[[Any], float]] = {
@@ -303,12 +303,12 @@ def test_api_gives_the_numbers_of_the_cli(tmp_path, name):
 @pytest.mark.parametrize(
     ("default", "number"),
     [
-        ({"tcr.variant": "V2"}, lambda c: screw_tcr(c).resistance),
+        ({"tcr.headline": "CMY"}, lambda c: screw_tcr(c).resistance),
         ({"thermal.model": "axisymmetric"}, lambda c: thermal_field(c).max_temperature_rise),
         ({"kinematics.level": 0}, lambda c: ballscrew.ball_kinematics(c).angle_screw),
         ({"numerics.gap_model": "exact"}, lambda c: solve_ball_contacts(c).screw.solution.approach),
     ],
-    ids=["tcr.variant", "thermal.model", "kinematics.level", "numerics.gap_model"],
+    ids=["tcr.headline", "thermal.model", "kinematics.level", "numerics.gap_model"],
 )
 def test_the_non_default_options_change_the_answer(tmp_path, default, number):
     """Guard of the parity test: its options are not defaults and each one moves the numbers."""
@@ -332,7 +332,7 @@ def test_sweep_points_equal_the_api_at_each_point(tmp_path):
         for i, load in enumerate(loads):
             api = screw_tcr(ballscrew.load_case(case, {"operating.axial_load": load}))
             point = ds.isel({"operating.axial_load": i})
-            assert api.variant == "MT"
+            assert api.headline == api.variant == "MT"
             for key, value in (
                 ("resistance", api.resistance),
                 ("resistance_per_area", api.resistance_per_area),

@@ -151,6 +151,8 @@ def test_meniscus_and_groove_clearance() -> None:
 
 
 COARSE = {"numerics.cells_across": 24}
+PAPER_CELLS = {"tcr.headline": "V2"}
+"""The micro TCR of the film-path numbers (theory manual's table): Gao et al.'s V2 on 8 µm cells."""
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
 
 
@@ -158,7 +160,7 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "gao2019_tcr.toml"
 def _tcr(axial_load: float, film_path: str) -> ScrewTCR:
     case = load_case(
         EXAMPLE,
-        {**COARSE, "operating.axial_load": axial_load, "tcr.film_path": film_path},
+        {**COARSE, **PAPER_CELLS, "operating.axial_load": axial_load, "tcr.film_path": film_path},
     )
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

@@ -19,6 +19,7 @@ from ballscrew.contact_resistance import (
     heater_power,
     mean_apparent_area,
     parallel_resistance,
+    patch_tcr,
     rebin_forces,
     series_resistance,
     solid_conductance_mt,
@@ -225,6 +226,37 @@ def test_uniform_pressure_parallel_law_uses_t_tcr1() -> None:
     assert res.unit_area_resistance == pytest.approx(8.8669e-8, rel=1e-4)
     assert res.cell_resistance.shape == (10, 6)
     np.testing.assert_allclose(res.cell_resistance, 886.69, rtol=1e-4)
+
+
+@pytest.mark.parametrize("step", [1e-6, 0.5e-6, 0.25e-6])
+def test_patch_of_uniform_pressure_is_the_element_example(step: float) -> None:
+    """(A1p) on a uniform 10 µm × 10 µm patch carrying 0.1 N (zero pressure around it): one
+    element of A = 1e-10 m² at P = 0.1 N, the worked V2 example (886.69 K/W), on any grid."""
+    inside = round(1e-5 / step)
+    p = np.zeros((inside + 8, inside + 4))
+    p[4 : 4 + inside, 2 : 2 + inside] = 0.1 / A
+    res = patch_tcr(p, step, step, model())
+    assert res.apparent_area == pytest.approx(A, rel=1e-12)
+    assert res.elements.load[0, 0] == pytest.approx(0.1, rel=1e-12)
+    assert res.resistance == pytest.approx(886.69, rel=1e-4)
+    assert res.loaded_cells == 1 and res.cell_resistance.shape == (1, 1)
+    # the cell model with one Δ_f cell that is exactly the patch gives the same element
+    cell = contact_tcr(p[4 : 4 + inside, 2 : 2 + inside], step, step, model(), cell_size=1e-5)
+    assert cell.resistance == pytest.approx(res.resistance, rel=1e-12)
+
+
+def test_patch_takes_the_total_force_on_the_contact_area() -> None:
+    """A non-uniform field: the patch element carries Σ p·dx·dy on N(p > 0)·dx·dy, whatever
+    the Δ_f a cell model would use."""
+    x = np.linspace(-1.0, 1.0, 41)
+    p = 1e9 * np.clip(1.0 - x[:, None] ** 2 - x[None, :] ** 2, 0.0, None) ** 0.5
+    res = patch_tcr(p, 2e-6, 3e-6, model())
+    assert res.elements.load[0, 0] == pytest.approx(p.sum() * 6e-12, rel=1e-12)
+    assert res.apparent_area == pytest.approx(np.count_nonzero(p) * 6e-12, rel=1e-12)
+    single = element_tcr(np.array([p.sum() * 6e-12]), res.apparent_area, model())
+    assert res.resistance == pytest.approx(single.resistance[0], rel=1e-12)
+    with pytest.raises(InputError, match="pressure"):
+        patch_tcr(np.zeros((4, 4)), 1e-6, 1e-6, model())
 
 
 def test_solver_grid_option_and_threshold() -> None:

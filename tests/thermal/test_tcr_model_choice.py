@@ -28,9 +28,10 @@ def tcr(case):
 
 @pytest.fixture(scope="module")
 def fields(case, tcr):
-    """Steady network results: the default, and the CMY (higher R) and MT (lower R) choices."""
+    """Steady network results: the default (the headline, CMY) and the paper's V2 cell model
+    (lower R) and MT (lowest R) choices."""
     out = {None: bs.thermal_field(case, "network", tcr=tcr, transient=False)}
-    for name in ("CMY", "MT"):
+    for name in ("V2", "MT"):
         chosen = with_overrides(case, {"thermal.contact.tcr_model": name})
         out[name] = bs.thermal_field(chosen, "network", tcr=tcr, transient=False)
     return out
@@ -39,7 +40,7 @@ def fields(case, tcr):
 def test_chosen_model_sets_the_micro_resistance(tcr, fields):
     """Each nut's micro R is the chosen model's R of that nut; the nuts in parallel give the
     model's R of the screw (A3)."""
-    for name in ("CMY", "MT"):
+    for name in ("V2", "MT"):
         model = tcr.models[name]
         micro = [i.micro_resistance for i in fields[name].interfaces]
         assert micro == pytest.approx(list(model.nut_resistances.values()), rel=1e-12)
@@ -58,25 +59,25 @@ def _heat_across_nut_1(field) -> float:
 
 def test_higher_resistance_passes_less_heat(fields):
     """Heat crosses the balls from screw to nut here (the nut sits on the cooled table).
-    CMY (R above the default V2) passes less of it, MT (R below) more: hotter screw, cooler
-    nut with CMY."""
+    The default CMY (R above V2's) passes less of it than V2, MT (R below) more: hotter screw,
+    cooler nut with CMY."""
     r = {k: fields[k].interfaces[0].micro_resistance for k in fields}
-    assert r["MT"] < r[None] < r["CMY"]
+    assert r["MT"] < r["V2"] < r[None]
     q = {k: _heat_across_nut_1(f) for k, f in fields.items()}
-    assert 0 < q["CMY"] < q[None] < q["MT"]
+    assert 0 < q[None] < q["V2"] < q["MT"]
     steady = {k: {s.name: s.steady for s in f.sensors} for k, f in fields.items()}
-    assert steady["CMY"]["screw"] > steady[None]["screw"] > steady["MT"]["screw"]
-    assert steady["CMY"]["nut 1"] < steady[None]["nut 1"] < steady["MT"]["nut 1"]
+    assert steady[None]["screw"] > steady["V2"]["screw"] > steady["MT"]["screw"]
+    assert steady[None]["nut 1"] < steady["V2"]["nut 1"] < steady["MT"]["nut 1"]
 
 
 def test_default_keeps_the_headline_model(case, tcr, fields):
-    """No tcr_model: the headline element model's R per nut, as before the option existed;
-    naming the headline variant gives the same numbers."""
+    """No tcr_model: the headline model's R per nut (``[tcr] headline``, CMY); naming the
+    headline model gives the same numbers."""
     default = fields[None]
     for nut, i in zip(tcr.nuts, default.interfaces, strict=True):
         assert i.micro_resistance == pytest.approx(nut.resistance, rel=1e-12)
     same = bs.thermal_field(
-        with_overrides(case, {"thermal.contact.tcr_model": case.tcr.variant}),
+        with_overrides(case, {"thermal.contact.tcr_model": case.tcr.headline}),
         "network",
         tcr=tcr,
         transient=False,

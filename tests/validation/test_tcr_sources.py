@@ -49,6 +49,21 @@ TOLERANCE_BASIS = (
 MISSES = {"CMY", "element V2"}
 
 
+BECU_AIR = FractalTCRModel(
+    D=1.59,
+    G=9e-10,
+    E_star=E_STAR,
+    H=HARDNESS_BECU,
+    lambda_1=130.0,
+    lambda_2=LAMBDA_STEEL,
+    lambda_f=0.026,
+    gap_model="mean_plane",
+    sampling_length=8e-4,
+    rarefaction=gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71),
+)
+"""The element model of the BeCu–steel joint in air (V2, gas gap, as the steel rows)."""
+
+
 def _joint() -> GaussianJoint:
     sigma, slope = fractal_roughness(1.59, 9e-10, 8e-4, 2.5e-6)
     lam = 2.0 * 130.0 * LAMBDA_STEEL / (130.0 + LAMBDA_STEEL)
@@ -66,20 +81,8 @@ def _predicted(model: str, pressure: float) -> float:
     """h of ``model`` at the apparent pressure ``pressure``, W/(m² K)."""
     p = np.array([pressure])
     if model == "element V2":
-        fractal = FractalTCRModel(
-            D=1.59,
-            G=9e-10,
-            E_star=E_STAR,
-            H=HARDNESS_BECU,
-            lambda_1=130.0,
-            lambda_2=LAMBDA_STEEL,
-            lambda_f=0.026,
-            gap_model="mean_plane",
-            sampling_length=8e-4,
-            rarefaction=gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71),
-        )
         area = 1.0e-6
-        return float(1.0 / element_tcr(p * area, area, fractal).unit_area_resistance[0])
+        return float(1.0 / element_tcr(p * area, area, BECU_AIR).unit_area_resistance[0])
     joint = _joint()
     air = gas_rarefaction_parameter(0.064e-6, 0.87, 1.4, 0.71)
     liquid_gap = joint_gap_conductance(p, joint)

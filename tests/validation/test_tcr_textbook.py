@@ -120,22 +120,29 @@ def _predicted(model: str, pressure: float, medium: str, metal: Metal = STAINLES
         if medium == "air":  # the gas gap with M (Yovanovich 1982)
             return float(CORRELATIONS[model](p, joint)[0])
         return float((CORRELATIONS[model](p, joint) - joint_gap_conductance(p, joint))[0])
+    result = element_tcr(p * ELEMENT_AREA, ELEMENT_AREA, element_model(model, medium, metal))
+    return float(1.0 / result.unit_area_resistance[0])
+
+
+def element_model(variant: str, medium: str, metal: Metal = STAINLESS) -> FractalTCRModel:
+    """The fractal element model of the joint of ``metal`` in ``medium`` (vacuum or air)."""
+    lambda_f, rarefaction = AIR if medium == "air" else (VACUUM_LAMBDA_F, 0.0)
+    lam = metal.conductivity
     element = FractalTCRModel(
         D=D,
         G=_fractal_g(),
-        E_star=e_star,
-        H=hardness,
+        E_star=metal.e_star,
+        H=metal.hardness,
         lambda_1=lam,
         lambda_2=lam,
         lambda_f=lambda_f,
+        variant=variant,
     )
-    element = replace(element, variant=model)
     if medium == "air":  # the gas gap (T9, T10): Yovanovich's Y + M instead of the MB cap
         element = replace(
             element, gap_model="mean_plane", sampling_length=BAND[0], rarefaction=rarefaction
         )
-    result = element_tcr(p * ELEMENT_AREA, ELEMENT_AREA, element)
-    return float(1.0 / result.unit_area_resistance[0])
+    return element
 
 
 def _label(model: str, medium: str) -> str:

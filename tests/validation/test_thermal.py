@@ -38,7 +38,8 @@ ASSUMPTIONS = (
     "not published (a free nut in still air gives 10.7 K)",
     "sensor on the shaft axis at mid-length ('temperature at shaft center area'; ASSUMED), "
     "value at 90 min (the end of the printed curve)",
-    "ball contact: fractal TCR of the example case's raceway (D = 1.59, G = 9e-10 m; ASSUMED)",
+    "ball contact: the headline TCR (CMY) of the example case's raceway (D = 1.59, G = 9e-10 m; "
+    "ASSUMED)",
 )
 
 

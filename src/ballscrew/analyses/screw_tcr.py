@@ -1,9 +1,11 @@
 """Thermal contact resistance of a (double-nut) ball screw, after Gao, Wang & Liu (2019).
 
 Nut forces under preload and axial load → ball load → contact pressure at the screw (A) and nut
-(B) contacts → fractal element resistances on Δ_f cells → elements in parallel, screw and nut
-contact in series per ball, balls and nuts in parallel → unit-area value R″ = R·S (theory
-manual: *Contact resistance*).
+(B) contacts → the contact resistance of the headline model (``[tcr] headline``: by default the
+Cooper–Mikic–Yovanovich conductance integrated over the pressure field, no cell size; the
+paper's fractal element model on Δ_f cells is the option ``"V2"``) → screw and nut contact in
+series per ball, balls and nuts in parallel → unit-area value R″ = R·S (theory manual:
+*Contact resistance*, *Which model is the headline*).
 
 Every ball of a nut carries the same load (the paper's assumption). The two nuts load opposite
 flanks; the flank mirrors the gap (h₋₁(x, y) = h₊₁(−x, −y)) and leaves the resistance unchanged,
@@ -14,6 +16,7 @@ offset-lead nut's its two halves; both run in parallel into the one nut body.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cached_property
 from types import ModuleType
@@ -31,15 +34,27 @@ from ballscrew.analyses.tcr_film import (
     heat_paths,
     nut_films,
 )
-from ballscrew.analyses.tcr_models import ModelSpread, ModelTCR, compare_models
+from ballscrew.analyses.tcr_models import (
+    PATCH,
+    ContactResistance,
+    ModelSpread,
+    ModelTCR,
+    compare_models,
+    contact_model,
+    out_of_range,
+    solved_contact_area,
+)
 from ballscrew.case import Case, TCRSpec
 from ballscrew.contact_resistance import (
+    ELEMENT_MODELS,
     ContactTCR,
     FractalTCRModel,
     contact_tcr,
     parallel_resistance,
+    patch_tcr,
     series_resistance,
 )
+from ballscrew.contact_resistance.correlations import CORRELATIONS
 from ballscrew.errors import InputError
 from ballscrew.loads import preloaded_axial_stiffness
 from ballscrew.validation import as_case_fields, case_with
@@ -51,6 +66,12 @@ class RacewayTCR:
 
     contact: RacewayContact
     tcr: ContactTCR
+    """The fractal element model's details: the headline's cells (or patch) when the headline
+    is an element model, else ``[tcr] variant`` on the paper's Δ_f cells."""
+    resistance: float
+    """R_c of the headline model [K/W]."""
+    apparent_area: float
+    """S_c [m²]: of the headline element model's cells, else the solved contact area."""
 
 
 @dataclass(frozen=True)
@@ -76,7 +97,7 @@ class NutTCR:
     @property
     def ball_resistance(self) -> float:
         """R_sbn = R_sb + R_bn, one ball, screw and nut contact in series (A2) [K/W]."""
-        return float(series_resistance(self.screw.tcr.resistance, self.nut.tcr.resistance))
+        return float(series_resistance(self.screw.resistance, self.nut.resistance))
 
     @property
     def resistance(self) -> float:
@@ -86,7 +107,7 @@ class NutTCR:
     @property
     def apparent_area(self) -> float:
         """n_b (S_sb + S_bn)/2, the nut's share of S in (A4) [m²]."""
-        return self.balls * 0.5 * (self.screw.tcr.apparent_area + self.nut.tcr.apparent_area)
+        return self.balls * 0.5 * (self.screw.apparent_area + self.nut.apparent_area)
 
     @property
     def axial_stiffness(self) -> float:
@@ -99,12 +120,16 @@ class ScrewTCR(Presented):
     """Thermal contact resistance of the whole screw and of each nut and contact."""
 
     case_name: str
+    headline: str
+    """Model of :attr:`resistance` and :attr:`resistance_per_area` (``[tcr] headline``): CMY
+    by default; V2, MT, V1 are the paper's cell models, ``V2/patch`` … the cell-free fractal
+    ones (theory manual, *Which model is the headline*)."""
     variant: str
-    """Element model that produced the numbers (V2, MT or V1)."""
+    """Element model of the fractal details (``RacewayTCR.tcr``: V2, MT or V1)."""
     cell_size: float | None
-    """Fractal cell size Δ_f [m], None = the solver grid.
+    """Fractal cell size Δ_f of the details [m], None = the solver grid or the whole patch.
 
-    The results depend on it (theory manual, *Contact resistance*)."""
+    A cell model's result depends on it; the default headline has no cell."""
     nut_forces: tuple[float, float]
     """(F1, F2): axial force on the loaded and the unloaded flank [N] (the two nuts of a
     double nut, the two flanks of a preloaded single nut; F2 = 0 for one loaded flank)."""
@@ -131,10 +156,11 @@ class ScrewTCR(Presented):
     @property
     def resistance(self) -> float:
         """R of the whole screw, the headline: the micro TCR of every loaded ball of every nut in
-        parallel (A3) [K/W]. It is Gao, Wang & Liu's (2019) resistance of the asperity spots and
-        the gap between them inside the Hertz patches; the macro-constriction and the film path
-        lie outside the patches, so ``[tcr] film_path`` leaves it unchanged (they are in
-        :attr:`ball_path_without_film` and :attr:`ball_path_with_film`)."""
+        parallel (A3) by the :attr:`headline` model [K/W]. It is Gao, Wang & Liu's (2019)
+        resistance of the asperity spots and the gap between them inside the Hertz patches;
+        the macro-constriction and the film path lie outside the patches, so ``[tcr] film_path``
+        leaves it unchanged (they are in :attr:`ball_path_without_film` and
+        :attr:`ball_path_with_film`)."""
         return float(parallel_resistance([n.resistance for n in self.nuts]))
 
     @property
@@ -238,8 +264,9 @@ def tcr_fields(side: Side) -> dict[str, str]:
 def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     """Thermal contact resistance of the ball screw of ``case``.
 
-    ``variant`` picks the element model (V2, MT or V1); ``None`` (default) takes the case's
-    ``[tcr] variant``. With ``[operating] coupled = true`` the medium between the asperities is
+    The headline is the case's ``[tcr] headline`` (CMY by default); ``variant`` (V2, MT or V1)
+    makes that element model on the paper's Δ_f cells the headline instead (Gao et al.'s cell
+    model). With ``[operating] coupled = true`` the medium between the asperities is
     the named lubricant at the contact temperature of the coupled operating point.
     Contacts of equal side and ball load are solved once (both nuts share
     them at zero axial load); the distinct contacts (both sides of both nuts) are solved in one
@@ -253,7 +280,12 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
         case = at_operating_point(case)[0]
     params = ScrewParameters.from_case(case)
     geometry = params.geometry
-    models = {side: tcr_model(params, case.tcr, side, variant) for side in SIDES}
+    headline = case.tcr.headline if variant is None else ELEMENT_MODELS.check(variant)
+    patch = headline.endswith(PATCH)
+    base = headline.removesuffix(PATCH)
+    detail = base if base in ELEMENT_MODELS else case.tcr.variant
+    models = {side: tcr_model(params, case.tcr, side, detail) for side in SIDES}
+    cell_size = case.tcr.cell_size if case.tcr.rebin and not patch else None
     with recorded_warnings() as early:  # the distribution's (a ball above the contact-law table)
         chain = chain_ball_loads(case, params)
     flanks = params.flank_loads
@@ -269,20 +301,29 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
             [(side, q, params.contact_modulus(side), flank) for (side, q), flank in keys.items()],
             case.numerics,
         )
+        pairs = list(zip(keys, contacts, strict=True))
+        correlation = _correlation(headline, params, case.tcr, models, pairs)
         solved: dict[tuple[Side, float], RacewayTCR] = {}
-        for (side, load), contact in zip(keys, contacts, strict=True):
+        for (side, load), contact in pairs:
             sol = contact.solution
             with as_case_fields(tcr_fields(side)):
-                tcr = contact_tcr(
-                    sol.pressure,
-                    sol.dx,
-                    sol.dy,
-                    models[side],
-                    cell_size=case.tcr.cell_size if case.tcr.rebin else None,
-                    load_threshold=case.tcr.load_threshold,
-                    partial_cells=case.tcr.partial_cells,
-                )
-            solved[side, load] = RacewayTCR(contact, tcr)
+                if patch:
+                    tcr = patch_tcr(sol.pressure, sol.dx, sol.dy, models[side])
+                else:
+                    tcr = contact_tcr(
+                        sol.pressure,
+                        sol.dx,
+                        sol.dy,
+                        models[side],
+                        cell_size=cell_size,
+                        load_threshold=case.tcr.load_threshold,
+                        partial_cells=case.tcr.partial_cells,
+                    )
+            if correlation is None:  # an element model: its own cells (or patch) are the headline
+                r, area = tcr.resistance, tcr.apparent_area
+            else:
+                r, area = correlation(contact, side), solved_contact_area(contact)
+            solved[side, load] = RacewayTCR(contact, tcr, r, area)
         for nut, used in loaded:  # a lifted-off nut carries nothing
             screw_side = solved["screw", used.ball_load]
             nut_side = solved["nut", used.ball_load]
@@ -300,14 +341,15 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
                 )
             )
         area = sum(n.apparent_area for n in nuts)
-        compared, spread = compare_models(params, case.tcr, models, nuts, area)
+        compared, spread = compare_models(params, case.tcr, models, nuts, area, headline)
         films = ()
         if case.tcr.film_path != "none":
             films = nut_films(case, params, nuts, [n.index for n in flanks])
     return ScrewTCR(
         case_name=case.name,
+        headline=headline,
         variant=models["screw"].variant,
-        cell_size=case.tcr.cell_size if case.tcr.rebin else None,
+        cell_size=cell_size,
         nut_forces=(chain[0].force, chain[1].force if len(chain) > 1 else 0.0),
         nuts=tuple(nuts),
         case=case,
@@ -318,8 +360,31 @@ def screw_tcr(case: Case, variant: str | None = None) -> ScrewTCR:
     )
 
 
+def _correlation(
+    headline: str,
+    params: ScrewParameters,
+    options: TCRSpec,
+    models: dict[Side, FractalTCRModel],
+    contacts: Iterable[tuple[tuple[Side, float], RacewayContact]],
+) -> ContactResistance | None:
+    """The headline correlation as a function of a solved contact; None for an element model.
+
+    Refused (``tcr.headline``) when a contact reaches p/H ≥ 0.5, the end of its range."""
+    if headline not in CORRELATIONS:
+        return None
+    outside = out_of_range(
+        ((f"a ball of {q:.4g} N", side, c) for (side, q), c in contacts),
+        {side: params.hardness(side) for side in SIDES},
+    )
+    if outside:
+        raise InputError(
+            "tcr.headline", headline, f"a model valid on this contact ({outside}): e.g. V2/patch"
+        )
+    return contact_model(headline, params, options, models)[0]
+
+
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
-    """Sweepable scalars of :func:`screw_tcr` (case's variant) with their units: the headline
+    """Sweepable scalars of :func:`screw_tcr` (case's headline) with their units: the headline
     micro TCR, the ball path without film and the one the thermal model takes
     (``heat_path_resistance``; with ``[tcr] film_path`` also ``ball_path_with_film``)."""
     result = screw_tcr(case)

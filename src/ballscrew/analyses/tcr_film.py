@@ -269,7 +269,7 @@ def heat_paths(
             r_ball = sum(with_film_path(math.inf, g) for g in branches.values())
             out.append(NutHeatPath(index, math.inf, 0.0, r_ball / film.balls, True))
             continue
-        own = {s: float(getattr(nut, s).tcr.resistance) for s in SIDES}
+        own = {s: float(getattr(nut, s).resistance) for s in SIDES}
         total = micro[nut.index] * nut.balls if micro is not None else sum(own.values())
         r_ball = r_micro = r_cons = 0.0
         for side in SIDES:

@@ -1,19 +1,22 @@
 """Every thermal-contact-resistance model on the same solved contacts, and their spread.
 
-The fractal element variants (V2, MT, V1) are re-evaluated on the pressure fields the headline
-model used; the Gaussian correlations (CMY, Mikic, each with the liquid gap) integrate their
-conductance h(p) over the same fields. All of them are then assembled like the headline result:
-the screw and nut contact of a ball in series, the balls of a nut and the nuts in parallel, and
-R″ = R·S with the headline's apparent area S, so the models differ only in their micro-physics.
+The fractal element variants (V2, MT, V1) are evaluated on the Δ_f cells of Gao et al. and on
+the whole Hertz patch (``V2/patch``, no cell size); the Gaussian correlations (CMY, Mikic, each
+with the liquid gap) integrate their conductance h(p) over the same fields. The headline
+(``[tcr] headline``, CMY by default) is one of them. All of them are assembled alike: the screw
+and nut contact of a ball in series, the balls of a nut and the nuts in parallel, and R″ = R·S
+with the headline's apparent area S, so the models differ only in their micro-physics.
 """
 
 from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
+
+import numpy as np
 
 from ballscrew.analyses.parameters import ScrewParameters, Side
 from ballscrew.case import TCRSpec
@@ -22,6 +25,7 @@ from ballscrew.contact_resistance import (
     FractalTCRModel,
     contact_tcr,
     parallel_resistance,
+    patch_tcr,
 )
 from ballscrew.contact_resistance.correlations import (
     CORRELATIONS,
@@ -32,6 +36,7 @@ from ballscrew.contact_resistance.correlations import (
 from ballscrew.contact_resistance.element import harmonic_mean_conductivity
 
 if TYPE_CHECKING:
+    from ballscrew.analyses.ball_contact import RacewayContact
     from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR
 
 
@@ -100,25 +105,33 @@ def gaussian_joint(params: ScrewParameters, options: TCRSpec, side: Side) -> Gau
     )
 
 
-ContactResistance = Callable[["RacewayTCR", Side], float]
+ContactResistance = Callable[["RacewayContact", Side], float]
+"""R_c of one solved ball–raceway contact by one model [K/W]."""
+
+PATCH = "/patch"
+"""Suffix of an element variant evaluated on the whole Hertz patch instead of fractal cells."""
+
+
+def solved_contact_area(contact: RacewayContact) -> float:
+    """S_c = N(p > 0)·dx·dy, the solved contact area of ``contact`` (A4 without cells) [m²]."""
+    sol = contact.solution
+    return float(np.count_nonzero(sol.pressure > 0.0)) * sol.dx * sol.dy
 
 
 def _element_resistance(
     models: dict[Side, FractalTCRModel], options: TCRSpec, variant: str, patch: bool
 ) -> ContactResistance:
-    def resistance(raceway: RacewayTCR, side: Side) -> float:
-        sol = raceway.contact.solution
-        if patch:  # one cell that holds the whole grid: MB on the real contact
-            nx, ny = sol.pressure.shape
-            cell: float | None = 1.01 * max(nx * sol.dx, ny * sol.dy)
-        else:
-            cell = options.cell_size if options.rebin else None
+    def resistance(contact: RacewayContact, side: Side) -> float:
+        sol = contact.solution
+        model = replace(models[side], variant=variant)
+        if patch:  # the MB population of the whole solved patch: no cell size (A1p)
+            return patch_tcr(sol.pressure, sol.dx, sol.dy, model).resistance
         return contact_tcr(
             sol.pressure,
             sol.dx,
             sol.dy,
-            replace(models[side], variant=variant),
-            cell_size=cell,
+            model,
+            cell_size=options.cell_size if options.rebin else None,
             load_threshold=options.load_threshold,
             partial_cells="contact_area",
         ).resistance
@@ -126,30 +139,49 @@ def _element_resistance(
     return resistance
 
 
-PATCH = "/patch"
-"""Suffix of an element variant evaluated on the whole Hertz patch instead of fractal cells."""
-
-
 def _correlation_resistance(joints: dict[Side, GaussianJoint], name: str) -> ContactResistance:
-    def resistance(raceway: RacewayTCR, side: Side) -> float:
-        sol = raceway.contact.solution
+    def resistance(contact: RacewayContact, side: Side) -> float:
+        sol = contact.solution
         return 1.0 / correlation_conductance(sol.pressure, sol.dx, sol.dy, joints[side], name)
 
     return resistance
 
 
-def _peak_relative_pressure(nuts: Sequence[NutTCR], joints: dict[Side, GaussianJoint]) -> str:
-    """The largest p/H of the contacts and where, as text; '' when all are below 0.5."""
-    peaks = {
-        (n.index, side): float(getattr(n, side).contact.solution.pressure.max())
-        / joints[side].hardness
-        for n in nuts
-        for side in joints
-    }
-    (nut, side), peak = max(peaks.items(), key=lambda item: item[1])
+def contact_model(
+    name: str,
+    params: ScrewParameters,
+    options: TCRSpec,
+    element_models: dict[Side, FractalTCRModel],
+) -> tuple[ContactResistance, str]:
+    """The model ``name`` of :func:`~ballscrew.case.thermal_spec.tcr_model_names` as a function
+    of a solved contact, with its description: an element variant on the Δ_f cells (the paper's
+    cell model) or on the whole patch (``V2/patch``), or a correlation integrated over the field."""
+    if name.endswith(PATCH):
+        variant = name.removesuffix(PATCH)
+        description = f"{variant} on the whole Hertz patch, no fractal cell size"
+        return _element_resistance(element_models, options, variant, patch=True), description
+    if name in ELEMENT_MODELS:
+        description = f"{ELEMENT_MODELS.entry(name).description}, on Δ_f cells (Gao et al.)"
+        return _element_resistance(element_models, options, name, patch=False), description
+    joints = {side: gaussian_joint(params, options, side) for side in element_models}
+    return _correlation_resistance(joints, name), CORRELATIONS.entry(name).description
+
+
+def out_of_range(
+    contacts: Iterable[tuple[str, Side, RacewayContact]], hardness: Mapping[Side, float]
+) -> str:
+    """The largest p/H of ``contacts`` (label, side, contact) and where, as text; '' when all
+    are below 0.5, the end of the correlations' range. ``hardness``: H of each side's pair."""
+    peak, label, side = max(
+        (
+            (float(c.solution.pressure.max()) / hardness[side], label, side)
+            for label, side, c in contacts
+        ),
+        key=lambda item: item[0],
+    )
     if peak < _MAX_RELATIVE_PRESSURE:
         return ""
-    return f"p/H = {peak:.2f} at the {side} contact of nut {nut} (the correlations need < 0.5)"
+    return f"p/H = {peak:.2f} at the {side} contact of {label} (the correlations need < 0.5)"
 
 
 def _nut_resistances(nuts: Sequence[NutTCR], contact: ContactResistance) -> dict[int, float]:
@@ -159,16 +191,18 @@ def _nut_resistances(nuts: Sequence[NutTCR], contact: ContactResistance) -> dict
 
     def once(raceway: RacewayTCR, side: Side) -> float:
         if id(raceway) not in done:
-            done[id(raceway)] = contact(raceway, side)
+            done[id(raceway)] = contact(raceway.contact, side)
         return done[id(raceway)]
 
     return {n.index: (once(n.screw, "screw") + once(n.nut, "nut")) / n.balls for n in nuts}
 
 
-def _expanded(names: Sequence[str]) -> list[str]:
-    """The models with each element variant also evaluated on the whole patch."""
+def _expanded(names: Sequence[str], headline: str) -> list[str]:
+    """The models with each element variant also evaluated on the whole patch, and the
+    headline."""
     element = [n for n in names if n in ELEMENT_MODELS]
-    return [*names, *(n + PATCH for n in element)]
+    out = [*names, *(n + PATCH for n in element)]
+    return out if headline in out else [*out, headline]
 
 
 def compare_models(
@@ -177,29 +211,24 @@ def compare_models(
     element_models: dict[Side, FractalTCRModel],
     nuts: Sequence[NutTCR],
     apparent_area: float,
+    headline: str,
 ) -> tuple[dict[str, ModelTCR], ModelSpread | None]:
-    """Each model of ``options.models`` on the solved contacts of ``nuts``, and their spread.
+    """Each model of ``options.models`` and the ``headline`` on the solved contacts of
+    ``nuts``, and their spread.
 
     The correlations are left out when a contact lies outside their range (p/H ≥ 0.5) with a
     :class:`ModelRangeWarning`; the spread is None when fewer than two models remain.
     """
-    joints = {side: gaussian_joint(params, options, side) for side in element_models}
-    out_of_range = _peak_relative_pressure(nuts, joints)
+    outside = out_of_range(
+        ((f"nut {n.index}", s, getattr(n, s).contact) for n in nuts for s in element_models),
+        {side: params.hardness(side) for side in element_models},
+    )
     results: dict[str, ModelTCR] = {}
-    for name in _expanded(options.models):
-        if name.endswith(PATCH):
-            variant = name.removesuffix(PATCH)
-            contact = _element_resistance(element_models, options, variant, patch=True)
-            description = f"{variant} on the whole Hertz patch (no fractal cell size)"
-        elif name in ELEMENT_MODELS:
-            contact = _element_resistance(element_models, options, name, patch=False)
-            description = ELEMENT_MODELS.entry(name).description
-        else:
-            contact = _correlation_resistance(joints, name)
-            description = CORRELATIONS.entry(name).description
-        if name in CORRELATIONS and out_of_range:
-            warnings.warn(f"TCR model {name} left out: {out_of_range}", ModelRangeWarning, 2)
+    for name in _expanded(options.models, headline):
+        if name in CORRELATIONS and outside:
+            warnings.warn(f"TCR model {name} left out: {outside}", ModelRangeWarning, 2)
             continue
+        contact, description = contact_model(name, params, options, element_models)
         per_nut = _nut_resistances(nuts, contact)
         r = float(parallel_resistance(list(per_nut.values())))
         results[name] = ModelTCR(name, description, r, r * apparent_area, per_nut)

@@ -31,6 +31,28 @@ HEADLINE = (
 )
 """Which number is the headline and why the film path does not change it (summary, report)."""
 
+CELL_OPTION = (
+    "Gao, Wang & Liu's own model, the fractal element model V2 on Δ_f cells (tcr.cell_size), is "
+    'the paper\'s option: [tcr] headline = "V2" (or --variant V2). Its value follows the cell '
+    "size (R″ ∝ Δ_f^0.53), so it is not the default; every model is listed under models."
+)
+"""Where the paper's cell model went (summary and report of every run)."""
+
+
+def headline_model_text(result: ScrewTCR) -> str:
+    """Which model the headline is, whether it has a cell size, and the paper's cell option."""
+    name = result.headline
+    what = result.models[name].description if name in result.models else name
+    if result.cell_size is not None and name == result.variant:
+        cells = f"{1e6 * result.cell_size:g} µm cells: it follows the cell size"
+        return f"The headline model is {name} ({what}) on {cells}. {CELL_OPTION}"
+    if name == result.variant:
+        return f"The headline model is {name} ({what}) on the solver grid's cells. {CELL_OPTION}"
+    return (
+        f"The headline model is {name} ({what}). It has no fractal cell size: R does not "
+        f"depend on tcr.cell_size and converges with the solver grid. {CELL_OPTION}"
+    )
+
 
 def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarray:
     """Centres of ``count`` fractal cells of side ``cell`` centred on the solver grid ``coord``."""
@@ -39,6 +61,8 @@ def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarr
 
 
 def _cells_text(result: ScrewTCR) -> str:
+    if result.headline.endswith("/patch"):
+        return "the whole Hertz patch"
     if result.cell_size is None:
         return "the solver grid's cells"
     return f"{1e6 * result.cell_size:g} µm fractal cells"
@@ -46,9 +70,10 @@ def _cells_text(result: ScrewTCR) -> str:
 
 def _contact_summary(r: RacewayTCR) -> dict[str, Any]:
     return {
-        "resistance": value(r.tcr.resistance, "K/W"),
-        "apparent_area": value(r.tcr.apparent_area, "m^2"),
-        "resistance_per_area": value(r.tcr.unit_area_resistance, "m^2*K/W"),
+        "resistance": value(r.resistance, "K/W"),
+        "apparent_area": value(r.apparent_area, "m^2"),
+        "resistance_per_area": value(r.resistance * r.apparent_area, "m^2*K/W"),
+        "element_resistance": value(r.tcr.resistance, "K/W"),
         "loaded_cells": r.tcr.loaded_cells,
         "peak_pressure": value(r.contact.solution.peak_pressure, "Pa"),
         "approach": value(r.contact.solution.approach, "m"),
@@ -113,6 +138,8 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
     return {
         "case": result.case_name,
         "headline": HEADLINE,
+        "headline_model": result.headline,
+        "headline_model_note": headline_model_text(result),
         "resistance": value(result.resistance, "K/W"),
         "resistance_per_area": value(result.resistance_per_area, "m^2*K/W"),
         "apparent_area": value(result.apparent_area, "m^2"),
@@ -131,6 +158,7 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
         "uncertainty": _spread_summary(result),
         "film_path": _film_summary(result),
         "options": {
+            "headline": result.headline,
             "variant": result.variant,
             "cell_size": value(result.cell_size, "m") if result.cell_size else "solver grid",
             "gap_model": case.tcr.gap_model,
@@ -216,6 +244,7 @@ def fields(result: ScrewTCR) -> xr.Dataset:
         coords=coords,
         attrs={
             "case": result.case_name,
+            "headline": result.headline,
             "variant": result.variant,
             # no re-binning (tcr.rebin = false): the solver's cells, and no attribute
             **({} if result.cell_size is None else {"cell_size_m": result.cell_size}),
@@ -251,7 +280,8 @@ def figures(result: ScrewTCR) -> list[Figure]:
             ),
             Figure(
                 f"tcr_{tag}",
-                f"Element TCR on {_cells_text(result)} ({result.variant}).",
+                f"Element TCR of the fractal model {result.variant} on {_cells_text(result)}"
+                + ("." if result.headline == result.variant else " (details, not the headline)."),
                 partial(
                     plots.resistance_map,
                     fractal_cell_centres(c.x, rmap.shape[0], r.tcr.cell_size[0]),
@@ -290,8 +320,8 @@ def sections(result: ScrewTCR) -> list[Section]:
             f"nut {n.index}",
             n.force,
             n.ball_load,
-            n.screw.tcr.resistance,
-            n.nut.tcr.resistance,
+            n.screw.resistance,
+            n.nut.resistance,
             n.ball_resistance,
             n.resistance,
             paths[n.index].constriction,
@@ -305,12 +335,10 @@ def sections(result: ScrewTCR) -> list[Section]:
         Section(
             "Thermal contact resistance of the screw",
             paragraphs=(
-                f"Element model {result.variant} on {_cells_text(result)} "
-                f"(D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
-                f"{case.medium.thermal_conductivity:g} W/mK). Elements in parallel per "
-                "contact, screw and nut contact in series per ball, all loaded balls of "
-                "both nuts in parallel (Gao, Wang & Liu 2019). The value depends on the "
-                "cell size Δ_f; compare results only at equal Δ_f.",
+                headline_model_text(result),
+                f"D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
+                f"{case.medium.thermal_conductivity:g} W/mK. Screw and nut contact in series "
+                "per ball, all loaded balls of both nuts in parallel (Gao, Wang & Liu 2019).",
                 HEADLINE,
                 *_single_nut_note(case.screw),
                 *(
@@ -422,10 +450,11 @@ def _models_section(result: ScrewTCR) -> list[Section]:
         return []
     spread = result.uncertainty
     text = (
-        "The same solved contacts evaluated by every model: the fractal element variants on the "
-        "same cells, the Gaussian correlations integrated over the pressure field (no cell "
-        "size; σ and m from D and G over the stated wavelength band unless measured values "
-        "are given). "
+        f"The same solved contacts evaluated by every model (headline: {result.headline}): the "
+        "fractal element variants on the paper's Δ_f cells and on the whole Hertz patch "
+        "(/patch, no cell size), the Gaussian correlations integrated over the pressure field "
+        "(no cell size; σ and m from D and G over the stated wavelength band unless measured "
+        "values are given). "
     )
     if spread is not None:
         text += (

@@ -692,4 +692,4 @@ def _micro_model(result: ThermalField) -> str:
         return "the case's given R″"
     if contact.tcr_model is not None:
         return f"model {contact.tcr_model} of the TCR analysis ([thermal.contact] tcr_model)"
-    return f"the headline fractal element model ({result.case.tcr.variant})"
+    return f"the headline TCR model ({result.case.tcr.headline}, [tcr] headline)"

@@ -99,8 +99,8 @@ class NutInterface:
 
     name: str
     micro_resistance: float
-    """Micro TCR of all its balls, R_sbn/n_b (A2–A3), of the headline fractal model or of
-    ``[thermal.contact] tcr_model``; R″/A for a given R″ [K/W]."""
+    """Micro TCR of all its balls, R_sbn/n_b (A2–A3), of the headline model (``[tcr]
+    headline``) or of ``[thermal.contact] tcr_model``; R″/A for a given R″ [K/W]."""
     constriction_resistance: float
     """Macro-constriction of the Hertz patches into balls and raceways, all balls [K/W]."""
     resistance_per_area: float
@@ -142,7 +142,7 @@ _cached_tcr = CaseCache(
     32,
     exclude={"name", "description", "thermal", "wear", "friction", "duty", "duty_repeat"},
 )
-""":func:`screw_tcr` of the case's variant, cached on every section it reads (through
+""":func:`screw_tcr` of the case's headline, cached on every section it reads (through
 :class:`ScrewParameters` and the ball loads: also ``loads``, ``design``, ``kinematics``,
 ``lubrication``)."""
 

@@ -22,7 +22,7 @@ from ballscrew.case.kinematics_spec import KinematicsSpec, known_lubricant
 from ballscrew.case.loads_spec import LoadsSpec
 from ballscrew.case.lubrication_spec import LubricationSpec, check_oil_viscosities
 from ballscrew.case.nut_body import check_nut_body
-from ballscrew.case.thermal_spec import ThermalSpec
+from ballscrew.case.thermal_spec import ThermalSpec, tcr_model_names
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.contact import (
     DEFAULT_BOX_FACTOR,
@@ -263,13 +263,20 @@ class NumericsSpec(Model):
 
 
 class TCRSpec(Model):
-    """Options of the fractal thermal-contact-resistance model (theory manual)."""
+    """Options of the thermal-contact-resistance models (theory manual)."""
 
+    headline: str = Field(
+        "CMY",
+        description="model whose R and R″ are the headline and feed the thermal models: CMY "
+        "(default, no cell size), Mikic, an element variant on the whole Hertz patch "
+        "(V2/patch, …) or on the Δ_f cells of Gao et al. (V2, MT, V1: the paper's cell model)",
+    )
     variant: model_choice(
-        ELEMENT_MODELS, "element solid conductance: V2 (default, reconstruction), MT or V1"
+        ELEMENT_MODELS,
+        "element solid conductance of the fractal details: V2 (default, reconstruction), MT or V1",
     ) = "V2"
     cell_size: quantity(
-        "length", "fractal cell size Δ_f the pressure is re-binned onto", gt=0, le=1e-2
+        "length", "fractal cell size Δ_f of the cell models (V2, MT, V1)", gt=0, le=1e-2
     ) = 8e-6
     cutoff_area: quantity("area", "lower spot-area cut-off a_s of variant MT", gt=0, le=1e-4) = (
         1e-16
@@ -317,6 +324,14 @@ class TCRSpec(Model):
         "path: none (Gao et al.'s chain) or meniscus (wetted up to the inlet meniscus of a "
         "starved or greased supply, else to the groove-bottom clearance)",
     )
+
+    @field_validator("headline")
+    @classmethod
+    def _known_headline(cls, name: str) -> str:
+        names = tcr_model_names()
+        if name not in names:
+            raise ValueError(f"unknown model {name!r}; allowed: {', '.join(names)}")
+        return name
 
     @field_validator("models")
     @classmethod

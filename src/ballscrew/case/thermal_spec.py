@@ -275,7 +275,7 @@ class ContactSpec(Model):
 
     source: Literal["tcr", "given"] = Field(
         "tcr",
-        description="'tcr': R of each nut from the fractal TCR chain (screw_tcr); 'given': "
+        description="'tcr': R of each nut from the TCR chain (screw_tcr, [tcr] headline); 'given': "
         "resistance_per_area over the nut bore",
     )
     resistance_per_area: (
@@ -292,7 +292,7 @@ class ContactSpec(Model):
     tcr_model: str | None = Field(
         None,
         description="micro TCR of the balls from this model of screw_tcr's side-by-side models "
-        "(source = 'tcr'); None = the headline model ([tcr] variant)",
+        "(source = 'tcr'); None = the headline model ([tcr] headline)",
     )
 
     @field_validator("tcr_model")

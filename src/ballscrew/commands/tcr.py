@@ -10,7 +10,11 @@ from ballscrew.commands._common import CaseArg, Output, writes_results
 
 VariantOpt = Annotated[
     str | None,
-    typer.Option(help="element model V2, MT or V1 (default: the case's)", metavar="NAME"),
+    typer.Option(
+        help="headline: element model V2, MT or V1 on the paper's Δ_f cells (default: the "
+        "case's [tcr] headline, CMY)",
+        metavar="NAME",
+    ),
 ]
 
 

@@ -10,7 +10,8 @@
 * :mod:`.film_path` — the lubricant film around a ball outside its Hertz patch, a heat path in
   parallel with the patch (``tcr.film_path``).
 
-The element result depends on the fractal cell size (a known limitation, see the manual).
+The element result on Δ_f cells depends on the cell size (a known limitation, see the manual);
+:func:`.aggregation.patch_tcr` gives the MB population to the whole solved patch instead.
 """
 
 from ballscrew.contact_resistance.aggregation import (
@@ -21,6 +22,7 @@ from ballscrew.contact_resistance.aggregation import (
     heater_power,
     mean_apparent_area,
     parallel_resistance,
+    patch_tcr,
     rebin_forces,
     series_resistance,
     unit_area_resistance,
@@ -80,6 +82,7 @@ __all__ = [
     "loaded_film_conductance",
     "mean_apparent_area",
     "parallel_resistance",
+    "patch_tcr",
     "rebin_forces",
     "series_resistance",
     "smeared_conductance",

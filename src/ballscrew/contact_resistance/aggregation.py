@@ -7,6 +7,7 @@ aggregation and experiment reduction (A1)–(A5).
 - (A2) the two contacts of a ball in series: R_sbn = R_sb + R_bn (ball conduction neglected);
 - (A3) all loaded balls of both nuts in parallel: 1/R = Σ_k n_k/R_sbn,k;
 - (A4) apparent area S_c = N_cells(p > 0)·A and unit-area TCR R″ = R·S;
+- (A1p) the MB population of the whole solved patch, no cell size (:func:`patch_tcr`);
 - (A5) experiment: R″ = (T₁ − T₂) S / Q with Q = U²/R_heater.
 """
 
@@ -31,6 +32,7 @@ __all__ = [
     "heater_power",
     "mean_apparent_area",
     "parallel_resistance",
+    "patch_tcr",
     "rebin_forces",
     "series_resistance",
     "unit_area_resistance",
@@ -221,6 +223,44 @@ def contact_tcr(
         apparent_area=float(areas[loaded].sum()),
         loaded_cells=n_loaded,
         cell_size=cell,
+        variant=model.variant,
+        elements=elements,
+    )
+
+
+def patch_tcr(pressure: ArrayLike, dx: float, dy: float, model: FractalTCRModel) -> ContactTCR:
+    """Fractal TCR of one contact with the MB population of the whole solved patch, (A1p).
+
+    One element carries the contact load Q = Σ p·dx·dy on the solved contact area
+    S_c = N(p > 0)·dx·dy, so a_l, A_r, G_s and L_g follow from (Q, S_c) alone and no cell size
+    enters: R_c = R(Q, S_c) of :func:`element_tcr`. For a uniform pressure p on S_c this is the
+    MB closed form of that apparent area; the result converges with the solver grid as S_c does
+    (theory manual, *Fractal model without a cell*).
+
+    Args:
+        pressure: contact pressure on the solver grid, Pa, shape (nx, ny), p ≥ 0.
+        dx: solver cell size along axis 0, m.
+        dy: solver cell size along axis 1, m.
+        model: fractal TCR model parameters and variant.
+
+    Returns:
+        :class:`ContactTCR` with one element, a 1 × 1 map (``cell_size`` = the grid's extent).
+
+    Raises:
+        InputError: bad grid or a field without any positive pressure.
+    """
+    p = _pressure_field(pressure)
+    cell = positive("dx", dx, "m") * positive("dy", dy, "m")
+    in_contact = p > 0.0
+    if not np.any(in_contact):
+        raise InputError("pressure", "all zero", "at least one cell with p > 0")
+    area = float(np.count_nonzero(in_contact)) * cell
+    elements = element_tcr(np.full((1, 1), float(p.sum()) * cell), area, model)
+    return ContactTCR(
+        resistance=float(elements.resistance[0, 0]),
+        apparent_area=area,
+        loaded_cells=1,
+        cell_size=(p.shape[0] * dx, p.shape[1] * dy),
         variant=model.variant,
         elements=elements,
     )
