@@ -163,3 +163,57 @@ def test_an_offset_lead_needs_an_even_ball_count() -> None:
     assert odd.output.startswith("error: --preload-method") and "gives 49" in odd.output
     even = CliRunner().invoke(app, [*base, "--turns", "2.5x2", *offset])
     assert even.exit_code == 0 and "balls_per_nut = 98" in even.output
+
+
+SINGLE_BARE = ["--d0", "32", "--lead", "5", "--ball", "3.175", "--turns", "1x4", "--nuts", "1"]
+
+
+@pytest.fixture(scope="module")
+def bare_single() -> str:
+    result = init(*SINGLE_BARE, "--preload", "0")
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
+def test_a_single_nut_without_preload_is_written_with_a_load(bare_single) -> None:
+    """--preload 0 was refused ('a finite value > 0'), so no single nut without preload could be
+    started; its case needs an axial load (no stiffness at 0 N), written as assumed. A double
+    nut without preload stays one line, exit 2."""
+    raw = tomllib.loads(bare_single)
+    case = case_from_dict(raw)
+    assert case.operating.preload == 0.0
+    assert case.operating.axial_load == case.duty[0].axial_load > 0.0
+    assert "operating.axial_load" in raw["assumed"]
+    double = init(*SHEET, "--preload", "0")
+    assert double.exit_code == 2 and double.output.count("\n") == 1
+    assert double.output.startswith("error: --preload = '0 N'") and "--nuts 1" in double.output
+    negative = init(*SINGLE_BARE, "--preload", "-1")
+    assert negative.exit_code == 2 and ">= 0" in negative.output
+
+
+@pytest.mark.parametrize(
+    ("command", "options"),
+    [
+        ("contact", []),
+        ("tcr", []),
+        ("thermal", []),
+        ("operating-point", []),
+        ("check", []),
+        ("duty", ["--model", "network"]),
+        ("kinematics", ["--speed", "1000 rpm"]),
+    ],
+)
+def test_every_command_accepts_a_single_nut_without_preload(
+    tmp_path, bare_single, command, options
+) -> None:
+    case_file = tmp_path / "bare.toml"
+    fast = bare_single.replace("cells_across = 32", "cells_across = 16")
+    fast = fast.replace('duration = "1 h"', 'duration = "10 min"') + '[tcr]\ncell_size = "20 um"\n'
+    case_file.write_text(fast)
+    out = tmp_path / command
+    result = runner.invoke(app, [command, str(case_file), "--out", str(out), *options])
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    if command == "check":
+        assert "lift_off" not in summary["margins"]
+        assert summary["equivalent_loads"][1]["value"] == 0.0

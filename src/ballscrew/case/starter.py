@@ -70,7 +70,8 @@ class CatalogueSheet:
     """Circuits per nut."""
     nuts: int = 2
     preload: float | None = None
-    """F_p [N]; None = :data:`DEFAULT_PRELOAD_SHARE` × the computed C_a."""
+    """F_p [N]; None = :data:`DEFAULT_PRELOAD_SHARE` × the computed C_a; 0 = a single nut
+    without preload (one loaded flank)."""
     length: float = 1.0
     """Screw shaft length [m]."""
     nut_length: float | None = None
@@ -160,6 +161,10 @@ def _check_fits(sheet: CatalogueSheet) -> float:
             f"it must be smaller than the lead {_in_mm(lead)} (a "
             "single-start thread has one groove per lead; a larger ball overlaps the next turn)",
         )
+    if sheet.preload == 0.0 and sheet.nuts != 1:
+        raise InputError(
+            "--preload", "0 N", "> 0 N for a double nut (0 only for a single nut, --nuts 1)"
+        )
     loaded = sheet.turns * sheet.circuits * lead
     nut = sheet.nut_length or loaded + 2.0 * lead
     if loaded > nut:
@@ -222,6 +227,8 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     if preload is None:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     oil = LUBRICANT_LIBRARY[_OIL]
+    duty_load = round(0.08 * ca, -1)
+    bare = preload == 0.0  # a single nut without preload: its one flank needs a load
     root = "root_diameter = {}   # thread root (minor) diameter from the sheet\n"
     text = _TEMPLATE.format(
         name=json.dumps(name, ensure_ascii=False),  # a TOML basic string, escapes and all
@@ -262,7 +269,24 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
             '"screw.pitch_diameter" = "d_m taken as the nominal diameter d0"\n'
         ),
         length=_mm(sheet.length),
-        duty_load=f"\"{round(0.08 * ca, -1):.6g} N\"",
+        duty_load=f'"{duty_load:.6g} N"',
+        axial_load=(
+            f'"{duty_load:.6g} N"          # the duty\'s load [ASSUMED]: a nut without preload '
+            "has no stiffness at 0 N"
+            if bare
+            else '"0 N"'
+        ),
+        rest_load=(
+            f'axial_load = "{duty_load:.6g} N"   # the load stays on the nut at rest: a nut '
+            "without preload needs one in every segment\n"
+            if bare
+            else ""
+        ),
+        assumed_axial_load=(
+            '"operating.axial_load" = "the duty\'s load; a nut without preload needs one"\n'
+            if bare
+            else ""
+        ),
         stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
         unsupported=_mm(0.9 * sheet.length),
         kinematics_root=_optional(sheet.root_diameter, root, ""),
@@ -377,7 +401,7 @@ circuits = {circuit_count}                     # ball circuits (returns) per nut
 
 [operating]
 preload = {preload}            # {preload_note}; the makers allow at most {max_share}
-axial_load = "0 N"
+axial_load = {axial_load}
 speed = "1000 rpm"               # [ASSUMED]
 
 [numerics]
@@ -425,7 +449,7 @@ duration = "40 min"
 
 [[duty]]
 speed = 0
-duration = "20 min"
+{rest_load}duration = "20 min"
 
 # The values above that are neither on the sheet nor computed from it (the ball count and the
 # oil's density are computed): every summary and report lists them with the guesses. Delete a
@@ -448,4 +472,4 @@ duration = "20 min"
 "design.load_factor" = "smooth running without shocks (f_w 1-1.2)"
 "design.accuracy_grade" = "a typical precision grade"
 "duty" = "an illustrative cycle, not your machine's"
-{assumed_preload}{assumed_nut_length}"""
+{assumed_preload}{assumed_nut_length}{assumed_axial_load}"""
