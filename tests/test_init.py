@@ -120,6 +120,41 @@ def test_a_sheet_that_cannot_be_built_is_one_line_exit_2(args, field) -> None:
     assert len(lines) == 1 and lines[0].startswith(f"error: {field} = "), result.output
 
 
+@pytest.mark.parametrize(
+    ("args", "field", "hint"),
+    [
+        (["--d0", "0.04"], "--d0", "did you mean 40 mm?"),  # d0 in metres: it blamed the ball
+        (["--ball", "6350"], "--ball", "did you mean 6.35 mm?"),
+        (["--ball", "30"], "--ball", None),  # too large, no other unit fits: no hint
+    ],
+)
+def test_a_diameter_in_the_wrong_unit_is_blamed_on_its_option(args, field, hint) -> None:
+    sheet = dict(zip(SHEET[::2], SHEET[1::2], strict=True)) | dict(
+        zip(args[::2], args[1::2], strict=True)
+    )
+    result = init(*(item for pair in sheet.items() for item in pair))
+    assert result.exit_code == 2 and result.output.startswith(f"error: {field} = ")
+    assert ("did you mean" in result.output) == (hint is not None)
+    assert hint is None or hint in result.output
+
+
+def test_the_illustrative_duty_stays_below_the_lift_off_of_the_default_preload(tmp_path) -> None:
+    """A preloaded single nut's starter ran its duty at 8 % of C_a against a lift-off load of
+    2^1.5 × 2 % = 5.7 %: the check of the case init wrote was red on lift-off (now 4 %)."""
+    for sheet in (SHEET, SINGLE_BARE):
+        result = init(*sheet)
+        assert result.exit_code == 0, result.output
+        raw = tomllib.loads(result.stdout)
+        case = case_from_dict(raw)
+        assert case.duty[0].axial_load < 2.0**1.5 * case.operating.preload
+        case_file = tmp_path / "starter.toml"
+        case_file.write_text(result.stdout)
+        out = tmp_path / f"check{case.screw.nuts}"
+        assert runner.invoke(app, ["check", str(case_file), "--out", str(out)]).exit_code == 0
+        summary = json.loads((out / "summary.json").read_text())
+        assert summary["margins"]["lift_off"]["status"] != "red"
+
+
 def test_turns_notation() -> None:
     assert parse_turns("2.5x2") == (2.5, 2)
     assert parse_turns("1×4") == (1.0, 4)

@@ -50,6 +50,15 @@ DEFAULT_PRELOAD_SHARE = {1: 0.02, 2: 0.05}
 """Default preload / C_a: 5 % for a double nut (the makers' 'medium' preload, at most 10 %),
 2 % for a single nut preloaded by oversized balls [GUESS: a typical value, not a maker's rule]."""
 
+DUTY_LOAD_SHARE = {1: 0.04, 2: 0.08}
+"""Axial load of the illustrative duty cycle / the geometric C_a [ASSUMED]: below the lift-off
+load 2^1.5 F_p of the default preload (double nut 14 %, single nut 5.7 % of C_a), so the
+starter case does not run its own nut into backlash."""
+
+SMALLEST_D0 = 1e-3
+"""Nominal diameter [m] at or below which a d0 too small for its ball is taken as a value in the
+wrong unit and blamed on --d0 (the smallest ball screws are about 4 mm)."""
+
 MAX_TURNS = 10.0
 MAX_CIRCUITS = 12
 
@@ -144,7 +153,19 @@ def _check_fits(sheet: CatalogueSheet) -> float:
     """The nut length [m] after checking that diameters, lead, ball, turns and nuts fit."""
     d0, lead, ball = sheet.nominal_diameter, sheet.lead, sheet.ball_diameter
     if not ball < d0 / 2.0:
-        raise InputError("--ball", _in_mm(ball), f"it must be smaller than d0/2 = {_in_mm(d0 / 2)}")
+        if d0 <= SMALLEST_D0 and ball < 1e3 * d0 / 2.0:  # d0 in metres taken as mm
+            raise InputError(
+                "--d0",
+                _in_mm(d0),
+                f"a nominal diameter above 2 D_w = {_in_mm(2.0 * ball)}; did you mean "
+                f"{_in_mm(1e3 * d0)}?",
+            )
+        raise InputError(
+            "--ball",
+            _in_mm(ball),
+            f"it must be smaller than d0/2 = {_in_mm(d0 / 2)}"
+            f"{_unit_hint(ball, d0 / 100.0, d0 / 2.0)}",
+        )
     _check_diameters(sheet)
     low, high = ball / 2.0, math.pi * sheet.d_m
     if not low <= lead <= high:
@@ -227,7 +248,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     if preload is None:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     oil = LUBRICANT_LIBRARY[_OIL]
-    duty_load = round(0.08 * ca, -1)
+    duty_load = round(DUTY_LOAD_SHARE[sheet.nuts] * ca, -1)
     bare = preload == 0.0  # a single nut without preload: its one flank needs a load
     root = "root_diameter = {}   # thread root (minor) diameter from the sheet\n"
     text = _TEMPLATE.format(
@@ -270,6 +291,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         ),
         length=_mm(sheet.length),
         duty_load=f'"{duty_load:.6g} N"',
+        duty_share=f"{DUTY_LOAD_SHARE[sheet.nuts]:.0%}",
         axial_load=(
             f'"{duty_load:.6g} N"          # the duty\'s load [ASSUMED]: a nut without preload '
             "has no stiffness at 0 N"
@@ -439,7 +461,7 @@ accuracy_grade = {grade}               # C{grade} / P{grade} [ASSUMED]
 
 # A one-hour working cycle for `ballscrew duty` (run duty_repeat times, at the top) and the life
 # of `ballscrew check` [ASSUMED, illustrative: write your machine's]: 40 min of strokes at
-# 1000 rpm under 8 % of the geometric C_a, then 20 min of rest.
+# 1000 rpm under {duty_share} of the geometric C_a, then 20 min of rest.
 [[duty]]
 speed = "1000 rpm"
 axial_load = {duty_load}
