@@ -30,6 +30,16 @@ def generated() -> str:
     return result.stdout
 
 
+SINGLE_BARE = ["--d0", "32", "--lead", "5", "--ball", "3.175", "--turns", "1x4", "--nuts", "1"]
+
+
+@pytest.fixture(scope="module")
+def bare_single() -> str:
+    result = init(*SINGLE_BARE, "--preload", "0")
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
 def test_ball_count_is_the_closed_form(generated) -> None:
     """balls = circuits × (floor(turns π d_m/(D_w cos λ)) − 1): 2 × (floor(2.5 × 19.852) − 1)."""
     lam = math.atan(10.0 / (math.pi * 40.0))
@@ -61,27 +71,36 @@ def test_the_labelled_values_are_listed_with_the_guesses(generated) -> None:
     assert "operating.preload" not in tomllib.loads(given.stdout)["assumed"]
 
 
-@pytest.mark.parametrize(
-    ("command", "options"),
-    [
-        ("contact", []),
-        ("tcr", []),
-        ("thermal", []),
-        ("operating-point", []),
-        ("check", []),
-        ("duty", ["--model", "network"]),
-        ("kinematics", ["--speed", "1000 rpm"]),
-    ],
-)
-def test_every_command_accepts_the_generated_case(tmp_path, generated, command, options) -> None:
+COMMANDS = [
+    ("contact", []),
+    ("tcr", []),
+    ("thermal", []),
+    ("operating-point", []),
+    ("check", []),
+    ("duty", ["--model", "network"]),
+    ("kinematics", ["--speed", "1000 rpm"]),
+]
+"""Every command that reads a case, with the options it needs."""
+
+
+@pytest.mark.parametrize("starter", ["generated", "bare_single"])
+@pytest.mark.parametrize(("command", "options"), COMMANDS)
+def test_every_command_accepts_the_generated_case(
+    request, tmp_path, starter, command, options
+) -> None:
+    """The double nut of SHEET, and a single nut without preload (--preload 0)."""
     case_file = tmp_path / "my.toml"
-    fast = generated.replace("cells_across = 32", "cells_across = 16")
+    text = request.getfixturevalue(starter)
+    fast = text.replace("cells_across = 32", "cells_across = 16")
     fast = fast.replace('duration = "1 h"', 'duration = "10 min"') + '[tcr]\ncell_size = "20 um"\n'
     case_file.write_text(fast)
     out = tmp_path / command
     result = runner.invoke(app, [command, str(case_file), "--out", str(out), *options])
     assert result.exit_code == 0, result.output
-    assert (out / "summary.json").is_file()
+    summary = json.loads((out / "summary.json").read_text())
+    if command == "check" and starter == "bare_single":
+        assert "lift_off" not in summary["margins"]
+        assert summary["equivalent_loads"][1]["value"] == 0.0
 
 
 def test_a_preload_above_the_makers_share_warns_in_the_summary(tmp_path) -> None:
@@ -200,16 +219,6 @@ def test_an_offset_lead_needs_an_even_ball_count() -> None:
     assert even.exit_code == 0 and "balls_per_nut = 98" in even.output
 
 
-SINGLE_BARE = ["--d0", "32", "--lead", "5", "--ball", "3.175", "--turns", "1x4", "--nuts", "1"]
-
-
-@pytest.fixture(scope="module")
-def bare_single() -> str:
-    result = init(*SINGLE_BARE, "--preload", "0")
-    assert result.exit_code == 0, result.output
-    return result.stdout
-
-
 def test_a_single_nut_without_preload_is_written_with_a_load(bare_single) -> None:
     """--preload 0 was refused ('a finite value > 0'), so no single nut without preload could be
     started; its case needs an axial load (no stiffness at 0 N), written as assumed. A double
@@ -224,31 +233,3 @@ def test_a_single_nut_without_preload_is_written_with_a_load(bare_single) -> Non
     assert double.output.startswith("error: --preload = '0 N'") and "--nuts 1" in double.output
     negative = init(*SINGLE_BARE, "--preload", "-1")
     assert negative.exit_code == 2 and ">= 0" in negative.output
-
-
-@pytest.mark.parametrize(
-    ("command", "options"),
-    [
-        ("contact", []),
-        ("tcr", []),
-        ("thermal", []),
-        ("operating-point", []),
-        ("check", []),
-        ("duty", ["--model", "network"]),
-        ("kinematics", ["--speed", "1000 rpm"]),
-    ],
-)
-def test_every_command_accepts_a_single_nut_without_preload(
-    tmp_path, bare_single, command, options
-) -> None:
-    case_file = tmp_path / "bare.toml"
-    fast = bare_single.replace("cells_across = 32", "cells_across = 16")
-    fast = fast.replace('duration = "1 h"', 'duration = "10 min"') + '[tcr]\ncell_size = "20 um"\n'
-    case_file.write_text(fast)
-    out = tmp_path / command
-    result = runner.invoke(app, [command, str(case_file), "--out", str(out), *options])
-    assert result.exit_code == 0, result.output
-    summary = json.loads((out / "summary.json").read_text())
-    if command == "check":
-        assert "lift_off" not in summary["margins"]
-        assert summary["equivalent_loads"][1]["value"] == 0.0
