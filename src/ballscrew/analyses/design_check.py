@@ -32,6 +32,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
+from ballscrew.loads.distribution import Distribution
 from ballscrew.units import format_number, format_quantity, in_display_units
 from ballscrew.validation import case_with
 
@@ -377,16 +378,29 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     return tuple(out)
 
 
-def _nut_travel(params: ScrewParameters, case: Case, root: float, load: float) -> float:
-    """Displacement x(F) − x(0) of the nut under the axial load F with contacts and bodies [m]
-    (from the preloaded state: the spacer interference of F = 0 kept; 0 without load)."""
-    if load == 0.0:
-        return 0.0
+def _elastic_nut(
+    params: ScrewParameters, case: Case, root: float, largest: float
+) -> tuple[float, float]:
+    """(stiffness at the case's axial load, travel x(F) − x(0) under the largest load F) of the
+    nut with contacts and bodies [N/m, m]. A preloaded nut keeps the spacer interference of
+    F = 0 (one solve, shared); without preload x(0) = 0, the unloaded contacts."""
     run = partial(elastic_distribution, params, case.loads, root, numerics=case.numerics)
-    if params.preload == 0.0:  # x(0) = 0: the unloaded contacts
-        return run(axial_load=load).displacement
-    rest = run(axial_load=0.0)
-    return run(axial_load=load, interference=rest.interference).displacement - rest.displacement
+    solved: dict[float, Distribution] = {}
+    interference = None
+    if params.preload > 0.0:
+        solved[0.0] = run(axial_load=0.0)
+        interference = solved[0.0].interference
+
+    def at(load: float) -> Distribution:
+        if load not in solved:
+            solved[load] = run(axial_load=load, interference=interference)
+        return solved[load]
+
+    stiffness = at(params.axial_load).stiffness
+    if largest == 0.0:
+        return stiffness, 0.0
+    rest = solved[0.0].displacement if 0.0 in solved else 0.0
+    return stiffness, at(largest).displacement - rest
 
 
 def _warn(
@@ -448,8 +462,9 @@ def design_check(case: Case) -> DesignCheck:
     running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, flanks)
+    f_max = max(spectrum.loads)
     with recorded_warnings() as distribution_messages:
-        nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
+        nut_k, travel = _elastic_nut(params, case, root, f_max)
     shaft_k = design.shaft_axial_stiffness(
         root, length, screw.youngs_modulus, spec.mounting, spec.nut_distance
     )
@@ -458,9 +473,6 @@ def design_check(case: Case) -> DesignCheck:
     if spec.catalogue_rigidity is not None and preload:
         catalogue_k = design.catalogue_nut_rigidity(spec.catalogue_rigidity, preload, 0.1 * ca)
     rise = spec.temperature_rise
-    f_max = max(spectrum.loads)
-    with recorded_warnings() as travel_messages:
-        travel = _nut_travel(params, case, root, f_max)
     values = {
         "spectrum": spectrum,
         "flanks": flanks,
@@ -504,7 +516,7 @@ def design_check(case: Case) -> DesignCheck:
     return DesignCheck(
         case=case,
         margins=margins,
-        warnings=tuple(dict.fromkeys((*distribution_messages, *travel_messages, *messages))),
+        warnings=tuple(dict.fromkeys((*distribution_messages, *messages))),
         computed_ratings=computed,
         **values,
     )
