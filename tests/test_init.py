@@ -30,6 +30,16 @@ def generated() -> str:
     return result.stdout
 
 
+SINGLE_BARE = ["--d0", "32", "--lead", "5", "--ball", "3.175", "--turns", "1x4", "--nuts", "1"]
+
+
+@pytest.fixture(scope="module")
+def bare_single() -> str:
+    result = init(*SINGLE_BARE, "--preload", "0")
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
 def test_ball_count_is_the_closed_form(generated) -> None:
     """balls = circuits × (floor(turns π d_m/(D_w cos λ)) − 1): 2 × (floor(2.5 × 19.852) − 1)."""
     lam = math.atan(10.0 / (math.pi * 40.0))
@@ -61,27 +71,36 @@ def test_the_labelled_values_are_listed_with_the_guesses(generated) -> None:
     assert "operating.preload" not in tomllib.loads(given.stdout)["assumed"]
 
 
-@pytest.mark.parametrize(
-    ("command", "options"),
-    [
-        ("contact", []),
-        ("tcr", []),
-        ("thermal", []),
-        ("operating-point", []),
-        ("check", []),
-        ("duty", ["--model", "network"]),
-        ("kinematics", ["--speed", "1000 rpm"]),
-    ],
-)
-def test_every_command_accepts_the_generated_case(tmp_path, generated, command, options) -> None:
+COMMANDS = [
+    ("contact", []),
+    ("tcr", []),
+    ("thermal", []),
+    ("operating-point", []),
+    ("check", []),
+    ("duty", ["--model", "network"]),
+    ("kinematics", ["--speed", "1000 rpm"]),
+]
+"""Every command that reads a case, with the options it needs."""
+
+
+@pytest.mark.parametrize("starter", ["generated", "bare_single"])
+@pytest.mark.parametrize(("command", "options"), COMMANDS)
+def test_every_command_accepts_the_generated_case(
+    request, tmp_path, starter, command, options
+) -> None:
+    """The double nut of SHEET, and a single nut without preload (--preload 0)."""
     case_file = tmp_path / "my.toml"
-    fast = generated.replace("cells_across = 32", "cells_across = 16")
+    text = request.getfixturevalue(starter)
+    fast = text.replace("cells_across = 32", "cells_across = 16")
     fast = fast.replace('duration = "1 h"', 'duration = "10 min"') + '[tcr]\ncell_size = "20 um"\n'
     case_file.write_text(fast)
     out = tmp_path / command
     result = runner.invoke(app, [command, str(case_file), "--out", str(out), *options])
     assert result.exit_code == 0, result.output
-    assert (out / "summary.json").is_file()
+    summary = json.loads((out / "summary.json").read_text())
+    if command == "check" and starter == "bare_single":
+        assert "lift_off" not in summary["margins"]
+        assert summary["equivalent_loads"][1]["value"] == 0.0
 
 
 def test_a_preload_above_the_makers_share_warns_in_the_summary(tmp_path) -> None:
@@ -118,6 +137,41 @@ def test_a_sheet_that_cannot_be_built_is_one_line_exit_2(args, field) -> None:
     assert result.exit_code == 2
     lines = result.output.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith(f"error: {field} = "), result.output
+
+
+@pytest.mark.parametrize(
+    ("args", "field", "hint"),
+    [
+        (["--d0", "0.04"], "--d0", "did you mean 40 mm?"),  # d0 in metres: it blamed the ball
+        (["--ball", "6350"], "--ball", "did you mean 6.35 mm?"),
+        (["--ball", "30"], "--ball", None),  # too large, no other unit fits: no hint
+    ],
+)
+def test_a_diameter_in_the_wrong_unit_is_blamed_on_its_option(args, field, hint) -> None:
+    sheet = dict(zip(SHEET[::2], SHEET[1::2], strict=True)) | dict(
+        zip(args[::2], args[1::2], strict=True)
+    )
+    result = init(*(item for pair in sheet.items() for item in pair))
+    assert result.exit_code == 2 and result.output.startswith(f"error: {field} = ")
+    assert ("did you mean" in result.output) == (hint is not None)
+    assert hint is None or hint in result.output
+
+
+def test_the_illustrative_duty_stays_below_the_lift_off_of_the_default_preload(tmp_path) -> None:
+    """A preloaded single nut's starter ran its duty at 8 % of C_a against a lift-off load of
+    2^1.5 × 2 % = 5.7 %: the check of the case init wrote was red on lift-off (now 4 %)."""
+    for sheet in (SHEET, SINGLE_BARE):
+        result = init(*sheet)
+        assert result.exit_code == 0, result.output
+        raw = tomllib.loads(result.stdout)
+        case = case_from_dict(raw)
+        assert case.duty[0].axial_load < 2.0**1.5 * case.operating.preload
+        case_file = tmp_path / "starter.toml"
+        case_file.write_text(result.stdout)
+        out = tmp_path / f"check{case.screw.nuts}"
+        assert runner.invoke(app, ["check", str(case_file), "--out", str(out)]).exit_code == 0
+        summary = json.loads((out / "summary.json").read_text())
+        assert summary["margins"]["lift_off"]["status"] != "red"
 
 
 def test_turns_notation() -> None:
@@ -163,3 +217,19 @@ def test_an_offset_lead_needs_an_even_ball_count() -> None:
     assert odd.output.startswith("error: --preload-method") and "gives 49" in odd.output
     even = CliRunner().invoke(app, [*base, "--turns", "2.5x2", *offset])
     assert even.exit_code == 0 and "balls_per_nut = 98" in even.output
+
+
+def test_a_single_nut_without_preload_is_written_with_a_load(bare_single) -> None:
+    """--preload 0 was refused ('a finite value > 0'), so no single nut without preload could be
+    started; its case needs an axial load (no stiffness at 0 N), written as assumed. A double
+    nut without preload stays one line, exit 2."""
+    raw = tomllib.loads(bare_single)
+    case = case_from_dict(raw)
+    assert case.operating.preload == 0.0
+    assert case.operating.axial_load == case.duty[0].axial_load > 0.0
+    assert "operating.axial_load" in raw["assumed"]
+    double = init(*SHEET, "--preload", "0")
+    assert double.exit_code == 2 and double.output.count("\n") == 1
+    assert double.output.startswith("error: --preload = '0 N'") and "--nuts 1" in double.output
+    negative = init(*SINGLE_BARE, "--preload", "-1")
+    assert negative.exit_code == 2 and ">= 0" in negative.output

@@ -315,3 +315,98 @@ def test_the_stiffness_curve_of_a_single_nut_without_preload() -> None:
     hertz_x = result.compliance * body_loads ** (2.0 / 3.0)
     body_x = curve["deflection_bodies"].values
     assert np.all(body_x > hertz_x) and body_x[0] < 1.1 * hertz_x[0]
+
+
+def test_lost_motion_of_the_nut_and_the_springs_in_series() -> None:
+    """2 (x_nut(F) + F/K_shaft + F/K_bearings) at the largest load (the check had no lost
+    motion): the springs' part is exact; the nut's travel lies between the Hertz contacts'
+    alone (the bodies only add compliance) and F over the smallest tangent stiffness of the
+    curve with the bodies (x = ∫ dF/K)."""
+    result = design_check(case_from_dict(raw_case()))
+    load = 2000.0
+    travel = 0.5 * result.lost_motion - load * (1.0 / result.shaft_stiffness + 1e-9)
+    contacts = float(design.nut_load_deflection(load, 1500.0, result.compliance))
+    curve = result.to_xarray()
+    within = curve["body_load"].values <= load
+    softest = float(curve["stiffness_bodies"].values[within].min())
+    assert contacts < travel < load / softest
+    no_bearings = raw_case()
+    del no_bearings["design"]["bearing_stiffness"]
+    rigid = design_check(case_from_dict(no_bearings)).lost_motion
+    assert result.lost_motion - rigid == pytest.approx(2.0 * load / 1e9, rel=1e-9)
+    raw = raw_case()
+    raw["operating"]["axial_load"] = "0 N"
+    assert design_check(case_from_dict(raw)).lost_motion == 0.0
+    summary = result.summary()
+    assert summary["lost_motion"] == {"value": pytest.approx(result.lost_motion), "unit": "m"}
+    rows = dict(next(s for s in result.report() if s.title == "Design values").tables[0].rows)
+    assert rows["lost motion at a reversal of the largest load [µm]"] == pytest.approx(
+        1e6 * result.lost_motion
+    )
+
+
+def test_lost_motion_formula() -> None:
+    assert design.lost_motion(1e-6, 1000.0, 1e9, 5e8) == pytest.approx(2.0 * (1e-6 + 3e-6))
+    assert design.lost_motion(2e-6, 0.0) == pytest.approx(4e-6)
+    with pytest.raises(InputError, match=r"^stiffness"):
+        design.lost_motion(1e-6, 1000.0, 0.0)
+
+
+def test_the_preload_drag_torque_band_is_reported() -> None:
+    """The ±30 % band was a constant nobody read; the summary and the report now give it."""
+    result = design_check(case_from_dict(raw_case()))
+    summary = result.summary()
+    torque = result.preload_drag_torque
+    assert summary["preload_drag_torque_min"]["value"] == pytest.approx(0.7 * torque)
+    assert summary["preload_drag_torque_max"]["value"] == pytest.approx(1.3 * torque)
+    rows = dict(next(s for s in result.report() if s.title == "Design values").tables[0].rows)
+    assert rows["preload drag torque, upper end of the band [N·m]"] == pytest.approx(1.3 * torque)
+
+
+def test_the_pretension_of_a_fixed_fixed_shaft_has_a_margin() -> None:
+    """Pretension E A α ΔT plus the largest load against σ_perm A (THK A-694) — a value
+    without a margin before; only where both ends are fixed (no pretension otherwise)."""
+    free = design_check(case_from_dict(raw_case()))
+    assert "pretension" not in {m.name for m in free.margins}
+    fixed = design_check(case_from_dict(raw_case(mounting="fixed-fixed")))
+    margin = next(m for m in fixed.margins if m.name == "pretension")
+    assert margin.demand == pytest.approx(fixed.thermal_pretension + 2000.0)
+    assert margin.capacity == pytest.approx(fixed.permissible_tension)
+    hot = raw_case(mounting="fixed-fixed", temperature_rise="60 K")
+    with pytest.warns(UserWarning, match="pretension \\+ axial load vs permissible tension"):
+        result = design_check(case_from_dict(hot))
+    assert next(m for m in result.margins if m.name == "pretension").status == "red"
+
+
+def test_a_preloaded_single_nut_is_said_to_have_flanks_not_nuts() -> None:
+    """The lift-off warning of a single nut said 'the second nut'; the curve's attribute 'nuts'
+    held the flank count (2 for a single nut)."""
+    raw = raw_case()
+    raw["screw"]["nuts"] = 1
+    raw["operating"]["axial_load"] = "5 kN"
+    with pytest.warns(UserWarning, match="lift-off"):
+        result = design_check(case_from_dict(raw))
+    lift = next(w for w in result.warnings if "lift-off" in w)
+    assert "second flank" in lift and "nut carries" not in lift
+    curve = result.to_xarray()
+    assert curve.attrs["nuts"] == 1 and curve.attrs["flanks"] == 2
+    margins = " ".join(next(s for s in result.report() if s.title == "Margins").paragraphs)
+    assert "second flank" in margins and "second nut" not in margins
+    captions = " ".join(f.caption for f in result.figures())
+    assert "second flank" in captions
+
+
+@pytest.mark.filterwarnings("ignore::UserWarning")
+def test_the_report_names_the_static_model_it_used() -> None:
+    """The report said 'C_0a at 4200 MPa Hertz pressure (ISO 76)' for the palmgren model too."""
+    raw = raw_case()
+    del raw["design"]["static_load_rating"]
+    raw["design"]["static_rating_model"] = "palmgren"
+    result = design_check(case_from_dict(raw))
+    text = " ".join(next(s for s in result.report() if s.title == "Design values").paragraphs)
+    assert "model 'palmgren'" in text and "4200 MPa" not in text and "C_a by" not in text
+
+
+def test_the_summary_gives_dn_its_unit() -> None:
+    summary = design_check(case_from_dict(raw_case())).summary()
+    assert summary["dn"]["unit"] == summary["margins"]["dn"]["demand"]["unit"] == "mm·rpm"

@@ -167,3 +167,15 @@ def test_preload_after_wear_with_bodies_in_series() -> None:
     assert left[:3] == pytest.approx(lost[:3], rel=1e-12) and bodies[3] == rigid[3] == 0.0
     assert np.all(bodies[1:3] > rigid[1:3])  # a softer loop loses its preload more slowly
     assert preload_after_wear(1500.0, c_a, depths, BETA, ALPHA, 0.0) == pytest.approx(rigid)
+
+
+def test_a_long_double_nut_converges() -> None:
+    """20 turns per nut (400 balls): Newton's start left nut 2 without a loaded ball, so the
+    preload interference failed with a singular Jacobian from 15 turns per nut on."""
+    long_nut = ball_layout(400, 2, LEAD, D_M, BALL, ALPHA, LEAD)
+    rest = solve_distribution(long_nut, K, BETA, ALPHA, 0.0, 3030.0, BODIES)
+    assert rest.nut_forces == pytest.approx([3030.0, 3030.0], rel=1e-10)
+    loaded = solve_distribution(
+        long_nut, K, BETA, ALPHA, 2000.0, 3030.0, BODIES, interference=rest.interference
+    )
+    assert loaded.nut_forces[0] - loaded.nut_forces[1] == pytest.approx(2000.0, rel=1e-10)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
+from functools import partial
 from types import ModuleType
 from typing import ClassVar, Literal
 
@@ -31,6 +32,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
+from ballscrew.loads.distribution import Distribution
 from ballscrew.units import format_number, format_quantity, in_display_units
 from ballscrew.validation import case_with
 
@@ -53,7 +55,9 @@ PRELOAD_SHARE = design.MAX_PRELOAD_SHARE
 """Largest preload / C_a by nut count (HIWIN §3.6.2; THK A-687: 0.1 C_a)."""
 
 DRAG_TORQUE_BAND = 0.30
-"""± share of the real preload torque about the formula (THK A-689 worked example)."""
+"""± share of the real preload torque about the formula [ASSUMED: the makers' tolerance of the
+preload torque (THK A-689) depends on the torque, the accuracy grade and the thread length;
+±30 % is a middle value of that table]."""
 
 BODY_SOFTENING_LIMIT = 0.5
 """GUESS: the nut stiffness with the elastic bodies below this share of the Hertz contacts'
@@ -61,11 +65,15 @@ alone is warned about as implausible (the bodies soften a nut by tens of per cen
 
 _HINTS = {
     "lift_off": (
-        "above it the second nut carries no load and the nut runs with backlash; a preload of "
-        "at least the largest load / 2^1.5 keeps both nuts loaded"
+        "above it the second {part} carries no load and the nut runs with backlash; a preload "
+        "of at least the largest load / 2^1.5 keeps both {part}s loaded"
+    ),
+    "pretension": (
+        "the shaft pretensioned for the temperature rise would be loaded above its permissible "
+        "tension; a smaller temperature rise (cooling) or a larger shaft is needed"
     ),
 }
-"""What a red margin means, added to its warning."""
+"""What a red margin means, added to its warning ({part}: nut or flank)."""
 
 Status = Literal["green", "amber", "red"]
 
@@ -166,6 +174,10 @@ class DesignCheck(Presented):
     ``[design] bearing_stiffness``."""
     preload_drag_torque: float
     """Catalogue preload drag torque [N·m]."""
+    lost_motion: float
+    """Lost motion at a reversal of the largest axial load F of the spectrum,
+    2 (x_nut(F) + F/K_shaft [+ F/K_bearings]) [m]: x_nut the nut's displacement under F with
+    contacts and bodies; a nut without preload adds its axial play (not an input)."""
     thermal_elongation: float | None
     """Free elongation of the unsupported length at the temperature rise [m]."""
     thermal_pretension: float | None
@@ -186,6 +198,26 @@ class DesignCheck(Presented):
     def spec(self) -> DesignSpec:
         """The case's ``[design]`` section."""
         return self.case.design  # type: ignore[return-value]
+
+    @property
+    def part(self) -> str:
+        """What a loaded flank is called: :func:`loaded_part` of the case."""
+        return loaded_part(self.case)
+
+    @property
+    def preload_drag_torque_min(self) -> float:
+        """Lower end of the makers' band of the preload torque, (1 − DRAG_TORQUE_BAND) T [N·m]."""
+        return (1.0 - DRAG_TORQUE_BAND) * self.preload_drag_torque
+
+    @property
+    def preload_drag_torque_max(self) -> float:
+        """Upper end of the band, (1 + DRAG_TORQUE_BAND) T [N·m]."""
+        return (1.0 + DRAG_TORQUE_BAND) * self.preload_drag_torque
+
+
+def loaded_part(case: Case) -> str:
+    """'nut' for the loaded flanks of a double nut (its two nuts), 'flank' for a single nut's."""
+    return "flank" if case.screw.nuts == 1 else "nut"
 
 
 def load_spectrum(case: Case) -> LoadSpectrum:
@@ -301,6 +333,17 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
                 "N",
             )
         )
+    pretension = check["thermal_pretension"]
+    if pretension is not None and spec.mounting == "fixed-fixed":
+        out.append(
+            Margin(
+                "pretension",
+                "pretension + axial load vs permissible tension",
+                pretension + f_max,
+                check["permissible_tension"],
+                "N",
+            )
+        )
     if check["static_safety_factor"] is not None:
         out.append(
             Margin(
@@ -335,8 +378,37 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     return tuple(out)
 
 
+def _elastic_nut(
+    params: ScrewParameters, case: Case, root: float, largest: float
+) -> tuple[float, float]:
+    """(stiffness at the case's axial load, travel x(F) − x(0) under the largest load F) of the
+    nut with contacts and bodies [N/m, m]. A preloaded nut keeps the spacer interference of
+    F = 0 (one solve, shared); without preload x(0) = 0, the unloaded contacts."""
+    run = partial(elastic_distribution, params, case.loads, root, numerics=case.numerics)
+    solved: dict[float, Distribution] = {}
+    interference = None
+    if params.preload > 0.0:
+        solved[0.0] = run(axial_load=0.0)
+        interference = solved[0.0].interference
+
+    def at(load: float) -> Distribution:
+        if load not in solved:
+            solved[load] = run(axial_load=load, interference=interference)
+        return solved[load]
+
+    stiffness = at(params.axial_load).stiffness
+    if largest == 0.0:
+        return stiffness, 0.0
+    rest = solved[0.0].displacement if 0.0 in solved else 0.0
+    return stiffness, at(largest).displacement - rest
+
+
 def _warn(
-    margins: tuple[Margin, ...], values: dict, computed: tuple[str, ...], spec: DesignSpec
+    margins: tuple[Margin, ...],
+    values: dict,
+    computed: tuple[str, ...],
+    spec: DesignSpec,
+    part: str,
 ) -> None:
     methods = {
         "dynamic_load_rating": "Lundberg-Palmgren",
@@ -355,7 +427,7 @@ def _warn(
         if m.status == "red":
             shown, unit = in_display_units((m.demand, m.capacity), m.unit)
             demand, capacity = (f"{format_number(v)} {unit}".rstrip() for v in shown)
-            hint = f"; {_HINTS[m.name]}" if m.name in _HINTS else ""
+            hint = f"; {_HINTS[m.name].format(part=part)}" if m.name in _HINTS else ""
             warnings.warn(
                 f"{m.label}: {demand} against {capacity}{hint}",
                 DesignWarning,
@@ -390,8 +462,9 @@ def design_check(case: Case) -> DesignCheck:
     running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, flanks)
+    f_max = max(spectrum.loads)
     with recorded_warnings() as distribution_messages:
-        nut_k = elastic_distribution(params, case.loads, root, numerics=case.numerics).stiffness
+        nut_k, travel = _elastic_nut(params, case, root, f_max)
     shaft_k = design.shaft_axial_stiffness(
         root, length, screw.youngs_modulus, spec.mounting, spec.nut_distance
     )
@@ -409,7 +482,7 @@ def design_check(case: Case) -> DesignCheck:
         "rating_life": life,
         "life_hours": design.life_hours(life, spectrum.mean_speed) if running else None,
         "life_travel": design.life_travel(life, geometry.lead),
-        "static_safety_factor": design.static_safety_factor(c0a, max(spectrum.loads)),
+        "static_safety_factor": design.static_safety_factor(c0a, f_max),
         "root_diameter": root,
         "critical_speed": critical_speed(
             root, length, screw.youngs_modulus, screw.density, spec.mounting
@@ -427,6 +500,9 @@ def design_check(case: Case) -> DesignCheck:
         if spec.bearing_stiffness is None
         else design.series_stiffness(axial_k, spec.bearing_stiffness),
         "preload_drag_torque": preload_drag_torque(preload, geometry.lead, geometry.lead_angle),
+        "lost_motion": design.lost_motion(
+            travel, f_max, shaft_k, *filter(None, (spec.bearing_stiffness,))
+        ),
         "thermal_elongation": None
         if rise is None
         else design.thermal_elongation(length, screw.thermal_expansion, rise),
@@ -436,11 +512,11 @@ def design_check(case: Case) -> DesignCheck:
     }
     margins = _margins(values, spec, case)
     with recorded_warnings() as messages:
-        _warn(margins, values, computed, spec)
+        _warn(margins, values, computed, spec, loaded_part(case))
     return DesignCheck(
         case=case,
         margins=margins,
-        warnings=(*distribution_messages, *messages),
+        warnings=tuple(dict.fromkeys((*distribution_messages, *messages))),
         computed_ratings=computed,
         **values,
     )
@@ -459,6 +535,7 @@ def design_scalars(case: Case) -> dict[str, tuple[float, str]]:
         "nut_stiffness": "N/m",
         "contact_stiffness": "N/m",
         "preload_drag_torque": "N*m",
+        "lost_motion": "m",
     }
     return {
         name: (float(getattr(result, name)), unit)

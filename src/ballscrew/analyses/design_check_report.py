@@ -37,7 +37,7 @@ _VALUES: dict[str, tuple[str, str, float, str]] = {
     "critical_speed": ("rad/s", "critical speed (Euler beam)", 60.0 / (2.0 * math.pi), "rpm"),
     "buckling_load": ("N", "buckling load (Euler)", 1e-3, "kN"),
     "permissible_tension": ("N", "permissible tension/compression", 1e-3, "kN"),
-    "dn": ("", "d·n at the highest speed", 1.0, "mm·rpm"),
+    "dn": ("mm·rpm", "d·n at the highest speed", 1.0, "mm·rpm"),
     "contact_stiffness": ("N/m", "nut stiffness, Hertz contacts only", 1e-6, "N/µm"),
     "nut_stiffness": ("N/m", "nut stiffness, contacts and bodies", 1e-6, "N/µm"),
     "catalogue_nut_stiffness": ("N/m", "nut stiffness, catalogue 0.8 K", 1e-6, "N/µm"),
@@ -45,6 +45,9 @@ _VALUES: dict[str, tuple[str, str, float, str]] = {
     "axial_stiffness": ("N/m", "nut + shaft stiffness (supports rigid)", 1e-6, "N/µm"),
     "drive_stiffness": ("N/m", "drive stiffness, nut + shaft + supports", 1e-6, "N/µm"),
     "preload_drag_torque": ("N*m", "preload drag torque", 1.0, "N·m"),
+    "preload_drag_torque_min": ("N*m", "preload drag torque, lower end of the band", 1.0, "N·m"),
+    "preload_drag_torque_max": ("N*m", "preload drag torque, upper end of the band", 1.0, "N·m"),
+    "lost_motion": ("m", "lost motion at a reversal of the largest load", 1e6, "µm"),
     "thermal_elongation": ("m", "thermal elongation", 1e6, "µm"),
     "thermal_pretension": ("N", "pretension for the temperature rise", 1e-3, "kN"),
 }
@@ -175,7 +178,8 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
             "lift_off_load_N": lift_off,
             "lift_off_load_bodies_N": float(body_lift),
             "preload_N": fp,
-            "nuts": nuts,
+            "nuts": result.case.screw.nuts,
+            "flanks": nuts,
         },
     )
 
@@ -217,9 +221,8 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
     dist = ball_distribution(result)
     q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
     fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
-    part = "flank" if result.case.screw.nuts == 1 else "nut"
     for k in range(dist.layout.nuts):
-        ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{part} {k + 1}")
+        ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{result.part} {k + 1}")
         lifted = q[k] <= 0.0
         if lifted.any():
             ax.plot(z[k][lifted] * 1e3, q[k][lifted], "x", c="k", label="lifted off")
@@ -247,9 +250,10 @@ def _life_figure(result: DesignCheck, path: Path) -> Path:
     )
     for k, f in enumerate(result.equivalent_loads):
         if f > 0:
-            ax.axvline(f, ls="--", c=f"C{k + 2}", lw=0.8, label=f"F_bm, nut half {k + 1}")
+            ax.axvline(f, ls="--", c=f"C{k + 2}", lw=0.8, label=f"F_bm, {result.part} {k + 1}")
     if result.rating_life is not None and math.isfinite(result.rating_life):
-        ax.axhline(result.rating_life, ls=":", c="k", lw=0.8, label="rating life, both halves")
+        both = f"both {result.part}s" if result.flanks == 2 else result.part
+        ax.axhline(result.rating_life, ls=":", c="k", lw=0.8, label=f"rating life, {both}")
     ax.set_xlabel("axial load [N]")
     ax.set_ylabel("rating life [rev]")
     legend_outside(ax, fontsize=8)
@@ -262,7 +266,7 @@ def figures(result: DesignCheck) -> list[Figure]:
         Figure(
             "stiffness_curve",
             "Nut displacement and stiffness vs axial load, Hertz contacts only and with the "
-            "elastic shaft and nut body; dashed: lift-off of the second nut.",
+            f"elastic shaft and nut body; dashed: lift-off of the second {result.part}.",
             partial(_stiffness_figure, result),
         ),
         Figure(
@@ -293,15 +297,27 @@ def _value_rows(result: DesignCheck) -> tuple[tuple[object, ...], ...]:
     return tuple(rows)
 
 
+_METHODS = {
+    "dynamic_load_rating": "C_a by Lundberg-Palmgren (Harris & Kotzalas 2006) with C_a ∝ i^0.7 "
+    "over the turns (ISO 281)",
+    "static_load_rating": "C_0a by model '{model}' ({description})",
+}
+
+
 def _ratings_note(result: DesignCheck) -> str:
     if not result.computed_ratings:
         return "Load ratings C_a and C_0a are the catalogue's."
+    model = result.spec.static_rating_model
+    description = design.STATIC_RATING_MODELS.entry(model).description
+    methods = "; ".join(
+        _METHODS[name].format(model=model, description=description)
+        for name in result.computed_ratings
+    )
     return (
         "Load ratings not given in [design] ("
         + ", ".join(result.computed_ratings)
-        + ") are COMPUTED from the geometry: C_a by Lundberg-Palmgren (Harris & Kotzalas 2006) "
-        "with C_a ∝ i^0.7 over the turns (ISO 281), C_0a at 4200 MPa Hertz pressure (ISO 76); "
-        "the maker's values take precedence when known."
+        + f") are COMPUTED from the geometry: {methods}; times the hardness and accuracy factors "
+        "f_H f_ac (theory manual, Load ratings). The maker's values take precedence when known."
     )
 
 
@@ -336,6 +352,24 @@ def _supports_note(result: DesignCheck) -> str:
     return text + ", and so are the support bearings (design.bearing_stiffness)."
 
 
+def _motion_note(result: DesignCheck) -> str:
+    """How the lost motion and the drag-torque band are made."""
+    from ballscrew.analyses.design_check import DRAG_TORQUE_BAND
+
+    play = (
+        "; a nut without preload adds its axial play, which is not an input"
+        if result.flanks == 1
+        else " (no backlash below lift-off)"
+    )
+    band = 100 * DRAG_TORQUE_BAND
+    return (
+        " Lost motion: 2 (x_nut(F) + F/K_shaft [+ F/K_bearings]) at a reversal of the largest "
+        f"axial load F, x_nut with contacts and bodies{play}. Preload drag torque "
+        f"K F_p L/(2π) with a band of ±{band:.0f} % [ASSUMED: the makers' tolerance depends on "
+        "the torque, grade and thread length]."
+    )
+
+
 def _margin_row(m: Margin) -> tuple[str, float, float, str, float, str]:
     """A margin's table row, demand and capacity in one engineering unit (rpm, kN; SI in, as
     ``summary.json`` keeps them)."""
@@ -357,9 +391,9 @@ def sections(result: DesignCheck) -> list[Section]:
                 "capacity / demand: GREEN ≥ 1.25, AMBER ≥ 1, RED < 1. Speed and buckling against "
                 "the makers' 0.8 × critical speed and 0.5 × buckling load (THK, HIWIN). "
                 "A preloaded nut's largest axial load against the lift-off load 2^1.5 F_p, above "
-                "which its second nut (or flank) runs unloaded, with backlash (HIWIN F 3.5-3.7); "
-                "its amber "
-                "band, as every margin's, is a GUESS.",
+                f"which its second {result.part} runs unloaded, with backlash (HIWIN F 3.5-3.7); "
+                "a shaft fixed at both ends, pretensioned for the temperature rise, against its "
+                "permissible tension (THK A-694). The amber band of every margin is a GUESS.",
             ),
             tables=(Table(("check", "demand", "capacity", "unit", "ratio", "status"), margins),),
         ),
@@ -371,7 +405,9 @@ def sections(result: DesignCheck) -> list[Section]:
                 + " Life, static safety, speed and buckling by "
                 "the makers' formulas (THK General Catalog, HIWIN Ballscrews & Accessories); "
                 "nut stiffness from the Hertz contacts of every ball with the elastic shaft "
-                "under the nut and the nut body (theory manual, Loads). " + _supports_note(result),
+                "under the nut and the nut body (theory manual, Loads). "
+                + _supports_note(result)
+                + _motion_note(result),
             ),
             tables=(Table(("quantity", "value"), _value_rows(result)),),
             figures=("stiffness_curve", "ball_loads"),

@@ -92,9 +92,15 @@ class DesignSpec(Model):
         float, Field(ge=1.0, le=10.0, description="load factor f_w (1–1.2 smooth, 2–3.5 shocks)")
     ] = 1.2
     reliability: Reliability = Field(90, description="reliability of the rating life, percent")
-    required_life: quantity("time", "required life in hours of running", gt=0, le=1e11) | None = (
-        None
-    )
+    required_life: (
+        quantity(
+            "time",
+            "required life in hours of the duty cycle, its rest included ([operating]: of running)",
+            gt=0,
+            le=1e11,
+        )
+        | None
+    ) = None
     min_static_safety: Annotated[
         float, Field(gt=0.0, le=20.0, description="smallest allowed f_s = C_0a/F_a,max")
     ] = 1.5

@@ -50,6 +50,15 @@ DEFAULT_PRELOAD_SHARE = {1: 0.02, 2: 0.05}
 """Default preload / C_a: 5 % for a double nut (the makers' 'medium' preload, at most 10 %),
 2 % for a single nut preloaded by oversized balls [GUESS: a typical value, not a maker's rule]."""
 
+DUTY_LOAD_SHARE = {1: 0.04, 2: 0.08}
+"""Axial load of the illustrative duty cycle / the geometric C_a [ASSUMED]: below the lift-off
+load 2^1.5 F_p of the default preload (double nut 14 %, single nut 5.7 % of C_a), so the
+starter case does not run its own nut into backlash."""
+
+SMALLEST_D0 = 1e-3
+"""Nominal diameter [m] at or below which a d0 too small for its ball is taken as a value in the
+wrong unit and blamed on --d0 (the smallest ball screws are about 4 mm)."""
+
 MAX_TURNS = 10.0
 MAX_CIRCUITS = 12
 
@@ -70,7 +79,8 @@ class CatalogueSheet:
     """Circuits per nut."""
     nuts: int = 2
     preload: float | None = None
-    """F_p [N]; None = :data:`DEFAULT_PRELOAD_SHARE` × the computed C_a."""
+    """F_p [N]; None = :data:`DEFAULT_PRELOAD_SHARE` × the computed C_a; 0 = a single nut
+    without preload (one loaded flank)."""
     length: float = 1.0
     """Screw shaft length [m]."""
     nut_length: float | None = None
@@ -143,7 +153,19 @@ def _check_fits(sheet: CatalogueSheet) -> float:
     """The nut length [m] after checking that diameters, lead, ball, turns and nuts fit."""
     d0, lead, ball = sheet.nominal_diameter, sheet.lead, sheet.ball_diameter
     if not ball < d0 / 2.0:
-        raise InputError("--ball", _in_mm(ball), f"it must be smaller than d0/2 = {_in_mm(d0 / 2)}")
+        if d0 <= SMALLEST_D0 and ball < 1e3 * d0 / 2.0:  # d0 in metres taken as mm
+            raise InputError(
+                "--d0",
+                _in_mm(d0),
+                f"a nominal diameter above 2 D_w = {_in_mm(2.0 * ball)}; did you mean "
+                f"{_in_mm(1e3 * d0)}?",
+            )
+        raise InputError(
+            "--ball",
+            _in_mm(ball),
+            f"it must be smaller than d0/2 = {_in_mm(d0 / 2)}"
+            f"{_unit_hint(ball, d0 / 100.0, d0 / 2.0)}",
+        )
     _check_diameters(sheet)
     low, high = ball / 2.0, math.pi * sheet.d_m
     if not low <= lead <= high:
@@ -159,6 +181,10 @@ def _check_fits(sheet: CatalogueSheet) -> float:
             _in_mm(ball),
             f"it must be smaller than the lead {_in_mm(lead)} (a "
             "single-start thread has one groove per lead; a larger ball overlaps the next turn)",
+        )
+    if sheet.preload == 0.0 and sheet.nuts != 1:
+        raise InputError(
+            "--preload", "0 N", "> 0 N for a double nut (0 only for a single nut, --nuts 1)"
         )
     loaded = sheet.turns * sheet.circuits * lead
     nut = sheet.nut_length or loaded + 2.0 * lead
@@ -222,6 +248,8 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
     if preload is None:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     oil = LUBRICANT_LIBRARY[_OIL]
+    duty_load = round(DUTY_LOAD_SHARE[sheet.nuts] * ca, -1)
+    bare = preload == 0.0  # a single nut without preload: its one flank needs a load
     root = "root_diameter = {}   # thread root (minor) diameter from the sheet\n"
     text = _TEMPLATE.format(
         name=json.dumps(name, ensure_ascii=False),  # a TOML basic string, escapes and all
@@ -262,7 +290,25 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
             '"screw.pitch_diameter" = "d_m taken as the nominal diameter d0"\n'
         ),
         length=_mm(sheet.length),
-        duty_load=f"\"{round(0.08 * ca, -1):.6g} N\"",
+        duty_load=f'"{duty_load:.6g} N"',
+        duty_share=f"{DUTY_LOAD_SHARE[sheet.nuts]:.0%}",
+        axial_load=(
+            f'"{duty_load:.6g} N"          # the duty\'s load [ASSUMED]: a nut without preload '
+            "has no stiffness at 0 N"
+            if bare
+            else '"0 N"'
+        ),
+        rest_load=(
+            f'axial_load = "{duty_load:.6g} N"   # the load stays on the nut at rest: a nut '
+            "without preload needs one in every segment\n"
+            if bare
+            else ""
+        ),
+        assumed_axial_load=(
+            '"operating.axial_load" = "the duty\'s load; a nut without preload needs one"\n'
+            if bare
+            else ""
+        ),
         stroke=_mm(0.5 * (sheet.length - sheet.nuts * nut_length)),
         unsupported=_mm(0.9 * sheet.length),
         kinematics_root=_optional(sheet.root_diameter, root, ""),
@@ -377,7 +423,7 @@ circuits = {circuit_count}                     # ball circuits (returns) per nut
 
 [operating]
 preload = {preload}            # {preload_note}; the makers allow at most {max_share}
-axial_load = "0 N"
+axial_load = {axial_load}
 speed = "1000 rpm"               # [ASSUMED]
 
 [numerics]
@@ -415,7 +461,7 @@ accuracy_grade = {grade}               # C{grade} / P{grade} [ASSUMED]
 
 # A one-hour working cycle for `ballscrew duty` (run duty_repeat times, at the top) and the life
 # of `ballscrew check` [ASSUMED, illustrative: write your machine's]: 40 min of strokes at
-# 1000 rpm under 8 % of the geometric C_a, then 20 min of rest.
+# 1000 rpm under {duty_share} of the geometric C_a, then 20 min of rest.
 [[duty]]
 speed = "1000 rpm"
 axial_load = {duty_load}
@@ -425,7 +471,7 @@ duration = "40 min"
 
 [[duty]]
 speed = 0
-duration = "20 min"
+{rest_load}duration = "20 min"
 
 # The values above that are neither on the sheet nor computed from it (the ball count and the
 # oil's density are computed): every summary and report lists them with the guesses. Delete a
@@ -448,4 +494,4 @@ duration = "20 min"
 "design.load_factor" = "smooth running without shocks (f_w 1-1.2)"
 "design.accuracy_grade" = "a typical precision grade"
 "duty" = "an illustrative cycle, not your machine's"
-{assumed_preload}{assumed_nut_length}"""
+{assumed_preload}{assumed_nut_length}{assumed_axial_load}"""

@@ -9,8 +9,11 @@ import typer
 from ballscrew.commands._common import user_errors_exit_2
 
 
-def _si(option: str, text: str, kind: str, bare_unit: str, scale: float) -> float:
-    """``text`` in SI: a bare number is in ``bare_unit`` (× ``scale``), else a unit string."""
+def _si(
+    option: str, text: str, kind: str, bare_unit: str, scale: float, zero: bool = False
+) -> float:
+    """``text`` in SI: a bare number is in ``bare_unit`` (× ``scale``), else a unit string;
+    > 0 (≥ 0 where ``zero``)."""
     from ballscrew.errors import InputError
     from ballscrew.units import to_si
 
@@ -21,8 +24,9 @@ def _si(option: str, text: str, kind: str, bare_unit: str, scale: float) -> floa
             value = to_si(text, kind)
         except ValueError:
             raise InputError(option, text, f"a number in {bare_unit} or e.g. '40 mm'") from None
-    if not value > 0.0 or value == float("inf"):
-        raise InputError(option, text, f"a finite value > 0 (a bare number is in {bare_unit})")
+    if not (value >= 0.0 if zero else value > 0.0) or value == float("inf"):
+        bound = ">= 0" if zero else "> 0"
+        raise InputError(option, text, f"a finite value {bound} (a bare number is in {bare_unit})")
     return value
 
 
@@ -42,7 +46,7 @@ def init(
         str | None,
         typer.Option(
             help="preload in N (or '2 kN'); default 5 % (double nut) or 2 % (single nut) of "
-            "the geometric C_a [GUESS]"
+            "the geometric C_a [GUESS]; 0 for a single nut without preload"
         ),
     ] = None,
     length: Annotated[str, typer.Option(help=f"screw shaft length, {_MM}")] = "1000",
@@ -92,7 +96,7 @@ def init(
         turns=t,
         circuits=circuits,
         nuts=nuts,
-        preload=None if preload is None else _si("--preload", preload, "force", "N", 1.0),
+        preload=None if preload is None else _si("--preload", preload, "force", "N", 1.0, True),
         length=_si("--length", length, "length", _MM, 1e-3),
         nut_length=optional_mm("--nut-length", nut_length),
         pitch_diameter=optional_mm("--dp", dp),

@@ -48,6 +48,7 @@ from ballscrew.design.shaft import (
 from ballscrew.design.stiffness import (
     CATALOGUE_RIGIDITY_SHARE,
     catalogue_nut_rigidity,
+    lost_motion,
     nut_load_deflection,
     nut_stiffness,
     series_stiffness,
@@ -76,6 +77,7 @@ __all__ = [
     "hardness_factor",
     "life_hours",
     "life_travel",
+    "lost_motion",
     "maker_buckling_load",
     "maker_critical_speed",
     "nut_load_deflection",

@@ -13,6 +13,9 @@
   lead has the same two loaded flanks (``nuts = 2`` here, with the compliance of one flank); a
   single nut without preload carries F_a on one flank (``nuts = 1``).
 * Bodies in series: 1/K = Σ 1/K_i.
+* Lost motion at a reversal of the axial load F: 2 (x_nut(F) + F Σ 1/K_i) over the nut's own
+  displacement x_nut and the linear springs in series with it (shaft, bearings). A preloaded nut
+  has no backlash below lift-off; a nut without preload adds its axial play.
 """
 
 from __future__ import annotations
@@ -27,6 +30,7 @@ from ballscrew.validation import nonnegative, nonnegative_array, positive
 __all__ = [
     "CATALOGUE_RIGIDITY_SHARE",
     "catalogue_nut_rigidity",
+    "lost_motion",
     "nut_load_deflection",
     "nut_stiffness",
     "series_stiffness",
@@ -84,3 +88,15 @@ def series_stiffness(*stiffnesses: float) -> float:
     if not stiffnesses:
         raise InputError("stiffnesses", (), "one or more stiffnesses > 0 N/m")
     return 1.0 / sum(1.0 / positive("stiffness", k, "N/m") for k in stiffnesses)
+
+
+def lost_motion(nut_travel: float, load: float, *stiffnesses: float) -> float:
+    """Lost motion 2 (x_nut + F Σ 1/K_i) at a reversal of the axial load F, m.
+
+    ``nut_travel`` x_nut(F) is the nut's displacement under F from its unloaded (preloaded)
+    state; ``stiffnesses`` the springs in series with it [N/m]. The nut and each spring deflect
+    by as much in either direction, so the reversal travels twice the deflection.
+    """
+    x = nonnegative("nut_travel", nut_travel, "m")
+    f = nonnegative("load", load, "N")
+    return 2.0 * (x + f * sum(1.0 / positive("stiffness", k, "N/m") for k in stiffnesses))

@@ -443,11 +443,19 @@ def _preload_interference(
     preload_hat: float,
     law: Law,
 ) -> float:
-    """ĝ at which nut 1 carries the preload with no external load (scaled units)."""
+    """ĝ at which nut 1 carries the preload with no external load (scaled units).
+
+    Newton starts from equal ball loads with ĝ such that the median ball has the approach of
+    that load: the bodies' strain and the ring's widening at equal loads, a@q₀, reach several
+    Hertz approaches on a long nut, and a start with ĝ = q₀^(2/3) alone left one nut with no
+    loaded ball, where x and ĝ act alike and the Jacobian is singular (15 turns per nut failed).
+    """
     n = sigma.size
     g = np.stack([force_row, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
     b = np.stack([sigma, np.ones(n)], axis=1)
-    start = np.concatenate([np.full(n, preload_hat), [0.0, preload_hat ** (2.0 / 3.0)]])
+    q0 = np.full(n, preload_hat)
+    g0 = preload_hat ** (2.0 / 3.0) - float(np.median(a @ q0 + c))
+    start = np.concatenate([q0, [0.0, g0]])
     y, _, _ = _newton(a, b, c, g, np.array([0.0, preload_hat]), start, law)
     return float(y[-1])
 
