@@ -128,38 +128,20 @@ def test_skf_cell_shear_is_mu_sl_p_where_the_film_is_at_its_cap(physics_case):
     nu = model.viscosity / model.lubricant_density
     assert weights.share == pytest.approx(skf_weighting(omega, nu, 0.040), rel=1e-12)
     load, a, b, radius, rate = 35.0, 4.1e-5, 3.6e-4, 2.43e-3, 20.0
-    grid = differential_slip_power(
-        load,
-        a,
-        b,
-        radius,
-        rate,
-        psi=weights.share,
-        boundary_friction=weights.boundary_friction,
-        limiting_shear=weights.film_friction,
-        film_thickness=1e-9,  # thin: the Barus film shear exceeds μ_EHL p on every cell
-        viscosity=model.viscosity,
-        pressure_viscosity=model.pressure_viscosity,
-        cells=64,
-    )
     mu_sl = skf_sliding_friction(weights.share)
-    assert grid == pytest.approx(heathcote_power(load, b, radius, rate, mu_sl), rel=3e-3)
-    # a film that carries nothing (h = 0, ψ = 1 of a starved contact) is the limit h → 0: the
-    # film part at its cap, not a contact without friction
-    none = differential_slip_power(
-        load,
-        a,
-        b,
-        radius,
-        rate,
-        psi=weights.share,
-        boundary_friction=weights.boundary_friction,
-        limiting_shear=weights.film_friction,
-        film_thickness=0.0,
-        viscosity=model.viscosity,
-        pressure_viscosity=model.pressure_viscosity,
-        cells=64,
-    )
-    assert none == pytest.approx(heathcote_power(load, b, radius, rate, mu_sl), rel=3e-3)
+    # thin: the Barus film shear exceeds μ_EHL p on every cell; and a film that carries nothing
+    # (h = 0, ψ = 1 of a starved contact), the limit h → 0: the film part at its cap, not a
+    # contact without friction
+    weighted = {
+        "psi": weights.share,
+        "boundary_friction": weights.boundary_friction,
+        "limiting_shear": weights.film_friction,
+    }
+    oil = {"viscosity": model.viscosity, "pressure_viscosity": model.pressure_viscosity}
+    for film in (1e-9, 0.0):
+        grid = differential_slip_power(
+            load, a, b, radius, rate, film_thickness=film, cells=64, **weighted, **oil
+        )
+        assert grid == pytest.approx(heathcote_power(load, b, radius, rate, mu_sl), rel=3e-3)
     # dry or at rest the law is pure boundary friction μ_bl
     assert traction_weights(model, 0.3, 0.0).share == 1.0
