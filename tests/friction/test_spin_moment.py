@@ -88,7 +88,7 @@ def test_nut_control_stays_within_the_friction_of_the_nut_contact(model):
     for flank in (1, -1):
         state = solve_ball(model, OMEGA, 1500.0, flank, 2)
         a, b = model.hertz_semi_axes("nut", state.load_nut)
-        u_e = abs(state.ball_speed)
+        u_e = model.entrainment_speed(state.motion, "nut")
         mu = _capped_friction(model, model.sharing(state.load_nut, u_e, "nut").psi)
         assert state.traction_coefficient_nut < mu
         assert abs(state.pivot_moment_nut) < _spin_moment(state.load_nut, b, a, mu)
