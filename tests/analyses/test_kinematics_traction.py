@@ -10,10 +10,9 @@ import pytest
 import ballscrew
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_kinematics, computed_drag_torque
-from ballscrew.case import with_overrides
 
 RPM = 2.0 * math.pi / 60.0
-MIXED = 300.0 * RPM  # wear reference screw: traction in the mixed regime under both laws
+MIXED = 300.0 * RPM  # wear reference screw with σ_Λ = 50 nm: mixed under both laws (Λ ≈ 2.4)
 # (film cap, boundary friction) of each traction law
 LIMITS = {"film": (0.07, 0.1), "skf": (0.05, 0.15)}
 
@@ -26,24 +25,37 @@ def _case(path, law: str, level: int):
             "friction.traction": law,
             "operating.axial_load": 0.0,
             "kinematics.level": level,
+            "tcr.rms_roughness": 50e-9,
+            "tcr.rms_slope": 0.05,
         },
     )
 
 
 def test_default_numbers_are_unchanged(gao_case_path, wear_case_path):
     # the film law's numbers before the traction law reached the kinematics (commit 4399cba), at
-    # the entrainment speed of that time (the ball-centre speed V)
+    # the entrainment speed of that time (the ball-centre speed V), with the JGP share on the
+    # asperity heights of σ_Λ (E6.6) since; on the cell's σ (E5.3) the drag torques were
+    # 0.11867 (gao, 1000 rpm) and 0.11369 N m (wear reference screw on its own raceway, 100 rpm)
+    # and the Level-2 ball 0.094970 m/s, 12.7356 rad/s
     old = {"kinematics.entrainment": "ball_centre"}
     gao = ballscrew.load_case(gao_case_path, old)
     state = ball_kinematics(gao)
     assert state.ball_speed == pytest.approx(0.9333272113362386, rel=1e-9)
     assert state.spin_screw == pytest.approx(73.81469929037536, rel=1e-9)
-    assert computed_drag_torque(gao) == pytest.approx(0.1186656857617516, rel=1e-9)
-    wear = with_overrides(_case(wear_case_path, "film", 2), old)
-    assert computed_drag_torque(wear, 100.0 * RPM) == pytest.approx(0.11368954621573293, rel=1e-9)
+    assert computed_drag_torque(gao) == pytest.approx(0.15308162556612623, rel=1e-9)
+    wear = ballscrew.load_case(
+        wear_case_path,
+        {
+            "friction.model": "ball_model",
+            "operating.axial_load": 0.0,
+            "kinematics.level": 2,
+            **old,
+        },
+    )
+    assert computed_drag_torque(wear, 100.0 * RPM) == pytest.approx(0.12312884190315768, rel=1e-9)
     state = ball_kinematics(wear, 100.0 * RPM)
-    assert state.ball_speed == pytest.approx(0.094970444065324, rel=1e-9)
-    assert state.spin_screw == pytest.approx(12.735562231188782, rel=1e-9)
+    assert state.ball_speed == pytest.approx(0.09513755169333539, rel=1e-9)
+    assert state.spin_screw == pytest.approx(13.1421858901018, rel=1e-9)
 
 
 @pytest.mark.parametrize("level", [1, 2])

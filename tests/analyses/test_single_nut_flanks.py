@@ -93,10 +93,10 @@ def test_offset_lead_drag_is_both_halves_by_hand(case):
 
 
 def test_kinematics_report_entries_add_up_to_the_contact_losses(case):
-    """The per-flank drag entries use the balls of a flank (27 for an offset-lead half)."""
+    """The per-flank contact-loss entries use the balls of a flank (27 for an offset-lead half)."""
     run = run_kinematics(case(**OFFSET, **{"kinematics.speed_points": 3}), SPEED, level=0)
     summary = run.summary()
-    parts = [entry["drag_torque"]["value"] for entry in summary["nuts"].values()]
+    parts = [entry["contact_losses"]["value"] for entry in summary["nuts"].values()]
     total = summary["drag_torque"]["contact_losses"]["value"]
     assert len(parts) == 2
     assert sum(parts) == pytest.approx(total, rel=1e-12)

@@ -88,7 +88,7 @@ def test_nut_control_stays_within_the_friction_of_the_nut_contact(model):
     for flank in (1, -1):
         state = solve_ball(model, OMEGA, 1500.0, flank, 2)
         a, b = model.hertz_semi_axes("nut", state.load_nut)
-        u_e = abs(state.ball_speed)
+        u_e = model.entrainment_speed(state.motion, "nut")
         mu = _capped_friction(model, model.sharing(state.load_nut, u_e, "nut").psi)
         assert state.traction_coefficient_nut < mu
         assert abs(state.pivot_moment_nut) < _spin_moment(state.load_nut, b, a, mu)
@@ -116,17 +116,23 @@ def test_sliding_at_the_screw_contact_lies_between_its_largest_slip_and_their_su
 )
 def test_reported_traction_coefficient_follows_the_regime(wear_case_path, law, boundary, film):
     """Breakaway is boundary friction, full film the film's cap, the mixed regime in between;
-    the catalogue model reports none."""
+    the catalogue model reports none. A raceway of σ_Λ = 50 nm runs mixed at 100 rpm."""
     case = ballscrew.load_case(
         wear_case_path,
-        {"friction.model": "ball_model", "friction.traction": law, "operating.axial_load": 0.0},
+        {
+            "friction.model": "ball_model",
+            "friction.traction": law,
+            "operating.axial_load": 0.0,
+            "tcr.rms_roughness": 50e-9,
+            "tcr.rms_slope": 0.05,
+        },
     )
     rest, mixed, fast = (friction_torque(case, speed=w) for w in (0.0, OMEGA, 3000.0 * RPM))
     assert rest.traction_coefficient == pytest.approx(boundary)
     assert film < mixed.traction_coefficient < boundary
-    # Λ = h_c/σ over the measurement band (E6.6); the traction share ψ comes from the asperity
-    # model's own cell σ, so the film's cap is reached while Λ is still below 1
-    assert fast.film_parameter > 2.0 * mixed.film_parameter
+    # Λ = h_c/σ_Λ (E6.6) and the traction's share ψ(Λ) read the same σ: mixed at 1 < Λ < 3,
+    # the film's cap in full film (Λ > 3)
+    assert 1.0 < mixed.film_parameter < 3.0 < fast.film_parameter
     assert fast.traction_coefficient == pytest.approx(film, abs=0.005)
     catalogue = ballscrew.load_case(wear_case_path, {"friction.model": "catalogue"})
     assert friction_torque(catalogue, speed=OMEGA).traction_coefficient is None

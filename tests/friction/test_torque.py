@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 
@@ -12,6 +13,7 @@ from ballscrew.analyses.friction import FourPointContactWarning, friction_torque
 from ballscrew.analyses.kinematics import ball_model, computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.case import CaseError, with_overrides
+from ballscrew.contact import hertz
 from ballscrew.errors import InputError
 from ballscrew.friction import (
     FRICTION_MODELS,
@@ -20,10 +22,10 @@ from ballscrew.friction import (
     ball_losses,
     hysteresis_force,
     nut_friction_torque,
-    regime,
 )
 from ballscrew.kinematics.balance import solve_ball
 from ballscrew.loads import preload_drag_torque
+from ballscrew.lubrication import regime
 
 LEAD, LAMBDA = 0.01, math.atan(0.01 / (math.pi * 0.04))
 
@@ -183,9 +185,10 @@ def test_ball_parts_are_the_kinematics_drag_plus_hysteresis(wear_case_path, sing
 
 
 @pytest.mark.parametrize("level", [0, 2])
-def test_film_parameter_is_the_screw_contacts_separation_over_the_roughness(ball_case, level):
-    """Λ is h/σ of the JGP sharing at A of the first loaded nut, at the state's load and rolling
-    speed (the nut contact B has another load and film and must not be read)."""
+def test_film_parameter_is_the_screw_contacts_whole_load_film_over_the_roughness(ball_case, level):
+    """Λ is h_c/σ_Λ of the whole ball load at A of the first loaded nut, at the state's load and
+    rolling speed (the operating point's definition; the nut contact B has another load and
+    film and must not be read), and ψ is the JGP share at A."""
     model = ball_model(ball_case)
     force, flank = next(
         (n.force, n.flank)
@@ -193,12 +196,45 @@ def test_film_parameter_is_the_screw_contacts_separation_over_the_roughness(ball
         if n.force > 0.0
     )
     state = solve_ball(model, 100.0, force, flank, level)
-    sharing = model.sharing(state.load_screw, model.entrainment_speed(state.motion))
-    expected = sharing.separation / model.surface.film_roughness
+    u_a = model.entrainment_speed(state.motion)
+    expected = model.film(state.load_screw, u_a).central / model.surface.film_roughness
     losses = ball_losses(model, 100.0, ((force, flank),), level=level)
     assert losses.film_parameter == pytest.approx(expected, rel=1e-9)
-    nut_side = model.sharing(state.load_nut, abs(state.ball_speed), "nut").separation
-    assert nut_side / model.surface.rms_height != pytest.approx(expected, rel=1e-3)
+    assert losses.asperity_share == pytest.approx(model.sharing(state.load_screw, u_a).psi)
+    u_b = model.entrainment_speed(state.motion, "nut")
+    nut_side = model.film(state.load_nut, u_b, "nut").central / model.surface.film_roughness
+    assert nut_side != pytest.approx(expected, rel=1e-3)
+
+
+def test_hysteresis_rolls_at_the_contacts_rolling_speed_without_lead(ball_case):
+    """(F4) at Level 0 without lead: both contacts roll at u_e = ω_s d_m (1 − γ²)/4 (E2.8), so
+    T_hyst = Z Σ_{A,B} α (3/16) Q a/R_x · d_m (1 − γ²)/4 by hand, (1 + γ) times the loss at the
+    ball-centre speed V = ω_s d_m (1 − γ)/4 that the ``ball_centre`` rule keeps; the heat is
+    T ω_s, half of A's into the screw."""
+    model = ball_model(ball_case)
+    g = dataclasses.replace(model.geometry, lead=1e-9)
+    flat = dataclasses.replace(model, geometry=g)
+    alpha, force = 0.01, 1500.0
+    losses = ball_losses(flat, 100.0, ((force, 1),), hysteresis=alpha)
+    load = force / (model.balls * math.sin(g.contact_angle))  # (Q1) at λ = 0
+    gamma = g.ball_diameter * math.cos(g.contact_angle) / g.pitch_diameter
+    per_contact = []
+    for contact in ("screw", "nut"):
+        c = flat.curvature(contact)
+        a = hertz(c.rx, c.ry, flat.e_star(contact), load).a
+        per_contact.append(model.balls * alpha * 3 / 16 * load * a / c.rx)
+    at_a, hand = (
+        g.pitch_diameter * (1 - gamma**2) / 4 * t for t in (per_contact[0], sum(per_contact))
+    )
+    assert losses.hysteresis == pytest.approx(hand, rel=1e-6)
+    free = ball_losses(flat, 100.0, ((force, 1),), hysteresis=0.0)
+    assert losses.total - free.total == pytest.approx(hand, rel=1e-9)
+    assert losses.screw_share - free.screw_share == pytest.approx(0.5 * at_a, rel=1e-6)
+    centre = dataclasses.replace(flat, entrainment="ball_centre")
+    old = ball_losses(centre, 100.0, ((force, 1),), hysteresis=alpha).hysteresis
+    assert losses.hysteresis / old == pytest.approx(1 + gamma, rel=1e-6)
+    still = ball_losses(flat, 0.0, ((force, 1),), hysteresis=alpha)
+    assert still.hysteresis == pytest.approx(hand, rel=1e-6)  # the limit ω_s → 0⁺
 
 
 def test_four_point_balls_count_their_train_once(ball_case):

@@ -10,7 +10,7 @@ import pytest
 import ballscrew
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_model
-from ballscrew.case import CaseError
+from ballscrew.case import CaseError, with_overrides
 from ballscrew.friction.groove_slip import differential_slip_power, heathcote_power
 from ballscrew.kinematics.balance import solve_ball
 from ballscrew.kinematics.torque import ball_drag
@@ -69,12 +69,13 @@ def test_unknown_law_is_a_one_line_error(wear_case_path):
 
 @pytest.mark.parametrize(
     ("level", "rpm", "total"),
-    # the ball model's torques before the rival law existed (commit 795fb9e), default law, at
-    # the entrainment speed of that time (the ball-centre speed V)
+    # the ball model's torques, default law, at the entrainment speed of the ball-centre speed
+    # V: those before the rival law existed (commit 795fb9e; 0.19186, 0.26263, 0.19454 N m)
+    # with the JGP share on the asperity heights of σ_Λ (E6.6) instead of the cell's σ (E5.3)
     [
-        (1, 100.0, 0.19186219023576206),
-        (1, 3000.0, 0.2626266321093834),
-        (2, 100.0, 0.1945427246332133),
+        (1, 100.0, 0.20083663518246525),
+        (1, 3000.0, 0.2997285541876681),
+        (2, 100.0, 0.20435820619124825),
     ],
 )
 def test_default_numbers_are_unchanged(physics_case, level, rpm, total):
@@ -92,13 +93,16 @@ def test_default_numbers_are_unchanged(physics_case, level, rpm, total):
 
 
 def test_skf_law_raises_the_torque_in_mixed_and_lowers_it_in_full_film(physics_case):
-    mixed = [friction_torque(_law(physics_case, n), speed=100.0 * RPM) for n in ("film", "skf")]
-    assert mixed[0].regime != "EHL"
+    """On a raceway of σ_Λ = 50 nm: mixed at 100 rpm, full film at 3000 rpm."""
+    smooth = with_overrides(physics_case, {"tcr.rms_roughness": 50e-9, "tcr.rms_slope": 0.05})
+    mixed = [friction_torque(_law(smooth, n), speed=100.0 * RPM) for n in ("film", "skf")]
+    assert mixed[0].regime == "mixed"
     # μ_sl ≈ 0.132 at φ_bl ≈ 0.82 against the film law's ≈ 0.08: sliding and slip at B rise
     assert mixed[1].parts["sliding"] > 1.3 * mixed[0].parts["sliding"]
     assert mixed[1].parts["groove_slip"] > mixed[0].parts["groove_slip"]
     assert mixed[1].total > mixed[0].total
-    full = [friction_torque(_law(physics_case, n), speed=3000.0 * RPM) for n in ("film", "skf")]
+    full = [friction_torque(_law(smooth, n), speed=3000.0 * RPM) for n in ("film", "skf")]
+    assert full[0].regime == "EHL"
     # μ_EHL = 0.05 < Λ_L = 0.07 once φ_bl → 0
     assert full[1].parts["sliding"] < full[0].parts["sliding"]
 
@@ -124,21 +128,20 @@ def test_skf_cell_shear_is_mu_sl_p_where_the_film_is_at_its_cap(physics_case):
     nu = model.viscosity / model.lubricant_density
     assert weights.share == pytest.approx(skf_weighting(omega, nu, 0.040), rel=1e-12)
     load, a, b, radius, rate = 35.0, 4.1e-5, 3.6e-4, 2.43e-3, 20.0
-    grid = differential_slip_power(
-        load,
-        a,
-        b,
-        radius,
-        rate,
-        psi=weights.share,
-        boundary_friction=weights.boundary_friction,
-        limiting_shear=weights.film_friction,
-        film_thickness=1e-9,  # thin: the Barus film shear exceeds μ_EHL p on every cell
-        viscosity=model.viscosity,
-        pressure_viscosity=model.pressure_viscosity,
-        cells=64,
-    )
     mu_sl = skf_sliding_friction(weights.share)
-    assert grid == pytest.approx(heathcote_power(load, b, radius, rate, mu_sl), rel=3e-3)
+    # thin: the Barus film shear exceeds μ_EHL p on every cell; and a film that carries nothing
+    # (h = 0, ψ = 1 of a starved contact), the limit h → 0: the film part at its cap, not a
+    # contact without friction
+    weighted = {
+        "psi": weights.share,
+        "boundary_friction": weights.boundary_friction,
+        "limiting_shear": weights.film_friction,
+    }
+    oil = {"viscosity": model.viscosity, "pressure_viscosity": model.pressure_viscosity}
+    for film in (1e-9, 0.0):
+        grid = differential_slip_power(
+            load, a, b, radius, rate, film_thickness=film, cells=64, **weighted, **oil
+        )
+        assert grid == pytest.approx(heathcote_power(load, b, radius, rate, mu_sl), rel=3e-3)
     # dry or at rest the law is pure boundary friction μ_bl
     assert traction_weights(model, 0.3, 0.0).share == 1.0

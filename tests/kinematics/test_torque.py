@@ -7,6 +7,7 @@ import math
 import pytest
 
 import ballscrew
+from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import computed_drag_torque, speed_sweep
 from ballscrew.kinematics.torque import efficiency_drag_torque
 
@@ -45,10 +46,23 @@ def test_ball_model_torque_grows_with_preload(ref_case):
 
 def test_dry_case_uses_boundary_friction_only(ref_case):
     dry = updated(ref_case, medium={"viscosity": None, "pressure_viscosity": None})
-    wet = computed_drag_torque(ref_case, OMEGA)
-    assert computed_drag_torque(dry, OMEGA) > wet  # μ_b = 0.1 on all of the load
+    # a raceway of σ_Λ = 50 nm runs mixed (Λ ≈ 1.1): less than μ_b = 0.1 on all of the load
+    smooth = updated(ref_case, tcr={"rms_roughness": 50e-9, "rms_slope": 0.05})
+    assert computed_drag_torque(dry, OMEGA) > computed_drag_torque(smooth, OMEGA)
     assert computed_drag_torque(dry, 0.0) == pytest.approx(
         computed_drag_torque(dry, OMEGA), rel=1e-9
+    )
+
+
+def test_boundary_film_gives_the_dry_traction(ref_case):
+    """Λ = h_c/σ_Λ ≈ 0.04 on the reference raceway: the JGP share on the same σ_Λ is ψ → 1, so
+    the traction at A is the dry contact's boundary friction (the film adds EHL rolling only)."""
+    ball = {"model": "ball_model"}
+    wet = friction_torque(updated(ref_case, friction=ball), speed=OMEGA)
+    dry = updated(ref_case, friction=ball, medium={"viscosity": None, "pressure_viscosity": None})
+    assert wet.film_parameter < 0.1 and wet.asperity_share > 1.0 - 1e-9
+    assert wet.parts["sliding"] == pytest.approx(
+        friction_torque(dry, speed=OMEGA).parts["sliding"], rel=1e-6
     )
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
@@ -11,6 +12,7 @@ import ballscrew
 from ballscrew.analyses.kinematics import ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.tcr_models import gaussian_joint
+from ballscrew.fractal import yan_komvopoulos as yk
 from ballscrew.lubrication import AsperitySurface, composite_roughness
 
 
@@ -67,3 +69,58 @@ def test_a_rough_ball_adds_its_sigma_in_quadrature():
     band = (smooth.tcr.sampling_length, smooth.tcr.cutoff_length)
     expected = math.hypot(sigma, composite_roughness(1.5, 1e-10, *band))
     assert ball_model(other).surface.film_roughness == pytest.approx(expected, rel=1e-12)
+
+
+def test_the_share_reads_the_asperity_heights_of_the_film_parameter():
+    """The JGP share of the ball model sees the asperities at h through the Gaussian bearing
+    ratio of σ_Λ (E5.15): at h = t σ_Λ the cell's largest contact is a_l = (3 − Ds)/(Ds − 1)
+    · ½ erfc(t/√2) ΔA whatever the cell's own σ (E5.3), which the wear model keeps."""
+    base = {"Ds": 2.59, "G": 9e-10, "e_star": 1.13e11, "hardness": 6.5e9, "cell_area": 1e-10}
+    cell = AsperitySurface(**base, roughness=(8e-4, 2.5e-6))
+    film = cell.film_heights
+    sigma = composite_roughness(1.59, 9e-10, 8e-4, 2.5e-6)
+    assert film.rms_height == pytest.approx(sigma, rel=1e-12) == film.film_roughness
+    assert cell.rms_height == pytest.approx(34e-9, rel=0.05)  # one 10 µm cell, (E5.3)
+    for t in (0.5, 1.0, 2.0):
+        a_l = 0.41 / 1.59 * 0.5 * math.erfc(t / math.sqrt(2)) * 1e-10
+        force = yk.total_force(a_l, 2.59, 9e-10, 1.13e11, 6.5e9)
+        assert film.pressure(t * sigma) == pytest.approx(force / 1e-10, rel=1e-12)
+
+
+@pytest.fixture(scope="module")
+def wear_model():
+    """The ball model of the wear reference screw at 100 rpm and its ball load at 1500 N."""
+    case = ballscrew.load_case("examples/wear_step_stress.toml")
+    model = ball_model(case)
+    g = model.geometry
+    load = 1500.0 / (model.balls * math.sin(g.contact_angle) * math.cos(g.lead_angle))
+    return model, load
+
+
+@pytest.mark.parametrize("sigma", [30e-9, 50e-9, 100e-9, 300e-9])
+def test_the_share_follows_the_regimes_of_the_film_parameter(wear_model, sigma):
+    """ψ and Λ read one σ: the asperities carry most of the load in boundary lubrication
+    (Λ < 1) and almost none in full film (Λ > 3) (Hamrock 1994's regimes), and ψ falls as the
+    film thickens."""
+    model, load = wear_model
+    model = dataclasses.replace(model, surface=dataclasses.replace(model.surface, roughness=sigma))
+    shares = []
+    for u_e in (0.01, 0.1, 1.0, 10.0):
+        lam = model.film(load, u_e).central / sigma
+        psi = model.sharing(load, u_e).psi
+        shares.append(psi)
+        if lam < 1.0:
+            assert psi > 0.5, (lam, psi)
+        if lam > 3.0:
+            assert psi < 0.01, (lam, psi)
+    assert shares == sorted(shares, reverse=True)
+
+
+def test_a_rough_ball_raises_the_asperity_share():
+    """The ball's σ over the band adds in quadrature to σ_Λ (Tallian 1967), so a rough ball
+    carries more of the load on asperities at the same film."""
+    smooth = ballscrew.load_case("examples/gao2019_tcr.toml")
+    twin = {"surface.ball": {"D": smooth.surface.D, "G": smooth.surface.G}}
+    rough = ballscrew.load_case("examples/gao2019_tcr.toml", twin)
+    shares = [ball_model(c).sharing(50.0, 5.0).psi for c in (smooth, rough)]
+    assert 0.0 < shares[0] < shares[1]

@@ -361,7 +361,9 @@ def test_thk_preload_torque_example_by_the_physics_model(
             *BALL_MODEL_ASSUMPTIONS[1:3],
             *extra,
         ),
-        known_miss=True,
+        # speed_spread without lead or ball errors: −29.5 % since the JGP share reads σ_Λ
+        # (boundary traction μ_b = 0.1 at Λ = 0.2; −68 % before), inside the band by 0.5 %
+        known_miss=suffix != "_speed_spread_none",
     )
 
 

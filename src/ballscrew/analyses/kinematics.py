@@ -50,7 +50,13 @@ from ballscrew.kinematics.model import BallModel
 from ballscrew.kinematics.sliding import SlidingField, sliding_field, sliding_field_closed_form
 from ballscrew.kinematics.torque import BallDrag, ball_drag
 from ballscrew.loads import preload_drag_torque
-from ballscrew.lubrication import AsperitySurface, LoadSharing, asperity_pressure
+from ballscrew.lubrication import (
+    AsperitySurface,
+    FilmThickness,
+    LoadSharing,
+    asperity_pressure,
+    film_parameter,
+)
 from ballscrew.units import format_quantity
 from ballscrew.validation import case_with, positive
 
@@ -254,8 +260,9 @@ class SpeedSweep:
     spin_screw: FloatArray
     asperity_share: FloatArray
     """ψ at A (1 without lubricant)."""
-    film_thickness: FloatArray
-    """h_c at A at the film-borne load [m] (NaN without lubricant)."""
+    separation: FloatArray
+    """Mean-plane separation h at A under the JGP share, h_c of the film-borne load (E6.2) [m]
+    (NaN without lubricant)."""
     model_torque: FloatArray
     """Ball-model drag torque (all nuts) [N m]."""
     catalogue_torque: float
@@ -487,13 +494,24 @@ class KinematicsRun(Presented):
     """The case that was solved."""
     warnings: tuple[str, ...] = ()
     """Speed-limit messages and warnings raised while solving (one line each)."""
-    nut_sharing: LoadSharing | None = None
-    """JGP load sharing and film at the nut contact B of nut 1 (``fields.sharing`` is A's)."""
+    films: tuple[FilmThickness | None, FilmThickness | None] = (None, None)
+    """Hamrock–Dowson films at A and B of nut 1 at their whole ball loads, the films of the
+    film parameter Λ = h_c/σ_Λ (None dry or at rest); ``fields.sharing`` holds A's JGP share
+    and separation."""
     entrainment: tuple[float, float] = (0.0, 0.0)
     """Entrainment speeds u_e at A and B of nut 1 at the case speed (E2.8) [m/s]."""
+    roughness: float = math.nan
+    """Composite RMS roughness σ_Λ of the screw raceway (E6.6) [m]: the σ of the film parameter
+    and of the asperity heights of the JGP share."""
 
     analysis: ClassVar[str] = "kinematics"
     presentation: ClassVar[ModuleType] = kinematics_report
+
+    @property
+    def film_parameter(self) -> float:
+        """Λ = h_c/σ_Λ (E6.6) at A of nut 1 at its whole ball load (NaN dry or at rest)."""
+        film = self.films[0]
+        return math.nan if film is None else film_parameter(film.central, self.roughness)
 
     @property
     def title(self) -> str:
@@ -569,6 +587,10 @@ def run_kinematics(
         lubricated=model.lubricated,
         case=case,
         warnings=tuple(dict.fromkeys(messages + raised)),
-        nut_sharing=model.sharing(first.load_nut, entrainment[1], "nut"),
+        films=(
+            model.film(first.load_screw, entrainment[0], "screw"),
+            model.film(first.load_nut, entrainment[1], "nut"),
+        ),
         entrainment=entrainment,
+        roughness=model.surface.film_roughness,
     )

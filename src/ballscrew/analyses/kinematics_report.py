@@ -45,18 +45,18 @@ def _state_summary(
         "load_nut": value(state.load_nut, "N"),
         "angle_screw": value(state.angle_screw, "rad"),
         "angle_nut": value(state.angle_nut, "rad"),
-        "drag_torque": value(balls * drag.dissipation_torque, "N*m"),
+        # the ball contacts' losses of this nut: sliding at A and EHL rolling at A and B
+        "contact_losses": value(balls * drag.dissipation_torque, "N*m"),
         "asperity_share": drag.psi,
         "solver_iterations": state.iterations,
     }
     if state.level == 2:
         out["traction_coefficient_nut"] = state.traction_coefficient_nut
     if fields is not None:
-        film = fields.sharing.film
-        out["film_thickness_central"] = value(film.central if film else math.nan, "m")
-        out["film_thickness_minimum"] = value(film.minimum if film else math.nan, "m")
-        out["film_contact"] = "screw contact A at its film-borne load (JGP)"
         out["asperity_share"] = fields.sharing.psi
+        out["separation"] = value(
+            fields.sharing.separation if fields.sharing.film else math.nan, "m"
+        )
         out["peak_pressure"] = value(fields.contact.solution.peak_pressure, "Pa")
     return out
 
@@ -70,8 +70,12 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
         fields = run.fields if number == 1 else None
         entry = _state_summary(state, run.drags[number], balls, fields)
         nuts[f"nut{number}"] = entry
-    nut_film = run.nut_sharing.film if run.nut_sharing is not None else None
+    film, nut_film = run.films
     nuts["nut1"] |= {
+        "film_thickness_central": value(film.central if film else math.nan, "m"),
+        "film_thickness_minimum": value(film.minimum if film else math.nan, "m"),
+        "film_contact": "screw contact A at its whole ball load",
+        "film_parameter": value(run.film_parameter, ""),
         "film_thickness_central_nut": value(nut_film.central if nut_film else math.nan, "m"),
         "film_thickness_minimum_nut": value(nut_film.minimum if nut_film else math.nan, "m"),
         "entrainment_speed_screw": value(run.entrainment[0], "m/s"),
@@ -111,6 +115,7 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
             ),
             "limiting_shear": case.kinematics.limiting_shear,
             "micro_contact_size": value(case.kinematics.micro_contact_size, "m"),
+            "film_roughness": value(run.roughness, "m"),
             "surface": {"D": case.surface.D, "Ds": case.surface.D + 1.0},
             "lubricated": run.lubricated,
         },
@@ -295,8 +300,8 @@ def figures(run: KinematicsRun) -> list[Figure]:
 def sections(run: KinematicsRun) -> list[Section]:
     """The report sections: ball state and loads, lubrication at A, drag torque."""
     case = run.case
-    film = run.fields.sharing.film
-    nut_film = run.nut_sharing.film if run.nut_sharing is not None else None
+    film, nut_film = run.films
+    sharing = run.fields.sharing
     return [
         Section(
             "Ball kinematics and loads at the case speed",
@@ -328,10 +333,13 @@ def sections(run: KinematicsRun) -> list[Section]:
         Section(
             "Lubrication at A and B (nut 1)",
             paragraphs=(
-                "Hamrock–Dowson film at the film-borne load, Johnson–Greenwood–Poon load "
-                "sharing with the Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
+                "Hamrock–Dowson films at the whole ball loads, the films of the film parameter "
+                "Λ = h_c/σ_Λ; Johnson–Greenwood–Poon load sharing at A with the "
+                "Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
                 f"{case.surface.D + 1:g}, G = {case.surface.G:.3g} m, cell "
-                f"{case.kinematics.micro_contact_size * 1e6:g} µm)."
+                f"{case.kinematics.micro_contact_size * 1e6:g} µm) whose heights have the "
+                "same σ_Λ: the surfaces separate by h, the film of the film-borne load (1 − ψ) Q, "
+                "and the asperities carry ψ Q."
                 if run.lubricated
                 else "No lubricant data: dry contact, asperity share ψ = 1.",
             ),
@@ -345,7 +353,13 @@ def sections(run: KinematicsRun) -> list[Section]:
                         ("u_e at B [m/s]", run.entrainment[1]),
                         ("h_c at B [nm]", nut_film.central * 1e9 if nut_film else "—"),
                         ("h_min at B [nm]", nut_film.minimum * 1e9 if nut_film else "—"),
-                        ("asperity share ψ", run.fields.sharing.psi),
+                        ("σ_Λ of Λ and of the asperity heights [nm]", run.roughness * 1e9),
+                        ("film parameter Λ = h_c/σ_Λ at A", run.film_parameter),
+                        ("asperity share ψ at A (JGP)", sharing.psi),
+                        (
+                            "separation h at A (JGP) [nm]",
+                            sharing.separation * 1e9 if sharing.film else "—",
+                        ),
                     ),
                 ),
             ),

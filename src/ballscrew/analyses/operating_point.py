@@ -38,10 +38,10 @@ from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import ConvergenceError
-from ballscrew.friction.ball_losses import BOUNDARY_FILM_PARAMETER
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import preload_drag_torque
+from ballscrew.lubrication import BOUNDARY_FILM_PARAMETER, film_parameter
 from ballscrew.lubrication.lubricant_library import LibraryLubricant
 from ballscrew.thermal.discretisation import Discretisation, nut_mean_row
 from ballscrew.validation import case_with
@@ -112,9 +112,11 @@ class OperatingPoint(Presented):
 
     @property
     def film_parameter(self) -> float:
-        """Λ = h_c/σ_Λ at the screw contact A (E6.6), whatever the friction model; NaN when dry
-        or at rest."""
-        return self.film_thickness / self.film_roughness
+        """Film parameter Λ = h_c/σ_Λ (E6.6) at the screw contact A: :attr:`film_thickness` (the
+        central film of the whole ball load) over :attr:`film_roughness`, whatever the friction
+        model; NaN when dry or at rest. The ball model's traction reads its asperity share
+        ψ(Λ) on the same σ_Λ (``friction.asperity_share``)."""
+        return film_parameter(self.film_thickness, self.film_roughness)
 
     @property
     def friction_torque(self) -> float:
@@ -335,7 +337,8 @@ def operating_point(
             friction = trial
         eta, alpha = law(contact)
         films = _films(base, omega, eta, alpha)
-        for text in _warnings(base, omega, nut, friction, films.central / films.roughness):
+        lam = film_parameter(films.central, films.roughness)
+        for text in _warnings(base, omega, nut, friction, lam):
             warnings.warn(text, OperatingPointWarning, stacklevel=2)
     return OperatingPoint(
         case=base,

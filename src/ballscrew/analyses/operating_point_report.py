@@ -9,7 +9,7 @@ import xarray as xr
 
 from ballscrew.analyses import thermal_report
 from ballscrew.analyses.result import Figure, Section, Table, quantity
-from ballscrew.friction.ball_losses import regime
+from ballscrew.lubrication import regime
 
 if TYPE_CHECKING:
     from ballscrew.analyses.operating_point import OperatingPoint
@@ -50,6 +50,8 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
     if math.isfinite(result.film_parameter):
         scalars["film_parameter"] = quantity(result.film_parameter, "")
         scalars["lubrication_regime"] = regime(result.film_parameter)
+    if friction.asperity_share is not None:
+        scalars["asperity_share"] = quantity(friction.asperity_share, "")
     if friction.traction_coefficient is not None:
         scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
     return scalars
@@ -92,8 +94,9 @@ def _torque_section(result: OperatingPoint) -> Section:
             f"Film parameter Λ = h_c/σ = {lam:.3g} at the screw contact of the "
             f"loaded nut ({regime(lam)} lubrication)"
             + (
-                f", traction coefficient μ = {friction.traction_coefficient:.3g}."
-                if friction.traction_coefficient is not None
+                f", asperity share ψ = {friction.asperity_share:.3g} (JGP, on the same σ), "
+                f"traction coefficient μ = {friction.traction_coefficient:.3g}."
+                if friction.asperity_share is not None and friction.traction_coefficient is not None
                 else "."
             )
         )

@@ -20,9 +20,7 @@ from ballscrew.friction.ball_losses import (
     DEFAULT_HYSTERESIS,
     BallLosses,
     ball_losses,
-    film_parameter,
     hysteresis_force,
-    regime,
 )
 from ballscrew.friction.ball_train import BALL_TRAIN_MODELS
 from ballscrew.friction.efficiency import (
@@ -52,10 +50,8 @@ __all__ = [
     "backdriving_efficiency",
     "ball_losses",
     "driving_efficiency",
-    "film_parameter",
     "hysteresis_force",
     "load_friction_torque",
     "load_torque",
     "nut_friction_torque",
-    "regime",
 ]

@@ -15,8 +15,9 @@ Per ball of each nut, from the quasi-static state of :mod:`ballscrew.kinematics`
 * EHL rolling resistance at A and B (Harris & Kotzalas 2007; (E3.4));
 * elastic hysteresis of the Hertz contacts A and B (Tabor 1955; Johnson 1985, *Contact
   Mechanics*, §9.2: a sphere rolling on a plane loses the fraction α of the elastic work,
-  F_h = α (3/16) Q a/R). Applied with the semi-axis a along the rolling direction and the
-  relative radius R_x of each contact (an ASSUMED extension to the elliptical contact);
+  F_h = α (3/16) Q a/R per unit distance rolled). Applied with the semi-axis a along the
+  rolling direction and the relative radius R_x of each contact (an ASSUMED extension to the
+  elliptical contact), at the rolling speed u_e of each contact (E2.8);
 * ball–ball friction, drag of the balls in the lubricant and the ball-return loss of
   :mod:`ballscrew.friction.nut_losses`.
 
@@ -28,7 +29,6 @@ equal bodies, ASSUMED); the ball's share, every loss at B and the losses of
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -56,8 +56,9 @@ from ballscrew.kinematics.model import BallModel
 from ballscrew.kinematics.motion import BallMotion, ball_motion
 from ballscrew.kinematics.torque import ball_drag
 from ballscrew.kinematics.traction_laws import traction_weights
+from ballscrew.lubrication import film_parameter
 
-__all__ = ["BallLosses", "ball_losses", "film_parameter", "hysteresis_force", "regime"]
+__all__ = ["BallLosses", "ball_losses", "hysteresis_force"]
 
 FloatArray = NDArray[np.float64]
 
@@ -68,9 +69,6 @@ DEFAULT_HYSTERESIS = 0.01
 #: Share of a loss at the screw contact A that goes into the screw (Blok 1937, equal bodies).
 SCREW_SHARE_AT_A = 0.5
 
-#: Film parameter Λ below which a contact runs in boundary lubrication (Hamrock 1994).
-BOUNDARY_FILM_PARAMETER = 1.0
-
 
 def hysteresis_force(
     load: ArrayLike, semi_axis: ArrayLike, radius: ArrayLike, fraction: float
@@ -80,18 +78,6 @@ def hysteresis_force(
     q = np.asarray(load, dtype=float)
     force = fraction * 3.0 / 16.0 * np.maximum(q, 0.0) * np.asarray(semi_axis) / radius
     return float(force) if force.ndim == 0 else force
-
-
-def film_parameter(film_thickness: float, rms_height: float) -> float:
-    """Λ = h/σ, the film thickness over the composite RMS roughness (0 for a dry contact)."""
-    return film_thickness / rms_height if rms_height > 0.0 else math.inf
-
-
-def regime(film: float) -> str:
-    """Lubrication regime of a film parameter Λ (Hamrock 1994: <1 boundary, 1–3 mixed, >3 EHL)."""
-    if film < BOUNDARY_FILM_PARAMETER:
-        return "boundary"
-    return "mixed" if film < 3.0 else "EHL"
 
 
 @dataclass(frozen=True)
@@ -107,7 +93,9 @@ class BallLosses:
     screw_share: float
     """Torque whose heat goes into the screw (the rest goes into the nut)."""
     film_parameter: float
-    """Λ = h/σ at A of the first loaded nut (0 dry)."""
+    """Film parameter Λ = h_c/σ_Λ (E6.6) at A of the first loaded nut: the central film of its
+    whole ball load Q_A at the rolling speed of A, over the raceway's composite roughness σ_Λ
+    (0 dry or at rest)."""
     groove_slip: float = 0.0
     """Differential (Heathcote) slip at the nut contact B."""
     ball_ball: float = 0.0
@@ -116,6 +104,9 @@ class BallLosses:
     """Drag of the balls in the lubricant of the nut."""
     recirculation: float = 0.0
     """Kinetic energy of the balls lost in the ball returns."""
+    asperity_share: float = 1.0
+    """JGP asperity share ψ(Λ) at A of the first loaded nut, the boundary weight of the ``film``
+    traction law (1 dry or at rest)."""
     traction_coefficient: float = 0.0
     """μ = s μ_b + (1 − s) μ_f of the traction law at A of the first loaded nut: the friction
     coefficient of a sliding cell whose film shear has reached its cap (s = ψ or φ_bl; 0 when
@@ -236,21 +227,20 @@ def _contact_losses(
     nut: NutLossParameters,
     balls: NutBalls | None = None,
     train: bool = True,
-) -> tuple[tuple[float, ...], float, float, float]:
+) -> tuple[tuple[float, ...], float, float]:
     """(sliding, rolling A, rolling B, ball–ball, drag, slip at B) torques of one ball, the
-    torque of pushing the return train of one nut (ball returns), the separation h at A [m]
-    and the JGP asperity share ψ at A. ``train`` = False: the contact losses alone (ball–ball,
-    drag and push 0), for a flank whose balls' train is counted on another."""
+    torque of pushing the return train of one nut (ball returns) and the JGP asperity share ψ
+    at A. ``train`` = False: the contact losses alone (ball–ball, drag and push 0), for a flank
+    whose balls' train is counted on another."""
     drag = ball_drag(model, state)
     omega = state.screw_speed if state.screw_speed != 0.0 else 1.0
     sliding = drag.traction.power_loss / omega
     rolling = drag.dissipation_torque - sliding
     # the B film's force does work against the ball centre (zero at ω_s = 0: no film)
     rolling_b = -float(drag.rolling_nut @ (state.ball_speed * model.frame.t)) / omega
-    film = (drag.separation, drag.psi)
     slip = _groove_slip_torque(model, state, unit, semi_nut)
     if not train:
-        return (sliding, rolling - rolling_b, rolling_b, 0.0, 0.0, slip), 0.0, *film
+        return (sliding, rolling - rolling_b, rolling_b, 0.0, 0.0, slip), 0.0, drag.psi
     speed = abs(state.ball_speed)
     force = 0.0  # drag of one ball in the lubricant, F_v = P_v/V
     if model.lubricated and state.screw_speed != 0.0 and speed > 0.0:
@@ -273,7 +263,7 @@ def _contact_losses(
     # the push's power n_c n_r f_r V per screw speed: V/ω of the unit motion (ω_s → 0⁺ at rest)
     push = nut.circuits * forces.return_push * abs(unit.ball_speed / unit.screw_speed)
     ball_ball = _ball_ball_torque(model, unit, nut, forces.contact)
-    return (sliding, rolling - rolling_b, rolling_b, ball_ball, viscous, slip), push, *film
+    return (sliding, rolling - rolling_b, rolling_b, ball_ball, viscous, slip), push, drag.psi
 
 
 def _traction_coefficient(model: BallModel, state: BallState, psi: float) -> float:
@@ -334,30 +324,32 @@ def ball_losses(
     along, across = _semi_axes(model, loads)
     sums = np.zeros(6)
     pushes = 0.0
-    first: tuple[float, float] | None = None  # film separation and asperity share of the first
+    shares = []  # JGP asperity share ψ at A of each loaded nut
     for state, unit, a, b, (*_, own) in zip(
         states, units, along[:, 1], across[:, 1], loaded, strict=True
     ):
         # shared: the same balls on every flank, their train counted on the first one only
-        torques, push, separation, psi = _contact_losses(
-            model, state, unit, (float(a), float(b)), nut, own, train=not shared or first is None
+        torques, push, psi = _contact_losses(
+            model, state, unit, (float(a), float(b)), nut, own, train=not shared or not shares
         )
         sums += torques
         pushes += push
-        first = first or (separation, psi)
-    separation, psi = first or (0.0, 0.0)
+        shares.append(psi)
     sliding, rolling_a, rolling_b, balls, drag, groove = model.balls * sums
-    # hysteresis of every ball at A and B in one batch, at its rolling speed per ω_s, |V|/ω_s
-    ratio = np.array([abs(unit.ball_speed / unit.screw_speed) for unit in units])
+    # hysteresis of every ball at A and B in one batch, at the rolling speed of each contact per
+    # ω_s, u_e/ω_s (E2.8): the speed at which the surfaces pass through the contact
+    rolling = np.array(
+        [[model.entrainment_speed(unit, c) / unit.screw_speed for c in SIDES] for unit in units]
+    )
     radii = np.array([model.curvature(contact).rx for contact in SIDES])
     hyst_a, hyst_b = model.balls * np.sum(
-        hysteresis_force(loads, along, radii, hysteresis) * ratio[:, None], axis=0
+        hysteresis_force(loads, along, radii, hysteresis) * rolling, axis=0
     )
     trains = states[:1] if shared else states
     returns = pushes + sum(_recirculation_torque(model, state, nut) for state in trains)
-    film = 0.0
-    if nuts[0][0] > 0.0 and model.lubricated and states[0].ball_speed != 0.0:
-        film = film_parameter(separation, model.surface.film_roughness)
+    first = states[0]
+    whole = model.film(first.load_screw, model.entrainment_speed(first.motion))
+    film = film_parameter(whole.central, model.surface.film_roughness) if whole else 0.0
     return BallLosses(
         sliding=float(sliding),
         groove_slip=float(groove),
@@ -368,5 +360,6 @@ def ball_losses(
         recirculation=float(returns),
         screw_share=float(SCREW_SHARE_AT_A * (sliding + rolling_a + hyst_a)),
         film_parameter=film,
-        traction_coefficient=_traction_coefficient(model, states[0], psi),
+        asperity_share=shares[0],
+        traction_coefficient=_traction_coefficient(model, first, shares[0]),
     )

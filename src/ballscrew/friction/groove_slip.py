@@ -112,8 +112,8 @@ def differential_slip_power(
 
     Slip |Δv| = |ω| |y² − c²|/(2R_d) with c = u_c b; shear stress on each cell as at the screw
     contact (``docs/theory/kinematics.md`` (E3.3)): τ = μ_b ψ p + (1 − ψ) min(η(p)|Δv|/h,
-    Λ_L p), η(p) = η₀ exp(α_p p) (Barus); without a film (``film_thickness`` 0 or no
-    viscosity) τ = μ_b ψ p. In the dry limit ψ = 1 it equals :func:`heathcote_power` with
+    Λ_L p), η(p) = η₀ exp(α_p p) (Barus) (:func:`~ballscrew.kinematics.traction.shear_stress`;
+    without a lubricant τ = μ_b ψ p). In the dry limit ψ = 1 it equals :func:`heathcote_power` with
     μ = μ_b (up to the grid's discretisation).
     """
     if load <= 0.0 or rolling_rate == 0.0:

@@ -27,7 +27,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ballscrew.errors import InputError
-from ballscrew.friction.ball_losses import DEFAULT_HYSTERESIS, BallLosses, regime
+from ballscrew.friction.ball_losses import DEFAULT_HYSTERESIS, BallLosses
 from ballscrew.friction.efficiency import (
     CATALOGUE_ROLLING_FRICTION,
     backdriving_efficiency,
@@ -35,6 +35,7 @@ from ballscrew.friction.efficiency import (
     load_friction_torque,
 )
 from ballscrew.loads import DRAG_TORQUE_MODELS, DragTorqueInputs
+from ballscrew.lubrication import regime
 from ballscrew.registry import Registry
 from ballscrew.validation import nonnegative
 
@@ -94,9 +95,14 @@ class FrictionTorque:
     """Part of Q that goes into the nut (balls included) [W]."""
     model: str = "catalogue"
     film_parameter: float | None = None
-    """Λ = h/σ at the screw contact of the loaded nut (ball model)."""
+    """Film parameter Λ = h_c/σ_Λ (E6.6) at the screw contact A of the loaded nut: the central
+    film of its whole ball load over the raceway's composite roughness, as the operating point
+    reports it (ball model)."""
     regime: str | None = None
     """boundary, mixed or EHL from Λ (ball model)."""
+    asperity_share: float | None = None
+    """JGP asperity share ψ(Λ) at the same contact, the boundary weight of the ``film``
+    traction law (ball model)."""
     speed: float = 0.0
     """ω_s [rad/s]."""
     traction_coefficient: float | None = None
@@ -147,6 +153,7 @@ def _result(
         model=model,
         film_parameter=film,
         regime=regime(film) if film is not None else None,
+        asperity_share=losses.asperity_share if losses is not None else None,
         traction_coefficient=losses.traction_coefficient if losses is not None else None,
         speed=omega,
     )

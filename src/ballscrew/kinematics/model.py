@@ -46,7 +46,8 @@ class BallModel:
     e_star_screw: float
     e_star_nut: float
     surface: AsperitySurface
-    """Rough screw raceway at A (3-D fractal, Ds = D + 1)."""
+    """Rough screw raceway at A (3-D fractal, Ds = D + 1); the load sharing reads its asperity
+    heights at the film parameter's σ_Λ (:attr:`AsperitySurface.film_heights`)."""
     viscosity: float | None = None
     """η₀ [Pa s]; None = no lubricant data (dry contacts)."""
     pressure_viscosity: float | None = None
@@ -127,7 +128,9 @@ class BallModel:
         return film_function(self.film_model)(*self._ehl_inputs(load, speed, contact))
 
     def sharing(self, load: float, speed: float, contact: Side = "screw") -> LoadSharing:
-        """JGP asperity share at A (E6.4); dry (ψ = 1) without lubricant or entrainment."""
+        """JGP asperity share ψ(Λ) of ``contact`` (E6.4) on the asperity heights of the film
+        parameter's composite roughness σ_Λ (E6.6), the one σ of Λ; dry (ψ = 1) without
+        lubricant or entrainment."""
         if not self.lubricated or speed == 0.0:
             return LoadSharing(1.0, float(load), 0.0, None)
         c = self.curvature(contact)
@@ -140,7 +143,7 @@ class BallModel:
             self.pressure_viscosity,
             abs(speed),
             math.pi * a * b,
-            self.surface,
+            self.surface.film_heights,
             film_model=self.film_model,
         )
 

@@ -69,11 +69,17 @@ def shear_stress(
 ) -> FloatArray:
     """|τ| = μ_b ψ p + (1 − ψ) min(η(p) |Δv|/h, Λ p) of (E3.3) on cells of pressure p, slip |Δv|.
 
-    η(p) = η₀ exp(α_p p) (Barus); without a film (``film_thickness`` 0 or no viscosity) only
-    the boundary term μ_b ψ p acts [Pa].
+    η(p) = η₀ exp(α_p p) (Barus); without a lubricant (no viscosity) only the boundary term
+    μ_b ψ p acts. A lubricated contact whose film carries nothing (``film_thickness`` 0: the
+    load sharing found none) shears the (1 − ψ) part at its cap Λ p, the limit h → 0 of the
+    viscous stress; it matters only where ψ is a law's weight other than the JGP share (the
+    ``skf`` law's φ_bl) [Pa].
     """
     shear = boundary_friction * psi * pressure
-    if psi < 1.0 and film_thickness > 0.0 and viscosity is not None:
+    if psi < 1.0 and viscosity is not None:
+        cap = limiting_shear * pressure
+        if film_thickness <= 0.0:
+            return shear + (1.0 - psi) * cap
         alpha = pressure_viscosity or 0.0
         with np.errstate(divide="ignore"):
             log_viscous = (
@@ -82,7 +88,7 @@ def shear_stress(
                 + np.log(slip / film_thickness)
             )
             viscous = np.exp(np.minimum(log_viscous, 700.0))
-        shear = shear + (1.0 - psi) * np.minimum(viscous, limiting_shear * pressure)
+        shear = shear + (1.0 - psi) * np.minimum(viscous, cap)
     return shear
 
 
@@ -102,8 +108,8 @@ def contact_traction(
 ) -> ContactTraction:
     """Traction resultants at A over the grid (x, y) with the cell pressures ``pressure``, (E3.3).
 
-    Vectorised over the grid; P = A + x X_A + y Y_A − y²/(2R_d) e_A. Without a film
-    (``film_thickness`` 0 or no viscosity) only the boundary term acts, with ψ as given.
+    Vectorised over the grid; P = A + x X_A + y Y_A − y²/(2R_d) e_A; the cells' shear of
+    :func:`shear_stress` (without a lubricant only the boundary term, with ψ as given).
     """
     axes = motion.screw_contact
     cell_area = (x[1] - x[0]) * (y[1] - y[0]) if x.size > 1 and y.size > 1 else 0.0

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
@@ -31,16 +31,22 @@ from ballscrew.lubrication.roots import bracketed_roots
 from ballscrew.validation import real_array, real_number
 
 __all__ = [
+    "BOUNDARY_FILM_PARAMETER",
     "AsperitySurface",
     "LoadSharing",
     "asperity_pressure",
     "composite_roughness",
+    "film_parameter",
     "load_sharing_residual",
+    "regime",
     "share_load",
     "share_loads",
 ]
 
 _T_MIN = math.log(1e-300)
+
+#: Film parameter Λ below which a contact runs in boundary lubrication (Hamrock 1994).
+BOUNDARY_FILM_PARAMETER = 1.0
 
 
 def composite_roughness(
@@ -55,6 +61,19 @@ def composite_roughness(
     and of their film path.
     """
     return mb.profile_rms_roughness(D, G, sampling_length, 1.0 / cutoff_length, gamma)
+
+
+def film_parameter(film_thickness: float, roughness: float) -> float:
+    """Film parameter Λ = h/σ_Λ (E6.6): a film thickness over the composite RMS roughness of
+    :func:`composite_roughness` (0 for a dry contact, ∞ on a smooth one)."""
+    return film_thickness / roughness if roughness > 0.0 else math.inf
+
+
+def regime(film: float) -> str:
+    """Lubrication regime of a film parameter Λ (Hamrock 1994: <1 boundary, 1–3 mixed, >3 EHL)."""
+    if film < BOUNDARY_FILM_PARAMETER:
+        return "boundary"
+    return "mixed" if film < 3.0 else "EHL"
 
 
 @dataclass(frozen=True)
@@ -97,6 +116,19 @@ class AsperitySurface:
         if isinstance(self.roughness, tuple):
             return composite_roughness(self.Ds - 1.0, self.G, *self.roughness, gamma=self.gamma)
         return float(self.roughness)
+
+    @cached_property
+    def film_heights(self) -> AsperitySurface:
+        """This surface with the asperity heights of the film parameter, σ = σ_Λ
+        (:attr:`film_roughness`), so that the share ψ of (E6.4) is a function of Λ = h/σ_Λ.
+
+        Johnson, Greenwood & Poon (1972) take the asperity pressure at separation h from the
+        Greenwood–Williamson height distribution of the combined roughness of the two
+        surfaces, σ = √(σ₁² + σ₂²) (Greenwood & Tripp 1970), the σ of Λ (Tallian 1967): the
+        traction and friction of the ball model share it; the wear model keeps the σ (E5.3) of
+        its micro-contact cell.
+        """
+        return replace(self, sigma=self.film_roughness)
 
     def pressure(self, separation: ArrayLike) -> NDArray[np.float64]:
         """Mean asperity pressure F_asp,cell(a_l(h))/ΔA at mean-plane separation h, (E6.3), Pa."""
