@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 import ballscrew
-from ballscrew.analyses.wear_duty import duty_programme
+from ballscrew.analyses.wear_duty import duty_programme, range_messages
+from ballscrew.calibration.api import programme_range
 from ballscrew.case import Case
 from ballscrew.loads import nut_forces
 from ballscrew.wear.setup import nut_force_pair
@@ -85,3 +86,10 @@ def test_a_plus_minus_programme_wears_both_flanks_equally(lives) -> None:
     # |F|, to the contact solver's tolerance (the second level's warm starts differ)
     np.testing.assert_allclose(both.profiles, forward.profiles, rtol=1e-7, atol=0.0)
     np.testing.assert_allclose(both.preload, forward.preload, rtol=1e-9)
+
+
+def test_the_calibrated_range_reads_the_size_of_a_reverse_load() -> None:
+    case = duty_case(-2000.0, 3000.0)
+    assert range_messages(case.wear, duty_programme(case)) == []  # 2000–4000 N at 100 rpm
+    span = programme_range(case)
+    assert (span["load_min"], span["load_max"]) == (2000.0, 3000.0)
