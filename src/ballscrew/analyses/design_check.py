@@ -1,7 +1,8 @@
 """The design check an engineer runs first: life, static safety, speed, buckling, stiffness.
 
 case → :class:`ScrewParameters` and ``[design]`` → the load spectrum (the ``[[duty]]`` segments,
-weighted by their revolutions, else the ``[operating]`` point) → the makers' formulas of
+weighted by their revolutions, else the ``[operating]`` point; signed loads, F_a < 0 the reverse
+direction on nut 2 / flank 2) → the makers' formulas of
 :mod:`ballscrew.design` and the preloaded nut with Hertz contacts and elastic bodies
 (:mod:`ballscrew.loads.distribution`) → values with margins.
 
@@ -112,7 +113,7 @@ class LoadSpectrum:
     """Axial load levels and the revolutions share of each (sum 1)."""
 
     loads: tuple[float, ...]
-    """Axial load F_a of each level [N] (≥ 0: it loads nut 1)."""
+    """Axial load F_a of each level [N], signed: ≥ 0 loads nut 1 (flank 1), < 0 nut 2."""
     shares: tuple[float, ...]
     """Share of the screw revolutions at each level [-]."""
     mean_speed: float
@@ -121,6 +122,11 @@ class LoadSpectrum:
     """Highest screw speed [rad/s]."""
     source: str
     """'duty' or 'operating'."""
+
+    @property
+    def max_load(self) -> float:
+        """Largest |F_a| of the spectrum, either direction [N]."""
+        return max(abs(f) for f in self.loads)
 
 
 @dataclass(frozen=True)
@@ -137,7 +143,8 @@ class DesignCheck(Presented):
     static_load_rating: float | None
     """C_0a [N] (catalogue, else computed from the geometry × f_H f_ac)."""
     equivalent_loads: tuple[float, float]
-    """Cube-mean equivalent loads F_bm of flank 1 and 2 [N] (flank 2 = 0 without preload)."""
+    """Cube-mean equivalent loads F_bm of flank 1 and 2 [N] (without preload flank 2 carries
+    the reverse loads alone: 0 for a one-direction spectrum)."""
     rating_life: float | None
     """L10 (× a₁) in revolutions [-]; None without C_a."""
     life_hours: float | None
@@ -145,7 +152,7 @@ class DesignCheck(Presented):
     life_travel: float | None
     """Rating life as travel [m]."""
     static_safety_factor: float | None
-    """f_s = C_0a / F_a,max [-]; None without C_0a."""
+    """f_s = C_0a / |F_a|,max [-] (the largest load of either direction); None without C_0a."""
     root_diameter: float
     """d_r [m]."""
     critical_speed: float
@@ -175,7 +182,7 @@ class DesignCheck(Presented):
     preload_drag_torque: float
     """Catalogue preload drag torque [N·m]."""
     lost_motion: float
-    """Lost motion at a reversal of the largest axial load F of the spectrum,
+    """Lost motion at a reversal of the largest |F_a| = F of the spectrum,
     2 (x_nut(F) + F/K_shaft [+ F/K_bearings]) [m]: x_nut the nut's displacement under F with
     contacts and bodies; a nut without preload adds its axial play (not an input)."""
     thermal_elongation: float | None
@@ -249,12 +256,18 @@ def load_spectrum(case: Case) -> LoadSpectrum:
 
 def _equivalent_loads(spectrum: LoadSpectrum, preload: float, flanks: int) -> tuple[float, float]:
     """Cube-mean load of each loaded flank over the spectrum (a double nut's two nuts, or the
-    two flanks of a single nut preloaded by oversized balls or an offset lead)."""
+    two flanks of a single nut preloaded by oversized balls or an offset lead).
+
+    Preloaded: each level's half loads (F_b1, F_b2) of |F_a| (HIWIN F 3.5–3.7), a reverse
+    level (F_a < 0) with the halves swapped (nut 2 the loaded one). Without preload the
+    forward levels load flank 1 and the reverse levels flank 2, each counting as zero on the
+    other flank (THK A-706: one cube mean per direction)."""
     loads = np.asarray(spectrum.loads)
-    if flanks == 2:
-        halves = design.preloaded_half_loads(loads, preload)
-    else:
-        halves = (loads, np.zeros_like(loads))
+    if flanks != 2:
+        return design.cube_mean_loads(loads, spectrum.shares)
+    loaded, other = design.preloaded_half_loads(np.abs(loads), preload)
+    reverse = loads < 0.0
+    halves = (np.where(reverse, other, loaded), np.where(reverse, loaded, other))
     return tuple(design.cube_mean_loads(h, spectrum.shares)[0] for h in halves)  # type: ignore[return-value]
 
 
@@ -298,7 +311,7 @@ def _life(ca: float, spec: DesignSpec, equivalent: tuple[float, float]) -> float
 
 def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
     s = check["spectrum"]
-    f_max = max(s.loads)
+    f_max = s.max_load
     out = [
         Margin(
             "speed",
@@ -462,7 +475,7 @@ def design_check(case: Case) -> DesignCheck:
     running = math.isfinite(life) and spectrum.mean_speed > 0.0
     compliance = params.nut_compliance
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, flanks)
-    f_max = max(spectrum.loads)
+    f_max = spectrum.max_load
     with recorded_warnings() as distribution_messages:
         nut_k, travel = _elastic_nut(params, case, root, f_max)
     shaft_k = design.shaft_axial_stiffness(

@@ -150,7 +150,7 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     above zero load, where the unloaded contacts have no stiffness to give."""
     fp, nuts = result.case.operating.preload, result.flanks
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
-    top = max(1.5 * lift_off, 1.2 * max(result.spectrum.loads), 3.0 * fp, 1.0)
+    top = max(1.5 * lift_off, 1.2 * result.spectrum.max_load, 3.0 * fp, 1.0)
     loads = np.linspace(0.0 if fp > 0 else top / _CURVE_POINTS, top, _CURVE_POINTS)
     x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
     k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
@@ -236,14 +236,15 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
 def _life_figure(result: DesignCheck, path: Path) -> Path:
     plt = pyplot()
     spec, s = result.spec, result.spectrum
-    top = max(max(result.equivalent_loads), max(s.loads), 1.0) * 2.0
+    top = max(max(result.equivalent_loads), s.max_load, 1.0) * 2.0
     loads = np.linspace(top / 100.0, top, 100)
     life = design.rating_life(result.dynamic_load_rating, loads, spec.load_factor, spec.reliability)
     fig, ax = plt.subplots(figsize=(6.4, 3.6), layout="constrained")
     ax.loglog(loads, life, label="L(F) at constant load")
+    size = np.abs(s.loads)  # a reverse level at its |F_a|
     ax.scatter(
-        np.maximum(s.loads, top / 100.0),
-        np.interp(s.loads, loads, life),
+        np.maximum(size, top / 100.0),
+        np.interp(size, loads, life),
         s=20 + 200 * np.asarray(s.shares),
         c="C1",
         label="spectrum (size: share)",
@@ -417,7 +418,8 @@ def sections(result: DesignCheck) -> list[Section]:
             paragraphs=(
                 f"Load spectrum from [{s.source}]. Cube-mean equivalent loads of the loaded "
                 f"flanks (preload included, HIWIN F 3.5–3.9), lives combined as "
-                f"(L₁^(−10/9) + L₂^(−10/9))^(−9/10): "
+                f"(L₁^(−10/9) + L₂^(−10/9))^(−9/10); a negative load is the reverse "
+                f"direction, which loads {result.part} 2: "
                 + ", ".join(f"{f:.4g} N" for f in result.equivalent_loads),
             ),
             tables=(Table(("level", "axial load [N]", "revolutions share"), spectrum),),

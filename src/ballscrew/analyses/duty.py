@@ -9,6 +9,9 @@ still for the dwell t_d at each stroke end, so the screw turns for the fraction
 of the segment (f = 1 without dwell or stroke). The time means of the speed and of the friction
 heat of the segment are then f·ω and f·Q(ω): the thermal time constants of a screw (minutes)
 are long against a stroke (seconds), so the model follows the mean of each segment.
+
+The axial load keeps its sign (F_a < 0: the reverse direction, on nut 2); the chains that run
+an operating point of a segment take |F_a| (:func:`mirrored_load`).
 """
 
 from __future__ import annotations
@@ -18,7 +21,7 @@ from dataclasses import dataclass
 
 from ballscrew.case import Case
 
-__all__ = ["DutyPhase", "duty_schedule"]
+__all__ = ["DutyPhase", "duty_schedule", "mirrored_load"]
 
 
 @dataclass(frozen=True)
@@ -32,7 +35,7 @@ class DutyPhase:
     speed: float
     """Screw speed while turning, ω [rad/s]."""
     axial_load: float
-    """Axial load F_a [N]."""
+    """Axial load F_a [N], signed (< 0: the reverse direction, on nut 2)."""
     stroke: float
     """Stroke of the nut S [m] (0: the nut turns in place)."""
     moving_fraction: float
@@ -47,6 +50,17 @@ class DutyPhase:
     def mean_speed(self) -> float:
         """Time-mean screw speed f·ω [rad/s]."""
         return self.moving_fraction * self.speed
+
+
+def mirrored_load(axial_load: float) -> float:
+    """|F_a|: the load of the mirror image of a reverse segment [N].
+
+    A symmetric nut under −F_a is the nut under +F_a with nut 1 and nut 2 (flank 1 and 2)
+    swapped, so its friction torque, heat and operating point are those of |F_a| (ASSUMED
+    mirror symmetry: the elastic distribution's shaft load path and flange side break it;
+    theory manual, *Operating point*, reverse loads).
+    """
+    return abs(axial_load)
 
 
 def moving_fraction(speed: float, lead: float, stroke: float, dwell: float) -> float:

@@ -8,7 +8,8 @@ through the schedule, the factorisation of each segment reused. The friction hea
 temperature in time: the heat of step n is Q(T_c(θₙ₋₁)) (:mod:`~ballscrew.analyses.duty_heat`,
 the lubricant's viscosity at the contact temperature of the step before), split between screw
 and nut as at the segment's steady point. A segment run long enough thus ends at its steady
-coupled operating point (theory manual, *Operating point*).
+coupled operating point (theory manual, *Operating point*). A reverse segment (F_a < 0) heats
+as its mirror image at |F_a| (ASSUMED mirror symmetry of the nut).
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ballscrew.analyses import duty_thermal_report
-from ballscrew.analyses.duty import DutyPhase, duty_schedule
+from ballscrew.analyses.duty import DutyPhase, duty_schedule, mirrored_load
 from ballscrew.analyses.duty_heat import SegmentHeat
 from ballscrew.analyses.operating_point import (
     contact_readout,
@@ -131,7 +132,7 @@ def _segment(
         case,
         {
             "operating.speed": phase.speed,
-            "operating.axial_load": phase.axial_load,
+            "operating.axial_load": mirrored_load(phase.axial_load),
             "operating.coupled": False,
         },
     )

@@ -142,7 +142,7 @@ def wear_setup(case: Case) -> WearSetup:
     q_max = max(
         float(
             ball_load(
-                nut_force_pair(preload, part.axial_load)[0],
+                max(nut_force_pair(preload, part.axial_load)),
                 balls,
                 geometry.contact_angle,
                 geometry.lead_angle,
@@ -234,19 +234,26 @@ def _ball_classes(
     a double nut, the contact pairs or halves of a preloaded single nut): the elastic
     distribution (with the case's lead and ball-diameter errors) at the initial preload, split
     into ``spec.load_classes`` equal-count classes; empty for ``loads.distribution =
-    "uniform"``. The class ratios stay fixed as the preload falls (ASSUMED)."""
+    "uniform"``. The class ratios stay fixed as the preload falls (ASSUMED). A reverse load
+    −F takes the classes of +F with the nuts swapped (ASSUMED mirror symmetry: the shaft's load
+    path and the flange side make the real nut slightly asymmetric)."""
     if case.loads.distribution == "uniform":
         return ()
     loads = sorted({part.axial_load for lv in spec.programme for _, part in lv.parts()})
     root = None if case.design is None else case.design.root_diameter
+    solved: dict[float, tuple[LoadClasses, LoadClasses]] = {}
     out = []
     for load in loads:
-        dist = elastic_distribution(
-            params.with_loads(axial_load=load), case.loads, root, numerics=case.numerics
-        )
-        q = dist.per_nut(dist.loads)
-        n = spec.load_classes
-        out.append((load, (load_classes(q[0], n), load_classes(q[1], n))))
+        size = abs(load)
+        if size not in solved:
+            dist = elastic_distribution(
+                params.with_loads(axial_load=size), case.loads, root, numerics=case.numerics
+            )
+            q = dist.per_nut(dist.loads)
+            n = spec.load_classes
+            solved[size] = (load_classes(q[0], n), load_classes(q[1], n))
+        pair = solved[size]
+        out.append((load, pair if load >= 0.0 else pair[::-1]))
     return tuple(out)
 
 

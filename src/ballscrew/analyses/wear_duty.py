@@ -8,6 +8,11 @@ speed and load (the supply state, ``medium.film_model`` and ``wear.film_factor``
 gives it) and its own stroke. Run once (``duty_repeat = 1``) the segments are levels one after
 the other; repeated, the cycle is one level whose rate per revolution is the revolution-weighted
 mean of its segments' (theory manual, *Wear*, duty programmes).
+
+A reverse segment (F_a < 0) keeps its sign in the level: the wear engine puts the larger force
+on nut 2 (:func:`ballscrew.wear.setup.nut_force_pair`). Its operating point is that of |F_a|
+(ASSUMED mirror symmetry, :func:`ballscrew.analyses.duty.mirrored_load`), shared with a forward
+segment of the same speed, |F_a| and stroke.
 """
 
 from __future__ import annotations
@@ -17,7 +22,7 @@ import math
 import warnings
 
 from ballscrew.analyses.case_cache import CaseCache
-from ballscrew.analyses.duty import moving_fraction
+from ballscrew.analyses.duty import mirrored_load, moving_fraction
 from ballscrew.analyses.operating_point import operating_point
 from ballscrew.case import Case
 from ballscrew.case.wear_spec import REFERENCE_RANGE, CalibratedRange, WearSpec
@@ -80,12 +85,14 @@ def _duty_programme(case: Case) -> tuple[WearLevel, ...]:
         revolutions = fraction * segment.speed * segment.duration / (2.0 * math.pi)
         if revolutions <= 0.0:
             continue
-        key = (segment.speed, segment.axial_load, segment.stroke)
+        key = (segment.speed, mirrored_load(segment.axial_load), segment.stroke)
         if key not in points:
             points[key] = _segment_level(case, *key, start)
         template = points[key]
         start = template.temperature
-        levels.append(dataclasses.replace(template, revolutions=revolutions))
+        levels.append(
+            dataclasses.replace(template, axial_load=segment.axial_load, revolutions=revolutions)
+        )
     if not levels:
         return ()
     if case.duty_repeat == 1:
@@ -94,7 +101,7 @@ def _duty_programme(case: Case) -> tuple[WearLevel, ...]:
     mean_speed = sum(lv.speed * lv.revolutions for lv in levels) / cycle
     return (
         WearLevel(
-            axial_load=max(lv.axial_load for lv in levels),
+            axial_load=max((lv.axial_load for lv in levels), key=abs),
             speed=mean_speed,
             revolutions=case.duty_repeat * cycle,
             segments=tuple(levels),
@@ -124,7 +131,7 @@ def range_messages(spec: WearSpec, programme: tuple[WearLevel, ...]) -> list[str
     lo_f, hi_f = 0.95 * bounds.load_min, 1.05 * bounds.load_max
     for i, level in enumerate(programme):
         for _, part in level.parts():
-            if lo_s <= part.speed <= hi_s and lo_f <= part.axial_load <= hi_f:
+            if lo_s <= part.speed <= hi_s and lo_f <= abs(part.axial_load) <= hi_f:
                 continue
             out.append(
                 f"wear.coefficient = {spec.coefficient:.4g} was calibrated at "

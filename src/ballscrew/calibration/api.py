@@ -75,7 +75,7 @@ def programme_range(case: Any) -> dict[str, float] | None:
     except (AttributeError, TypeError):  # a stand-in case without a programme
         return None
     speeds = [lv.speed for lv in levels]
-    loads = [lv.axial_load for lv in levels]
+    loads = [abs(lv.axial_load) for lv in levels]  # a reverse duty segment: its |F_a|
     return {
         "speed_min": min(speeds),
         "speed_max": max(speeds),

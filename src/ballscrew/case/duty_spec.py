@@ -12,9 +12,17 @@ Each segment holds the screw speed, the axial load and the nut's stroke for a du
     dwell = "2 s"
     duration = "40 min"
 
+    [[duty]]                       # the return stroke pulls: the reverse direction
+    speed = "1500 rpm"
+    axial_load = "-1 kN"
+    duration = "10 min"
+
     [[duty]]                       # standstill
     speed = 0
     duration = "20 min"
+
+The axial load is signed: F_a ≥ 0 presses on nut 1 of a double nut (flank 1 of a single nut),
+F_a < 0 is the reverse direction, which presses on nut 2 (flank 2).
 """
 
 from __future__ import annotations
@@ -38,7 +46,11 @@ class DutySegment(Model):
         "angular_velocity", 'screw speed ω (rad/s; "1500 rpm" also works)', ge=0, le=MAX_SPEED
     ) = 0.0
     axial_load: quantity(
-        "force", "external axial load F_a during the segment", ge=0, le=MAX_FORCE
+        "force",
+        "external axial load F_a during the segment, signed: ≥ 0 presses on nut 1 (flank 1), "
+        "< 0 the reverse direction on nut 2 (flank 2)",
+        ge=-MAX_FORCE,
+        le=MAX_FORCE,
     ) = 0.0
     stroke: quantity("length", "stroke of the nut (0: the nut turns in place)", ge=0, le=100.0) = (
         0.0

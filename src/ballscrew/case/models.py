@@ -218,7 +218,8 @@ class OperatingSpec(Model):
     preload: quantity("force", "preload F_p of the nut(s)", ge=0, le=MAX_FORCE)
     axial_load: quantity(
         "force",
-        "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2)",
+        "external axial load F_a (≥ 0; it loads nut 1 and unloads nut 2; the reverse "
+        "direction is its mirror image, nut 2 loaded: signed loads go in [[duty]])",
         ge=0,
         le=MAX_FORCE,
     ) = 0.0

@@ -8,7 +8,7 @@ and the checkpoint files :mod:`.checkpoint`. The time integration of the wear ov
 programme (theory manual, *Wear*):
 
 1. F_1, F_2 from the current preload and the level's axial load (E1.10–E1.11; lift-off gives
-   F_2 = 0 and no wear from that nut).
+   F_2 = 0 and no wear from that nut); a reverse load (F_a < 0) swaps them, nut 2 loaded.
 2. For each screw flank s = ±1 and each nut force: ball load Q = F/(Z sinβ cosλ) (E1.6), the
    Polonsky–Keer pressure on the fixed grid over the worn gap g_0 + h_s(y) (E8.5), warm-started
    from the previous pressure of the same flank and nut; the JGP asperity share ψ at the
@@ -243,12 +243,14 @@ def _finish(setup: WearSetup, state: _State, complete: bool, wall: float) -> Wea
     solves = state.solves
     if complete:
         last = spec.programme[-1].parts()[-1][1]
-        f1 = nut_force_pair(float(r["preload"][-1]), last.axial_load)[0]
+        nut = 1 if last.axial_load >= 0.0 else 2  # the loaded nut: 2 under a reverse load
+        f1 = nut_force_pair(float(r["preload"][-1]), last.axial_load)[nut - 1]
         if f1 > 0.0:
+            warm = state.warm.get(f"+1_{nut}")
             worn, unworn = step_rates(
                 setup,
                 [
-                    StepContact(1, f1, last.speed, state.depth[0], state.warm.get("+1_1"), last),
+                    StepContact(1, f1, last.speed, state.depth[0], warm, last),
                     StepContact(1, f1, last.speed, np.zeros_like(setup.y), level=last),
                 ],
             )

@@ -17,7 +17,7 @@ class WearLevel:
     """
 
     axial_load: float
-    """External axial load F_a [N]."""
+    """External axial load F_a [N], signed: ≥ 0 loads nut 1, < 0 (a reverse duty segment) nut 2."""
     speed: float
     """Screw speed ω_s [rad/s]."""
     revolutions: float

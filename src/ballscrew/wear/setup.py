@@ -133,9 +133,16 @@ class WearSetup:
 
 
 def nut_force_pair(preload: float, axial_load: float) -> tuple[float, float]:
-    """(F_1, F_2) of the double nut or the two flanks of a preloaded single nut (E1.10–E1.11);
-    without preload F_1 = F_a, F_2 = 0."""
+    """(F_1, F_2) of nut 1 and nut 2 of the double nut, or of the two flanks of a preloaded
+    single nut (E1.10–E1.11); without preload F_1 = F_a, F_2 = 0.
+
+    ``axial_load`` is signed: F_a ≥ 0 presses on nut 1; F_a < 0, the reverse direction, presses
+    on nut 2, which then carries the larger force of |F_a| (the pair swapped).
+    """
+    load = abs(float(axial_load))
     if preload <= 0.0:
-        return float(axial_load), 0.0
-    f = nut_forces(preload, axial_load)
-    return float(f[0]), float(f[1])
+        pair = (load, 0.0)
+    else:
+        f = nut_forces(preload, load)
+        pair = (float(f[0]), float(f[1]))
+    return pair if axial_load >= 0.0 else pair[::-1]
