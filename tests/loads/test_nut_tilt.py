@@ -10,19 +10,10 @@ import pytest
 
 from ballscrew.errors import InputError
 from ballscrew.loads import ball_load, nut_forces
-from ballscrew.loads.distribution import (
-    NutBodies,
-    ball_layout,
-    body_properties,
-    lift_off_load,
-    solve_distribution,
-)
+from ballscrew.loads.distribution import NutBodies, ball_layout, lift_off_load, solve_distribution
 
-D_M, LEAD, BALL, BETA = 0.04, 0.01, 0.00635, math.pi / 4
-ALPHA = math.atan(LEAD / (math.pi * D_M))
-K = 2.448e-7  # K_A + K_B of the 40 × 10 reference screw (f = 0.52, steel), m N^-2/3
-STEEL = (2.06e11, 0.3)
-BODIES = body_properties(D_M, BALL, BETA, 0.0335, 0.07, STEEL, STEEL)
+from .test_distribution import ALPHA, BALL, BETA, BODIES, D_M, LEAD, K
+
 LAYOUT = ball_layout(90, 2, LEAD, D_M, BALL, ALPHA, LEAD)
 
 

@@ -98,24 +98,27 @@ class LoadsSpec(Model):
     ) = 0.0
 
     @model_validator(mode="after")
-    def _numerical_needs_elastic(self) -> LoadsSpec:
-        if self.contact == "numerical" and self.distribution != "elastic":
-            raise ValueError(
+    def _options_that_need_elastic(self) -> LoadsSpec:
+        elastic = self.distribution == "elastic"
+        refusals = (
+            (
+                self.contact == "numerical" and not elastic,
                 "contact = 'numerical' needs loads.distribution = 'elastic' (the uniform "
-                "distribution has no contact law)"
-            )
-        return self
-
-    @model_validator(mode="after")
-    def _free_nut_needs_elastic(self) -> LoadsSpec:
-        if self.nut_support == "free" and self.distribution != "elastic":
-            raise ValueError(
+                "distribution has no contact law)",
+            ),
+            (
+                self.nut_support == "free" and not elastic,
                 "nut_support = 'free' needs loads.distribution = 'elastic' (the uniform "
-                "distribution has rigid bodies and no ball positions)"
-            )
-        if self.nut_support == "guided" and (self.nut_radial_load or self.nut_tilting_moment):
-            raise ValueError(
+                "distribution has rigid bodies and no ball positions)",
+            ),
+            (
+                self.nut_support == "guided"
+                and bool(self.nut_radial_load or self.nut_tilting_moment),
                 "nut_radial_load and nut_tilting_moment act on a free nut only (a guided "
-                "nut's housing takes them): set loads.nut_support = 'free'"
-            )
+                "nut's housing takes them): set loads.nut_support = 'free'",
+            ),
+        )
+        for refused, message in refusals:
+            if refused:
+                raise ValueError(message)
         return self
