@@ -88,3 +88,30 @@ def test_the_wear_preload_update_puts_the_bodies_in_series():
     assert uniform.body_compliance == 0.0 and elastic.body_compliance > 0.0
     assert uniform.preload(1e-6) == pytest.approx(899.7, rel=1e-4)  # (E1.13), unchanged
     assert elastic.preload(1e-6) > uniform.preload(1e-6)
+
+
+def test_a_free_nut_reports_its_tilt_and_balances_the_external_loads(gao_case_path):
+    free = ELASTIC | {
+        "loads.nut_support": "free",
+        "loads.nut_radial_load": "200 N",
+        "loads.nut_tilting_moment": "3 N*m",
+    }
+    balls = ballscrew.ball_loads(ballscrew.load_case(gao_case_path, free))
+    np.testing.assert_allclose(balls.radial_force, [-200.0, 0.0], atol=1e-9)
+    np.testing.assert_allclose(balls.tilting_moment, [0.0, -3.0], atol=1e-11)
+    assert np.hypot(*balls.tilt) > 1e-6 and np.hypot(*balls.radial_displacement) > 1e-8
+    assert balls.axial_forces[0] - balls.axial_forces[1] == pytest.approx(2000.0, rel=1e-10)
+    guided = ballscrew.ball_loads(ballscrew.load_case(gao_case_path, ELASTIC))
+    assert np.all(guided.tilt == 0.0) and np.hypot(*guided.radial_force) > 10.0
+
+
+@pytest.mark.parametrize(
+    "overrides",
+    [
+        {"loads.nut_support": "free"},  # the uniform distribution has no ball positions
+        ELASTIC | {"loads.nut_radial_load": "100 N"},  # a guided nut's housing takes it
+    ],
+)
+def test_free_nut_options_are_refused_where_they_mean_nothing(gao_case_path, overrides):
+    with pytest.raises(ValueError, match="nut_support"):
+        ballscrew.load_case(gao_case_path, overrides)

@@ -7,6 +7,9 @@ expansion, lead error and ball-diameter variation, contact angle under load
 (:mod:`ballscrew.loads.distribution`; theory manual, *Loads*). Uniform is its rigid limit.
 With ``loads.contact = "numerical"`` every ball's contacts follow the contact solver's
 load–approach law on the raceway gap (:mod:`ballscrew.analyses.contact_law`) instead of Hertz.
+``loads.nut_support = "free"`` balances the nut on its balls in radial displacement and tilt too
+(:mod:`ballscrew.loads.rigid_nut`); ``"guided"`` (default) leaves the radial force and tilting
+moment to the housing.
 """
 
 from __future__ import annotations
@@ -53,6 +56,9 @@ _FIELDS = {
     "lead_error": "loads.lead_error",
     "ball_excess": "loads.ball_diameter_error",
     "root_diameter": "design.root_diameter",
+    "nut_support": "loads.nut_support",
+    "radial_load": "loads.nut_radial_load",
+    "tilting_moment": "loads.nut_tilting_moment",
 }
 
 
@@ -73,6 +79,16 @@ class BallLoads:
     distribution: str = "uniform"
     positions: NDArray[np.float64] | None = None
     """Axial position of each ball [m] (elastic only), same shape as ``loads``."""
+    radial_force: NDArray[np.float64] | None = None
+    """Net radial force (2) of the balls on the nut [N] (elastic only): a guided nut's housing
+    takes it, a free nut's external radial load balances it."""
+    tilting_moment: NDArray[np.float64] | None = None
+    """Net tilting moment (2) of the balls on the nut about its centre [N·m] (elastic only)."""
+    radial_displacement: NDArray[np.float64] | None = None
+    """Radial displacement (2) of the nut relative to the screw at its centre [m] (elastic
+    only; 0 for a guided nut)."""
+    tilt: NDArray[np.float64] | None = None
+    """Tilt (2) of the nut relative to the screw [rad] (elastic only; 0 for a guided nut)."""
 
     @property
     def max_load(self) -> float:
@@ -160,6 +176,9 @@ def elastic_distribution(
             ball_excess=spec.ball_diameter_error or None if errors else None,
             interference=interference,
             contact=contact,
+            support=spec.nut_support,
+            radial_load=spec.nut_radial_load,
+            tilting_moment=spec.nut_tilting_moment,
         )
     if contact is not None:
         warn_above_table(contact, float(dist.loads.max()))
@@ -192,6 +211,10 @@ def ball_loads(case: Case, axial_load: float | None = None) -> BallLoads:
         dist.nut_forces,
         "elastic",
         dist.per_nut(dist.layout.z),
+        dist.resultant[1:3],
+        dist.resultant[3:],
+        dist.radial_displacement,
+        dist.tilt,
     )
 
 

@@ -9,6 +9,9 @@ Example (the elastic distribution of a double nut with a 1 µm lead error in its
     spacer = "10 mm"                # axial gap between the halves' nearest balls; default L
     flange = "loaded_end"           # or "free_end"
     lead_error = [1e-6, 0, 0, 0, 0, 0, 0, 0, 0, 0]   # m, per turn (or per ball), nut 1 first
+    nut_support = "free"            # "guided" (default): the housing takes radial force/tilt
+    nut_radial_load = "200 N"       # free nut: external radial force and tilting moment
+    nut_tilting_moment = "5 N*m"
 """
 
 from __future__ import annotations
@@ -74,11 +77,48 @@ class LoadsSpec(Model):
         "empty = none",
     )
 
+    nut_support: Literal["guided", "free"] = Field(
+        "guided",
+        description="elastic: guided (the housing takes the balls' radial force and tilting "
+        "moment, the nut moves only axially) or free (a rigid nut balanced by its balls in "
+        "axial and radial displacement and tilt)",
+    )
+    nut_radial_load: quantity(
+        "force",
+        "external radial force on a free nut at its centre, towards the first ball of nut 1",
+        ge=-1e7,
+        le=1e7,
+    ) = 0.0
+    nut_tilting_moment: quantity(
+        "torque",
+        "external tilting moment on a free nut about its centre, in the plane of the radial "
+        "load (about e_2 = axis x e_1)",
+        ge=-1e6,
+        le=1e6,
+    ) = 0.0
+
     @model_validator(mode="after")
-    def _numerical_needs_elastic(self) -> LoadsSpec:
-        if self.contact == "numerical" and self.distribution != "elastic":
-            raise ValueError(
+    def _options_that_need_elastic(self) -> LoadsSpec:
+        elastic = self.distribution == "elastic"
+        refusals = (
+            (
+                self.contact == "numerical" and not elastic,
                 "contact = 'numerical' needs loads.distribution = 'elastic' (the uniform "
-                "distribution has no contact law)"
-            )
+                "distribution has no contact law)",
+            ),
+            (
+                self.nut_support == "free" and not elastic,
+                "nut_support = 'free' needs loads.distribution = 'elastic' (the uniform "
+                "distribution has rigid bodies and no ball positions)",
+            ),
+            (
+                self.nut_support == "guided"
+                and bool(self.nut_radial_load or self.nut_tilting_moment),
+                "nut_radial_load and nut_tilting_moment act on a free nut only (a guided "
+                "nut's housing takes them): set loads.nut_support = 'free'",
+            ),
+        )
+        for refused, message in refusals:
+            if refused:
+                raise ValueError(message)
         return self

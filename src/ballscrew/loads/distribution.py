@@ -29,6 +29,12 @@ line search; the force balance Σ σ_j s Q_j = F_a (a single nut: F_p + F_a on i
 a linear row of the system, so it holds to rounding. The contact angle under load follows the
 distance of the groove curvature centres A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j)
 (Harris & Kotzalas 2007); the axial share s keeps β₀ (the change is of order δ/A, 1–2 %).
+
+The helix does not place the balls symmetrically: their loads leave a radial force and a tilting
+moment on the nut. ``support="guided"`` (default) lets the housing take them (the nut moves only
+axially). ``support="free"`` makes the nut a rigid body on its balls: the radial displacement u
+and tilt γ join x, each ball's approach gains −h_j·(0, u, γ) and the balance gains the radial
+and tilting rows Σ Q_j h_j + (F_r, M) = 0 (:mod:`ballscrew.loads.rigid_nut`; Jones 1960).
 Theory manual, *Loads*.
 """
 
@@ -37,6 +43,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -46,6 +53,7 @@ from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.loads.ball_load import validate_angles, validate_balls
 from ballscrew.loads.contact_law import TabulatedContact
 from ballscrew.loads.preload_method import flank_forces
+from ballscrew.loads.rigid_nut import ball_directions, validate_support
 from ballscrew.validation import positive
 
 __all__ = [
@@ -76,6 +84,9 @@ class BallLayout:
     """0 for nut 1, 1 for nut 2."""
     turn: NDArray[np.int64]
     """Turn of the ball within its nut, 0 = the turn nearest the loaded end."""
+    angle: NDArray[np.float64]
+    """Angle θ of the ball around the screw axis [rad] (a right-hand helix: θ = 2π z/L from
+    nut 1's ball nearest the loaded end)."""
     lead: float
     """Lead L [m]."""
     nuts: int
@@ -123,11 +134,13 @@ def ball_layout(
         top = own[-1] if nuts == 1 else 2.0 * own[-1] + positive("spacer", spacer, "m")
         starts = [top, top - own[-1] - spacer][:nuts]
     turn = np.floor(own / lead + 1e-12).astype(np.int64)
+    z = np.concatenate([start - own for start in starts])
     return BallLayout(
-        z=np.concatenate([start - own for start in starts]),
+        z=z,
         flank=np.repeat([1.0, -1.0][:nuts], z_count),
         nut=np.repeat(np.arange(nuts), z_count),
         turn=np.tile(turn, nuts),
+        angle=2.0 * math.pi * (z - z[0]) / lead,
         lead=lead,
         nuts=nuts,
         shared=shared,
@@ -232,11 +245,25 @@ class Distribution:
     compliance: float
     """Tangent dD/dF_a [m/N]."""
     iterations: int
+    directions: NDArray[np.float64]
+    """h_j of every ball, shape (balls, 5): axial, radial (2) and tilting (2) direction of its
+    load on the nut (:func:`~ballscrew.loads.rigid_nut.ball_directions`)."""
+    radial_displacement: NDArray[np.float64]
+    """Radial displacement (u₁, u₂) of the nut relative to the screw at its centre [m]; 0 for
+    a guided nut."""
+    tilt: NDArray[np.float64]
+    """Tilt (γ₁, γ₂) of the nut relative to the screw about its centre [rad]; 0 if guided."""
 
     @property
     def stiffness(self) -> float:
         """Tangent axial stiffness dF_a/dD of the nut assembly [N/m]."""
         return 1.0 / self.compliance
+
+    @property
+    def resultant(self) -> NDArray[np.float64]:
+        """Σ Q_j h_j: axial force, radial force (2) [N] and tilting moment (2) [N·m] of the
+        balls on the nut about its centre; a guided nut's housing takes the last four."""
+        return self.loads @ self.directions
 
     @property
     def nut_forces(self) -> NDArray[np.float64]:
@@ -350,6 +377,9 @@ def solve_distribution(
     ball_excess: ArrayLike | None = None,
     interference: float | None = None,
     contact: TabulatedContact | None = None,
+    support: str = "guided",
+    radial_load: float = 0.0,
+    tilting_moment: float = 0.0,
 ) -> Distribution:
     """Normal load of every ball under the axial load F_a on nut 1, equations above.
 
@@ -369,6 +399,10 @@ def solve_distribution(
         ball_excess: ball-diameter excess Δd [m], per ball or per turn.
         interference: the spacer interference g [m] of a double nut, if known.
         contact: the load–approach law of a ball's two contacts; None = Hertz, δ = K Q^(2/3).
+        support: "guided" (the housing takes the balls' radial force and tilting moment) or
+            "free" (a rigid nut balanced by its balls in radial displacement and tilt too).
+        radial_load, tilting_moment: external force [N] along e₁ (towards θ = 0) and moment
+            [N·m] about e₂ on a free nut, at its centre.
     """
     beta, alpha = validate_angles(contact_angle, lead_angle)
     k = positive("hertz_constant", hertz_constant, "m N^-2/3")
@@ -380,6 +414,7 @@ def solve_distribution(
         raise InputError("preload", preload, "> 0 N for a double nut, >= 0 N for one nut")
     if layout.nuts == 1 and fa + fp == 0.0:
         raise InputError("axial_load", axial_load, "> 0 N where the preload is 0 N")
+    free = validate_support(support, float(radial_load), float(tilting_moment))
     bodies = bodies or NutBodies()
     s = math.sin(beta) * math.cos(alpha)
     z_count = layout.balls
@@ -396,32 +431,42 @@ def solve_distribution(
     f1, f2 = (float(v) for v in flank_forces(fp, fa, layout.nuts))
     q0 = np.where(sigma > 0, f1, f2) / f_ref  # rigid bodies, no errors
     law = _hertz_law if contact is None else _scaled_law(contact, q_ref, d_ref)
+    radius = layout.lead / (2.0 * math.pi * math.tan(alpha))  # d_m/2
+    h = ball_directions(layout.z, layout.angle, sigma, radius, beta, alpha)
+    # unknowns x̂ = x s/d_ref and, free: û = u/d_ref, γ̂ = γ r/d_ref; rows Σ q̂ h/(Z·scale)
+    scale = np.array([s, 1.0, 1.0, radius, radius])[: 5 if free else 1]
+    rigid_h = h[:, 1 : scale.size] / scale[1:]
+    b = np.column_stack([sigma, -rigid_h])
+    rows = np.vstack([force_row, rigid_h.T / z_count])
+    external = np.array([-radial_load, 0.0, 0.0, -tilting_moment])[: scale.size - 1] * s
     if layout.nuts == 1:
         g_hat = 0.0
     elif interference is None:
-        g_hat = _preload_interference(a, sigma, c, force_row, fp / f_ref, law)
+        g_hat = _preload_interference(a, b, c, rows, fp / f_ref, law)
     else:
         g_hat = interference * s / d_ref
     c_load = c + g_hat
     x0 = (f1 / f_ref) ** (2.0 / 3.0) - g_hat
+    axial = fa if layout.nuts == 2 else f1  # one nut: F_p + F_a
     y, jac, its = _newton(
         a,
-        sigma[:, None],
+        b,
         c_load,
-        force_row[None, :],
-        np.array([(fa if layout.nuts == 2 else f1) / f_ref]),  # one nut: F_p + F_a
-        np.append(q0, x0),
+        rows,
+        np.append(axial, external / scale[1:]) / f_ref,
+        np.concatenate([q0, [x0], np.zeros(scale.size - 1)]),
         law,
     )
     n = sigma.size
-    rhs = np.zeros(n + 1)
+    rhs = np.zeros(n + scale.size)
     rhs[n] = 1.0 / f_ref
     with blas_single_thread():
         dy = np.linalg.solve(jac, rhs)
     arm = lead_coef * s * q_ref * sigma * (layout.z.max() - layout.z)
     x_scale = d_ref / s
     q = y[:n] * q_ref
-    approach = (a @ y[:n] + sigma * y[n] + c_load) * d_ref
+    approach = (a @ y[:n] + b @ y[n:] + c_load) * d_ref
+    rigid = y[n + 1 :] * d_ref / scale[1:]
     return Distribution(
         layout=layout,
         loads=q,
@@ -432,31 +477,37 @@ def solve_distribution(
         displacement=x_scale * y[n] + float(arm @ y[:n]),
         compliance=x_scale * dy[n] + float(arm @ dy[:n]),
         iterations=its,
+        directions=h,
+        radial_displacement=np.pad(rigid[:2], (0, 2 - rigid[:2].size)),
+        tilt=np.pad(rigid[2:], (0, 2 - rigid[2:].size)),
     )
 
 
 def _preload_interference(
     a: NDArray[np.float64],
-    sigma: NDArray[np.float64],
+    b: NDArray[np.float64],
     c: NDArray[np.float64],
-    force_row: NDArray[np.float64],
+    rows: NDArray[np.float64],
     preload_hat: float,
     law: Law,
 ) -> float:
-    """ĝ at which nut 1 carries the preload with no external load (scaled units).
+    """ĝ at which nut 1 carries the preload with no external load (scaled units); ``b`` and
+    ``rows``: the columns and balance rows of the nut's displacements (axial first).
 
     Newton starts from equal ball loads with ĝ such that the median ball has the approach of
     that load: the bodies' strain and the ring's widening at equal loads, a@q₀, reach several
     Hertz approaches on a long nut, and a start with ĝ = q₀^(2/3) alone left one nut with no
     loaded ball, where x and ĝ act alike and the Jacobian is singular (15 turns per nut failed).
     """
-    n = sigma.size
-    g = np.stack([force_row, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
-    b = np.stack([sigma, np.ones(n)], axis=1)
+    n, m = b.shape
+    sigma = b[:, 0]
+    g = np.vstack([rows, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
     q0 = np.full(n, preload_hat)
     g0 = preload_hat ** (2.0 / 3.0) - float(np.median(a @ q0 + c))
-    start = np.concatenate([q0, [0.0, g0]])
-    y, _, _ = _newton(a, b, c, g, np.array([0.0, preload_hat]), start, law)
+    start = np.concatenate([q0, np.zeros(m), [g0]])
+    f = np.zeros(m + 1)
+    f[-1] = preload_hat
+    y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law)
     return float(y[-1])
 
 
@@ -481,21 +532,21 @@ def lift_off_load(
     bodies: NutBodies | None = None,
     rtol: float = 1e-6,
     contact: TabulatedContact | None = None,
+    support: str = "guided",
 ) -> float:
     """Axial load at which the last ball of nut 2 lifts off (bisection on F_2(F_a) = 0) [N].
 
-    ``contact``: the tabulated law of a ball's contacts (None = Hertz), as in
-    :func:`solve_distribution`.
+    ``contact`` (the tabulated law of a ball's contacts, None = Hertz) and ``support`` (the
+    nut's radial guidance) as in :func:`solve_distribution`.
     """
     if layout.nuts != 2:
         raise InputError("nuts", layout.nuts, "2 (lift-off of the second nut)")
     args = (hertz_constant, contact_angle, lead_angle)
-    g = solve_distribution(layout, *args, 0.0, preload, bodies, contact=contact).interference
+    solve = partial(solve_distribution, layout, *args, contact=contact, support=support)
+    g = solve(axial_load=0.0, preload=preload, bodies=bodies).interference
 
     def unloaded(fa: float) -> bool:
-        dist = solve_distribution(
-            layout, *args, fa, preload, bodies, interference=g, contact=contact
-        )
+        dist = solve(axial_load=fa, preload=preload, bodies=bodies, interference=g)
         return bool(dist.nut_forces[1] <= 0.0)
 
     lo, hi = 0.0, 2.0**1.5 * preload
