@@ -184,3 +184,75 @@ def test_a_starved_supply_wears_faster_than_a_flooded_one(case: Case) -> None:
     assert not isinstance(wear_setup(starved).film_model, str)
     assert thin.psi > flooded.psi
     assert thin.depth_per_revolution.max() > flooded.depth_per_revolution.max()
+
+
+def _band_sigma(D: float, G: float, band: tuple[float, float]) -> float:
+    """(F3) written out: σ² = G^(2(D−1)) (L_u^(4−2D) − l_c^(4−2D)) / (2 ln γ (4 − 2D)), γ = 1.5."""
+    upper, lower = band
+    return math.sqrt(
+        G ** (2 * (D - 1))
+        * (upper ** (4 - 2 * D) - lower ** (4 - 2 * D))
+        / (2 * math.log(1.5) * (4 - 2 * D))
+    )
+
+
+@pytest.mark.parametrize("measured", [None, 2.0e-7])
+def test_running_in_acts_on_the_roughness_of_the_film_parameter(measured: float | None) -> None:
+    """σ_Λ of Λ = h_c/σ_Λ runs in with the surface: the profile's (F3) at D(h), G(h) of the
+    running-in law; a measured tcr.rms_roughness (of the [surface] raceway) by the same law's
+    ratio, σ_meas Σ(D(h), G(h))/Σ(D_ss, G_ss) — it used to stay at σ_meas, the new raceway's Λ
+    ignoring running-in. The engine's wear does not read σ_Λ."""
+    overrides: dict[str, object] = {
+        "wear.grid": [12, 48],
+        "wear.running_in": {"D": 1.3, "G": "1e-9 m", "depth": "0.2 um"},
+    }
+    if measured is not None:
+        overrides.update({"tcr.rms_roughness": measured, "tcr.rms_slope": 0.05})
+    setup = wear_setup(ballscrew.load_case(REF_PATH, overrides))
+    band = (8e-4, 2.5e-6)  # the [tcr] defaults
+    steady = _band_sigma(1.4, 1e-10, band)
+    for h in (0.0, 0.1e-6, 0.2e-6, 1e-6):
+        weight = math.exp(-h / 0.2e-6)
+        d = 1.4 + (1.3 - 1.4) * weight
+        g = math.exp(math.log(1e-10) + (math.log(1e-9) - math.log(1e-10)) * weight)
+        sigma = _band_sigma(d, g, band)
+        expected = sigma if measured is None else measured * sigma / steady
+        assert setup.surface_at(h).film_roughness == pytest.approx(expected, rel=1e-12)
+    run_in = setup.surface_at(50e-6).film_roughness
+    assert run_in == pytest.approx(steady if measured is None else measured, rel=1e-12)
+    assert setup.surface_at(0.0).film_roughness > 3.0 * run_in  # the new raceway is rougher
+    f1 = nut_force_pair(1500.0, 2000.0)[0]
+    zero = np.zeros(setup.y.size)
+    new = flank_rate(setup, 1, f1, 100 * RPM, zero)
+    assert new.film_parameter == pytest.approx(
+        new.film_thickness / setup.surface_at(0.0).film_roughness, rel=1e-12
+    )
+    other = dataclasses.replace(
+        setup, film_roughness=dataclasses.replace(setup.film_roughness, measured=1e-6)
+    )
+    np.testing.assert_array_equal(
+        flank_rate(other, 1, f1, 100 * RPM, zero).depth_per_revolution, new.depth_per_revolution
+    )
+
+
+def test_a_rough_ball_adds_in_quadrature_as_the_raceway_runs_in() -> None:
+    """With surface.ball the raceway's σ runs in and the ball's stays: σ_Λ(h) = √(σ_F3(D(h),
+    G(h))² + σ_b²) (Tallian 1967); it used to stay at the composite of the [surface] set."""
+    setup = wear_setup(
+        ballscrew.load_case(
+            REF_PATH,
+            {
+                "wear.grid": [12, 48],
+                "wear.running_in": {"D": 1.3, "G": "1e-9 m", "depth": "0.2 um"},
+                "surface.ball": {"D": 1.5, "G": "1e-11 m"},
+            },
+        )
+    )
+    band = (8e-4, 2.5e-6)
+    ball = _band_sigma(1.5, 1e-11, band)
+    assert setup.surface_at(0.0).film_roughness == pytest.approx(
+        math.hypot(_band_sigma(1.3, 1e-9, band), ball), rel=1e-12
+    )
+    assert setup.surface_at(50e-6).film_roughness == pytest.approx(
+        math.hypot(_band_sigma(1.4, 1e-10, band), ball), rel=1e-12
+    )

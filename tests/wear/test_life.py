@@ -96,6 +96,18 @@ def test_reference_run_history(ref_life) -> None:
     assert 1e6 * life.max_wear_depth[-1] == pytest.approx(2.43, rel=0.03)
 
 
+def test_reference_run_is_kept_to_1e_12_by_the_reported_film(ref_life) -> None:
+    """The film parameter the results report (Λ = h_c/σ_Λ of the whole ball load, σ_Λ running
+    in) is not an input of the engine: the reference history is the one of the version that
+    reported the engine's separation over σ_Λ, to 1e-12."""
+    assert ref_life.steps == 34
+    assert ref_life.max_wear_depth[-1] == pytest.approx(2.429758023544411e-06, rel=1e-12)
+    assert ref_life.preload[-1] == pytest.approx(244.33178071227547, rel=1e-12)
+    assert ref_life.friction_torque[-1] == pytest.approx(0.06892472280377022, rel=1e-12)
+    assert ref_life.profiles[-1].sum() == pytest.approx(3.912344252766731e-04, rel=1e-12)
+    assert ref_life.max_wear_depth.sum() == pytest.approx(4.112130345469348e-05, rel=1e-12)
+
+
 def test_reference_run_growth_per_level_and_lift_off(ref_life) -> None:
     """h_max growth per level 0.968 / 0.693 / 0.769 µm; nut 2 lifts off from level 2 on."""
     life = ref_life

@@ -1,17 +1,22 @@
-"""The reported film parameter Λ and asperity share ψ are the wear engine's own."""
+"""The reported asperity share ψ is the wear engine's own; the reported film parameter Λ is the
+operating point's, h_c of the whole ball load over σ_Λ."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
 
 import ballscrew
 import ballscrew.wear.life
+from ballscrew.analyses.operating_point import OperatingPointWarning
 from ballscrew.analyses.wear import wear_setup
 from ballscrew.analyses.wear_film import part_films
+from ballscrew.analyses.wear_report import history, summary
 from ballscrew.contact import hertz
-from ballscrew.lubrication import share_load
+from ballscrew.lubrication import regime, share_load
+from ballscrew.wear.programme import WearLevel
 from ballscrew.wear.setup import nut_force_pair
 from ballscrew.wear.step import entrainment_speed
 
@@ -80,3 +85,54 @@ def test_the_engine_psi_uses_the_loaded_cells_not_the_hertz_ellipse(coarse_case)
     assert film.ball_load == pytest.approx(q, rel=1e-12)
     assert film.asperity_share == pytest.approx(0.719, abs=1e-3)
     assert ellipse.psi == pytest.approx(0.676, abs=1e-3)
+
+
+RPM = math.pi / 30.0
+
+
+def test_the_reported_film_parameter_is_the_operating_points(coarse_case) -> None:
+    """The wear results' Λ is the operating point's, h_c of the whole ball load over σ_Λ
+    (E6.6), at the same speed, load and viscosity (the example's constant [medium]); it used to
+    be the engine's separation h((1 − ψ)Q) over σ_Λ, 0.0417 against 0.0392 at level 1."""
+    setup = wear_setup(coarse_case)
+    levels = (WearLevel(2000.0, 100 * RPM, 1.0), WearLevel(3000.0, 1000 * RPM, 1.0))
+    for film, level in zip(part_films(setup, levels), levels, strict=True):
+        with pytest.warns(OperatingPointWarning, match="boundary lubrication"):
+            point = ballscrew.operating_point(coarse_case, level.speed, level.axial_load)
+        assert film.film_parameter == pytest.approx(point.film_parameter, rel=1e-9)
+        assert film.film_thickness == pytest.approx(point.film_thickness, rel=1e-9)
+        assert film.film_roughness == point.film_roughness
+        assert film.regime == regime(point.film_parameter) == "boundary"
+        # Hamrock & Dowson (1977): h_c ∝ Q_f^−0.067, so the engine's separation under the
+        # film-borne load (1 − ψ)Q is (1 − ψ)^−0.067 times the film of the whole load
+        ratio = (1.0 - film.asperity_share) ** -0.067
+        assert film.separation == pytest.approx(ratio * film.film_thickness, rel=1e-12)
+
+
+def test_the_supply_factor_thins_the_reported_film(coarse_case) -> None:
+    """wear.film_factor φ scales the wear engine's film, h = φ h_c, and with it the reported Λ
+    (where the operating point, which does not read [wear], keeps the flooded film)."""
+    setup = wear_setup(coarse_case)
+    level = setup.spec.programme[0]
+    flooded = part_films(setup, (level,))[0]
+    starved = dataclasses.replace(setup, spec=dataclasses.replace(setup.spec, film_factor=0.5))
+    half = part_films(starved, (level,))[0]
+    assert half.film_parameter == pytest.approx(0.5 * flooded.film_parameter, rel=1e-12)
+    assert half.asperity_share > flooded.asperity_share
+
+
+def test_summary_and_history_give_the_film_parameter_and_its_regime(coarse_case) -> None:
+    """summary.json's lubrication entries and the history dataset carry Λ = h_c/σ_Λ, its
+    regime, ψ and the engine's separation of each part; the wear history is unchanged."""
+    result = ballscrew.wear_life(coarse_case, max_steps=1)
+    (entry,) = summary(result)["lubrication"]
+    (film,) = result.films
+    assert entry["film_parameter"]["value"] == film.film_parameter
+    assert entry["film_parameter"]["value"] == pytest.approx(
+        entry["film_thickness"]["value"] / entry["film_roughness"]["value"], rel=1e-15
+    )
+    assert entry["lubrication_regime"] == "boundary"
+    assert entry["separation"]["value"] > entry["film_thickness"]["value"]
+    data = history(result)
+    assert data["film_parameter"].sel(part="level 1").item() == film.film_parameter
+    assert data["asperity_share"].sel(part="level 1").item() == film.asperity_share

@@ -71,7 +71,8 @@ def runs() -> dict[tuple[str, int], tuple[float, float, float]]:
 
 def test_flooded_film_ends_the_wear_at_speed(runs) -> None:
     """Flooded: the film grows with speed faster than the operating point's temperature thins
-    it (21 → 34 °C), so ḣ(1500 rpm) is about 2e-7 of ḣ(100 rpm) (Λ from 1.7 to 5.9)."""
+    it (21 → 34 °C), so ḣ(1500 rpm) is about 5e-8 of ḣ(100 rpm) (the separation over the σ of
+    one wear-grid cell from 1.8 to 6.2; Λ = h_c/σ_Λ only from 0.08 to 0.27)."""
     slow, fast = runs["flooded", 100], runs["flooded", 1500]
     assert fast[2] > slow[2]  # hotter at speed ...
     assert fast[1] > 2.0 * slow[1]  # ... yet a much thicker film
@@ -80,8 +81,8 @@ def test_flooded_film_ends_the_wear_at_speed(runs) -> None:
 
 def test_a_starved_inlet_keeps_part_of_the_wear_at_speed(runs) -> None:
     """Starved (m = 1.2): the inlet meniscus limits the film's growth with speed, the asperities
-    keep carrying load and ḣ(1500 rpm) stays above 1e-3 of ḣ(100 rpm) (about 2 %, Λ from 1.2
-    to 3.4)."""
+    keep carrying load and ḣ(1500 rpm) stays above 1e-3 of ḣ(100 rpm) (about 1.5 %, the
+    separation over the cell's σ from 1.2 to 3.6)."""
     slow, fast = runs["starved", 100], runs["starved", 1500]
     flooded = runs["flooded", 100], runs["flooded", 1500]
     assert fast[1] / slow[1] < flooded[1][1] / flooded[0][1]  # the film grows less

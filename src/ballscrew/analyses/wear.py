@@ -31,13 +31,13 @@ from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import gap_function, raceway_curvature
 from ballscrew.loads import ball_load, preload_drag_torque
-from ballscrew.lubrication import AsperitySurface
+from ballscrew.lubrication import AsperitySurface, composite_roughness
 from ballscrew.validation import case_with
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.life import check_wear_work, integrate_wear
 from ballscrew.wear.load_classes import LoadClasses, load_classes
 from ballscrew.wear.programme import RunningIn, WearLevel, WearOptions
-from ballscrew.wear.setup import FLANKS, WearSetup, nut_force_pair
+from ballscrew.wear.setup import FLANKS, FilmRoughness, WearSetup, nut_force_pair
 from ballscrew.wear.strips import working_raceway_length
 
 __all__ = ["WearResult", "fingerprint", "wear_life", "wear_options", "wear_setup"]
@@ -219,12 +219,23 @@ def wear_setup(case: Case) -> WearSetup:
         torque_factor=factor,
         tolerance=case.numerics.tolerance,
         max_iterations=case.numerics.max_iterations,
+        film_roughness=_film_roughness(case),
         body_compliance=_preload_loop_compliance(case, params),
         film_model=params.lubrication.film_model,
         entrainment=case.kinematics.entrainment,
         ball_classes=classes,
         torque_offset=spec.torque_offset,
     )
+
+
+def _film_roughness(case: Case) -> FilmRoughness:
+    """σ_Λ of the case's raceway as it runs in: the band of ``[tcr]``, a rough ball's σ over it
+    (``surface.ball``) and ``tcr.rms_roughness`` when measured (theory manual, *Wear*,
+    running-in)."""
+    tcr, ball = case.tcr, case.surface.ball
+    band = (tcr.sampling_length, tcr.cutoff_length)
+    rough = 0.0 if ball is None else composite_roughness(ball.D, ball.G, *band)
+    return FilmRoughness(band, rough, tcr.rms_roughness)
 
 
 def _ball_classes(

@@ -2,13 +2,21 @@
 
 The wear laws act on the asperity-borne load only, ψQ (Johnson, Greenwood & Poon 1972); a part
 whose EHL film carries practically all of the load wears practically nothing. This module gives,
-per programme level (and per duty segment), the film parameter Λ = h/σ and ψ of the mean ball of
-the more loaded nut at the start of the level, so that a report can say why a level wears
-nothing. They are the wear engine's own: one contact of :func:`ballscrew.wear.step.step_rates`
-each, on the raceway worn by the earlier levels, under the preload left at the level's start and
-with the solved contact's loaded cells as the nominal area A_n. Under the uniform ball-load
-distribution that is the ψ the engine applies at the level's first step (to the contact solver's
-tolerance); under load classes it is that of the class of the mean load.
+per programme level (and per duty segment), for the mean ball of the more loaded nut at the start
+of the level, so that a report can say why a level wears nothing:
+
+* the film parameter Λ = h_c/σ_Λ (E6.6; :func:`ballscrew.lubrication.film_parameter`) of the
+  operating point and the ball model: the central film of the whole ball load (times
+  ``wear.film_factor``) over the composite roughness σ_Λ of the raceway (after running-in, if
+  any), and its regime (Hamrock 1994);
+* the wear engine's own asperity share ψ and its mean-plane separation h (the film of the
+  film-borne load), from the cell-scale micro-contact of the wear grid (σ of one cell, E5.3).
+
+Both come from one contact of :func:`ballscrew.wear.step.step_rates` each, on the raceway worn by
+the earlier levels, under the preload left at the level's start and with the solved contact's
+loaded cells as the nominal area A_n. Under the uniform ball-load distribution that is the ψ the
+engine applies at the level's first step (to the contact solver's tolerance); under load classes
+it is that of the class of the mean load.
 """
 
 from __future__ import annotations
@@ -19,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ballscrew.lubrication import film_parameter, regime
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.programme import WearLevel
 from ballscrew.wear.setup import FLANKS, WearSetup, nut_force_pair
@@ -58,11 +67,31 @@ class PartFilm:
     """Axial load F_a [N]."""
     ball_load: float
     """Mean ball load Q of the more loaded nut [N]."""
-    film_parameter: float | None
-    """Λ = h/σ: mean-plane separation h under the film-borne load over the raceway's RMS
-    roughness σ; None when dry or at rest."""
+    film_thickness: float | None
+    """Central EHL film h_c of the whole ball load Q, times ``wear.film_factor`` [m]; None
+    when dry or at rest."""
+    film_roughness: float
+    """Composite RMS roughness σ_Λ (E6.6) of the raceway at the level's start [m]."""
     asperity_share: float
-    """ψ = F_asp/Q ∈ [0, 1] (1: dry, at rest or boundary lubrication)."""
+    """ψ = F_asp/Q ∈ [0, 1] of the wear engine (1: dry, at rest or boundary lubrication)."""
+    separation: float | None = None
+    """Mean-plane separation h of the wear engine's load sharing: the film of the film-borne
+    load (1 − ψ)Q [m]; None when dry or at rest."""
+
+    @property
+    def film_parameter(self) -> float | None:
+        """Λ = h_c/σ_Λ (E6.6), the operating point's film parameter; None when dry or at
+        rest."""
+        if self.film_thickness is None:
+            return None
+        return film_parameter(self.film_thickness, self.film_roughness)
+
+    @property
+    def regime(self) -> str | None:
+        """Lubrication regime of :attr:`film_parameter` (boundary, mixed, EHL); None when dry
+        or at rest."""
+        lam = self.film_parameter
+        return None if lam is None else regime(lam)
 
     @property
     def name(self) -> str:
@@ -74,7 +103,7 @@ class PartFilm:
 def part_films(
     setup: WearSetup, programme: tuple[WearLevel, ...], life: WearLife | None = None
 ) -> tuple[PartFilm, ...]:
-    """Λ and ψ of every constant part of ``programme`` (see the module docstring), all its
+    """Λ, ψ and h of every constant part of ``programme`` (the module docstring), all its
     contacts solved in one :func:`~ballscrew.wear.step.step_rates` batch.
 
     ``life``: the run whose raceway and preload each level starts from (the levels it has not
@@ -96,10 +125,12 @@ def part_films(
             contacts[k] = StepContact(FLANKS[nut], forces[nut], part.speed, depth[nut], level=part)
     rates = dict(zip(contacts, step_rates(setup, list(contacts.values())), strict=True))
     return tuple(
-        PartFilm(i, j, part.speed, part.axial_load, rates[k].load, rates[k].film_parameter,
-                 rates[k].psi)
+        PartFilm(
+            i, j, part.speed, part.axial_load, rates[k].load, rates[k].film_thickness,
+            rates[k].film_roughness, rates[k].psi, rates[k].separation,
+        )
         if k in rates
-        else PartFilm(i, j, part.speed, part.axial_load, 0.0, None, 1.0)
+        else PartFilm(i, j, part.speed, part.axial_load, 0.0, None, math.nan, 1.0)
         for k, (i, j, part) in enumerate(parts)
     )  # fmt: skip
 
@@ -127,7 +158,8 @@ def full_film_messages(films: tuple[PartFilm, ...]) -> list[str]:
     return [
         f"{f.name} ({f.speed / _RPM:.4g} rpm, {f.axial_load:.4g} N) wears practically nothing: "
         f"the EHL film (Λ = {f.film_parameter:.3g}) carries all but ψ = {f.asperity_share:.2g} "
-        "of the ball load, and the wear law acts on the asperity-borne load ψQ only"
+        "of the ball load on the wear engine's cell-scale asperities, and the wear law acts on "
+        "the asperity-borne load ψQ only"
         for f in films
         if f.asperity_share < FULL_FILM_SHARE and f.film_parameter is not None
     ]

@@ -17,7 +17,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
-from ballscrew.analyses.wear_film import FULL_FILM_SHARE
+from ballscrew.analyses.wear_film import FULL_FILM_SHARE, PartFilm
 from ballscrew.case import Case
 from ballscrew.loads import preload_flanks
 from ballscrew.plotting import legend_outside, pyplot, revolutions_axis, save_figure
@@ -105,6 +105,25 @@ def _lubrication_options(case: Case) -> dict[str, Any]:
     return out
 
 
+def _film_scalars(film: PartFilm) -> dict[str, Any]:
+    """Λ = h_c/σ_Λ of the whole ball load (the operating point's), its regime and parts, and the
+    wear engine's asperity share ψ and separation h; the film entries None when dry or at rest."""
+
+    def maybe(number: float | None, unit: str) -> dict[str, Any] | None:
+        return None if number is None else value(number, unit)
+
+    return {
+        "film_parameter": maybe(film.film_parameter, ""),
+        "lubrication_regime": film.regime,
+        "film_thickness": maybe(film.film_thickness, "m"),
+        "film_roughness": maybe(
+            film.film_roughness if math.isfinite(film.film_roughness) else None, "m"
+        ),
+        "asperity_share": value(film.asperity_share, ""),
+        "separation": maybe(film.separation, "m"),
+    }
+
+
 def summary(result: WearResult) -> dict[str, Any]:
     """Scalars of the run: final wear, contact width, preload, torque and the model options."""
     life, case = result.life, result.case
@@ -134,8 +153,7 @@ def summary(result: WearResult) -> dict[str, Any]:
                 "speed": value(f.speed, "rad/s"),
                 "axial_load": value(f.axial_load, "N"),
                 "ball_load": value(f.ball_load, "N"),
-                "film_parameter": None if f.film_parameter is None else value(f.film_parameter, ""),
-                "asperity_share": value(f.asperity_share, ""),
+                **_film_scalars(f),
             }
             for f in result.films
         ],
@@ -202,6 +220,7 @@ def history(result: WearResult) -> xr.Dataset:
             ),
             "level_end": ("level_index", life.level_boundaries, {"units": "1"}),
             "level_load": ("level_index", life.level_loads, {"units": "N"}),
+            **_film_variables(result.films),
         },
         coords={
             "step": step,
@@ -209,9 +228,30 @@ def history(result: WearResult) -> xr.Dataset:
             "flank": [1, -1],
             "y": ("y", life.y, {"units": "m", "long_name": "across the groove"}),
             "level_index": np.arange(life.level_loads.size),
+            "part": [f.name for f in result.films],
         },
         attrs={"case": case.name, "model": life.model, "wear_coefficient": life.coefficient},
     )
+
+
+_FILM_VARIABLES = {
+    "film_parameter": ("1", "film parameter h_c/σ_Λ of the whole ball load (E6.6)"),
+    "film_thickness": ("m", "central EHL film h_c of the whole ball load"),
+    "film_roughness": ("m", "composite RMS roughness σ_Λ (E6.6)"),
+    "asperity_share": ("1", "asperity share ψ of the wear engine (E6.4)"),
+    "separation": ("m", "mean-plane separation of the wear engine (E6.4)"),
+}
+
+
+def _film_variables(films: tuple[PartFilm, ...]) -> dict[str, Any]:
+    """Per programme part at its level's start (NaN when dry or at rest): Λ = h_c/σ_Λ and its
+    parts, the wear engine's ψ and separation h."""
+    out = {}
+    for name, (unit, long_name) in _FILM_VARIABLES.items():
+        numbers = [getattr(f, name) for f in films]
+        column = np.array([math.nan if v is None else v for v in numbers], dtype=float)
+        out[name] = ("part", column, {"units": unit, "long_name": long_name})
+    return out
 
 
 def _levels(ax: Any, life: WearLife, unit: float) -> None:
@@ -340,9 +380,13 @@ def sections(result: WearResult) -> list[Section]:
 
 
 def _film_section(result: WearResult) -> list[Section]:
-    """Λ and ψ of each programme part: why a level wears little or nothing."""
+    """Λ, its regime and ψ of each programme part: why a level wears little or nothing."""
     if not result.films:
         return []
+
+    def nm(number: float | None) -> str:
+        return "–" if number is None else f"{1e9 * number:.3g}"
+
     rows = tuple(
         (
             f.name,
@@ -350,18 +394,36 @@ def _film_section(result: WearResult) -> list[Section]:
             f.axial_load,
             f.ball_load,
             "dry" if f.film_parameter is None else f"{f.film_parameter:.3g}",
+            f.regime or "dry",
             f"{f.asperity_share:.3g}",
+            nm(f.separation),
         )
         for f in result.films
     )
     text = (
         "The wear law acts on the asperity-borne part ψQ of the ball load Q only (Johnson, "
-        "Greenwood & Poon 1972): where the EHL film separates the surfaces (Λ = h/σ of a few, "
-        "ψ → 0) a level wears practically nothing, so the wear depth can stop growing from one "
-        "level to the next. Λ and ψ of the mean ball of the more loaded "
-        f"{_member(result.case)} at the start of each "
-        "level (the raceway worn and the preload lost by the earlier levels), as the wear engine "
-        f"applies them; below ψ = {FULL_FILM_SHARE:g} a warning says so."
+        "Greenwood & Poon 1972): where the EHL film separates the surfaces (ψ → 0) a level "
+        "wears practically nothing, so the wear depth can stop growing from one level to the "
+        "next. For the mean ball of the more loaded "
+        f"{_member(result.case)} at the start of each level (the raceway worn and the preload "
+        "lost by the earlier levels): Λ = h_c/σ_Λ, the central film of the whole ball load over "
+        "the raceway's composite RMS roughness, as the operating point and the kinematics report "
+        "it, with its regime (Hamrock 1994: below 1 boundary, 1–3 mixed, above 3 EHL); ψ and "
+        "the separation h (the film of the film-borne load) as the wear engine applies them, "
+        "from the asperities of one grid cell (the σ of one cell, not σ_Λ: ψ and Λ need not "
+        f"agree). Below ψ = {FULL_FILM_SHARE:g} a warning says so."
     )
-    table = Table(("part", "speed [rpm]", "F_a [N]", "Q [N]", "Λ [-]", "ψ [-]"), rows)
+    table = Table(
+        (
+            "part",
+            "speed [rpm]",
+            "F_a [N]",
+            "Q [N]",
+            "Λ = h_c/σ_Λ [-]",
+            "regime",
+            "ψ [-]",
+            "h, wear engine [nm]",
+        ),
+        rows,
+    )
     return [Section("Film and asperity share by level", paragraphs=(text,), tables=(table,))]

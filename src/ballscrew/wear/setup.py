@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -9,18 +10,47 @@ from numpy.typing import NDArray
 
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads import ball_load, nut_forces, preload_after_wear, preload_drag_torque
-from ballscrew.lubrication import AsperitySurface
+from ballscrew.lubrication import AsperitySurface, composite_roughness
 from ballscrew.lubrication.film import FilmModel
 from ballscrew.wear.load_classes import UNIFORM, LoadClasses
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.strips import working_raceway_length
 
-__all__ = ["FLANKS", "WearSetup", "nut_force_pair"]
+__all__ = ["FLANKS", "FilmRoughness", "WearSetup", "nut_force_pair"]
 
 FloatArray = NDArray[np.float64]
 FLANKS: tuple[int, int] = (1, -1)
 """The two flanks of the screw groove: +1 loaded by nut 1, −1 by nut 2 (the two loaded flanks
 of a preloaded single nut)."""
+
+
+@dataclass(frozen=True)
+class FilmRoughness:
+    """How the composite roughness σ_Λ of the film parameter (E6.6) follows the raceway's
+    profile (D, G) as it runs in.
+
+    The profile model's σ_Λ is Σ(D, G) = √(σ_F3(D, G)² + σ_b²): (F3) over the measurement band
+    [l_c, L_u] (:func:`~ballscrew.lubrication.composite_roughness`) and a rough ball's σ_b over
+    the same band in quadrature (Tallian 1967). A measured σ_Λ belongs to the ``[surface]``
+    (D_ss, G_ss) (the run-in raceway when running-in is given, ASSUMED) and runs in by the
+    profile model's ratio: σ_Λ(h) = σ_meas Σ(D(h), G(h))/Σ(D_ss, G_ss), D(h), G(h) of the
+    running-in law (:class:`~ballscrew.wear.programme.RunningIn`).
+    """
+
+    band: tuple[float, float]
+    """(L_u, l_c) of the roughness measurement [m]."""
+    ball: float = 0.0
+    """σ_b of a rough ball over the band [m] (0: smooth)."""
+    measured: float | None = None
+    """Measured σ_Λ of the ``[surface]`` raceway [m]; None: the profile model's."""
+
+    def sigma(self, D: float, G: float, steady: tuple[float, float], gamma: float = 1.5) -> float:
+        """σ_Λ [m] of the profile (D, G); ``steady``: the (D_ss, G_ss) of a measured σ."""
+        model = math.hypot(composite_roughness(D, G, *self.band, gamma=gamma), self.ball)
+        if self.measured is None:
+            return model
+        reference = composite_roughness(*steady, *self.band, gamma=gamma)
+        return self.measured * model / math.hypot(reference, self.ball)
 
 
 @dataclass(frozen=True)
@@ -54,6 +84,8 @@ class WearSetup:
     """Factor on the catalogue torque of (E9.1) (torque_scale or the initial-torque fit)."""
     tolerance: float
     max_iterations: int
+    film_roughness: FilmRoughness
+    """σ_Λ of the film parameter as the surface runs in (used with ``spec.running_in``)."""
     film_model: str | FilmModel = "hamrock_dowson"
     """Film-thickness model: a registered name (``ballscrew.lubrication.FILM_MODELS``) or that
     model corrected for the supply state and inlet heating (``ballscrew.lubrication.supply``)."""
@@ -76,12 +108,16 @@ class WearSetup:
         return self.viscosity is not None and self.pressure_viscosity is not None
 
     def surface_at(self, depth: float) -> AsperitySurface:
-        """The raceway surface after the worn depth ``depth`` [m] (running-in, if any)."""
+        """The raceway surface after the worn depth ``depth`` [m] (running-in, if any): its
+        (D, G) and its σ_Λ (:class:`FilmRoughness`, a measured one included)."""
         law = self.spec.running_in
         if law is None:
             return self.surface
-        d, g = law.surface(self.surface.Ds - 1.0, self.surface.G, depth)
-        return replace(self.surface, Ds=d + 1.0, G=g)
+        s = self.surface
+        steady = (s.Ds - 1.0, s.G)
+        d, g = law.surface(*steady, depth)
+        roughness = self.film_roughness.sigma(d, g, steady, s.gamma)
+        return replace(s, Ds=d + 1.0, G=g, roughness=roughness)
 
     def lubricant(self, level: WearLevel | None) -> tuple[float | None, float | None]:
         """(η₀, α_p) of ``level``'s operating point, or the run's own values."""

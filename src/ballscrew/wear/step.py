@@ -8,9 +8,11 @@ solve); :func:`flank_rate` is one contact of it.
 
 from __future__ import annotations
 
+import math
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -18,7 +20,8 @@ from ballscrew.budget import check_memory, contact_batch_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.kinematics.sliding import sliding_field_closed_form
-from ballscrew.lubrication import share_loads
+from ballscrew.lubrication import film_parameter, share_loads
+from ballscrew.lubrication.film import film_function
 from ballscrew.wear.profile import worn_gap
 from ballscrew.wear.programme import WearLevel
 from ballscrew.wear.rates import cell_wear_rate
@@ -54,9 +57,22 @@ class FlankRate:
     depth_per_revolution: FloatArray
     """Δh_j per screw revolution if this force acted all the time [m/rev]."""
     iterations: int
-    film_parameter: float | None = None
-    """Λ = h/σ of the film that gives ψ (its mean-plane separation over the RMS roughness of the
-    worn surface); None when dry or at rest."""
+    film_thickness: float | None = None
+    """Central EHL film h_c of the whole ball load Q (times ``wear.film_factor``) [m]; None when
+    dry or at rest."""
+    film_roughness: float = math.nan
+    """Composite RMS roughness σ_Λ (E6.6) of the flank's surface at its worn depth [m]."""
+    separation: float | None = None
+    """Mean-plane separation h = φ h_c((1 − ψ)Q) of the engine's load sharing (E6.4): the film
+    of the film-borne load, whose cell-scale asperities carry ψQ [m]; None when dry or at rest."""
+
+    @property
+    def film_parameter(self) -> float | None:
+        """Film parameter Λ = h_c/σ_Λ (E6.6) of the whole ball load, the operating point's;
+        None when dry or at rest."""
+        if self.film_thickness is None:
+            return None
+        return film_parameter(self.film_thickness, self.film_roughness)
 
 
 @dataclass(frozen=True)
@@ -77,6 +93,14 @@ class StepContact:
     """Programme level (lubricant state, stroke); None: the run's own."""
     load_ratio: float = 1.0
     """Ball load over the nut's mean ball load (a load class; 1: uniform)."""
+
+
+class _Film(NamedTuple):
+    """Asperity share ψ, central film h_c of the whole load and separation h of one contact."""
+
+    psi: float
+    central: float | None
+    separation: float | None
 
 
 def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[FlankRate, ...]:
@@ -117,7 +141,7 @@ def step_rates(setup: WearSetup, contacts: Sequence[StepContact]) -> tuple[Flank
         solved.update(zip(group, results, strict=True))
     films = _asperity_shares(setup, contacts, loads, [solved[i] for i in range(len(contacts))])
     return tuple(
-        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level, *films[i])
+        _rate(setup, c.flank, q, solved[i], c.speed, c.depth, c.level, films[i])
         for i, (c, q) in enumerate(zip(contacts, loads, strict=True))
     )
 
@@ -127,10 +151,10 @@ def _asperity_shares(
     contacts: Sequence[StepContact],
     loads: Sequence[float],
     solved: Sequence[ContactResult],
-) -> list[tuple[float, float | None]]:
-    """JGP asperity share ψ (E6.4) and film parameter Λ = h/σ of each contact, A_n its loaded
-    cells; the contacts on one surface, lubricant and speed are solved together
-    (:func:`share_loads`); dry or at rest: (1, None)."""
+) -> list[_Film]:
+    """JGP asperity share ψ (E6.4) of each contact, A_n its loaded cells, with its separation h,
+    the central film h_c of its whole load and σ_Λ; the contacts on one surface, lubricant and
+    speed are solved together (:func:`share_loads`); dry or at rest: ψ = 1 and no film."""
     groups: dict[tuple[object, ...], list[int]] = {}
     for i, c in enumerate(contacts):
         eta, alpha = setup.lubricant(c.level)
@@ -143,7 +167,9 @@ def _asperity_shares(
                 entrainment_speed(setup.geometry, c.speed, setup.entrainment),
             )
             groups.setdefault(key, []).append(i)
-    films: list[tuple[float, float | None]] = [(1.0, None)] * len(contacts)
+    films = [_Film(1.0, None, None) for _ in contacts]
+    factor = setup.spec.film_factor
+    film = film_function(setup.film_model)
     for (surface, eta, alpha, speed), group in groups.items():
         shares = share_loads(
             [loads[i] for i in group],
@@ -155,11 +181,15 @@ def _asperity_shares(
             [_loaded_area(setup, solved[i]) for i in group],
             surface,
             film_model=setup.film_model,
-            film_factor=setup.spec.film_factor,
+            film_factor=factor,
         )
+        args = (setup.rx, setup.ry, 2.0 * surface.e_star, eta, alpha, abs(speed))
         for i, share in zip(group, shares, strict=True):
-            film = None if share.film is None else share.separation / surface.film_roughness
-            films[i] = (share.psi, film)
+            if share.film is not None:
+                whole = factor * film(*args, loads[i]).central
+                films[i] = _Film(share.psi, whole, share.separation)
+            else:
+                films[i] = _Film(share.psi, None, None)
     return films
 
 
@@ -192,10 +222,9 @@ def _rate(
     screw_speed: float,
     depth: FloatArray,
     level: WearLevel | None,
-    psi: float,
-    film: float | None,
+    film: _Film,
 ) -> FlankRate:
-    """Sliding, cell wear and raceway depth rate of one solved contact of asperity share ψ."""
+    """Sliding, cell wear and raceway depth rate of one solved contact of film state ``film``."""
     p = np.asarray(sol.pressure, dtype=float)
     if p[[0, -1], :].any() or p[:, [0, -1]].any():
         warnings.warn(
@@ -212,7 +241,7 @@ def _rate(
     s = surface
     w = cell_wear_rate(
         setup.spec.model,
-        psi * p,
+        film.psi * p,
         speed,
         cell,
         s.Ds,
@@ -226,7 +255,17 @@ def _rate(
         strip_wear_speed(w, setup.dx), setup.balls, setup.raceway_length_of(level)
     )
     per_rev = depth_per_revolution(rate, screw_speed)
-    return FlankRate(q, p, float(psi), w, per_rev, sol.iterations, film)
+    return FlankRate(
+        q,
+        p,
+        float(film.psi),
+        w,
+        per_rev,
+        sol.iterations,
+        film.central,
+        surface.film_roughness,
+        film.separation,
+    )
 
 
 def _loaded_area(setup: WearSetup, sol: ContactResult) -> float:
