@@ -408,16 +408,18 @@ def _motion_note(result: DesignCheck) -> str:
 def _support_note(result: DesignCheck) -> str:
     """What takes the balls' radial force and tilting moment (``loads.nut_support``)."""
     at = (
-        "under the largest axial load (a reverse load's as the mirror image of the forward "
-        "one, ASSUMED)"
+        "under the largest axial load (a reverse one taken as the mirror image of the forward "
+        "load, ASSUMED)"
     )
     if result.case.loads.nut_support == "free":
         return (
             " Nut support free: the nut balances the net radial force and tilting moment of its "
             "balls (the helix places them unsymmetrically) and any external ones "
             "(loads.nut_radial_load, nut_tilting_moment) by shifting and tilting on its balls "
-            f"relative to the screw, given {at}; the lift-off with bodies is that of the free nut "
-            "without the lead and ball-diameter errors or the external radial force and moment."
+            f"relative to the screw, given {at}; the lift-off with bodies is where the last ball "
+            f"of the second {result.part} lifts off (the tilt keeps a few loaded long after "
+            f"that {result.part}'s force has nearly gone), without the lead and ball-diameter "
+            "errors or the external radial force and moment."
         )
     return (
         " Nut support guided: the helix places the balls unsymmetrically, and the nut's housing "
