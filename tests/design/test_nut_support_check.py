@@ -83,14 +83,13 @@ def test_a_free_nut_reports_its_shift_and_tilt() -> None:
 def test_the_lift_off_with_bodies_is_that_of_the_free_nut() -> None:
     """The free nut's tilt keeps balls of nut 2 loaded beyond the guided nut's lift-off: the
     curve's lift-off is where the free distribution's nut 2 force vanishes (the bisection's
-    tolerance 1e-4), well above the guided one, and inside the curve."""
+    tolerance 1e-4), well above the guided one."""
     guided = check("guided").to_xarray().attrs["lift_off_load_bodies_N"]
     free = check("free")
     curve = free.to_xarray()
     lift = curve.attrs["lift_off_load_bodies_N"]
     assert curve.attrs["nut_support"] == "free"
     assert lift > 1.2 * guided
-    assert curve["body_load"].values.max() >= lift
     params = ScrewParameters.from_case(free.case)
     spec, root = free.case.loads, free.root_diameter
     g = elastic_distribution(params, spec, root, 0.0, errors=False).interference
