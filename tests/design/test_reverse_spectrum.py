@@ -79,6 +79,7 @@ def test_reverse_only_equals_forward_with_the_nuts_swapped() -> None:
     assert reverse.rating_life == forward.rating_life
     assert reverse.static_safety_factor == forward.static_safety_factor
     assert reverse.lost_motion == forward.lost_motion
+    assert reverse.nut_radial_force == forward.nut_radial_force  # mirror image, ASSUMED
     margins = {m.name: (m.demand, m.capacity) for m in forward.margins}
     assert {m.name: (m.demand, m.capacity) for m in reverse.margins} == margins
 

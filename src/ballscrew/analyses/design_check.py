@@ -181,6 +181,16 @@ class DesignCheck(Presented):
     ``[design] bearing_stiffness``."""
     preload_drag_torque: float
     """Catalogue preload drag torque [N·m]."""
+    nut_radial_force: float | None
+    """|F_r| of the balls' net radial force on a guided nut under the largest |F_a| of the
+    spectrum, which its housing takes [N] (``loads.nut_support = "guided"``; else None)."""
+    nut_tilting_moment: float | None
+    """|M| of the balls' net tilting moment about the guided nut's centre, same load [N·m]."""
+    nut_radial_displacement: float | None
+    """|u| of a free nut's radial displacement relative to the screw at its centre under the
+    largest |F_a| [m] (``loads.nut_support = "free"``; else None)."""
+    nut_tilt: float | None
+    """|γ| of a free nut's tilt relative to the screw, same load [rad]."""
     lost_motion: float
     """Lost motion at a reversal of the largest |F_a| = F of the spectrum,
     2 (x_nut(F) + F/K_shaft [+ F/K_bearings]) [m]: x_nut the nut's displacement under F with
@@ -393,10 +403,11 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
 
 def _elastic_nut(
     params: ScrewParameters, case: Case, root: float, largest: float
-) -> tuple[float, float]:
-    """(stiffness at the case's axial load, travel x(F) − x(0) under the largest load F) of the
-    nut with contacts and bodies [N/m, m]. A preloaded nut keeps the spacer interference of
-    F = 0 (one solve, shared); without preload x(0) = 0, the unloaded contacts."""
+) -> tuple[float, float, Distribution | None]:
+    """(stiffness at the case's axial load, travel x(F) − x(0) under the largest load F, the
+    distribution under F) of the nut with contacts and bodies [N/m, m]. A preloaded nut keeps
+    the spacer interference of F = 0 (one solve, shared); without preload x(0) = 0, the
+    unloaded contacts (no distribution under F = 0)."""
     run = partial(elastic_distribution, params, case.loads, root, numerics=case.numerics)
     solved: dict[float, Distribution] = {}
     interference = None
@@ -411,9 +422,25 @@ def _elastic_nut(
 
     stiffness = at(params.axial_load).stiffness
     if largest == 0.0:
-        return stiffness, 0.0
+        return stiffness, 0.0, solved.get(0.0)
     rest = solved[0.0].displacement if 0.0 in solved else 0.0
-    return stiffness, at(largest).displacement - rest
+    return stiffness, at(largest).displacement - rest, at(largest)
+
+
+def _nut_rigid_body(dist: Distribution | None, support: str) -> dict[str, float | None]:
+    """|F_r| [N] and |M| [N·m] of the balls on a guided nut (what its housing takes), or a free
+    nut's radial displacement |u| [m] and tilt |γ| [rad], from ``dist``; None where they do not
+    apply (the other support, no loaded ball)."""
+    names = ("nut_radial_force", "nut_tilting_moment", "nut_radial_displacement", "nut_tilt")
+    if dist is None:
+        return dict.fromkeys(names)
+    resultant = dist.resultant
+    pairs = (resultant[1:3], resultant[3:], dist.radial_displacement, dist.tilt)
+    shown = (support == "guided",) * 2 + (support == "free",) * 2
+    return {
+        name: float(np.hypot(*pair)) if used else None
+        for name, pair, used in zip(names, pairs, shown, strict=True)
+    }
 
 
 def _warn(
@@ -477,7 +504,7 @@ def design_check(case: Case) -> DesignCheck:
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, flanks)
     f_max = spectrum.max_load
     with recorded_warnings() as distribution_messages:
-        nut_k, travel = _elastic_nut(params, case, root, f_max)
+        nut_k, travel, loaded = _elastic_nut(params, case, root, f_max)
     shaft_k = design.shaft_axial_stiffness(
         root, length, screw.youngs_modulus, spec.mounting, spec.nut_distance
     )
@@ -516,6 +543,7 @@ def design_check(case: Case) -> DesignCheck:
         "lost_motion": design.lost_motion(
             travel, f_max, shaft_k, *filter(None, (spec.bearing_stiffness,))
         ),
+        **_nut_rigid_body(loaded, case.loads.nut_support),
         "thermal_elongation": None
         if rise is None
         else design.thermal_elongation(length, screw.thermal_expansion, rise),

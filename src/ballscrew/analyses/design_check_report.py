@@ -48,6 +48,10 @@ _VALUES: dict[str, tuple[str, str, float, str]] = {
     "preload_drag_torque_min": ("N*m", "preload drag torque, lower end of the band", 1.0, "N·m"),
     "preload_drag_torque_max": ("N*m", "preload drag torque, upper end of the band", 1.0, "N·m"),
     "lost_motion": ("m", "lost motion at a reversal of the largest load", 1e6, "µm"),
+    "nut_radial_force": ("N", "radial force on the guided nut at the largest load", 1.0, "N"),
+    "nut_tilting_moment": ("N*m", "tilting moment on the guided nut, same load", 1.0, "N·m"),
+    "nut_radial_displacement": ("m", "radial shift of the free nut at the largest load", 1e6, "µm"),
+    "nut_tilt": ("rad", "tilt of the free nut, same load", 1e6, "µrad"),
     "thermal_elongation": ("m", "thermal elongation", 1e6, "µm"),
     "thermal_pretension": ("N", "pretension for the temperature rise", 1e-3, "kN"),
 }
@@ -68,6 +72,7 @@ def summary(result: DesignCheck) -> dict[str, Any]:
     return {
         "case": result.case.name,
         **{k: v for k, v in values.items() if v is not None},
+        "nut_support": result.case.loads.nut_support,
         "load_ratings_computed": list(result.computed_ratings),
         "equivalent_loads": [_quantity(f, "N") for f in result.equivalent_loads],
         "load_spectrum": {
@@ -93,16 +98,22 @@ def _params(result: DesignCheck) -> ScrewParameters:
     return ScrewParameters.from_case(result.case)
 
 
-def ball_distribution(result: DesignCheck) -> Distribution:
-    """Elastic load of every ball (contacts and bodies) at the case's preload and axial load."""
+def ball_distribution(result: DesignCheck, axial_load: float | None = None) -> Distribution:
+    """Elastic load of every ball (contacts and bodies) at the case's preload and
+    ``axial_load`` ≥ 0 [N] (None: the case's)."""
     case = result.case
     return elastic_distribution(
-        _params(result), case.loads, result.root_diameter, numerics=case.numerics
+        _params(result), case.loads, result.root_diameter, axial_load, numerics=case.numerics
     )
 
 
+def _largest_level(result: DesignCheck) -> float:
+    """The spectrum's level of the largest |F_a|, signed (a forward one where ± tie) [N]."""
+    return max(result.spectrum.loads, key=lambda f: (abs(f), f))
+
+
 def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
-    """Axial loads, displacement and stiffness with the bodies, and the lift-off load."""
+    """Axial loads, displacement and stiffness with the bodies."""
     params, spec, numerics = _params(result), result.case.loads, result.case.numerics
     fp = params.preload
     loads = np.linspace(0.0 if fp > 0 else top / _BODY_POINTS, top, _BODY_POINTS)
@@ -125,23 +136,30 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
         for f in loads
     ]
     x = np.array([r.displacement for r in runs])
-    lift = 0.0
-    if params.flanks.count == 2:
-        layout, bodies = nut_model(params, spec, result.root_diameter)
-        g = params.geometry
-        lift = lift_off_load(
-            layout,
-            sum(params.hertz_constants),
-            g.contact_angle,
-            g.lead_angle,
-            fp,
-            bodies,
-            1e-4,
-            contact=ball_contact_law(params, spec, numerics),
-        )
     if fp > 0:  # from the preloaded state at zero load; without preload x(0) = 0 already
         x = x - x[0]
-    return loads, x, np.array([r.stiffness for r in runs]), np.array(lift)
+    return loads, x, np.array([r.stiffness for r in runs])
+
+
+def _body_lift_off(result: DesignCheck) -> float:
+    """Axial load at which the last ball of the second loaded flank lifts off, contacts and
+    bodies, the case's nut support (0 with one loaded flank) [N]."""
+    params, spec = _params(result), result.case.loads
+    if params.flanks.count != 2:
+        return 0.0
+    layout, bodies = nut_model(params, spec, result.root_diameter)
+    g = params.geometry
+    return lift_off_load(
+        layout,
+        sum(params.hertz_constants),
+        g.contact_angle,
+        g.lead_angle,
+        params.preload,
+        bodies,
+        1e-4,
+        contact=ball_contact_law(params, spec, result.case.numerics),
+        support=spec.nut_support,
+    )
 
 
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
@@ -154,7 +172,7 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     loads = np.linspace(0.0 if fp > 0 else top / _CURVE_POINTS, top, _CURVE_POINTS)
     x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
     k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
-    body_loads, body_x, body_k, body_lift = _body_curve(result, top)
+    body_loads, body_x, body_k = _body_curve(result, top)
     return xr.Dataset(
         {
             "deflection": ("axial_load", x, {"units": "m", "long_name": "nut displacement"}),
@@ -176,8 +194,9 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
         },
         attrs={
             "lift_off_load_N": lift_off,
-            "lift_off_load_bodies_N": float(body_lift),
+            "lift_off_load_bodies_N": _body_lift_off(result),
             "preload_N": fp,
+            "nut_support": result.case.loads.nut_support,
             "nuts": result.case.screw.nuts,
             "flanks": nuts,
         },
@@ -206,8 +225,11 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
             ("lift_off_load_N", "C0", "lift-off 2^1.5 F_p, contacts"),
             ("lift_off_load_bodies_N", "C1", "lift-off with bodies"),
         ):
-            if curve.attrs[key] > 0:
-                ax.axvline(curve.attrs[key] * 1e-3, ls="--", c=color, lw=0.8, label=text)
+            at = curve.attrs[key] * 1e-3
+            if 0 < at <= loads.max():
+                ax.axvline(at, ls="--", c=color, lw=0.8, label=text)
+            elif at > 0:  # a free nut's tilt keeps balls loaded far beyond: said, not drawn
+                ax.plot([], [], ls="--", c=color, lw=0.8, label=f"{text} at {at:.4g} kN")
         ax.axvline(result.case.operating.axial_load * 1e-3, ls=":", c="C3", label="case")
         ax.set_xlabel("axial load [kN]")
         ax.set_ylim(bottom=0)
@@ -217,19 +239,32 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
 
 
 def _ball_figure(result: DesignCheck, path: Path) -> Path:
+    """Ball loads at the case's axial load and, where it differs, at the spectrum's largest
+    level: a reverse one as the mirror image of |F_a| (ASSUMED), nut 2 the loaded one."""
     plt = pyplot()
-    dist = ball_distribution(result)
-    q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
-    fig, ax = plt.subplots(figsize=(6.4, 3.4), layout="constrained")
-    for k in range(dist.layout.nuts):
-        ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{result.part} {k + 1}")
-        lifted = q[k] <= 0.0
-        if lifted.any():
-            ax.plot(z[k][lifted] * 1e3, q[k][lifted], "x", c="k", label="lifted off")
-    ax.set_xlabel("axial position of the ball [mm] (loaded end right)")
-    ax.set_ylabel("normal ball load [N]")
-    ax.set_ylim(0.0, 1.1 * max(float(dist.loads.max()), 1e-9))
-    ax.legend(fontsize=8, loc="lower center")
+    case_load, largest = result.case.operating.axial_load, _largest_level(result)
+    levels = [case_load] + ([largest] if largest != case_load else [])
+    fig, axes = plt.subplots(
+        1, len(levels), figsize=(4.6 * len(levels) + 1.8, 3.4), layout="constrained", sharey=True
+    )
+    top = 1e-9
+    for ax, level in zip(np.atleast_1d(axes), levels, strict=True):
+        dist = ball_distribution(result, abs(level))
+        q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
+        top = max(top, float(dist.loads.max()))
+        for k in range(dist.layout.nuts):
+            shown = k + 1 if level >= 0.0 else 2 - k  # reverse: flank 2 carries the load
+            ax.plot(z[k] * 1e3, q[k], ".-", ms=3, lw=0.8, label=f"{result.part} {shown}")
+            lifted = q[k] <= 0.0
+            if lifted.any():
+                ax.plot(z[k][lifted] * 1e3, q[k][lifted], "x", c="k", label="lifted off")
+        mirror = ", mirror image of +|F_a|" if level < 0.0 else ""
+        which = "case" if level == case_load else "largest of the spectrum"
+        ax.set_title(f"F_a = {level * 1e-3:.4g} kN ({which}{mirror})", fontsize=9)
+        ax.set_xlabel("axial position of the ball [mm] (loaded end right)")
+        ax.legend(fontsize=8, loc="lower center")
+    np.atleast_1d(axes)[0].set_ylabel("normal ball load [N]")
+    np.atleast_1d(axes)[0].set_ylim(0.0, 1.1 * top)
     return save_figure(fig, path)
 
 
@@ -272,8 +307,9 @@ def figures(result: DesignCheck) -> list[Figure]:
         ),
         Figure(
             "ball_loads",
-            "Normal load of every ball at the case's preload and axial load (contacts and "
-            "bodies); x: lifted-off balls.",
+            "Normal load of every ball at the case's preload and axial load and, where it "
+            "differs, at the largest load of the spectrum (contacts and bodies; a reverse load "
+            f"as the mirror image, {result.part} 2 the loaded one, ASSUMED); x: lifted-off balls.",
             partial(_ball_figure, result),
         ),
     ]
@@ -371,6 +407,28 @@ def _motion_note(result: DesignCheck) -> str:
     )
 
 
+def _support_note(result: DesignCheck) -> str:
+    """What takes the balls' radial force and tilting moment (``loads.nut_support``)."""
+    at = (
+        "under the largest axial load (a reverse one taken as the mirror image of the forward "
+        "load, ASSUMED)"
+    )
+    if result.case.loads.nut_support == "free":
+        return (
+            " Nut support free: the nut balances the net radial force and tilting moment of its "
+            "balls (the helix places them unsymmetrically) and any external ones "
+            "(loads.nut_radial_load, nut_tilting_moment) by shifting and tilting on its balls "
+            f"relative to the screw, given {at}; the lift-off with bodies is where the last ball "
+            f"of the second {result.part} lifts off (the tilt keeps a few loaded long after "
+            f"that {result.part}'s force has nearly gone), without the lead and ball-diameter "
+            "errors or the external radial force and moment."
+        )
+    return (
+        " Nut support guided: the helix places the balls unsymmetrically, and the nut's housing "
+        f"takes their net radial force and tilting moment about the nut's centre, given {at}."
+    )
+
+
 def _margin_row(m: Margin) -> tuple[str, float, float, str, float, str]:
     """A margin's table row, demand and capacity in one engineering unit (rpm, kN; SI in, as
     ``summary.json`` keeps them)."""
@@ -408,7 +466,8 @@ def sections(result: DesignCheck) -> list[Section]:
                 "nut stiffness from the Hertz contacts of every ball with the elastic shaft "
                 "under the nut and the nut body (theory manual, Loads). "
                 + _supports_note(result)
-                + _motion_note(result),
+                + _motion_note(result)
+                + _support_note(result),
             ),
             tables=(Table(("quantity", "value"), _value_rows(result)),),
             figures=("stiffness_curve", "ball_loads"),

@@ -1,0 +1,121 @@
+"""The design check of a guided and a free nut (``loads.nut_support``): the balls' radial force
+and tilting moment the housing takes, the free nut's shift and tilt, its lift-off, its figures.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+from tests.quick_cases import dump_toml
+from typer.testing import CliRunner
+
+import ballscrew
+from ballscrew.analyses.ball_loads import elastic_distribution
+from ballscrew.analyses.design_check import DesignCheck, design_check
+from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.case import case_from_dict
+from ballscrew.cli import app
+
+from .test_design_check import raw_case
+
+
+def raw_supported(support: str, **loads: object) -> dict:
+    raw = raw_case()
+    raw["loads"] = {"distribution": "elastic", "nut_support": support, **loads}
+    return raw
+
+
+def check(support: str) -> DesignCheck:
+    return design_check(case_from_dict(raw_supported(support)))
+
+
+def value_rows(result: DesignCheck) -> dict:
+    return dict(next(s for s in result.report() if s.title == "Design values").tables[0].rows)
+
+
+def test_a_guided_nut_reports_what_its_housing_takes() -> None:
+    """|F_r| and |M| of the balls on the nut under the largest load are ball_loads' (the helix's
+    part turn leaves them; a guided nut neither shifts nor tilts)."""
+    result = check("guided")
+    balls = ballscrew.ball_loads(result.case, axial_load=result.spectrum.max_load)
+    force, moment = np.hypot(*balls.radial_force), np.hypot(*balls.tilting_moment)
+    assert result.nut_radial_force == pytest.approx(force, rel=1e-9)
+    assert result.nut_tilting_moment == pytest.approx(moment, rel=1e-9)
+    assert force > 10.0 and moment > 0.1  # a real load on the housing, not rounding
+    assert result.nut_radial_displacement is None and result.nut_tilt is None
+    summary = result.summary()
+    assert summary["nut_support"] == "guided"
+    assert summary["nut_radial_force"] == {"value": pytest.approx(force, rel=1e-9), "unit": "N"}
+    assert summary["nut_tilting_moment"]["unit"] == "N*m"
+    assert "nut_tilt" not in summary and "nut_radial_displacement" not in summary
+    rows = value_rows(result)
+    assert rows["radial force on the guided nut at the largest load [N]"] == pytest.approx(force)
+    assert rows["tilting moment on the guided nut, same load [N·m]"] == pytest.approx(moment)
+    values = next(s for s in result.report() if s.title == "Design values")
+    assert "housing takes their net radial force" in values.paragraphs[0]
+
+
+def test_a_free_nut_reports_its_shift_and_tilt() -> None:
+    """|u| and |γ| are ball_loads' (µm and µrad in the report, SI in the summary); the balls'
+    net radial force on a free nut without external load balances to zero."""
+    result = check("free")
+    balls = ballscrew.ball_loads(result.case, axial_load=result.spectrum.max_load)
+    shift, tilt = np.hypot(*balls.radial_displacement), np.hypot(*balls.tilt)
+    assert result.nut_radial_displacement == pytest.approx(shift, rel=1e-9)
+    assert result.nut_tilt == pytest.approx(tilt, rel=1e-9)
+    assert shift > 1e-8 and tilt > 1e-6
+    assert np.hypot(*balls.radial_force) < 1e-9 * result.spectrum.max_load
+    assert result.nut_radial_force is None and result.nut_tilting_moment is None
+    summary = result.summary()
+    assert summary["nut_support"] == "free"
+    assert summary["nut_tilt"] == {"value": pytest.approx(tilt, rel=1e-9), "unit": "rad"}
+    assert summary["nut_radial_displacement"]["unit"] == "m"
+    rows = value_rows(result)
+    assert rows["radial shift of the free nut at the largest load [µm]"] == pytest.approx(
+        1e6 * shift
+    )
+    assert rows["tilt of the free nut, same load [µrad]"] == pytest.approx(1e6 * tilt)
+
+
+def test_the_lift_off_with_bodies_is_that_of_the_free_nut() -> None:
+    """The free nut's tilt keeps balls of nut 2 loaded beyond the guided nut's lift-off: the
+    curve's lift-off is where the free distribution's nut 2 force vanishes (the bisection's
+    tolerance 1e-4), well above the guided one."""
+    guided = check("guided").to_xarray().attrs["lift_off_load_bodies_N"]
+    free = check("free")
+    curve = free.to_xarray()
+    lift = curve.attrs["lift_off_load_bodies_N"]
+    assert curve.attrs["nut_support"] == "free"
+    assert lift > 1.2 * guided
+    params = ScrewParameters.from_case(free.case)
+    spec, root = free.case.loads, free.root_diameter
+    g = elastic_distribution(params, spec, root, 0.0, errors=False).interference
+    nut_2 = [
+        elastic_distribution(params, spec, root, f, g, errors=False).nut_forces[1]
+        for f in (0.998 * lift, lift)
+    ]
+    assert nut_2[0] > 0.0 and nut_2[1] <= 0.0
+
+
+def test_the_check_folder_of_a_free_nut_under_a_reverse_load(tmp_path: Path) -> None:
+    """A reverse largest load (nut 2, mirror image ASSUMED): the same shift and tilt as the
+    forward one, and the per-ball figure with the case's and the largest load."""
+    raw = raw_supported("free")
+    raw["operating"]["axial_load"] = "0 N"
+    raw["duty"] = [
+        {"speed": "1000 rpm", "axial_load": load, "duration": "10 min"}
+        for load in ("1 kN", "-2 kN")
+    ]
+    case_file = tmp_path / "case.toml"
+    case_file.write_text(dump_toml(raw))
+    out = tmp_path / "o"
+    run = CliRunner().invoke(app, ["check", str(case_file), "--out", str(out), "-q"])
+    assert run.exit_code == 0, run.output
+    summary = json.loads((out / "summary.json").read_text())
+    balls = ballscrew.ball_loads(case_from_dict(raw), axial_load=2000.0)
+    assert summary["nut_tilt"]["value"] == pytest.approx(np.hypot(*balls.tilt), rel=1e-9)
+    assert (out / "ball_loads.png").stat().st_size > 0
+    assert "radial shift of the free nut" in (out / "report.html").read_text()
