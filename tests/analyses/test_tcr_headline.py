@@ -117,3 +117,29 @@ def test_summary_and_report_name_the_headline_model(gao_case_path):
 def test_bad_headline_is_a_case_error(gao_case_path):
     with pytest.raises(ballscrew.case.CaseError, match=r"tcr\.headline.*V2/patch"):
         load_case(gao_case_path, {"tcr.headline": "Holm"})
+
+
+@pytest.mark.parametrize(
+    ("options", "line"),
+    [
+        ((), "  headline model: CMY, no fractal cell size (the paper's cell model: --variant V2"),
+        (("--variant", "V2"), "  headline model: V2 on 8 µm fractal cells, the paper's cell"),
+    ],
+    ids=["default", "paper"],
+)
+def test_console_names_the_headline_model(tmp_path, gao_case_path, options, line):
+    """``ballscrew tcr`` says which model its numbers are, before them, and how to get the
+    paper's cell model; ``-q`` prints only the folder."""
+    from typer.testing import CliRunner
+
+    from ballscrew.cli import app
+
+    out = tmp_path / "tcr"
+    args = ["tcr", str(gao_case_path), "--out", str(out), "--set", "numerics.cells_across=16"]
+    result = CliRunner().invoke(app, [*args, *options])
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert lines[0].startswith(line), lines
+    assert lines[1].startswith("  resistance ") and lines[-1] == f"results: {out.resolve()}"
+    quiet = CliRunner().invoke(app, [*args, "--force", "-q", *options])
+    assert quiet.output.strip() == f"results: {out.resolve()}"
