@@ -32,6 +32,10 @@ def test_default_headline_is_cmy(gao_case_path):
     assert result.headline == "CMY"
     assert result.resistance == result.models["CMY"].resistance
     assert result.resistance_per_area == pytest.approx(1.4443e-6, rel=1e-4)
+    spread = result.uncertainty
+    assert spread is None  # one model asked for (tcr.models = ["CMY"])
+    model = result.models["CMY"]
+    assert {type(model.resistance), type(model.resistance_per_area)} == {float}  # not NumPy's
 
 
 def test_default_converges_with_the_solver_grid(gao_case_path):
@@ -112,6 +116,21 @@ def test_summary_and_report_name_the_headline_model(gao_case_path):
     assert note in result.report()[0].paragraphs
     cells = _result(str(gao_case_path), **{"tcr.headline": "V2"}).summary()
     assert "8 µm cells: it follows the cell size" in cells["headline_model_note"]
+
+
+def test_report_marks_the_headline_among_the_rival_models(gao_case_path):
+    """The side-by-side table of the report: every model once, the headline marked, and the
+    spread stated with its factor."""
+    case = load_case(gao_case_path, {"numerics.cells_across": 16})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = ballscrew.screw_tcr(case)
+    [section] = [s for s in result.report() if s.title.startswith("Rival models")]
+    names = [row[0] for row in section.tables[0].rows]
+    assert names == [f"{n} (headline)" if n == "CMY" else n for n in result.models]
+    spread = result.uncertainty
+    assert f"a factor {spread.ratio:.3g}" in section.paragraphs[0]
+    assert spread.low <= result.resistance_per_area <= spread.high
 
 
 def test_bad_headline_is_a_case_error(gao_case_path):

@@ -484,7 +484,12 @@ def _models_section(result: ScrewTCR) -> list[Section]:
                 Table(
                     ("model", "R [K/W]", "R″ [m²K/W]", "what it is"),
                     tuple(
-                        (name, m.resistance, m.resistance_per_area, m.description)
+                        (
+                            f"{name} (headline)" if name == result.headline else name,
+                            m.resistance,
+                            m.resistance_per_area,
+                            m.description,
+                        )
                         for name, m in result.models.items()
                     ),
                 ),
