@@ -33,7 +33,12 @@ def time_tcr(case, repeats: int = 5) -> tuple[float, float, int]:
 def main() -> None:
     argparse.ArgumentParser(description=__doc__).parse_args()
     base = ballscrew.load_case(CASE)
-    print("Reference screw TCR (V2, Δ_f = 8 µm, 64 cells across, exact gap)")
+    spec = base.tcr
+    print(
+        f"Reference screw TCR (headline {spec.headline}, with {', '.join(spec.models)} and their "
+        f"patch variants beside it; details on Δ_f = {spec.cell_size * 1e6:g} µm cells; "
+        f"{base.numerics.cells_across} cells across, {base.numerics.gap_model} gap)"
+    )
     print(f"{'operating point':<28}{'solves':>7}{'first [s]':>11}{'warm [s]':>10}")
     for label, overrides in (
         ("preload only (F1 = F2)", {}),

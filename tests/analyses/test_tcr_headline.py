@@ -32,6 +32,10 @@ def test_default_headline_is_cmy(gao_case_path):
     assert result.headline == "CMY"
     assert result.resistance == result.models["CMY"].resistance
     assert result.resistance_per_area == pytest.approx(1.4443e-6, rel=1e-4)
+    spread = result.uncertainty
+    assert spread is None  # one model asked for (tcr.models = ["CMY"])
+    model = result.models["CMY"]
+    assert {type(model.resistance), type(model.resistance_per_area)} == {float}  # not NumPy's
 
 
 def test_default_converges_with_the_solver_grid(gao_case_path):
@@ -114,6 +118,47 @@ def test_summary_and_report_name_the_headline_model(gao_case_path):
     assert "8 µm cells: it follows the cell size" in cells["headline_model_note"]
 
 
+def test_report_marks_the_headline_among_the_rival_models(gao_case_path):
+    """The side-by-side table of the report: every model once, the headline marked, and the
+    spread stated with its factor."""
+    case = load_case(gao_case_path, {"numerics.cells_across": 16})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = ballscrew.screw_tcr(case)
+    [section] = [s for s in result.report() if s.title.startswith("Rival models")]
+    names = [row[0] for row in section.tables[0].rows]
+    assert names == [f"{n} (headline)" if n == "CMY" else n for n in result.models]
+    spread = result.uncertainty
+    assert f"a factor {spread.ratio:.3g}" in section.paragraphs[0]
+    assert spread.low <= result.resistance_per_area <= spread.high
+
+
 def test_bad_headline_is_a_case_error(gao_case_path):
     with pytest.raises(ballscrew.case.CaseError, match=r"tcr\.headline.*V2/patch"):
         load_case(gao_case_path, {"tcr.headline": "Holm"})
+
+
+@pytest.mark.parametrize(
+    ("options", "line"),
+    [
+        ((), "  headline model: CMY, no fractal cell size (the paper's cell model: --variant V2"),
+        (("--variant", "V2"), "  headline model: V2 on 8 µm fractal cells, the paper's cell"),
+    ],
+    ids=["default", "paper"],
+)
+def test_console_names_the_headline_model(tmp_path, gao_case_path, options, line):
+    """``ballscrew tcr`` says which model its numbers are, before them, and how to get the
+    paper's cell model; ``-q`` prints only the folder."""
+    from typer.testing import CliRunner
+
+    from ballscrew.cli import app
+
+    out = tmp_path / "tcr"
+    args = ["tcr", str(gao_case_path), "--out", str(out), "--set", "numerics.cells_across=16"]
+    result = CliRunner().invoke(app, [*args, *options])
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert lines[0].startswith(line), lines
+    assert lines[1].startswith("  resistance ") and lines[-1] == f"results: {out.resolve()}"
+    quiet = CliRunner().invoke(app, [*args, "--force", "-q", *options])
+    assert quiet.output.strip() == f"results: {out.resolve()}"

@@ -9,10 +9,12 @@ import pytest
 from ballscrew.contact_resistance import (
     VARIANTS,
     FractalTCRModel,
+    ball_contact_constriction,
     constriction_alleviation_factor,
     contact_tcr,
     cooper_mikic_yovanovich_conductance,
     element_tcr,
+    elliptic_constriction_resistance,
     experimental_tcr,
     gap_thickness,
     harmonic_mean_conductivity,
@@ -318,6 +320,20 @@ def test_series_and_parallel_closed_forms() -> None:
     np.testing.assert_allclose(parallel_resistance([[2.0, 2.0], [3.0, 6.0]], axis=1), [1.0, 2.0])
     with pytest.raises(InputError):
         parallel_resistance([0.0, 1.0])
+
+
+@pytest.mark.parametrize("aspect", [1e-3, 1e-4])
+def test_elliptic_constriction_limits(aspect: float) -> None:
+    """(A6) in its two limits: Holm's circle 1/(4λa), and the slender ellipse, where
+    K(e²) → ln(4a/b) (Abramowitz & Stegun 17.3.26), R → ln(4a/b)/(2πλa); the ball patch adds
+    the ball's and the raceway's halves."""
+    a, lam = 1e-3, 40.0
+    assert elliptic_constriction_resistance(a, a, lam) == pytest.approx(1.0 / (4.0 * lam * a))
+    slender = math.log(4.0 / aspect) / (2.0 * math.pi * lam * a)
+    assert elliptic_constriction_resistance(aspect * a, a, lam) == pytest.approx(slender, rel=1e-5)
+    both = ball_contact_constriction((a, 0.5 * a), 40.0, 20.0)
+    half = elliptic_constriction_resistance(a, 0.5 * a, 40.0)
+    assert both == pytest.approx(3.0 * half)
 
 
 def test_t_agg1_chain_arithmetic() -> None:

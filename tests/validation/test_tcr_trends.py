@@ -3,8 +3,10 @@
 The paper (Figs. 10–13) reports that R falls as the fractal dimension D grows, rises with the
 roughness G, stays nearly flat with the axial load while both nuts carry it, and rises once the
 second nut has lifted off (fewer balls conduct). Each model of ``[tcr] models`` is evaluated on
-the same contacts of the reference screw (coarse grid: trends, not values). A model that does
-not reproduce a trend is a strict xfail with its number.
+the same contacts of the reference screw (coarse grid: trends, not values); "nearly flat" is
+checked at 1 kN and near lift-off, at 3 kN. A model that does not reproduce a trend is a strict
+xfail with its number, and the theory manual's table of every model's trends
+(*Gao et al.'s trends, model by model*) is checked against the same runs.
 
 The default headline (``[tcr] headline``, CMY) is checked as such: ``test_default_headline_trend``.
 The element models are checked again with the candidate gap model for liquids, ``mean_plane``
@@ -16,6 +18,7 @@ from __future__ import annotations
 
 import warnings
 from functools import cache
+from pathlib import Path
 
 import pytest
 
@@ -147,6 +150,90 @@ def test_nearly_flat_while_both_nuts_carry(gao_case_path, model) -> None:
     assert _ratio(str(gao_case_path), model, **{"operating.axial_load": 1000.0}) == pytest.approx(
         1.0, abs=0.05
     )
+
+
+# "Nearly flat until the second nut lifts off", checked close to lift-off as well: at 3 kN
+# (0.71 × the lift-off load 4243 N; nut 2 keeps 270 N) a screw whose ball conductance goes as
+# Q^m moves by 2/[(1+u)^(3m/2) + (1−u)^(3m/2)] with u = 0.68, so only m ≈ 2/3 stays flat. Misses
+# (R″ at 3 kN / at 0 kN, outside ±5 %):
+FLAT_NEAR_LIFT_OFF_MISSES = {
+    "MT": 0.900,
+    "CMY": 0.869,
+    "Mikic": 0.865,
+    "V2/patch": 1.170,
+    "MT/patch": 0.879,
+    "V1/patch": 1.174,
+    "headline": 0.869,
+}
+NEAR_LIFT_OFF = 3000.0  # N
+
+
+def _flat_params(models) -> list:
+    out = []
+    for model in models:
+        miss = FLAT_NEAR_LIFT_OFF_MISSES.get(model)
+        reason = f"R″ ratio {miss} at 3 kN (not within 5 %)"
+        marks = [pytest.mark.xfail(strict=True, reason=reason)] if miss else []
+        out.append(pytest.param(model, id=model, marks=marks))
+    return out
+
+
+@pytest.mark.parametrize("model", _flat_params([*MODELS, "headline"]))
+def test_nearly_flat_until_near_lift_off(gao_case_path, model) -> None:
+    """At 3 kN, with nut 2 still loaded, R″ is within 5 % of its value under preload only."""
+    ratio = _ratio(str(gao_case_path), model, **{"operating.axial_load": NEAR_LIFT_OFF})
+    assert ratio == pytest.approx(1.0, abs=0.05), f"{model}: {ratio:.3f}"
+
+
+# The table of the theory manual that reports every model's trends (contact-resistance.md,
+# *Gao et al.'s trends, model by model*): its numbers and marks are checked here.
+MANUAL = Path(__file__).resolve().parents[2] / "docs" / "theory" / "contact-resistance.md"
+TABLE_START = "<!-- trend table: checked by tests/validation/test_tcr_trends.py -->"
+TREND_COLUMNS = (  # (overrides, the paper's trend: "<" falls, ">" rises, "=" within 5 %)
+    ({"surface.D": 1.65}, "<"),
+    ({"surface.G": 2e-9}, ">"),
+    ({"operating.axial_load": 1000.0}, "="),
+    ({"operating.axial_load": NEAR_LIFT_OFF}, "="),
+    ({"operating.axial_load": 5000.0}, ">"),
+)
+
+
+def _reproduced(ratio: float, trend: str) -> bool:
+    return {"<": ratio < 1.0, ">": ratio > 1.0, "=": abs(ratio - 1.0) <= 0.05}[trend]
+
+
+def _manual_trend_table() -> tuple[dict[str, list[str]], list[str]]:
+    """Model → its cells after the name, from the table that follows ``TABLE_START``, and the
+    models marked "(headline)"."""
+    text = MANUAL.read_text(encoding="utf-8")
+    lines = text[text.index(TABLE_START) :].splitlines()[1:]
+    rows, marked = {}, []
+    for line in lines[2:]:  # the header and its rule
+        if not line.startswith("|"):
+            break
+        name, *cells = (c.strip() for c in line.strip("|").split("|"))
+        model = name.replace(" (headline)", "").strip("`")
+        rows[model] = cells
+        if name != model and "(headline)" in name:
+            marked.append(model)
+    return rows, marked
+
+
+def test_manual_trend_table_is_what_the_models_give(gao_case_path) -> None:
+    """Every model in the manual's trend table, the default headline marked: each R″ ratio (to
+    0.001), its mark (✓ where the paper's trend is reproduced) and the count, from the same
+    runs as the tests above."""
+    rows, marked = _manual_trend_table()
+    assert sorted(rows) == sorted(MODELS)
+    assert marked == [load_case(gao_case_path).tcr.headline]
+    for model, cells in rows.items():
+        assert len(cells) == len(TREND_COLUMNS) + 1, model
+        for cell, (overrides, trend) in zip(cells, TREND_COLUMNS, strict=False):
+            ratio = _ratio(str(gao_case_path), model, **overrides)
+            value, mark = cell.split()
+            assert float(value) == pytest.approx(ratio, abs=1e-3), (model, overrides, ratio)
+            assert mark == ("✓" if _reproduced(ratio, trend) else "✗"), (model, overrides, ratio)
+        assert int(cells[-1]) == sum("✓" in cell for cell in cells[:-1]), model
 
 
 @cache

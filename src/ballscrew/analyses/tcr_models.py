@@ -194,7 +194,7 @@ def _nut_resistances(nuts: Sequence[NutTCR], contact: ContactResistance) -> dict
             done[id(raceway)] = contact(raceway.contact, side)
         return done[id(raceway)]
 
-    return {n.index: (once(n.screw, "screw") + once(n.nut, "nut")) / n.balls for n in nuts}
+    return {n.index: float(once(n.screw, "screw") + once(n.nut, "nut")) / n.balls for n in nuts}
 
 
 def _expanded(names: Sequence[str], headline: str) -> list[str]:
@@ -231,7 +231,7 @@ def compare_models(
         contact, description = contact_model(name, params, options, element_models)
         per_nut = _nut_resistances(nuts, contact)
         r = float(parallel_resistance(list(per_nut.values())))
-        results[name] = ModelTCR(name, description, r, r * apparent_area, per_nut)
+        results[name] = ModelTCR(name, description, r, r * float(apparent_area), per_nut)
     values = [m.resistance_per_area for m in results.values() if math.isfinite(m.resistance)]
     if len(values) < 2:
         return results, None

@@ -54,6 +54,21 @@ def headline_model_text(result: ScrewTCR) -> str:
     )
 
 
+def console_line(result: ScrewTCR) -> str:
+    """The console's line on the headline: its model, whether it has a cell size, and how to
+    get the paper's cell model."""
+    name = result.headline
+    if name == result.variant:
+        return (
+            f"  headline model: {name} on {_cells_text(result)}, the paper's cell model (it "
+            "follows tcr.cell_size)"
+        )
+    return (
+        f"  headline model: {name}, no fractal cell size (the paper's cell model: --variant V2 "
+        'or [tcr] headline = "V2")'
+    )
+
+
 def fractal_cell_centres(coord: np.ndarray, count: int, cell: float) -> np.ndarray:
     """Centres of ``count`` fractal cells of side ``cell`` centred on the solver grid ``coord``."""
     centre = 0.5 * (coord[0] + coord[-1])
@@ -469,7 +484,12 @@ def _models_section(result: ScrewTCR) -> list[Section]:
                 Table(
                     ("model", "R [K/W]", "R″ [m²K/W]", "what it is"),
                     tuple(
-                        (name, m.resistance, m.resistance_per_area, m.description)
+                        (
+                            f"{name} (headline)" if name == result.headline else name,
+                            m.resistance,
+                            m.resistance_per_area,
+                            m.description,
+                        )
                         for name, m in result.models.items()
                     ),
                 ),

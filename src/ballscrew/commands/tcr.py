@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from ballscrew.commands._common import CaseArg, Output, writes_results
+from ballscrew.commands._common import CaseArg, Output, is_quiet, writes_results
+
+if TYPE_CHECKING:
+    from ballscrew.case import Case
 
 VariantOpt = Annotated[
     str | None,
@@ -21,6 +24,13 @@ VariantOpt = Annotated[
 @writes_results
 def tcr(case_file: CaseArg, variant: VariantOpt = None, *, output: Output) -> None:
     """Thermal contact resistance of every contact, each nut and the whole screw."""
-    from ballscrew.analyses.screw_tcr import screw_tcr
+    from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
+    from ballscrew.analyses.tcr_report import console_line
 
-    output.analyse(case_file, lambda case: screw_tcr(case, variant=variant))
+    def run(case: Case) -> ScrewTCR:
+        result = screw_tcr(case, variant=variant)
+        if not is_quiet():  # which model the numbers below are (before them)
+            typer.echo(console_line(result))
+        return result
+
+    output.analyse(case_file, run)

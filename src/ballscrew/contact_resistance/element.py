@@ -191,7 +191,9 @@ def solid_conductance_v1(real_area: ArrayLike, *, lambda_s: float) -> NDArray[np
     return spot_conductance(real_area, lambda_s=lambda_s)
 
 
-@ELEMENT_MODELS.register("V2", "reconstructed spot conductance at the largest spot (default)")
+@ELEMENT_MODELS.register(
+    "V2", "reconstructed spot conductance at the largest spot (the paper's model, default variant)"
+)
 def _element_v2(
     a_l: NDArray[np.float64], _: NDArray[np.float64], model: FractalTCRModel
 ) -> NDArray[np.float64]:
