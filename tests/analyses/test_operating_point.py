@@ -228,3 +228,31 @@ def test_the_friction_part_at_rest_is_no_zero(case):
     rows = dict(operating_point_report.sections(point)[0].tables[0].rows)
     part = point.summary()["friction_part"]["value"]
     assert part > 0.1 and rows["friction part of T = heat / ω [N·m]"] == pytest.approx(part)
+
+
+def test_the_catalogue_band_is_checked_on_the_preload_losses_alone(case):
+    """The band warning compared everything but the work on the load (the working load's
+    friction and the seals included) with the catalogue preload torque: eight wipers
+    (0.8 N·m) made a ball model of 0.24 N·m at the preload 'outside 0.5–2 ×', and a nut
+    without preload (a band of 0 N·m) warned at any load. Ball losses far above the band
+    still warn."""
+    ball = {"numerics.cells_across": 16, "friction.model": "ball_model"}
+    band = "catalogue preload torque"
+    sealed = ballscrew.load_case(EXAMPLE, {**ball, "friction.seals": 8})
+    point = operating_point(sealed, speed=1000 * RPM, axial_load=3000.0)
+    assert point.friction.parts["seals"] == pytest.approx(0.8)
+    assert not any(band in w for w in point.warnings)
+    single = ballscrew.load_case(
+        EXAMPLE,
+        {
+            **ball,
+            "screw.nuts": 1,
+            "operating.preload": 0.0,
+            "operating.axial_load": 1000.0,
+            "thermal.sensors": [],
+        },
+    )
+    assert not any(band in w for w in operating_point(single, 1000 * RPM).warnings)
+    crowded = ballscrew.load_case(EXAMPLE, {**ball, "friction.ball_ball_load_ratio": 0.5})
+    [warning] = [w for w in operating_point(crowded, speed=1000 * RPM).warnings if band in w]
+    assert "3.96 N·m" in warning  # ball–ball friction 3.79 of it, against 0.423 N·m

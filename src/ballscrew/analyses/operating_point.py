@@ -232,14 +232,19 @@ def _warnings(
         params = ScrewParameters.from_case(case)
         g = params.geometry
         catalogue = preload_drag_torque(params.preload, g.lead, g.lead_angle)
-        preload_part = friction.total - friction.parts.get("work", 0.0)
-        if not 0.5 * catalogue <= preload_part <= 2.0 * catalogue:
+        preload_part = sum(v for k, v in friction.parts.items() if k not in _NOT_PRELOAD)
+        if catalogue > 0.0 and not 0.5 * catalogue <= preload_part <= 2.0 * catalogue:
             out.append(
-                f"the {friction.model} friction torque without the work on the load, "
-                f"{preload_part:.3g} N·m, is outside 0.5–2 × the catalogue preload torque "
-                f"{catalogue:.3g} N·m"
+                f"the {friction.model} torque at the preload (without the work on the load, "
+                f"its friction and the seals), {preload_part:.3g} N·m, is outside 0.5–2 × the "
+                f"catalogue preload torque {catalogue:.3g} N·m"
             )
     return out
+
+
+#: Torque parts outside the band of the makers' preload torque K F_p L/2π: the work on the load,
+#: the friction of the working load (the efficiency's) and the seals (a part of their own here).
+_NOT_PRELOAD = frozenset({"work", "load", "seals"})
 
 
 def heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]:
