@@ -256,3 +256,29 @@ def test_the_catalogue_band_is_checked_on_the_preload_losses_alone(case):
     crowded = ballscrew.load_case(EXAMPLE, {**ball, "friction.ball_ball_load_ratio": 0.5})
     [warning] = [w for w in operating_point(crowded, speed=1000 * RPM).warnings if band in w]
     assert "3.96 N·m" in warning  # ball–ball friction 3.79 of it, against 0.423 N·m
+
+
+def test_both_efficiencies_and_the_lubricant_reach_the_user(case, tmp_path):
+    """summary.json and the report had the driving efficiency only, and the console neither
+    efficiency, viscosity nor film. Closed forms of THK's efficiency (λ = atan L/(π d_m),
+    ρ′ = atan 0.003) and η at the point = F_a L/(2π T)."""
+    from ballscrew.analyses import operating_point_report
+
+    point = operating_point(case, speed=1000 * RPM, axial_load=2000.0)
+    lam, rho = math.atan(0.01 / (math.pi * 0.04)), math.atan(0.003)
+    summary = point.summary()
+    assert summary["efficiency"]["value"] == pytest.approx(math.tan(lam) / math.tan(lam + rho))
+    back = math.tan(lam - rho) / math.tan(lam)
+    assert summary["efficiency_backdriving"]["value"] == pytest.approx(back, rel=1e-12)
+    overall = 2000.0 * 0.01 / (2 * math.pi * point.friction_torque)
+    assert summary["efficiency_overall"]["value"] == pytest.approx(overall, rel=1e-12)
+    assert overall < summary["efficiency"]["value"]  # the preload torque costs efficiency
+    rows = dict(operating_point_report.sections(point)[0].tables[0].rows)
+    assert any(k.startswith("back-driving efficiency") and v == back for k, v in rows.items())
+    at_rest = operating_point(case, speed=0.0).summary()["efficiency_overall"]
+    assert at_rest["value"] is None and "at rest" in at_rest["reason"]
+    out = tmp_path / "op"
+    result = CliRunner().invoke(app, ["operating-point", str(EXAMPLE), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    for text in ("driving efficiency", "0.9634", "viscosity at the contacts", "60 mPa·s", "nm"):
+        assert text in result.output

@@ -141,8 +141,23 @@ class OperatingPoint(Presented):
 
     @property
     def efficiency(self) -> float:
-        """Driving efficiency (work out / work in) [-]."""
+        """Driving efficiency of the screw η = tan λ/tan(λ + ρ′) (makers' formula, the
+        ``[friction] rolling_friction`` μ) [-]."""
         return self.friction.efficiency_driving
+
+    @property
+    def efficiency_backdriving(self) -> float:
+        """Back-driving efficiency η′ = tan(λ − ρ′)/tan λ (load turning the screw; ≤ 0:
+        self-locking) [-]."""
+        return self.friction.efficiency_backdriving
+
+    @property
+    def efficiency_overall(self) -> float:
+        """Efficiency of the nut at this operating point, work on the load over work in,
+        F_a L/(2π T) [-]: the preload, seals and ball losses included; 0 without load, NaN at
+        rest."""
+        total = self.friction_torque
+        return self.friction.parts["work"] / total if self.speed > 0.0 and total > 0.0 else math.nan
 
     @property
     def max_temperature(self) -> float:
