@@ -7,6 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
+import xarray as xr
 from typer.testing import CliRunner
 
 import ballscrew
@@ -282,3 +283,39 @@ def test_both_efficiencies_and_the_lubricant_reach_the_user(case, tmp_path):
     assert result.exit_code == 0, result.output
     for text in ("driving efficiency", "0.9634", "viscosity at the contacts", "60 mPa·s", "nm"):
         assert text in result.output
+
+
+def test_the_command_draws_curves_over_a_speed_range(tmp_path):
+    """`ballscrew operating-point` gave one speed only. Its curve: the catalogue torque
+    K F_p L/2π at every speed, heat = T_f ω, the oil thinner and the screw warmer as the speed
+    rises, the case's own point on it, each point's warnings kept with it."""
+    out = tmp_path / "op"
+    args = ["operating-point", str(EXAMPLE), "--out", str(out), "--curve-to", "2000 rpm"]
+    result = CliRunner().invoke(app, [*args, "--curve-points", "4"])
+    assert result.exit_code == 0, result.output
+    curve = json.loads((out / "summary.json").read_text())["speed_curve"]
+    speed = [v * 30 / math.pi for v in curve["speed"]["value"]]
+    assert speed == pytest.approx([500.0, 1000.0, 1500.0, 2000.0])
+    params = ballscrew.analyses.parameters.ScrewParameters.from_case(ballscrew.load_case(EXAMPLE))
+    g = params.geometry
+    catalogue = ballscrew.loads.preload_drag_torque(params.preload, g.lead, g.lead_angle)
+    torque, heat = curve["friction_part"]["value"], curve["heat"]["value"]
+    assert torque == pytest.approx([catalogue] * 4, rel=1e-12)
+    omega = curve["speed"]["value"]
+    assert heat == pytest.approx([t * w for t, w in zip(torque, omega, strict=True)], rel=1e-12)
+    screw = curve["screw_temperature"]["value"]
+    assert sorted(screw) == screw and len(set(screw)) == len(screw)
+    one = tmp_path / "one"
+    no_curve = ["operating-point", str(EXAMPLE), "--out", str(one), "--curve-points", "0"]
+    assert CliRunner().invoke(app, no_curve).exit_code == 0
+    single = json.loads((one / "summary.json").read_text())
+    assert "speed_curve" not in single
+    assert screw[1] == pytest.approx(single["screw_temperature"]["value"], rel=1e-12)
+    warned = [" ".join(w) for w in curve["warnings"]]
+    assert "Λ" in warned[0] and not warned[2] and "d·n = 80000" in warned[3]
+    assert (out / "speed_curve.png").stat().st_size > 0
+    with xr.open_dataset(out / "fields.nc") as data:
+        assert data["curve_heat"].values.tolist() == pytest.approx(heat, rel=1e-12)
+    assert "Speed curve" in (out / "report.html").read_text()
+    bad = CliRunner().invoke(app, [*args[:4], "--curve-to", "0 rpm", "--out", str(tmp_path / "b")])
+    assert bad.exit_code == 2 and not (tmp_path / "b").exists()

@@ -37,7 +37,7 @@ from ballscrew.analyses.parameters import ScrewParameters, library_entry
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
-from ballscrew.errors import ConvergenceError
+from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import preload_drag_torque
@@ -49,6 +49,7 @@ from ballscrew.validation import case_with
 __all__ = [
     "OperatingPoint",
     "OperatingPointWarning",
+    "SpeedCurve",
     "at_operating_point",
     "contact_readout",
     "coupled_heat",
@@ -56,6 +57,7 @@ __all__ = [
     "medium_law",
     "operating_point",
     "operating_point_scalars",
+    "speed_curve",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -70,6 +72,35 @@ above ambient)."""
 
 class OperatingPointWarning(UserWarning):
     """The operating point is outside what the screw or the models are made for."""
+
+
+@dataclass(frozen=True)
+class SpeedCurve:
+    """The coupled operating point over a range of speeds at one axial load (SI arrays, one
+    entry per speed; NaN where a quantity is undefined)."""
+
+    speed: FloatArray
+    """Screw speeds ω [rad/s], rising."""
+    axial_load: float
+    """F_a [N]."""
+    friction_torque: FloatArray
+    """Screw torque T, the work on the load included [N·m]."""
+    friction_part: FloatArray
+    """Friction torque T_f = heat/ω [N·m]."""
+    heat: FloatArray
+    """Friction heat [W]."""
+    efficiency_overall: FloatArray
+    """F_a L/(2π T) [-]."""
+    nut_temperature: FloatArray
+    """Mean nut temperature [K]."""
+    screw_temperature: FloatArray
+    """Mean screw temperature under the nut [K]."""
+    viscosity: FloatArray
+    """Lubricant viscosity at the contact temperature [Pa s]."""
+    film_thickness: FloatArray
+    """Central film h_c at the screw contact A [m]."""
+    warnings: tuple[tuple[str, ...], ...]
+    """The warnings of each point (speed limits, a hot nut, thin film, ...)."""
 
 
 @dataclass(frozen=True)
@@ -106,6 +137,9 @@ class OperatingPoint(Presented):
     viscosity_source: str = ""
     """Where :attr:`viscosity` comes from: the named lubricant's law at the contact temperature
     or the fixed ``medium.viscosity``."""
+    curve: SpeedCurve | None = None
+    """The operating point over a range of speeds at the same load (:func:`speed_curve`; the
+    command line adds it), or None."""
 
     analysis: ClassVar[str] = "operating-point"
     presentation: ClassVar[ModuleType] = operating_point_report
@@ -237,7 +271,7 @@ def _warnings(
         )
     if lam < BOUNDARY_FILM_PARAMETER:
         out.append(
-            f"film parameter Λ = h_c/σ = {lam:.2g} < {BOUNDARY_FILM_PARAMETER:g} at the screw "
+            f"film parameter Λ = h_c/σ = {lam:.3g} < {BOUNDARY_FILM_PARAMETER:g} at the screw "
             "contact: boundary lubrication, outside the range of the EHL film and traction models"
         )
     note = viscosity_source(case)[1]
@@ -461,6 +495,43 @@ def at_operating_point(case: Case, speed: float | None = None) -> tuple[Case, Op
             "medium.thermal_conductivity": conductivity,
         }
     return with_overrides(case, overrides), point
+
+
+#: Quantities of a :class:`SpeedCurve`, read from each :class:`OperatingPoint`.
+CURVE_QUANTITIES = (
+    "friction_torque",
+    "friction_part",
+    "heat",
+    "efficiency_overall",
+    "nut_temperature",
+    "screw_temperature",
+    "viscosity",
+    "film_thickness",
+)
+
+
+def speed_curve(
+    case: Case, speeds: FloatArray | list[float], axial_load: float | None = None
+) -> SpeedCurve:
+    """The coupled steady operating point of ``case`` (network model) at each of ``speeds``
+    [rad/s, each > 0] and ``axial_load`` [N] (None: the case's): torque, heat, efficiency,
+    temperatures, viscosity and film against speed. The warnings of each point are kept with
+    it, not raised."""
+    omega = np.sort(np.asarray(speeds, dtype=float).ravel())
+    if omega.size == 0 or not np.all(np.isfinite(omega)) or omega[0] <= 0.0:
+        raise InputError("speeds", speeds, "one or more finite speeds > 0 rad/s")
+    points = []
+    for w in omega:  # one coupled fixed point per speed: each is its own iteration
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OperatingPointWarning)
+            points.append(operating_point(case, float(w), axial_load))
+    values = {k: np.array([getattr(p, k) for p in points]) for k in CURVE_QUANTITIES}
+    return SpeedCurve(
+        speed=omega,
+        axial_load=points[0].axial_load,
+        warnings=tuple(p.warnings for p in points),
+        **values,
+    )
 
 
 def operating_point_scalars(case: Case) -> dict[str, tuple[float, str]]:
