@@ -319,3 +319,19 @@ def test_the_command_draws_curves_over_a_speed_range(tmp_path):
     assert "Speed curve" in (out / "report.html").read_text()
     bad = CliRunner().invoke(app, [*args[:4], "--curve-to", "0 rpm", "--out", str(tmp_path / "b")])
     assert bad.exit_code == 2 and not (tmp_path / "b").exists()
+
+
+def test_the_film_is_reported_for_each_nut_at_its_own_ball_load(case):
+    """Only the loaded nut's film was reported. Hamrock–Dowson's central film goes as
+    W^−0.067 at a fixed speed and lubricant, so the nut the load relieves has the thicker film,
+    (Q₂/Q₁)^−0.067 times nut 1's; a nut lifted off has none."""
+    params = ballscrew.analyses.parameters.ScrewParameters.from_case
+    loaded = operating_point(case, speed=1000 * RPM, axial_load=2000.0)
+    q1, q2 = (n.ball_load for n in params(loaded.case).flank_loads)
+    h1, h2 = loaded.film_thickness_per_nut
+    assert h1 == loaded.film_thickness
+    assert h2 / h1 == pytest.approx((q2 / q1) ** -0.067, rel=1e-9)
+    lifted = operating_point(case, speed=1000 * RPM, axial_load=6000.0)
+    assert math.isnan(lifted.film_thickness_per_nut[1])
+    nut2 = lifted.summary()["film_thickness_per_nut"]["nut2"]
+    assert nut2["value"] is None and "lifted off" in nut2["reason"]

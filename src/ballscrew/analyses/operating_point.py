@@ -137,6 +137,9 @@ class OperatingPoint(Presented):
     viscosity_source: str = ""
     """Where :attr:`viscosity` comes from: the named lubricant's law at the contact temperature
     or the fixed ``medium.viscosity``."""
+    film_thickness_per_nut: tuple[float, ...] = ()
+    """Central film h_c at the screw contact A of each nut (each loaded flank of a preloaded
+    single nut) at its own ball load, nut 1 first [m] (NaN lifted off, dry or at rest)."""
     curve: SpeedCurve | None = None
     """The operating point over a range of speeds at the same load (:func:`speed_curve`; the
     command line adds it), or None."""
@@ -409,6 +412,7 @@ def operating_point(
         film_thickness_minimum=films.minimum,
         film_thickness_nut=films.nut,
         film_roughness=films.roughness,
+        film_thickness_per_nut=films.per_nut,
         viscosity_source=viscosity_source(base)[0],
     )
 
@@ -424,6 +428,8 @@ class _Films(NamedTuple):
     """h_c at the nut contact B."""
     roughness: float
     """σ_Λ of the film parameter (E6.6)."""
+    per_nut: tuple[float, ...]
+    """h_c at A of each nut (flank) at its own ball load."""
 
 
 def _films(case: Case, omega: float, eta: float | None, alpha: float | None) -> _Films:
@@ -433,17 +439,23 @@ def _films(case: Case, omega: float, eta: float | None, alpha: float | None) -> 
     if eta is not None:
         balls = dataclasses.replace(balls, viscosity=eta, pressure_viscosity=alpha)
     load = params.loaded_nut.ball_load
-    a, b = (
-        balls.film(load, entrainment_speed(params.geometry, omega, balls.entrainment, side), side)
-        for side in ("screw", "nut")
-    )
+    speed = {s: entrainment_speed(params.geometry, omega, balls.entrainment, s) for s in SIDES}
+    a, b = (balls.film(load, speed[side], side) for side in SIDES)
     nan = math.nan
+    per_nut = []
+    for nut in params.flank_loads:  # one or two nuts (flanks)
+        film = balls.film(nut.ball_load, speed["screw"], "screw") if nut.loaded else None
+        per_nut.append(film.central if film is not None else nan)
     return _Films(
         central=a.central if a is not None else nan,
         minimum=a.minimum if a is not None else nan,
         nut=b.central if b is not None else nan,
         roughness=balls.surface.film_roughness,
+        per_nut=tuple(per_nut),
     )
+
+
+SIDES = ("screw", "nut")
 
 
 def _same_heat(a: FrictionTorque, b: FrictionTorque) -> bool:

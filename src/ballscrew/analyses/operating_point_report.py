@@ -42,6 +42,10 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         "film_thickness_minimum": quantity(result.film_thickness_minimum, "m"),
         "film_thickness_nut": quantity(result.film_thickness_nut, "m"),
         "film_roughness": quantity(result.film_roughness, "m"),
+        "film_thickness_per_nut": {
+            f"nut{k}": quantity(h, "m", "lifted off, dry or at rest")
+            for k, h in enumerate(result.film_thickness_per_nut, start=1)
+        },
         "iterations": result.iterations,
         "thermal_model": result.field.model,
     }
@@ -261,6 +265,11 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("central film h_c, screw contact A of nut 1 [nm]", 1e9 * result.film_thickness),
         ("minimum film h_min, screw contact A [nm]", 1e9 * result.film_thickness_minimum),
         ("central film h_c, nut contact B [nm]", 1e9 * result.film_thickness_nut),
+        *(
+            (f"central film h_c, screw contact A of nut {k} at its ball load [nm]", 1e9 * h)
+            for k, h in enumerate(result.film_thickness_per_nut, start=1)
+            if k > 1
+        ),
         ("raceway roughness σ of Λ [nm]", 1e9 * result.film_roughness),
         ("film parameter Λ = h_c/σ [-]", result.film_parameter),
         ("fixed-point iterations", result.iterations),
