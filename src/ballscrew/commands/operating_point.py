@@ -59,8 +59,11 @@ def operating_point(
     *,
     output: Output,
 ) -> None:
-    """The coupled steady state: screw and friction torque, heat, efficiency, temperatures, film;
-    and the same over a range of speeds."""
+    """The coupled steady state: torque, heat, efficiency, temperatures, film; curves over speed.
+
+    The screw and friction torque, heat, driving and back-driving efficiency, nut and screw
+    temperatures, viscosity and film at the case's (or the given) speed and load, and the same
+    at --curve-points speeds up to --curve-to."""
     from ballscrew.analyses.operating_point import operating_point as solve
     from ballscrew.analyses.operating_point import speed_curve
 
