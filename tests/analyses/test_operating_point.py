@@ -335,3 +335,22 @@ def test_the_film_is_reported_for_each_nut_at_its_own_ball_load(case):
     assert math.isnan(lifted.film_thickness_per_nut[1])
     nut2 = lifted.summary()["film_thickness_per_nut"]["nut2"]
     assert nut2["value"] is None and "lifted off" in nut2["reason"]
+
+
+def test_a_physics_torque_is_set_beside_the_catalogue_reference(case):
+    """The ball model's torque (then 0.12 N·m) and the catalogue's (0.42 N·m) were reported
+    apart with no guidance. The result gives both at the preload and their ratio: the
+    catalogue's closed form K F_p L/2π, K = 0.05/√tan λ (0.42314 N·m for the example)."""
+    from ballscrew.analyses import operating_point_report
+
+    ball = ballscrew.case.with_overrides(case, {"friction.model": "ball_model"})
+    point = operating_point(ball, speed=1000 * RPM, axial_load=2000.0)
+    lam = math.atan(0.01 / (math.pi * 0.04))
+    catalogue = 0.05 / math.sqrt(math.tan(lam)) * 1500.0 * 0.01 / (2 * math.pi)
+    summary = point.summary()
+    assert summary["catalogue_preload_torque"]["value"] == pytest.approx(catalogue, rel=1e-12)
+    parts = point.friction.parts
+    losses = point.friction_torque - parts["work"] - parts["load"] - parts["seals"]
+    assert summary["preload_torque"]["value"] == pytest.approx(losses, rel=1e-12)
+    note = operating_point_report.sections(point)[1].paragraphs[0]
+    assert f"{losses / catalogue:.2f} × the makers' catalogue preload torque" in note

@@ -197,6 +197,18 @@ class OperatingPoint(Presented):
         return self.friction.parts["work"] / total if self.speed > 0.0 and total > 0.0 else math.nan
 
     @property
+    def catalogue_preload_torque(self) -> float:
+        """The makers' preload torque K F_p L/2π of the case (E9.1) [N·m]: the reference of a
+        physics friction model's torque at the preload (warned outside 0.5–2 ×)."""
+        return _catalogue_torque(self.case)
+
+    @property
+    def preload_torque(self) -> float:
+        """The friction model's torque at the preload [N·m]: its parts without the work on the
+        load, the working load's friction and the seals (the part the band compares)."""
+        return sum(v for k, v in self.friction.parts.items() if k not in _NOT_PRELOAD)
+
+    @property
     def max_temperature(self) -> float:
         """Largest temperature of the steady field [K] (at the balls, above the nut's mean)."""
         return self.field.max_temperature
@@ -281,9 +293,7 @@ def _warnings(
     if note is not None:
         out.append(note)
     if friction.model != "catalogue" and omega > 0.0:
-        params = ScrewParameters.from_case(case)
-        g = params.geometry
-        catalogue = preload_drag_torque(params.preload, g.lead, g.lead_angle)
+        catalogue = _catalogue_torque(case)
         preload_part = sum(v for k, v in friction.parts.items() if k not in _NOT_PRELOAD)
         if catalogue > 0.0 and not 0.5 * catalogue <= preload_part <= 2.0 * catalogue:
             out.append(
@@ -292,6 +302,13 @@ def _warnings(
                 f"catalogue preload torque {catalogue:.3g} N·m"
             )
     return out
+
+
+def _catalogue_torque(case: Case) -> float:
+    """K F_p L/2π of ``case`` (E9.1) [N·m]."""
+    params = ScrewParameters.from_case(case)
+    g = params.geometry
+    return preload_drag_torque(params.preload, g.lead, g.lead_angle)
 
 
 #: Torque parts outside the band of the makers' preload torque K F_p L/2π: the work on the load,
