@@ -7,6 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
+import xarray as xr
 from typer.testing import CliRunner
 
 import ballscrew
@@ -228,3 +229,128 @@ def test_the_friction_part_at_rest_is_no_zero(case):
     rows = dict(operating_point_report.sections(point)[0].tables[0].rows)
     part = point.summary()["friction_part"]["value"]
     assert part > 0.1 and rows["friction part of T = heat / ω [N·m]"] == pytest.approx(part)
+
+
+def test_the_catalogue_band_is_checked_on_the_preload_losses_alone(case):
+    """The band warning compared everything but the work on the load (the working load's
+    friction and the seals included) with the catalogue preload torque: eight wipers
+    (0.8 N·m) made a ball model of 0.24 N·m at the preload 'outside 0.5–2 ×', and a nut
+    without preload (a band of 0 N·m) warned at any load. Ball losses far above the band
+    still warn."""
+    ball = {"numerics.cells_across": 16, "friction.model": "ball_model"}
+    band = "catalogue preload torque"
+    sealed = ballscrew.load_case(EXAMPLE, {**ball, "friction.seals": 8})
+    point = operating_point(sealed, speed=1000 * RPM, axial_load=3000.0)
+    assert point.friction.parts["seals"] == pytest.approx(0.8)
+    assert not any(band in w for w in point.warnings)
+    single = ballscrew.load_case(
+        EXAMPLE,
+        {
+            **ball,
+            "screw.nuts": 1,
+            "operating.preload": 0.0,
+            "operating.axial_load": 1000.0,
+            "thermal.sensors": [],
+        },
+    )
+    assert not any(band in w for w in operating_point(single, 1000 * RPM).warnings)
+    crowded = ballscrew.load_case(EXAMPLE, {**ball, "friction.ball_ball_load_ratio": 0.5})
+    [warning] = [w for w in operating_point(crowded, speed=1000 * RPM).warnings if band in w]
+    assert "3.96 N·m" in warning  # ball–ball friction 3.79 of it, against 0.423 N·m
+
+
+def test_both_efficiencies_and_the_lubricant_reach_the_user(case, tmp_path):
+    """summary.json and the report had the driving efficiency only, and the console neither
+    efficiency, viscosity nor film. Closed forms of THK's efficiency (λ = atan L/(π d_m),
+    ρ′ = atan 0.003) and η at the point = F_a L/(2π T)."""
+    from ballscrew.analyses import operating_point_report
+
+    point = operating_point(case, speed=1000 * RPM, axial_load=2000.0)
+    lam, rho = math.atan(0.01 / (math.pi * 0.04)), math.atan(0.003)
+    summary = point.summary()
+    assert summary["efficiency"]["value"] == pytest.approx(math.tan(lam) / math.tan(lam + rho))
+    back = math.tan(lam - rho) / math.tan(lam)
+    assert summary["efficiency_backdriving"]["value"] == pytest.approx(back, rel=1e-12)
+    overall = 2000.0 * 0.01 / (2 * math.pi * point.friction_torque)
+    assert summary["efficiency_overall"]["value"] == pytest.approx(overall, rel=1e-12)
+    assert overall < summary["efficiency"]["value"]  # the preload torque costs efficiency
+    rows = dict(operating_point_report.sections(point)[0].tables[0].rows)
+    assert any(k.startswith("back-driving efficiency") and v == back for k, v in rows.items())
+    at_rest = operating_point(case, speed=0.0).summary()["efficiency_overall"]
+    assert at_rest["value"] is None and "at rest" in at_rest["reason"]
+    out = tmp_path / "op"
+    result = CliRunner().invoke(app, ["operating-point", str(EXAMPLE), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    for text in ("driving efficiency", "0.9634", "viscosity at the contacts", "60 mPa·s", "nm"):
+        assert text in result.output
+
+
+def test_the_command_draws_curves_over_a_speed_range(tmp_path):
+    """`ballscrew operating-point` gave one speed only. Its curve: the catalogue torque
+    K F_p L/2π at every speed, heat = T_f ω, the oil thinner and the screw warmer as the speed
+    rises, the case's own point on it, each point's warnings kept with it."""
+    out = tmp_path / "op"
+    args = ["operating-point", str(EXAMPLE), "--out", str(out), "--curve-to", "2000 rpm"]
+    result = CliRunner().invoke(app, [*args, "--curve-points", "4"])
+    assert result.exit_code == 0, result.output
+    curve = json.loads((out / "summary.json").read_text())["speed_curve"]
+    speed = [v * 30 / math.pi for v in curve["speed"]["value"]]
+    assert speed == pytest.approx([500.0, 1000.0, 1500.0, 2000.0])
+    params = ballscrew.analyses.parameters.ScrewParameters.from_case(ballscrew.load_case(EXAMPLE))
+    g = params.geometry
+    catalogue = ballscrew.loads.preload_drag_torque(params.preload, g.lead, g.lead_angle)
+    torque, heat = curve["friction_part"]["value"], curve["heat"]["value"]
+    assert torque == pytest.approx([catalogue] * 4, rel=1e-12)
+    omega = curve["speed"]["value"]
+    assert heat == pytest.approx([t * w for t, w in zip(torque, omega, strict=True)], rel=1e-12)
+    screw = curve["screw_temperature"]["value"]
+    assert sorted(screw) == screw and len(set(screw)) == len(screw)
+    one = tmp_path / "one"
+    no_curve = ["operating-point", str(EXAMPLE), "--out", str(one), "--curve-points", "0"]
+    assert CliRunner().invoke(app, no_curve).exit_code == 0
+    single = json.loads((one / "summary.json").read_text())
+    assert "speed_curve" not in single
+    assert screw[1] == pytest.approx(single["screw_temperature"]["value"], rel=1e-12)
+    warned = [" ".join(w) for w in curve["warnings"]]
+    assert "Λ" in warned[0] and not warned[2] and "d·n = 80000" in warned[3]
+    assert (out / "speed_curve.png").stat().st_size > 0
+    with xr.open_dataset(out / "fields.nc") as data:
+        assert data["curve_heat"].values.tolist() == pytest.approx(heat, rel=1e-12)
+    assert "Speed curve" in (out / "report.html").read_text()
+    bad = CliRunner().invoke(app, [*args[:4], "--curve-to", "0 rpm", "--out", str(tmp_path / "b")])
+    assert bad.exit_code == 2 and not (tmp_path / "b").exists()
+
+
+def test_the_film_is_reported_for_each_nut_at_its_own_ball_load(case):
+    """Only the loaded nut's film was reported. Hamrock–Dowson's central film goes as
+    W^−0.067 at a fixed speed and lubricant, so the nut the load relieves has the thicker film,
+    (Q₂/Q₁)^−0.067 times nut 1's; a nut lifted off has none."""
+    params = ballscrew.analyses.parameters.ScrewParameters.from_case
+    loaded = operating_point(case, speed=1000 * RPM, axial_load=2000.0)
+    q1, q2 = (n.ball_load for n in params(loaded.case).flank_loads)
+    h1, h2 = loaded.film_thickness_per_nut
+    assert h1 == loaded.film_thickness
+    assert h2 / h1 == pytest.approx((q2 / q1) ** -0.067, rel=1e-9)
+    lifted = operating_point(case, speed=1000 * RPM, axial_load=6000.0)
+    assert math.isnan(lifted.film_thickness_per_nut[1])
+    nut2 = lifted.summary()["film_thickness_per_nut"]["nut2"]
+    assert nut2["value"] is None and "lifted off" in nut2["reason"]
+
+
+def test_a_physics_torque_is_set_beside_the_catalogue_reference(case):
+    """The ball model's torque (then 0.12 N·m) and the catalogue's (0.42 N·m) were reported
+    apart with no guidance. The result gives both at the preload and their ratio: the
+    catalogue's closed form K F_p L/2π, K = 0.05/√tan λ (0.42314 N·m for the example)."""
+    from ballscrew.analyses import operating_point_report
+
+    ball = ballscrew.case.with_overrides(case, {"friction.model": "ball_model"})
+    point = operating_point(ball, speed=1000 * RPM, axial_load=2000.0)
+    lam = math.atan(0.01 / (math.pi * 0.04))
+    catalogue = 0.05 / math.sqrt(math.tan(lam)) * 1500.0 * 0.01 / (2 * math.pi)
+    summary = point.summary()
+    assert summary["catalogue_preload_torque"]["value"] == pytest.approx(catalogue, rel=1e-12)
+    parts = point.friction.parts
+    losses = point.friction_torque - parts["work"] - parts["load"] - parts["seals"]
+    assert summary["preload_torque"]["value"] == pytest.approx(losses, rel=1e-12)
+    note = operating_point_report.sections(point)[1].paragraphs[0]
+    assert f"{losses / catalogue:.2f} × the makers' catalogue preload torque" in note

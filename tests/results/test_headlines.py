@@ -64,6 +64,7 @@ def test_rows_follow_the_declared_headlines():
         ("heat", "44.31 W"),
         ("nut temperature", "25.12 °C"),
         ("screw temperature", "29.75 °C"),
+        ("viscosity", "50 mPa·s"),
     ]
     assert headline_keys("no such analysis") == ()
 

@@ -37,7 +37,7 @@ from ballscrew.analyses.parameters import ScrewParameters, library_entry
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
-from ballscrew.errors import ConvergenceError
+from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import preload_drag_torque
@@ -49,6 +49,7 @@ from ballscrew.validation import case_with
 __all__ = [
     "OperatingPoint",
     "OperatingPointWarning",
+    "SpeedCurve",
     "at_operating_point",
     "contact_readout",
     "coupled_heat",
@@ -56,6 +57,7 @@ __all__ = [
     "medium_law",
     "operating_point",
     "operating_point_scalars",
+    "speed_curve",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -70,6 +72,35 @@ above ambient)."""
 
 class OperatingPointWarning(UserWarning):
     """The operating point is outside what the screw or the models are made for."""
+
+
+@dataclass(frozen=True)
+class SpeedCurve:
+    """The coupled operating point over a range of speeds at one axial load (SI arrays, one
+    entry per speed; NaN where a quantity is undefined)."""
+
+    speed: FloatArray
+    """Screw speeds ω [rad/s], rising."""
+    axial_load: float
+    """F_a [N]."""
+    friction_torque: FloatArray
+    """Screw torque T, the work on the load included [N·m]."""
+    friction_part: FloatArray
+    """Friction torque T_f = heat/ω [N·m]."""
+    heat: FloatArray
+    """Friction heat [W]."""
+    efficiency_overall: FloatArray
+    """F_a L/(2π T) [-]."""
+    nut_temperature: FloatArray
+    """Mean nut temperature [K]."""
+    screw_temperature: FloatArray
+    """Mean screw temperature under the nut [K]."""
+    viscosity: FloatArray
+    """Lubricant viscosity at the contact temperature [Pa s]."""
+    film_thickness: FloatArray
+    """Central film h_c at the screw contact A [m]."""
+    warnings: tuple[tuple[str, ...], ...]
+    """The warnings of each point (speed limits, a hot nut, thin film, ...)."""
 
 
 @dataclass(frozen=True)
@@ -106,6 +137,12 @@ class OperatingPoint(Presented):
     viscosity_source: str = ""
     """Where :attr:`viscosity` comes from: the named lubricant's law at the contact temperature
     or the fixed ``medium.viscosity``."""
+    film_thickness_per_nut: tuple[float, ...] = ()
+    """Central film h_c at the screw contact A of each nut (each loaded flank of a preloaded
+    single nut) at its own ball load, nut 1 first [m] (NaN lifted off, dry or at rest)."""
+    curve: SpeedCurve | None = None
+    """The operating point over a range of speeds at the same load (:func:`speed_curve`; the
+    command line adds it), or None."""
 
     analysis: ClassVar[str] = "operating-point"
     presentation: ClassVar[ModuleType] = operating_point_report
@@ -141,8 +178,35 @@ class OperatingPoint(Presented):
 
     @property
     def efficiency(self) -> float:
-        """Driving efficiency (work out / work in) [-]."""
+        """Driving efficiency of the screw η = tan λ/tan(λ + ρ′) (makers' formula, the
+        ``[friction] rolling_friction`` μ) [-]."""
         return self.friction.efficiency_driving
+
+    @property
+    def efficiency_backdriving(self) -> float:
+        """Back-driving efficiency η′ = tan(λ − ρ′)/tan λ (load turning the screw; ≤ 0:
+        self-locking) [-]."""
+        return self.friction.efficiency_backdriving
+
+    @property
+    def efficiency_overall(self) -> float:
+        """Efficiency of the nut at this operating point, work on the load over work in,
+        F_a L/(2π T) [-]: the preload, seals and ball losses included; 0 without load, NaN at
+        rest."""
+        total = self.friction_torque
+        return self.friction.parts["work"] / total if self.speed > 0.0 and total > 0.0 else math.nan
+
+    @property
+    def catalogue_preload_torque(self) -> float:
+        """The makers' preload torque K F_p L/2π of the case (E9.1) [N·m]: the reference of a
+        physics friction model's torque at the preload (warned outside 0.5–2 ×)."""
+        return _catalogue_torque(self.case)
+
+    @property
+    def preload_torque(self) -> float:
+        """The friction model's torque at the preload [N·m]: its parts without the work on the
+        load, the working load's friction and the seals (the part the band compares)."""
+        return sum(v for k, v in self.friction.parts.items() if k not in _NOT_PRELOAD)
 
     @property
     def max_temperature(self) -> float:
@@ -222,24 +286,34 @@ def _warnings(
         )
     if lam < BOUNDARY_FILM_PARAMETER:
         out.append(
-            f"film parameter Λ = h_c/σ = {lam:.2g} < {BOUNDARY_FILM_PARAMETER:g} at the screw "
+            f"film parameter Λ = h_c/σ = {lam:.3g} < {BOUNDARY_FILM_PARAMETER:g} at the screw "
             "contact: boundary lubrication, outside the range of the EHL film and traction models"
         )
     note = viscosity_source(case)[1]
     if note is not None:
         out.append(note)
     if friction.model != "catalogue" and omega > 0.0:
-        params = ScrewParameters.from_case(case)
-        g = params.geometry
-        catalogue = preload_drag_torque(params.preload, g.lead, g.lead_angle)
-        preload_part = friction.total - friction.parts.get("work", 0.0)
-        if not 0.5 * catalogue <= preload_part <= 2.0 * catalogue:
+        catalogue = _catalogue_torque(case)
+        preload_part = sum(v for k, v in friction.parts.items() if k not in _NOT_PRELOAD)
+        if catalogue > 0.0 and not 0.5 * catalogue <= preload_part <= 2.0 * catalogue:
             out.append(
-                f"the {friction.model} friction torque without the work on the load, "
-                f"{preload_part:.3g} N·m, is outside 0.5–2 × the catalogue preload torque "
-                f"{catalogue:.3g} N·m"
+                f"the {friction.model} torque at the preload (without the work on the load, "
+                f"its friction and the seals), {preload_part:.3g} N·m, is outside 0.5–2 × the "
+                f"catalogue preload torque {catalogue:.3g} N·m"
             )
     return out
+
+
+def _catalogue_torque(case: Case) -> float:
+    """K F_p L/2π of ``case`` (E9.1) [N·m]."""
+    params = ScrewParameters.from_case(case)
+    g = params.geometry
+    return preload_drag_torque(params.preload, g.lead, g.lead_angle)
+
+
+#: Torque parts outside the band of the makers' preload torque K F_p L/2π: the work on the load,
+#: the friction of the working load (the efficiency's) and the seals (a part of their own here).
+_NOT_PRELOAD = frozenset({"work", "load", "seals"})
 
 
 def heat_overrides(heat: float, to_screw: float, omega: float) -> dict[str, Any]:
@@ -355,6 +429,7 @@ def operating_point(
         film_thickness_minimum=films.minimum,
         film_thickness_nut=films.nut,
         film_roughness=films.roughness,
+        film_thickness_per_nut=films.per_nut,
         viscosity_source=viscosity_source(base)[0],
     )
 
@@ -370,6 +445,8 @@ class _Films(NamedTuple):
     """h_c at the nut contact B."""
     roughness: float
     """σ_Λ of the film parameter (E6.6)."""
+    per_nut: tuple[float, ...]
+    """h_c at A of each nut (flank) at its own ball load."""
 
 
 def _films(case: Case, omega: float, eta: float | None, alpha: float | None) -> _Films:
@@ -379,17 +456,23 @@ def _films(case: Case, omega: float, eta: float | None, alpha: float | None) -> 
     if eta is not None:
         balls = dataclasses.replace(balls, viscosity=eta, pressure_viscosity=alpha)
     load = params.loaded_nut.ball_load
-    a, b = (
-        balls.film(load, entrainment_speed(params.geometry, omega, balls.entrainment, side), side)
-        for side in ("screw", "nut")
-    )
+    speed = {s: entrainment_speed(params.geometry, omega, balls.entrainment, s) for s in SIDES}
+    a, b = (balls.film(load, speed[side], side) for side in SIDES)
     nan = math.nan
+    per_nut = []
+    for nut in params.flank_loads:  # one or two nuts (flanks)
+        film = balls.film(nut.ball_load, speed["screw"], "screw") if nut.loaded else None
+        per_nut.append(film.central if film is not None else nan)
     return _Films(
         central=a.central if a is not None else nan,
         minimum=a.minimum if a is not None else nan,
         nut=b.central if b is not None else nan,
         roughness=balls.surface.film_roughness,
+        per_nut=tuple(per_nut),
     )
+
+
+SIDES = ("screw", "nut")
 
 
 def _same_heat(a: FrictionTorque, b: FrictionTorque) -> bool:
@@ -441,6 +524,43 @@ def at_operating_point(case: Case, speed: float | None = None) -> tuple[Case, Op
             "medium.thermal_conductivity": conductivity,
         }
     return with_overrides(case, overrides), point
+
+
+#: Quantities of a :class:`SpeedCurve`, read from each :class:`OperatingPoint`.
+CURVE_QUANTITIES = (
+    "friction_torque",
+    "friction_part",
+    "heat",
+    "efficiency_overall",
+    "nut_temperature",
+    "screw_temperature",
+    "viscosity",
+    "film_thickness",
+)
+
+
+def speed_curve(
+    case: Case, speeds: FloatArray | list[float], axial_load: float | None = None
+) -> SpeedCurve:
+    """The coupled steady operating point of ``case`` (network model) at each of ``speeds``
+    [rad/s, each > 0] and ``axial_load`` [N] (None: the case's): torque, heat, efficiency,
+    temperatures, viscosity and film against speed. The warnings of each point are kept with
+    it, not raised."""
+    omega = np.sort(np.asarray(speeds, dtype=float).ravel())
+    if omega.size == 0 or not np.all(np.isfinite(omega)) or omega[0] <= 0.0:
+        raise InputError("speeds", speeds, "one or more finite speeds > 0 rad/s")
+    points = []
+    for w in omega:  # one coupled fixed point per speed: each is its own iteration
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OperatingPointWarning)
+            points.append(operating_point(case, float(w), axial_load))
+    values = {k: np.array([getattr(p, k) for p in points]) for k in CURVE_QUANTITIES}
+    return SpeedCurve(
+        speed=omega,
+        axial_load=points[0].axial_load,
+        warnings=tuple(p.warnings for p in points),
+        **values,
+    )
 
 
 def operating_point_scalars(case: Case) -> dict[str, tuple[float, str]]:

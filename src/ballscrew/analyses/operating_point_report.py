@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+from functools import partial
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import xarray as xr
@@ -10,9 +12,10 @@ import xarray as xr
 from ballscrew.analyses import thermal_report
 from ballscrew.analyses.result import Figure, Section, Table, quantity
 from ballscrew.lubrication import regime
+from ballscrew.plotting import pyplot, save_figure
 
 if TYPE_CHECKING:
-    from ballscrew.analyses.operating_point import OperatingPoint
+    from ballscrew.analyses.operating_point import OperatingPoint, SpeedCurve
 
 CELSIUS = 273.15
 
@@ -27,6 +30,8 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         "friction_torque": quantity(result.friction_torque, "N*m"),
         "heat": quantity(result.heat, "W"),
         "efficiency": quantity(result.efficiency, ""),
+        "efficiency_backdriving": quantity(result.efficiency_backdriving, ""),
+        "efficiency_overall": quantity(result.efficiency_overall, "", "at rest: no work done"),
         "nut_temperature": quantity(result.nut_temperature, "K"),
         "screw_temperature": quantity(result.screw_temperature, "K"),
         "max_temperature": quantity(result.max_temperature, "K"),
@@ -37,6 +42,10 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         "film_thickness_minimum": quantity(result.film_thickness_minimum, "m"),
         "film_thickness_nut": quantity(result.film_thickness_nut, "m"),
         "film_roughness": quantity(result.film_roughness, "m"),
+        "film_thickness_per_nut": {
+            f"nut{k}": quantity(h, "m", "lifted off, dry or at rest")
+            for k, h in enumerate(result.film_thickness_per_nut, start=1)
+        },
         "iterations": result.iterations,
         "thermal_model": result.field.model,
     }
@@ -47,6 +56,8 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
     scalars["friction_model"] = friction.model
     scalars["friction_part"] = quantity(result.friction_part, "N*m")
     scalars["torque_parts"] = {k: quantity(v, "N*m") for k, v in friction.parts.items()}
+    scalars["preload_torque"] = quantity(result.preload_torque, "N*m")
+    scalars["catalogue_preload_torque"] = quantity(result.catalogue_preload_torque, "N*m")
     if math.isfinite(result.film_parameter):
         scalars["film_parameter"] = quantity(result.film_parameter, "")
         scalars["lubrication_regime"] = regime(result.film_parameter)
@@ -54,17 +65,144 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         scalars["asperity_share"] = quantity(friction.asperity_share, "")
     if friction.traction_coefficient is not None:
         scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
+    if result.curve is not None:
+        scalars["speed_curve"] = _curve_summary(result.curve)
     return scalars
 
 
+#: SI unit of each quantity of a speed curve.
+CURVE_UNITS = {
+    "speed": "rad/s",
+    "friction_torque": "N*m",
+    "friction_part": "N*m",
+    "heat": "W",
+    "efficiency_overall": "",
+    "nut_temperature": "K",
+    "screw_temperature": "K",
+    "viscosity": "Pa*s",
+    "film_thickness": "m",
+}
+
+
+def _curve_summary(curve: SpeedCurve) -> dict[str, Any]:
+    """The speed curve as lists with their SI units (NaN as None) and each point's warnings."""
+    out: dict[str, Any] = {"axial_load": quantity(curve.axial_load, "N")}
+    for key, unit in CURVE_UNITS.items():
+        values = [float(v) if math.isfinite(v) else None for v in getattr(curve, key)]
+        out[key] = {"value": values, "unit": unit}
+    out["warnings"] = [list(w) for w in curve.warnings]
+    return out
+
+
 def fields(result: OperatingPoint) -> xr.Dataset:
-    """The steady temperature field of the operating point."""
-    return thermal_report.fields(result.field)
+    """The steady temperature field of the operating point, and its speed curve (dimension
+    ``curve_speed``) when computed."""
+    data = thermal_report.fields(result.field)
+    curve = result.curve
+    if curve is None:
+        return data
+    coords = {"curve_speed": ("curve_speed", curve.speed, {"units": "rad/s"})}
+    variables = {
+        f"curve_{key}": ("curve_speed", getattr(curve, key), {"units": unit})
+        for key, unit in CURVE_UNITS.items()
+        if key != "speed"
+    }
+    return data.merge(xr.Dataset(variables, coords=coords))
 
 
 def figures(result: OperatingPoint) -> list[Figure]:
-    """The steady temperature field and the screw's elongation."""
-    return thermal_report.figures(result.field)
+    """The speed curve (when computed), the steady temperature field and the elongation."""
+    out = thermal_report.figures(result.field)
+    if result.curve is not None:
+        caption = (
+            f"Torque, heat and temperatures against speed at F_a = {result.axial_load:g} N "
+            "(coupled steady points, network model); the case's point marked."
+        )
+        out.insert(0, Figure("speed_curve", caption, partial(curve_plot, result)))
+    return out
+
+
+def curve_plot(result: OperatingPoint, path: Path) -> Path:
+    """Screw and friction torque, heat, nut and screw temperatures against speed."""
+    from ballscrew.analyses.operating_point import NUT_WARNING_TEMPERATURE
+
+    curve = result.curve
+    assert curve is not None
+    plt = pyplot()
+    rpm = curve.speed * 30.0 / math.pi
+    fig, (torque, temp) = plt.subplots(1, 2, figsize=(9.0, 3.6), layout="constrained")
+    torque.plot(rpm, curve.friction_torque, "b-o", ms=3, label="screw torque T")
+    torque.plot(rpm, curve.friction_part, "b--", label="friction torque T_f")
+    torque.set_xlabel("speed [rpm]")
+    torque.set_ylabel("torque [N·m]", color="b")
+    heat = torque.twinx()
+    heat.plot(rpm, curve.heat, "r-s", ms=3, label="heat")
+    heat.set_ylabel("friction heat [W]", color="r")
+    torque.legend(loc="upper left", fontsize=7)
+    torque.grid(alpha=0.3)
+    temp.plot(rpm, curve.nut_temperature - CELSIUS, "g-o", ms=3, label="nut")
+    temp.plot(rpm, curve.screw_temperature - CELSIUS, "m-s", ms=3, label="screw under the nut")
+    temp.axhline(NUT_WARNING_TEMPERATURE - CELSIUS, color="k", ls=":", lw=0.8, label="60 °C")
+    temp.set_xlabel("speed [rpm]")
+    temp.set_ylabel("temperature [°C]")
+    temp.legend(fontsize=7)
+    temp.grid(alpha=0.3)
+    if result.speed > 0.0:
+        for ax in (torque, temp):
+            ax.axvline(result.speed * 30.0 / math.pi, color="0.5", lw=0.8)
+    return save_figure(fig, path)
+
+
+def _curve_section(curve: SpeedCurve) -> Section:
+    """The speed curve as a table in engineering units, with each point's warnings."""
+    rows = tuple(
+        (
+            w * 30.0 / math.pi,
+            t,
+            tf,
+            q,
+            e,
+            tn - CELSIUS,
+            ts - CELSIUS,
+            1e3 * eta,
+            1e9 * h,
+            "; ".join(warn) or "–",
+        )
+        for w, t, tf, q, e, tn, ts, eta, h, warn in zip(
+            curve.speed,
+            curve.friction_torque,
+            curve.friction_part,
+            curve.heat,
+            curve.efficiency_overall,
+            curve.nut_temperature,
+            curve.screw_temperature,
+            curve.viscosity,
+            curve.film_thickness,
+            curve.warnings,
+            strict=True,
+        )
+    )
+    header = (
+        "speed [rpm]",
+        "screw torque T [N·m]",
+        "friction torque [N·m]",
+        "heat [W]",
+        "efficiency F_a·L/(2π T) [-]",
+        "nut [°C]",
+        "screw [°C]",
+        "viscosity [mPa·s]",
+        "central film h_c [nm]",
+        "warnings",
+    )
+    return Section(
+        "Speed curve",
+        paragraphs=(
+            f"The coupled steady operating point at each speed and F_a = {curve.axial_load:g} N "
+            "(network thermal model, the same friction model and lubricant).",
+        ),
+        tables=(Table(header, rows),),
+        figures=("speed_curve",),
+    )
 
 
 #: Readable names of the torque parts of :class:`~ballscrew.friction.torque.FrictionTorque`.
@@ -88,6 +226,20 @@ def _torque_section(result: OperatingPoint) -> Section:
     friction = result.friction
     rows = [(PART_NAMES.get(k, k), 1e3 * v) for k, v in friction.parts.items()]
     notes = [f"Friction model {friction.model!r}; the parts add up to the screw torque T."]
+    if friction.model != "catalogue":
+        catalogue = result.catalogue_preload_torque
+        ratio = result.preload_torque / catalogue if catalogue > 0.0 else math.nan
+        notes.append(
+            f"Its torque at the preload (without the work on the load, the working load's "
+            f"friction and the seals) is {1e3 * result.preload_torque:.4g} mN·m, "
+            + (
+                f"{ratio:.2f} × the makers' catalogue preload torque K F_p L/2π = "
+                f"{1e3 * catalogue:.4g} mN·m (a reference value: makers allow ±20–35 % "
+                "around it, THK A-689 Table 13; outside 0.5–2 × is a warning)."
+                if math.isfinite(ratio)
+                else "and the catalogue preload torque is 0 (no preload)."
+            )
+        )
     lam = result.film_parameter
     if math.isfinite(lam):
         notes.append(
@@ -112,7 +264,15 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("screw torque T, work F_a·L/2π included [N·m]", result.friction_torque),
         ("friction part of T = heat / ω [N·m]", result.friction_part),
         ("friction heat [W]", result.heat),
-        ("driving efficiency [-]", result.efficiency),
+        ("driving efficiency η = tan λ/tan(λ + ρ′) [-]", result.efficiency),
+        (
+            "back-driving efficiency η′ = tan(λ − ρ′)/tan λ (≤ 0: self-locking) [-]",
+            result.efficiency_backdriving,
+        ),
+        (
+            "efficiency at this point F_a·L/(2π T), preload and seals included [-]",
+            result.efficiency_overall,
+        ),
         ("nut temperature [°C]", result.nut_temperature - CELSIUS),
         ("screw temperature under the nut [°C]", result.screw_temperature - CELSIUS),
         ("largest temperature of the field [°C]", result.max_temperature - CELSIUS),
@@ -121,6 +281,11 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("central film h_c, screw contact A of nut 1 [nm]", 1e9 * result.film_thickness),
         ("minimum film h_min, screw contact A [nm]", 1e9 * result.film_thickness_minimum),
         ("central film h_c, nut contact B [nm]", 1e9 * result.film_thickness_nut),
+        *(
+            (f"central film h_c, screw contact A of nut {k} at its ball load [nm]", 1e9 * h)
+            for k, h in enumerate(result.film_thickness_per_nut, start=1)
+            if k > 1
+        ),
         ("raceway roughness σ of Λ [nm]", 1e9 * result.film_roughness),
         ("film parameter Λ = h_c/σ [-]", result.film_parameter),
         ("fixed-point iterations", result.iterations),
@@ -135,4 +300,5 @@ def sections(result: OperatingPoint) -> list[Section]:
         ),
         tables=(Table(("quantity", "value"), tuple(rows)),),
     )
-    return [coupled, _torque_section(result), *thermal_report.sections(result.field)]
+    curve = [] if result.curve is None else [_curve_section(result.curve)]
+    return [coupled, _torque_section(result), *curve, *thermal_report.sections(result.field)]
