@@ -29,6 +29,7 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, model_choice, quantity
 from ballscrew.wear.rates import WEAR_LAWS
+from ballscrew.wear.step import ASPERITY_HEIGHTS
 
 #: Most screw revolutions of one level (a very long life test is about 1e9).
 MAX_REVOLUTIONS = 1e12
@@ -192,6 +193,13 @@ class WearSpec(Model):
             "below 1 for a starved or grease supply)",
         ),
     ] = 1.0
+    asperity_roughness: model_choice(
+        ASPERITY_HEIGHTS,
+        "RMS height σ of the asperities that share the ball load with the EHL film (JGP): "
+        "'cell' the σ of one wear-grid cell (the fractal wear model's convention, default), "
+        "'film' σ_Λ of the film parameter Λ (as the friction and kinematics models); the wear "
+        "law's micro-contact stays at the cell scale",
+    ) = "cell"
     running_in: RunningInSpec | None = Field(
         None,
         description="initial raceway surface and running-in depth ([wear.running_in]); "
