@@ -48,16 +48,6 @@ have; the wear law's micro-contact (E7.2)–(E7.3) stays at the cell scale under
 
 
 @ASPERITY_HEIGHTS.register(
-    "cell", "σ of one wear-grid cell (E5.3, L_s = √ΔA): the fractal wear model's own convention"
-)
-def cell_heights(surface: AsperitySurface) -> AsperitySurface:
-    """The surface as it is: the bearing ratio (E5.15) on σ of the micro-contact cell (E5.3
-    with the sampling length L_s = √ΔA), the convention of the 3-D fractal wear model, whose
-    asperities of one cell carry the asperity share."""
-    return surface
-
-
-@ASPERITY_HEIGHTS.register(
     "film", "σ_Λ of the film parameter (E6.6), the combined roughness the ball model uses"
 )
 def film_heights(surface: AsperitySurface) -> AsperitySurface:
@@ -65,6 +55,16 @@ def film_heights(surface: AsperitySurface) -> AsperitySurface:
     Poon (1972) on the Greenwood–Williamson heights of the combined roughness of both surfaces
     (Greenwood & Tripp 1970), the σ of Λ = h/σ_Λ that the friction and kinematics models share."""
     return surface.film_heights
+
+
+@ASPERITY_HEIGHTS.register(
+    "cell", "σ of one wear-grid cell (E5.3, L_s = √ΔA): the fractal wear model's own convention"
+)
+def cell_heights(surface: AsperitySurface) -> AsperitySurface:
+    """The surface as it is: the bearing ratio (E5.15) on σ of the micro-contact cell (E5.3
+    with the sampling length L_s = √ΔA), the convention of the 3-D fractal wear model, whose
+    asperities of one cell carry the asperity share."""
+    return surface
 
 
 class GridEdgeWarning(UserWarning):
