@@ -130,8 +130,8 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
 
 def test_a_boundary_level_wears_with_the_film_roughness(tmp_path) -> None:
     """The same programme with the default wear.asperity_roughness = "film": at 1000 rpm
-    Λ = 0.79 < 1 (boundary) and the asperities of height σ_Λ keep most of the load (ψ > 0.5, as
-    the friction model's share), so level 2 wears about as much as level 1 (the wear law
+    Λ = 0.79 < 1 (boundary) and the asperities of height σ_Λ keep most of the load (ψ = 0.742
+    against 5.6e-9 with "cell"), so level 2 wears 95 nm after level 1's 126 nm (the wear law
     being per unit sliding distance) and no level is said to wear nothing."""
     case_file = tmp_path / "wear.toml"
     case_file.write_text(without_duty(starter(*THK)) + WEAR.replace('"cell"', '"film"'))
