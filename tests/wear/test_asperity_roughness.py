@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from ballscrew.analyses.wear import fingerprint, wear_life, wear_setup
+from ballscrew.analyses.wear_report import summary
 from ballscrew.case import CaseError, with_overrides
 from ballscrew.case.wear_spec import WearSpec
 from ballscrew.loads import nut_forces
@@ -35,6 +36,7 @@ def test_the_cell_option_keeps_the_reference_history(ref_case) -> None:
     assert WearSpec().asperity_roughness == "film"
     assert ref_case.wear.asperity_roughness == "cell"
     life = wear_life(ref_case)
+    assert summary(life)["options"]["asperity_roughness"] == "cell"
     assert life.steps == 34
     assert life.max_wear_depth[-1] == pytest.approx(2.429758023544411e-06, rel=1e-12)
     assert life.preload[-1] == pytest.approx(244.33178071227547, rel=1e-12)
