@@ -76,6 +76,7 @@ def test_the_console_friction_torque_is_the_friction(thk_case, tmp_path) -> None
 WEAR = """
 [wear]
 grid = [16, 64]
+asperity_roughness = "cell"
 
 [[wear.programme]]
 axial_load = "2 kN"
@@ -98,8 +99,9 @@ def without_duty(text: str) -> str:
 
 def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     """100 rpm wore 2.4 µm, 1000 rpm then exactly 0 with no word why (full-film EHL: asperity
-    share ~1e-10). The summary and report give Λ and ψ per level, and a warning names the level
-    that wears practically nothing; the range warning says 'at 100 rpm', not '100–100 rpm'."""
+    share ~1e-10 on the asperities of one wear-grid cell, wear.asperity_roughness = "cell").
+    The summary and report give Λ and ψ per level, and a warning names the level that wears
+    practically nothing; the range warning says 'at 100 rpm', not '100–100 rpm'."""
     case_file = tmp_path / "wear.toml"
     case_file.write_text(without_duty(starter(*THK)) + WEAR)
     out = tmp_path / "wear"
@@ -124,6 +126,26 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     assert any("calibrated at 100 rpm and 2000–4000 N" in w for w in warnings), warnings
     assert not any("100–100" in w for w in warnings)
     assert "Film and asperity share by level" in (out / "report.html").read_text()
+
+
+def test_a_boundary_level_wears_with_the_film_roughness(tmp_path) -> None:
+    """The same programme with the default wear.asperity_roughness = "film": at 1000 rpm
+    Λ = 0.79 < 1 (boundary) and the asperities of height σ_Λ keep most of the load (ψ = 0.742
+    against 5.6e-9 with "cell"), so level 2 wears 95 nm after level 1's 126 nm (the wear law
+    being per unit sliding distance) and no level is said to wear nothing."""
+    case_file = tmp_path / "wear.toml"
+    case_file.write_text(without_duty(starter(*THK)) + WEAR.replace('"cell"', '"film"'))
+    out = tmp_path / "wear"
+    result = run("wear", case_file, "--out", out)
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    slow, fast_ = summary["lubrication"]
+    assert fast_["film_parameter"]["value"] < 1.0
+    assert fast_["asperity_share"]["value"] > 0.5
+    assert slow["asperity_share"]["value"] >= fast_["asperity_share"]["value"]
+    depth = [lv["max_wear_depth"]["value"] for lv in summary["levels"]]
+    assert depth[1] - depth[0] > 0.5 * depth[0]
+    assert not any("wears practically nothing" in w for w in summary["warnings"])
 
 
 def test_the_kinematics_torque_says_it_is_the_contact_losses(thk_case, tmp_path) -> None:

@@ -40,7 +40,7 @@ from .test_wear_history import (
 )
 
 KEYS = ("up_Nm", "down_Nm")
-WITHOUT_OFFSET_K = {"up_Nm": 9.03e-6, "down_Nm": 3.64e-6}
+WITHOUT_OFFSET_K = {"up_Nm": 1.66e-6, "down_Nm": 6.22e-7}
 """K of the same split fitted with the torque scale instead of T_0 (``test_wear_history.py``,
 measured with this code)."""
 OFFSET_ASSUMPTIONS = (
@@ -157,16 +157,18 @@ def _check(
 
 
 MISSES = [("up_Nm", False), ("down_Nm", True)]
+BEATS_THE_LINE = [("up_Nm", False), ("down_Nm", False)]
 ONE_HISTORY = (
     "Up and Down: the upper and the lower screw of one rig (the dataset's README), two "
     "screws of one type on one programme, so one preload history and one K"
 )
 
 
-@pytest.mark.parametrize(("key", "known_miss"), MISSES)
+@pytest.mark.parametrize(("key", "known_miss"), BEATS_THE_LINE)
 def test_xjtu_offset_forecast(validation, key, known_miss) -> None:
-    """(a) K and T_0 per screw: Up +12.2 % (line −50 %), Down +14.7 % (line +5.2 %, a
-    known miss); K rises 1.2× (Up) and 1.5× (Down) against the fit without T_0."""
+    """(a) K and T_0 per screw: Up −17.7 % (line −50.2 %), Down +1.0 % (line −5.2 %); K rises
+    1.2× (Up) and 1.5× (Down) against the fit without T_0. With wear.asperity_roughness =
+    "cell": +13.6 % and +15.2 % (Down a known miss)."""
     _check(
         validation,
         "xjtu_offset_forecast",
@@ -180,8 +182,9 @@ def test_xjtu_offset_forecast(validation, key, known_miss) -> None:
 
 @pytest.mark.parametrize(("key", "known_miss"), MISSES)
 def test_xjtu_joint_forecast(validation, key, known_miss) -> None:
-    """(b) One K for both screws, T_0 per screw: Up +18.6 % (line −50 %), Down +9.8 %
-    (line +5.2 %: still a known miss, about a third smaller than the single fits' +14 %)."""
+    """(b) One K for both screws, T_0 per screw: Up −7.7 % (line −50.2 %), Down −7.5 % (line
+    −5.2 %: a known miss, held-out RMS 0.029 against the line's 0.021 N m). With
+    wear.asperity_roughness = "cell": +19.8 % and +10.6 % (Down a known miss)."""
     joint = _joint()
     result = joint.histories[KEYS.index(key)]
     _check(

@@ -92,6 +92,7 @@ def wear_options(case: Case) -> WearOptions:
         running_in=(None if running is None else RunningIn(running.D, running.G, running.depth)),
         load_classes=spec.load_classes,
         torque_offset=spec.torque_offset,
+        asperity_roughness=spec.asperity_roughness,
     )
 
 
@@ -311,6 +312,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         del data["wear"]["load_classes"]
     if not data["wear"]["torque_offset"]:  # no offset: earlier checkpoints stay valid
         del data["wear"]["torque_offset"]
+    if data["wear"]["asperity_roughness"] == "cell":  # earlier checkpoints stay valid
+        del data["wear"]["asperity_roughness"]
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":

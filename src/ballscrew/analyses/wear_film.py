@@ -10,7 +10,8 @@ of the level, so that a report can say why a level wears nothing:
   ``wear.film_factor``) over the composite roughness σ_Λ of the raceway (after running-in, if
   any), and its regime (Hamrock 1994);
 * the wear engine's own asperity share ψ and its mean-plane separation h (the film of the
-  film-borne load), from the cell-scale micro-contact of the wear grid (σ of one cell, E5.3).
+  film-borne load), on the asperity heights of ``wear.asperity_roughness``: the cell-scale
+  micro-contact of the wear grid (σ of one cell, E5.3, "cell") or σ_Λ ("film").
 
 Both come from one contact of :func:`ballscrew.wear.step.step_rates` each, on the raceway worn by
 the earlier levels, under the preload left at the level's start and with the solved contact's
@@ -158,7 +159,7 @@ def full_film_messages(films: tuple[PartFilm, ...]) -> list[str]:
     return [
         f"{f.name} ({f.speed / _RPM:.4g} rpm, {f.axial_load:.4g} N) wears practically nothing: "
         f"the EHL film (Λ = {f.film_parameter:.3g}) carries all but ψ = {f.asperity_share:.2g} "
-        "of the ball load on the wear engine's cell-scale asperities, and the wear law acts on "
+        "of the ball load on the wear engine's asperities, and the wear law acts on "
         "the asperity-borne load ψQ only"
         for f in films
         if f.asperity_share < FULL_FILM_SHARE and f.film_parameter is not None

@@ -19,6 +19,7 @@ from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.analyses.wear_film import FULL_FILM_SHARE, PartFilm
 from ballscrew.case import Case
+from ballscrew.case.wear_spec import WearSpec
 from ballscrew.loads import preload_flanks
 from ballscrew.plotting import legend_outside, pyplot, revolutions_axis, save_figure
 from ballscrew.units import format_number
@@ -81,10 +82,11 @@ def _lubrication_options(case: Case) -> dict[str, Any]:
     """Supply factor, running-in and, for a duty programme, each segment's operating point."""
     from ballscrew.analyses.wear_duty import duty_programme
 
-    spec = case.wear
-    running = None if spec is None or spec.running_in is None else spec.running_in
+    spec = case.wear or WearSpec()
+    running = spec.running_in
     out: dict[str, Any] = {
-        "film_factor": 1.0 if spec is None else spec.film_factor,
+        "film_factor": spec.film_factor,
+        "asperity_roughness": spec.asperity_roughness,
         "running_in": None
         if running is None
         else {"D": running.D, "G": value(running.G, "m"), "depth": value(running.depth, "m")},
@@ -379,6 +381,15 @@ def sections(result: WearResult) -> list[Section]:
     ]
 
 
+_HEIGHTS = {
+    "cell": 'from the asperities of one grid cell (wear.asperity_roughness = "cell": the σ of '
+    "one cell, not σ_Λ, so ψ and Λ need not agree)",
+    "film": 'from asperities of the height σ_Λ of Λ (wear.asperity_roughness = "film", as the '
+    "friction model)",
+}
+"""Which asperities share the load with the film, by ``wear.asperity_roughness``."""
+
+
 def _film_section(result: WearResult) -> list[Section]:
     """Λ, its regime and ψ of each programme part: why a level wears little or nothing."""
     if not result.films:
@@ -410,8 +421,8 @@ def _film_section(result: WearResult) -> list[Section]:
         "the raceway's composite RMS roughness, as the operating point and the kinematics report "
         "it, with its regime (Hamrock 1994: below 1 boundary, 1–3 mixed, above 3 EHL); ψ and "
         "the separation h (the film of the film-borne load) as the wear engine applies them, "
-        "from the asperities of one grid cell (the σ of one cell, not σ_Λ: ψ and Λ need not "
-        f"agree). Below ψ = {FULL_FILM_SHARE:g} a warning says so."
+        f"{_HEIGHTS[(result.case.wear or WearSpec()).asperity_roughness]}. Below ψ = "
+        f"{FULL_FILM_SHARE:g} a warning says so."
     )
     table = Table(
         (

@@ -29,6 +29,7 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, model_choice, quantity
 from ballscrew.wear.rates import WEAR_LAWS
+from ballscrew.wear.step import ASPERITY_HEIGHTS
 
 #: Most screw revolutions of one level (a very long life test is about 1e9).
 MAX_REVOLUTIONS = 1e12
@@ -116,7 +117,8 @@ class WearSpec(Model):
             lt=1,
             description="wear coefficient K (dimensionless probability per asperity encounter, "
             "below 1); "
-            "default 1.304e-4 = calibration of the reference screw (Model A, 32 × 128 grid)",
+            "default 1.304e-4 = calibration of the reference screw (Model A, 32 × 128 grid, "
+            "asperity_roughness = 'cell'; 9.607e-5 with 'film')",
         ),
     ] = 1.304e-4
     stroke: quantity(
@@ -192,6 +194,14 @@ class WearSpec(Model):
             "below 1 for a starved or grease supply)",
         ),
     ] = 1.0
+    asperity_roughness: model_choice(
+        ASPERITY_HEIGHTS,
+        "RMS height σ of the asperities that share the ball load with the EHL film (JGP): "
+        "'film' σ_Λ of the film parameter Λ, as the friction and kinematics models (default), "
+        "'cell' the σ of one wear-grid cell (the fractal wear model's convention, with which "
+        "the reference coefficient 1.304e-4 was calibrated); the wear law's micro-contact stays "
+        "at the cell scale",
+    ) = "film"
     running_in: RunningInSpec | None = Field(
         None,
         description="initial raceway surface and running-in depth ([wear.running_in]); "

@@ -18,7 +18,7 @@ from ballscrew.wear.profile import worn_gap, worn_gap_function
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.rates import WEAR_LAWS, cell_wear_rate, wear_rate_model_a, wear_rate_model_c
 from ballscrew.wear.setup import WearSetup
-from ballscrew.wear.step import FlankRate, GridEdgeWarning, flank_rate
+from ballscrew.wear.step import ASPERITY_HEIGHTS, FlankRate, GridEdgeWarning, flank_rate
 from ballscrew.wear.strips import (
     depth_per_revolution,
     raceway_depth_rate,
@@ -28,6 +28,7 @@ from ballscrew.wear.strips import (
 )
 
 __all__ = [
+    "ASPERITY_HEIGHTS",
     "WEAR_LAWS",
     "FlankRate",
     "GridEdgeWarning",

@@ -103,3 +103,6 @@ class WearOptions:
     """Ball-load classes per nut of the elastic distribution (:mod:`.load_classes`) [-]."""
     torque_offset: float = 0.0
     """Preload-independent drag torque T_0 added to (E9.1) [N m]."""
+    asperity_roughness: str = "film"
+    """σ of the asperities of the JGP load sharing (``ballscrew.wear.step.ASPERITY_HEIGHTS``):
+    "film" σ_Λ of the film parameter, "cell" the micro-contact cell's."""

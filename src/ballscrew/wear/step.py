@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -20,8 +20,9 @@ from ballscrew.budget import check_memory, contact_batch_bytes
 from ballscrew.contact import ContactResult, solve_normal_batch
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.kinematics.sliding import sliding_field_closed_form
-from ballscrew.lubrication import film_parameter, share_loads
+from ballscrew.lubrication import AsperitySurface, film_parameter, share_loads
 from ballscrew.lubrication.film import film_function
+from ballscrew.registry import Registry
 from ballscrew.wear.profile import worn_gap
 from ballscrew.wear.programme import WearLevel
 from ballscrew.wear.rates import cell_wear_rate
@@ -29,6 +30,7 @@ from ballscrew.wear.setup import FloatArray, WearSetup
 from ballscrew.wear.strips import depth_per_revolution, raceway_depth_rate, strip_wear_speed
 
 __all__ = [
+    "ASPERITY_HEIGHTS",
     "FlankRate",
     "GridEdgeWarning",
     "StepContact",
@@ -36,6 +38,33 @@ __all__ = [
     "flank_rate",
     "step_rates",
 ]
+
+
+ASPERITY_HEIGHTS: Registry[Callable[[AsperitySurface], AsperitySurface]] = Registry(
+    "asperity heights of the wear load sharing", "wear.asperity_roughness"
+)
+"""Which RMS height σ the asperities of the JGP load sharing (E6.3)–(E6.4) of the wear engine
+have; the wear law's micro-contact (E7.2)–(E7.3) stays at the cell scale under either."""
+
+
+@ASPERITY_HEIGHTS.register(
+    "film", "σ_Λ of the film parameter (E6.6), the combined roughness the ball model uses"
+)
+def film_heights(surface: AsperitySurface) -> AsperitySurface:
+    """The surface with σ = σ_Λ (:attr:`AsperitySurface.film_heights`): Johnson, Greenwood &
+    Poon (1972) on the Greenwood–Williamson heights of the combined roughness of both surfaces
+    (Greenwood & Tripp 1970), the σ of Λ = h/σ_Λ that the friction and kinematics models share."""
+    return surface.film_heights
+
+
+@ASPERITY_HEIGHTS.register(
+    "cell", "σ of one wear-grid cell (E5.3, L_s = √ΔA): the fractal wear model's own convention"
+)
+def cell_heights(surface: AsperitySurface) -> AsperitySurface:
+    """The surface as it is: the bearing ratio (E5.15) on σ of the micro-contact cell (E5.3
+    with the sampling length L_s = √ΔA), the convention of the 3-D fractal wear model, whose
+    asperities of one cell carry the asperity share."""
+    return surface
 
 
 class GridEdgeWarning(UserWarning):
@@ -64,7 +93,8 @@ class FlankRate:
     """Composite RMS roughness σ_Λ (E6.6) of the flank's surface at its worn depth [m]."""
     separation: float | None = None
     """Mean-plane separation h = φ h_c((1 − ψ)Q) of the engine's load sharing (E6.4): the film
-    of the film-borne load, whose cell-scale asperities carry ψQ [m]; None when dry or at rest."""
+    of the film-borne load, whose asperities (``wear.asperity_roughness``) carry ψQ [m]; None when
+    dry or at rest."""
 
     @property
     def film_parameter(self) -> float | None:
@@ -154,7 +184,9 @@ def _asperity_shares(
 ) -> list[_Film]:
     """JGP asperity share ψ (E6.4) of each contact, A_n its loaded cells, with its separation h,
     the central film h_c of its whole load and σ_Λ; the contacts on one surface, lubricant and
-    speed are solved together (:func:`share_loads`); dry or at rest: ψ = 1 and no film."""
+    speed are solved together (:func:`share_loads`) on the asperity heights of
+    ``wear.asperity_roughness`` (:data:`ASPERITY_HEIGHTS`); dry or at rest: ψ = 1 and no film."""
+    heights = ASPERITY_HEIGHTS[setup.spec.asperity_roughness]
     groups: dict[tuple[object, ...], list[int]] = {}
     for i, c in enumerate(contacts):
         eta, alpha = setup.lubricant(c.level)
@@ -179,7 +211,7 @@ def _asperity_shares(
             alpha,
             speed,
             [_loaded_area(setup, solved[i]) for i in group],
-            surface,
+            heights(surface),
             film_model=setup.film_model,
             film_factor=factor,
         )
