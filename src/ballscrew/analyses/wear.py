@@ -78,7 +78,7 @@ def wear_options(case: Case) -> WearOptions:
     running = spec.running_in
     return WearOptions(
         model=spec.model,
-        coefficient=spec.coefficient,
+        coefficient=spec.wear_coefficient,
         stroke=spec.stroke,
         max_depth_step=spec.max_depth_step,
         torque_sampling=spec.torque_sampling,

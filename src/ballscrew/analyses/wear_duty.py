@@ -116,8 +116,7 @@ def calibrated_range(spec: WearSpec) -> CalibratedRange | None:
     """The range the coefficient of ``spec`` holds for (the reference test's for the default)."""
     if spec.calibrated is not None:
         return spec.calibrated
-    default = WearSpec.model_fields["coefficient"].default
-    return REFERENCE_RANGE if spec.coefficient == default else None
+    return REFERENCE_RANGE if spec.reference_calibration else None
 
 
 def range_messages(spec: WearSpec, programme: tuple[WearLevel, ...]) -> list[str]:
@@ -134,7 +133,7 @@ def range_messages(spec: WearSpec, programme: tuple[WearLevel, ...]) -> list[str
             if lo_s <= part.speed <= hi_s and lo_f <= abs(part.axial_load) <= hi_f:
                 continue
             out.append(
-                f"wear.coefficient = {spec.coefficient:.4g} was calibrated at "
+                f"wear.coefficient = {spec.wear_coefficient:.4g} was calibrated at "
                 f"{_span(bounds.speed_min / _RPM, bounds.speed_max / _RPM)} rpm and "
                 f"{_span(bounds.load_min, bounds.load_max)} N; programme level {i + 1} runs at "
                 f"{part.speed / _RPM:.4g} rpm and {part.axial_load:.4g} N: the wear prediction "

@@ -32,13 +32,14 @@ __all__ = ["figures", "history", "sections", "summary"]
 
 
 def _provenance(case: Case) -> str:
-    default = 1.304e-4
     spec = case.wear
-    if spec is not None and abs(spec.coefficient - default) > 1e-12:
+    if spec is not None and not spec.reference_calibration:
         return "case file [wear] coefficient"
+    roughness = "film" if spec is None else spec.asperity_roughness
     return (
-        "calibrated so that h_max = 2.43 µm at 1.44×10⁶ rev on the step-stress example screw "
-        "(examples/wear_step_stress.toml: Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m)"
+        "reference calibration: h_max = 2.43 µm at 1.44×10⁶ rev on the step-stress example screw "
+        "(examples/wear_step_stress.toml: Model A, 32 × 128 grid, ΔA = 59.91 µm², S = 0.30 m) "
+        f"with wear.asperity_roughness = '{roughness}'"
     )
 
 

@@ -231,7 +231,7 @@ def case_setup(
 
         model = wear_life
     wear = getattr(case, "wear", None)
-    start = {"wear_coefficient": getattr(wear, "coefficient", None) or 1.0e-4}
+    start = {"wear_coefficient": getattr(wear, "wear_coefficient", None) or 1.0e-4}
     if "film_factor" in names:
         start["film_factor"] = getattr(wear, "film_factor", 1.0)
     if "running_in_depth" in names:

@@ -11,7 +11,7 @@ Example::
 
     [wear]
     model = "A"                    # Archard–fractal on plastic asperities (E7.2, default)
-    coefficient = 1.304e-4         # K, calibrated to h_max = 2.43 µm at 1.44e6 rev
+    coefficient = 1.304e-4         # K (omit: the reference calibration, REFERENCE_COEFFICIENTS)
     stroke = "0.30 m"              # reciprocating stroke S → L_w (E8.3) [assumed]
     torque_sampling = 4.8e4        # revolutions between drag-torque samples
 
@@ -101,6 +101,12 @@ REFERENCE_RANGE = CalibratedRange(
 )
 """Where the default wear coefficient was calibrated: the step-stress test, 100 rpm, 2–4 kN."""
 
+REFERENCE_COEFFICIENTS = {"film": 9.607e-5, "cell": 1.304e-4}
+"""The wear coefficient K that gives the step-stress example screw (Model A, 32 × 128 grid) the
+h_max = 2.43 µm at 1.44e6 rev of the reference test, per ``wear.asperity_roughness`` ('cell' with
+the paper's ball-centre entrainment; 'film' under either entrainment rule, ψ = 1 there): the K a
+case without its own coefficient runs with (theory manual, *Wear*)."""
+
 
 class WearSpec(Model):
     """Fractal wear model, load programme and integration options of ``ballscrew wear``."""
@@ -110,17 +116,20 @@ class WearSpec(Model):
         "per-asperity wear volume: 'A' plastic hemispherical Archard–fractal (default), "
         "'C' cap-volume fractal (needs surface dimension D + 1 < 2.5)",
     ) = "A"
-    coefficient: Annotated[
-        float,
-        Field(
-            gt=0,
-            lt=1,
-            description="wear coefficient K (dimensionless probability per asperity encounter, "
-            "below 1); "
-            "default 1.304e-4 = calibration of the reference screw (Model A, 32 × 128 grid, "
-            "asperity_roughness = 'cell'; 9.607e-5 with 'film')",
-        ),
-    ] = 1.304e-4
+    coefficient: (
+        Annotated[
+            float,
+            Field(
+                gt=0,
+                lt=1,
+                description="wear coefficient K (dimensionless probability per asperity "
+                "encounter, below 1); None: the reference calibration of the step-stress screw "
+                "for the case's asperity_roughness (REFERENCE_COEFFICIENTS: 9.607e-5 for 'film', "
+                "1.304e-4 for 'cell')",
+            ),
+        ]
+        | None
+    ) = None
     stroke: quantity(
         "length",
         "reciprocating stroke S of the nut (m, 1 mm to 100 m), sets L_w (E8.3)",
@@ -227,6 +236,21 @@ class WearSpec(Model):
         int,
         Field(ge=1, le=1_000_000_000, description="time steps between checkpoint saves (count)"),
     ] = 1
+
+    @property
+    def wear_coefficient(self) -> float:
+        """K in force: :attr:`coefficient`, else the reference calibration for
+        :attr:`asperity_roughness` (:data:`REFERENCE_COEFFICIENTS`)."""
+        if self.coefficient is not None:
+            return self.coefficient
+        return REFERENCE_COEFFICIENTS[self.asperity_roughness]
+
+    @property
+    def reference_calibration(self) -> bool:
+        """True when the K in force is the reference calibration of :attr:`asperity_roughness`
+        (left out, or written with that value): it holds for the reference test's speeds and
+        loads (:data:`REFERENCE_RANGE`)."""
+        return self.wear_coefficient == REFERENCE_COEFFICIENTS[self.asperity_roughness]
 
     @model_validator(mode="after")
     def _few_enough_samples(self) -> WearSpec:
