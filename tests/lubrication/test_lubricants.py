@@ -228,6 +228,10 @@ def test_bad_oil_viscosities_are_one_line_errors(tmp_path, wear_case_path, lines
             'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "90 mm^2/s"\n',
             "(the viscosity falls with temperature)",
         ),
+        (
+            "viscosity_grade = 68\nviscosity_index = 600\n",
+            "medium.viscosity_index = 600 is not allowed: allowed range is [-100, 400]",
+        ),
     ],
 )
 def test_cli_refuses_a_bad_lubricant_in_one_line_with_exit_2(
