@@ -70,3 +70,13 @@ def test_temperature_at_inverts_the_viscosity_law(name):
     for temperature in (273.15, 313.15, 353.15, 393.15):
         eta = lub.at(temperature).viscosity
         assert lub.temperature_at(eta) == pytest.approx(temperature, abs=1e-6)
+
+
+def test_library_oils_have_the_viscosity_index_their_source_states():
+    """The oils' ν100 are stated as typical of VI ≈ 95–100 mineral oils: their ASTM D2270 VI,
+    computed from ν40 and ν100, is 95.6–100.5 (VG 460 lowest, VG 22 highest)."""
+    vis = {g: library_lubricant(f"iso_vg_{g}").viscosity_index for g in GRADES}
+    assert all(95.0 <= vi <= 100.6 for vi in vis.values()), vis
+    # a grease carries its base oil's VI
+    grease = library_lubricant("lithium_nlgi2_vg100")
+    assert grease.viscosity_index == pytest.approx(vis[100], rel=1e-12)

@@ -146,11 +146,63 @@ def test_an_unnamed_oil_by_two_viscosities_follows_astm_d341(tmp_path, wear_case
     assert entry.at(343.15).viscosity == pytest.approx(vg68.at(343.15).viscosity, rel=1e-12)
 
 
+def test_an_oil_by_iso_grade_and_viscosity_index_finds_nu100_by_astm_d2270(
+    tmp_path, wear_case_path
+):
+    # VG 68 with the VI of the library's VG 68 is that oil: the same ν100, the same state at 70 °C
+    vg68 = library_lubricant("iso_vg_68")
+    lines = f"viscosity_grade = 68\nviscosity_index = {vg68.viscosity_index!r}\n"
+    case = _unnamed_oil(tmp_path, wear_case_path, lines + 'density_15 = "880 kg/m^3"\n')
+    entry = library_entry(case)
+    assert (entry.nu40, entry.nu100) == (
+        pytest.approx(vg68.nu40, rel=1e-12),
+        pytest.approx(vg68.nu100, rel=1e-9),
+    )
+    assert entry.at(343.15).viscosity == pytest.approx(vg68.at(343.15).viscosity, rel=1e-9)
+    # ν40 given directly: the ASTM D2270 §6.1.4 example oil, VI 156.37 → ν100 = 5.05 mm²/s
+    case = _unnamed_oil(
+        tmp_path, wear_case_path, 'viscosity_40 = "22.83 mm^2/s"\nviscosity_index = 156.37\n'
+    )
+    assert case.medium.oil_viscosities()[1] == pytest.approx(5.05e-6, abs=5e-9)
+
+
+@pytest.mark.parametrize(
+    ("lines", "text"),
+    [
+        (
+            "viscosity_grade = 65\nviscosity_index = 95\n",
+            "viscosity_grade = 65 is not allowed: one of the ISO 3448 grades 2, 3, 5",
+        ),
+        ("viscosity_grade = 68\nviscosity_index = 500\n", "viscosity_index = 500"),
+        (
+            'viscosity_grade = 68\nviscosity_40 = "68 mm^2/s"\nviscosity_index = 95\n',
+            "viscosity_grade = 68 is not allowed with viscosity_40: give nu40 one way",
+        ),
+        (
+            'viscosity_grade = 68\nviscosity_100 = "8 mm^2/s"\nviscosity_index = 95\n',
+            "viscosity_index = 95 is not allowed with viscosity_100: give nu100 one way",
+        ),
+        ("viscosity_grade = 68\n", "viscosity_100 or viscosity_index is missing"),
+        ("viscosity_index = 95\n", "viscosity_40 or viscosity_grade is missing"),
+        (
+            'viscosity_grade = 68\nviscosity_index = 95\nlubricant = "iso_vg_68"\n',
+            "give the oil one way",
+        ),
+        # VG 5 of VI 95 would have ν100 below 2 mm²/s, where VI is undefined
+        ("viscosity_grade = 5\nviscosity_index = 95\n", "viscosity_index = 95.0 is not allowed"),
+    ],
+)
+def test_bad_grade_or_viscosity_index_is_a_one_line_error(tmp_path, wear_case_path, lines, text):
+    with pytest.raises(CaseError) as err:
+        _unnamed_oil(tmp_path, wear_case_path, lines)
+    assert text in str(err.value) and "\n" not in str(err.value).strip()
+
+
 @pytest.mark.parametrize(
     ("lines", "text"),
     [
         ('viscosity_40 = "68 mm^2/s"\nviscosity_100 = "80 mm^2/s"\n', "falls with temperature"),
-        ('viscosity_40 = "68 mm^2/s"\n', "viscosity_100 is missing"),
+        ('viscosity_40 = "68 mm^2/s"\n', "viscosity_100 or viscosity_index is missing"),
         (
             'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "8 mm^2/s"\nlubricant = "iso_vg_68"\n',
             "give the oil one way",
@@ -175,6 +227,10 @@ def test_bad_oil_viscosities_are_one_line_errors(tmp_path, wear_case_path, lines
         (
             'viscosity_40 = "68 mm^2/s"\nviscosity_100 = "90 mm^2/s"\n',
             "(the viscosity falls with temperature)",
+        ),
+        (
+            "viscosity_grade = 68\nviscosity_index = 600\n",
+            "medium.viscosity_index = 600 is not allowed: allowed range is [-100, 400]",
         ),
     ],
 )

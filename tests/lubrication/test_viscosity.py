@@ -9,9 +9,11 @@ import pytest
 
 from ballscrew.errors import InputError
 from ballscrew.lubrication.viscosity import (
+    ISO_VISCOSITY_GRADES,
     Walther,
     density,
     nu40_from_viscosity_index,
+    nu100_from_viscosity_index,
     pressure_viscosity_coefficient,
     reference_viscosities,
     thermal_conductivity,
@@ -70,34 +72,87 @@ def test_viscosity_rising_with_temperature_is_refused_naming_the_field(t1, nu1, 
 
 
 def test_d2270_procedure_a_worked_example():
-    """ASTM D2270 §5.1.4: U = 73.30, Y = 8.86 mm²/s, L = 119.94, H = 69.48 → VI = 92.43 ≈ 92."""
-    vi = viscosity_index(73.30 * MM2, 8.86 * MM2, (119.94 * MM2, 69.48 * MM2))
-    assert vi == pytest.approx(92.43, abs=0.005)
+    """ASTM D2270-10 §5.1.4: U = 73.30, Y = 8.86 mm²/s; Table 1 by interpolation L = 119.94,
+    H = 69.48; VI = 92.43, reported 92."""
+    low, high = reference_viscosities(8.86 * MM2)
+    assert (low / MM2, high / MM2) == (
+        pytest.approx(119.94, abs=5e-3),
+        pytest.approx(69.48, abs=5e-3),
+    )
+    vi = viscosity_index(73.30 * MM2, 8.86 * MM2)
+    assert vi == pytest.approx(92.43, abs=5e-3)
+    assert round(vi) == 92
 
 
 def test_d2270_procedure_b_worked_example():
-    """ASTM D2270 §6.1.4: U = 22.83, Y = 5.05 mm²/s, H = 28.97 → N = 0.14708, VI = 156.37."""
-    vi = viscosity_index(22.83 * MM2, 5.05 * MM2, (60.0 * MM2, 28.97 * MM2))
-    assert vi == pytest.approx(156.37, abs=0.01)
+    """ASTM D2270-10 §6.1.4 (1): U = 22.83, Y = 5.05 mm²/s; Table 1 by interpolation H = 28.97;
+    N = 0.14708, VI = 156.37, reported 156 (the table row mean is 28.975, printed 28.97)."""
+    high = reference_viscosities(5.05 * MM2)[1] / MM2
+    assert high == pytest.approx(28.97, abs=5e-3)
+    vi = viscosity_index(22.83 * MM2, 5.05 * MM2)
+    assert math.log10(1 + 0.00715 * (vi - 100)) == pytest.approx(0.14708, abs=2e-4)
+    assert round(vi) == 156
 
 
-def test_d2270_closed_forms_above_70_and_their_inverse():
+def test_d2270_reference_oils_have_vi_0_and_100_over_the_table_and_above():
+    # L and H are by definition the ν40 of the VI = 0 and VI = 100 oils of the same ν100
+    for y in (2.0, 2.65, 8.6, 19.95, 30.0, 55.25, 70.0, 80.0, 300.0):
+        low, high = reference_viscosities(y * MM2)
+        assert viscosity_index(low, y * MM2) == pytest.approx(0.0, abs=1e-9)
+        assert viscosity_index(high, y * MM2) == pytest.approx(100.0, abs=1e-9)
+
+
+def test_d2270_table_rows_and_closed_forms():
+    # printed rows are returned as printed; interpolation between rows is linear (§5.1.1)
+    assert tuple(v / MM2 for v in reference_viscosities(2.0 * MM2)) == pytest.approx((7.994, 6.394))
+    assert tuple(v / MM2 for v in reference_viscosities(70.0 * MM2)) == pytest.approx((4905, 1558))
+    mid = tuple(v / MM2 for v in reference_viscosities(30.25 * MM2))
+    assert mid == pytest.approx(((1023 + 1055) / 2, (421.7 + 432.4) / 2))
     y = 80.0
     low, high = reference_viscosities(y * MM2)
     assert low / MM2 == pytest.approx(0.8353 * y * y + 14.67 * y - 216)
     assert high / MM2 == pytest.approx(0.1684 * y * y + 11.85 * y - 97)
-    assert viscosity_index(low, y * MM2) == pytest.approx(0.0, abs=1e-9)
-    assert viscosity_index(high, y * MM2) == pytest.approx(100.0)
-    for vi in (-20.0, 0.0, 55.0, 100.0, 140.0, 200.0):
-        nu40 = nu40_from_viscosity_index(y * MM2, vi)
-        assert viscosity_index(nu40, y * MM2) == pytest.approx(vi, abs=1e-9)
+    # the table's last row and the closed forms meet at 70 mm²/s to 0.03 %
+    y = 70.0 + 1e-9
+    assert reference_viscosities(y * MM2)[0] / MM2 == pytest.approx(4905, rel=3e-4)
+    assert reference_viscosities(y * MM2)[1] / MM2 == pytest.approx(1558, rel=3e-4)
 
 
-def test_d2270_table_range_needs_l_and_h():
-    with pytest.raises(InputError, match=r"^nu100 = .*ASTM D2270 Table 1"):
-        viscosity_index(68 * MM2, 8.6 * MM2)
+@pytest.mark.parametrize("nu100", [2.3, 8.86, 25.0, 80.0])
+@pytest.mark.parametrize("vi", [-20.0, 0.0, 55.0, 100.0, 140.0, 200.0])
+def test_nu40_from_viscosity_index_inverts_it(nu100, vi):
+    nu40 = nu40_from_viscosity_index(nu100 * MM2, vi)
+    assert viscosity_index(nu40, nu100 * MM2) == pytest.approx(vi, abs=1e-9)
+
+
+@pytest.mark.parametrize("grade", ISO_VISCOSITY_GRADES[4:])
+@pytest.mark.parametrize("vi", [0.0, 50.0, 95.0, 100.0, 140.0, 250.0])
+def test_nu100_from_viscosity_index_round_trips_to_1e_9(grade, vi):
+    nu100 = nu100_from_viscosity_index(grade * MM2, vi)
+    assert 2 * MM2 <= nu100 < grade * MM2
+    assert viscosity_index(grade * MM2, nu100) == pytest.approx(vi, abs=1e-9)
+
+
+def test_nu100_from_viscosity_index_of_the_worked_examples():
+    assert nu100_from_viscosity_index(73.30 * MM2, 92.43) / MM2 == pytest.approx(8.86, abs=5e-3)
+    assert nu100_from_viscosity_index(22.83 * MM2, 156.37) / MM2 == pytest.approx(5.05, abs=5e-3)
+    # a higher VI is a flatter line: ν100 rises with VI at the same ν40
+    nus = [nu100_from_viscosity_index(68 * MM2, vi) for vi in (0.0, 50.0, 100.0, 150.0)]
+    assert nus == sorted(nus)
+
+
+def test_viscosity_index_outside_the_definition_is_refused_naming_the_field():
     with pytest.raises(InputError, match=r"^nu100 = .*undefined below 2"):
-        viscosity_index(5 * MM2, 1.5 * MM2, (1.0, 1.0))
+        viscosity_index(5 * MM2, 1.5 * MM2)
+    with pytest.raises(InputError, match=r"^nu100 = .*undefined below 2"):
+        reference_viscosities(1.9 * MM2)
+    # ν40 = 10 mm²/s reaches ν100 = 2 mm²/s at VI = −125.4: lower VIs have no ν100 ≥ 2
+    with pytest.raises(InputError, match=r"^viscosity_index = -300.0 is not allowed: -?\d.* to "):
+        nu100_from_viscosity_index(10 * MM2, -300.0)
+    with pytest.raises(InputError, match=r"^viscosity_index = nan is not allowed: a finite"):
+        nu100_from_viscosity_index(68 * MM2, math.nan)
+    with pytest.raises(InputError, match=r"^nu40 = "):
+        nu100_from_viscosity_index(1.5 * MM2, 100.0)
 
 
 def test_density_and_conductivity():

@@ -97,17 +97,19 @@ class Lubrication:
 
 def library_entry(case: Case) -> LibraryLubricant | None:
     """The case's lubricant with its laws against temperature: the library entry named by
-    ``[medium] lubricant`` or ``[kinematics] lubricant``, or the oil given by ``[medium]
-    viscosity_40``, ``viscosity_100`` and ``density_15``; None without either."""
+    ``[medium] lubricant`` or ``[kinematics] lubricant``, or the oil given by ``[medium]``
+    ν40 and ν100 (:meth:`~ballscrew.case.models.MediumSpec.oil_viscosities`) and ``density_15``;
+    None without either."""
     medium = case.medium
-    if medium.viscosity_40 is not None and medium.viscosity_100 is not None:
+    oil = medium.oil_viscosities()
+    if oil is not None:
         return LibraryLubricant(
             medium.name,
             "oil",
-            medium.viscosity_40,
-            medium.viscosity_100,
+            *oil,
             medium.density_15,
-            "[medium] viscosity_40, viscosity_100, density_15 of the case",
+            "[medium] viscosity_40 or viscosity_grade, viscosity_100 or viscosity_index, "
+            "density_15 of the case",
         )
     name = medium.lubricant or case.kinematics.lubricant
     return None if name is None else library_lubricant(name)

@@ -19,6 +19,7 @@ from typing import Annotated, Any, Literal
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import Model, quantity
+from ballscrew.errors import InputError
 
 #: Inlet meniscus ratio m of a greased contact: GUESS. Grease supplies its base oil by bleeding
 #: slowly into the track, so a greased contact runs starved (Damiens, Venner, Cann & Lubrecht
@@ -30,16 +31,26 @@ Supply = Literal["flooded", "starved", "grease"]
 
 
 def check_oil_viscosities(medium: Any) -> Any:
-    """``[medium]`` validator: an unnamed oil by two viscosities that fall with temperature,
-    not together with a named lubricant or a dynamic viscosity."""
-    nu40, nu100 = medium.viscosity_40, medium.viscosity_100
-    if nu40 is None and nu100 is None:
+    """``[medium]`` validator: an unnamed oil by ν40 (``viscosity_40`` or ``viscosity_grade``) and
+    ν100 (``viscosity_100`` or ``viscosity_index``), each given one way, that falls with
+    temperature, not together with a named lubricant or a dynamic viscosity."""
+    keys = ("viscosity_40", "viscosity_grade", "viscosity_100", "viscosity_index")
+    given = [key for key in keys if getattr(medium, key) is not None]
+    if not given:
         return medium
-    if nu40 is None or nu100 is None:
-        given = "viscosity_40" if nu100 is None else "viscosity_100"
-        missing = "viscosity_100" if nu100 is None else "viscosity_40"
-        raise ValueError(f"{missing} is missing: an oil by viscosities needs it with {given}")
-    if nu100 >= nu40:
+    for pair in (keys[:2], keys[2:]):
+        if all(key in given for key in pair):
+            raise ValueError(
+                f"{pair[1]} = {getattr(medium, pair[1]):g} is not allowed with {pair[0]}: give "
+                f"{'nu40' if pair[0] == 'viscosity_40' else 'nu100'} one way"
+            )
+        if not any(key in given for key in pair):
+            raise ValueError(
+                f"{' or '.join(pair)} is missing: an oil by viscosities needs it with "
+                f"{' and '.join(given)}"
+            )
+    nu40, nu100 = medium.viscosity_40, medium.viscosity_100
+    if nu40 is not None and nu100 is not None and nu100 >= nu40:
         raise ValueError(
             f"viscosity_100 = {nu100:g} m^2/s is not allowed: it must be below viscosity_40 = "
             f"{nu40:g} m^2/s (the viscosity falls with temperature)"
@@ -47,9 +58,13 @@ def check_oil_viscosities(medium: Any) -> Any:
     for other in ("lubricant", "viscosity"):
         if getattr(medium, other) is not None:
             raise ValueError(
-                f"{other} = {getattr(medium, other)!r} is not allowed with viscosity_40/100: "
+                f"{other} = {getattr(medium, other)!r} is not allowed with {given[0]}: "
                 "give the oil one way"
             )
+    try:
+        medium.oil_viscosities()
+    except InputError as err:
+        raise ValueError(str(err)) from None
     return medium
 
 

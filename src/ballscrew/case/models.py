@@ -35,6 +35,7 @@ from ballscrew.contact_resistance.element import ELEMENT_MODELS
 from ballscrew.geometry.gap import GAP_MODELS
 from ballscrew.loads.preload_method import PRELOAD_METHODS, preload_methods
 from ballscrew.lubrication.film import FILM_MODELS
+from ballscrew.lubrication.viscosity import ISO_VISCOSITY_GRADES, nu100_from_viscosity_index
 from ballscrew.materials import MATERIALS, material_properties
 
 
@@ -194,8 +195,22 @@ class MediumSpec(Model):
     viscosity_40: _KinematicViscosity | None = Field(
         None, description="an unnamed oil: kinematic viscosity at 40 °C (ASTM D341 with _100)"
     )
+    viscosity_grade: int | None = Field(
+        None,
+        ge=2,
+        le=3200,
+        description="an unnamed oil: ISO 3448 viscosity grade VG, ν40 = VG mm²/s (instead of "
+        "viscosity_40)",
+    )
     viscosity_100: _KinematicViscosity | None = Field(
         None, description="an unnamed oil: kinematic viscosity at 100 °C"
+    )
+    viscosity_index: float | None = Field(
+        None,
+        ge=-100,
+        le=400,
+        description="an unnamed oil: ASTM D2270 viscosity index, ν100 from it and ν40 (instead "
+        "of viscosity_100)",
     )
     density_15: quantity(
         "density", "an unnamed oil: density at 15 °C [ASSUMED 870]", gt=0, le=1e4
@@ -210,6 +225,32 @@ class MediumSpec(Model):
 
     _known_lubricant = field_validator("lubricant")(known_lubricant)
     _one_oil = model_validator(mode="after")(check_oil_viscosities)
+
+    @field_validator("viscosity_grade")
+    @classmethod
+    def _iso_grade(cls, grade: int | None) -> int | None:
+        if grade is not None and grade not in ISO_VISCOSITY_GRADES:
+            raise ValueError(
+                "is not allowed: one of the ISO 3448 grades "
+                + ", ".join(map(str, ISO_VISCOSITY_GRADES))
+            )
+        return grade
+
+    def oil_viscosities(self) -> tuple[float, float] | None:
+        """(ν40, ν100) [m²/s] of the unnamed oil, None without one.
+
+        ν40 = ``viscosity_40`` or the ISO 3448 grade's mid-point; ν100 = ``viscosity_100`` or,
+        from ``viscosity_index``, the inverse of ASTM D2270
+        (:func:`~ballscrew.lubrication.viscosity.nu100_from_viscosity_index`).
+        """
+        nu40 = self.viscosity_40
+        if nu40 is None and self.viscosity_grade is not None:
+            nu40 = self.viscosity_grade * 1e-6
+        if nu40 is None:
+            return None
+        if self.viscosity_index is not None:
+            return nu40, nu100_from_viscosity_index(nu40, self.viscosity_index)
+        return None if self.viscosity_100 is None else (nu40, self.viscosity_100)
 
 
 class OperatingSpec(Model):

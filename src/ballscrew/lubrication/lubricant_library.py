@@ -8,7 +8,8 @@ Data, each entry saying where its numbers come from:
 
 * Oils: ν40 = the ISO VG grade mid-point (ISO 3448:1992). ν100 [ASSUMED]: a typical value of a
   paraffinic mineral oil of viscosity index ≈ 95–100 (the range of solvent-refined HM hydraulic
-  and CKD gear oils), rounded to 0.05 mm²/s; not a particular product. ρ15 [ASSUMED]: 860–890
+  and CKD gear oils), rounded to 0.05 mm²/s; not a particular product. Their ASTM D2270 VIs
+  (:attr:`LibraryLubricant.viscosity_index`) are 95.6–100.5. ρ15 [ASSUMED]: 860–890
   kg/m³ rising with the grade, typical of paraffinic mineral oils.
 * Greases: the EHL film of a greased contact is governed by its base oil (Harris & Kotzalas,
   *Rolling Bearing Analysis*, 2006), so an entry carries the base oil's ν40, ν100 and ρ15, and its
@@ -27,6 +28,7 @@ from ballscrew.lubrication.viscosity import (
     density,
     pressure_viscosity_coefficient,
     thermal_conductivity,
+    viscosity_index,
 )
 from ballscrew.validation import positive
 
@@ -87,6 +89,11 @@ class LibraryLubricant:
     def walther(self) -> Walther:
         """The ASTM D341 line through (40 °C, ν40) and (100 °C, ν100)."""
         return Walther.through(T40, self.nu40, T100, self.nu100, ("nu40", "nu100"))
+
+    @property
+    def viscosity_index(self) -> float:
+        """ASTM D2270 viscosity index of ν40 and ν100 (a grease: of its base oil), unrounded."""
+        return viscosity_index(self.nu40, self.nu100)
 
     def at(self, temperature: float) -> LubricantState:
         """Properties at ``temperature`` [K].

@@ -4,9 +4,9 @@ SI at the interface (K, m²/s, Pa s, kg/m³, W/(m K), 1/Pa); the published formu
 mm²/s, °C or GPa⁻¹ inside, as their sources state.
 
 * :class:`Walther` — ASTM D341 (Walther) viscosity–temperature line through two points.
-* :func:`viscosity_index` / :func:`nu40_from_viscosity_index` — ASTM D2270 viscosity index, with
-  the closed forms the standard gives for ν100 > 70 mm²/s (its Table 1 for 2–70 mm²/s is not
-  reproduced: pass L and H from it).
+* :func:`viscosity_index`, its inverses :func:`nu40_from_viscosity_index` and
+  :func:`nu100_from_viscosity_index` — ASTM D2270 viscosity index, with its Table 1 for
+  ν100 = 2–70 mm²/s and its closed forms above; :data:`ISO_VISCOSITY_GRADES` (ISO 3448).
 * :func:`density` — linear thermal expansion of oil; :func:`thermal_conductivity` — Cragoe
   (1929); :func:`pressure_viscosity_coefficient` — Gold et al. (2001), mineral oils.
 """
@@ -16,14 +16,21 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+from numpy.typing import NDArray
+from scipy.optimize import brentq
+
 from ballscrew.errors import InputError
+from ballscrew.lubrication.d2270_table import D2270_H, D2270_L, D2270_NU100
 from ballscrew.validation import nonnegative, positive
 
 __all__ = [
+    "ISO_VISCOSITY_GRADES",
     "T_REF_15C",
     "Walther",
     "density",
     "nu40_from_viscosity_index",
+    "nu100_from_viscosity_index",
     "pressure_viscosity_coefficient",
     "reference_viscosities",
     "thermal_conductivity",
@@ -35,6 +42,7 @@ T_REF_15C = 288.15
 _KELVIN = 273.15
 _MM2 = 1e-6  # m²/s per mm²/s (cSt)
 _WALTHER_SHIFT = 0.7  # mm²/s, ASTM D341 Z = ν + 0.7
+FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -106,68 +114,126 @@ def _w(nu: float) -> float:
     return math.log10(math.log10(nu / _MM2 + _WALTHER_SHIFT))
 
 
+ISO_VISCOSITY_GRADES = (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000,
+                        1500, 2200, 3200)  # fmt: skip
+"""ISO 3448:1992 viscosity grades VG: the grade's mid-point ν40 in mm²/s (limits ±10 %)."""
+_VI_B = 0.00715  # ASTM D2270 eq. 7: VI = (10^N − 1)/0.00715 + 100
+
+
+def _reference_mm2(y: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """(L, H) [mm²/s] of ASTM D2270 at ν100 = ``y`` [mm²/s] ≥ 2: Table 1 interpolated linearly
+    up to 70 mm²/s, the closed forms of §5.1.2 above."""
+    table = y <= 70.0
+    low = np.where(table, np.interp(y, D2270_NU100, D2270_L), 0.8353 * y * y + 14.67 * y - 216.0)
+    high = np.where(table, np.interp(y, D2270_NU100, D2270_H), 0.1684 * y * y + 11.85 * y - 97.0)
+    return low, high
+
+
+def _vi_mm2(u: float, y: FloatArray) -> FloatArray:
+    """VI of ν40 = ``u`` and ν100 = ``y`` [mm²/s] (y ≥ 2, < u), ASTM D2270 eqs. 3 and 7–8."""
+    low, high = _reference_mm2(y)
+    with np.errstate(over="ignore"):
+        n = np.log10(high / u) / np.log10(y)
+        return np.where(
+            u >= high, 100.0 * (low - u) / (low - high), (10.0**n - 1.0) / _VI_B + 100.0
+        )
+
+
 def reference_viscosities(nu100: float) -> tuple[float, float]:
-    """(L, H) of ASTM D2270 for an oil of ν100 > 70 mm²/s, m²/s; ``nu100`` [m²/s].
+    """(L, H) of ASTM D2270 for an oil of ``nu100`` ≥ 2 mm²/s, all [m²/s].
+
+    L and H are ν40 of the VI = 0 and VI = 100 reference oils of the same ν100. ASTM D2270-10:
+    for 2 ≤ ν100 ≤ 70 mm²/s its Table 1 (:mod:`~ballscrew.lubrication.d2270_table`), linearly
+    interpolated as §5.1.1 prescribes; above 70 mm²/s (§5.1.2)
 
         L = 0.8353 Y² + 14.67 Y − 216,  H = 0.1684 Y² + 11.85 Y − 97      (Y = ν100, mm²/s)
 
-    ASTM D2270 (2010), §5.1.2: ν40 of the VI = 0 (L) and VI = 100 (H) reference oils of the
-    same ν100. For 2 ≤ ν100 ≤ 70 mm²/s the standard tabulates L and H (Table 1), which is not
-    reproduced here: :class:`InputError` then asks for them.
+    VI is undefined below ν100 = 2 mm²/s: :class:`InputError`.
     """
     y = positive("nu100", nu100, "m²/s") / _MM2
-    if y <= 70.0:
-        raise InputError(
-            "nu100",
-            nu100,
-            "> 7e-05 m²/s for the closed forms; pass L and H from ASTM D2270 Table 1 below",
-        )
-    return ((0.8353 * y * y + 14.67 * y - 216.0) * _MM2, (0.1684 * y * y + 11.85 * y - 97.0) * _MM2)
+    if y < 2.0:
+        raise InputError("nu100", nu100, ">= 2e-06 m²/s (VI is undefined below 2 mm²/s)")
+    low, high = _reference_mm2(np.asarray(y))
+    return float(low) * _MM2, float(high) * _MM2
 
 
-def viscosity_index(nu40: float, nu100: float, lh: tuple[float, float] | None = None) -> float:
-    """Viscosity index of an oil from ν40 and ν100 [m²/s], ASTM D2270 (2010), unrounded.
+def viscosity_index(nu40: float, nu100: float) -> float:
+    """Viscosity index of an oil from ν40 and ν100 [m²/s], ASTM D2270-10, unrounded.
 
         Procedure A (U ≥ H, VI ≤ 100):  VI = 100 (L − U)/(L − H)                      (eq. 3)
         Procedure B (U < H, VI > 100):  N = (log10 H − log10 U)/log10 Y,
                                         VI = (10^N − 1)/0.00715 + 100                 (eqs. 7–8)
 
-    U = ν40, Y = ν100 in mm²/s. ``lh`` = (L, H) [m²/s] from the standard's Table 1 for
-    2 ≤ ν100 ≤ 70 mm²/s; without it the closed forms of :func:`reference_viscosities` are used
-    (ν100 > 70 mm²/s). VI is undefined for ν100 < 2 mm²/s.
+    U = ν40, Y = ν100 in mm²/s; L, H from :func:`reference_viscosities`. VI is undefined for
+    ν100 < 2 mm²/s.
     """
     u = positive("nu40", nu40, "m²/s") / _MM2
-    y = positive("nu100", nu100, "m²/s") / _MM2
-    if y < 2.0:
-        raise InputError("nu100", nu100, ">= 2e-06 m²/s (VI is undefined below 2 mm²/s)")
+    reference_viscosities(nu100)  # refuses ν100 < 2 mm²/s
+    y = nu100 / _MM2
     if y >= u:
         raise InputError("nu100", nu100, f"< nu40 = {nu40:.6g} m²/s (viscosity falls with T)")
-    low, high = (v / _MM2 for v in (lh if lh is not None else reference_viscosities(nu100)))
-    if u >= high:
-        return 100.0 * (low - u) / (low - high)
-    n = (math.log10(high) - math.log10(u)) / math.log10(y)
-    return (10.0**n - 1.0) / 0.00715 + 100.0
+    return float(_vi_mm2(u, np.asarray(y)))
+
+
+def _check_vi(vi: float) -> float:
+    vi = float(vi)
+    if not math.isfinite(vi):
+        raise InputError("viscosity_index", vi, "a finite number")
+    return vi
 
 
 def nu40_from_viscosity_index(nu100: float, vi: float) -> float:
-    """ν40 [m²/s] of an oil of ``nu100`` [m²/s] > 70 mm²/s and viscosity index ``vi``.
+    """ν40 [m²/s] of an oil of ``nu100`` [m²/s] ≥ 2 mm²/s and viscosity index ``vi``.
 
-    The inverse of :func:`viscosity_index` (ASTM D2270 eqs. 3 and 7–8 solved for U):
+    The inverse of :func:`viscosity_index` in U (ASTM D2270 eqs. 3 and 7–8 solved for U):
 
         VI ≤ 100:  U = L − VI (L − H)/100
         VI > 100:  U = H / Y^N,  N = log10(1 + 0.00715 (VI − 100))
-
-    Restricted to ν100 > 70 mm²/s, where the standard gives L and H in closed form.
     """
     low, high = (v / _MM2 for v in reference_viscosities(nu100))
     y = nu100 / _MM2
-    vi = float(vi)
-    if not math.isfinite(vi) or 1.0 + 0.00715 * (vi - 100.0) <= 0.0:
-        raise InputError("viscosity_index", vi, "a finite number > -39.9")
+    vi = _check_vi(vi)
     if vi <= 100.0:
         return (low - vi * (low - high) / 100.0) * _MM2
-    n = math.log10(1.0 + 0.00715 * (vi - 100.0))
+    n = math.log10(1.0 + _VI_B * (vi - 100.0))
     return high / y**n * _MM2
+
+
+def nu100_from_viscosity_index(nu40: float, vi: float) -> float:
+    """ν100 [m²/s] of an oil of ``nu40`` [m²/s] and viscosity index ``vi``.
+
+    The root Y of VI(U, Y) = ``vi`` (:func:`viscosity_index`: ASTM D2270 eqs. 3 and 7–8 with L(Y)
+    and H(Y) of Table 1 or §5.1.2) over 2 mm²/s ≤ Y < U; VI rises with Y at a fixed U. Bracketed
+    on the rows of Table 1 and a geometric grid above 70 mm²/s, then solved by Brent's method to
+    machine precision. :class:`InputError` naming ``viscosity_index`` when no ν100 in that
+    range has this VI (below: the oil would have ν100 < 2 mm²/s, where VI is undefined).
+    """
+    u = positive("nu40", nu40, "m²/s") / _MM2
+    vi = _check_vi(vi)
+    if u <= 2.0:
+        raise InputError("nu40", nu40, "> 2e-06 m²/s (ν100 < ν40 must reach 2 mm²/s for a VI)")
+    above = np.geomspace(70.0, u, 200)[1:] if u > 70.0 else np.empty(0)
+    grid = np.concatenate([D2270_NU100, above])
+    grid = np.append(grid[grid < u], u * (1.0 - 1e-12))
+    excess = _vi_mm2(u, grid) - vi
+    if excess[0] > 0.0 or excess[-1] < 0.0:
+        low, high = _vi_mm2(u, grid[[0, -1]])
+        raise InputError(
+            "viscosity_index",
+            vi,
+            f"{low:.6g} to {high:.6g} for nu40 = {nu40:.6g} m²/s (ν100 from 2 mm²/s to nu40)",
+        )
+    i = int(np.argmax(excess >= 0.0))
+    if excess[i] == 0.0:
+        return float(grid[i]) * _MM2
+    root = brentq(
+        lambda y: float(_vi_mm2(u, np.asarray(y))) - vi,
+        grid[i - 1],
+        grid[i],
+        xtol=1e-13,
+        rtol=1e-15,
+    )
+    return root * _MM2
 
 
 def density(temperature: float, density_15: float, expansion: float = 6.4e-4) -> float:
