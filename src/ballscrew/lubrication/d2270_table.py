@@ -4,7 +4,10 @@ L is ν40 of the VI = 0 reference oil and H that of the VI = 100 oil with the sa
 mm²/s. ASTM D2270-10, *Standard Practice for Calculating Viscosity Index from Kinematic
 Viscosity at 40 and 100 °C*, Table 1, tabulated at ν100 = 2.0–20.0 mm²/s in steps of 0.1,
 20.2–30.0 in steps of 0.2 and 30.5–70.0 in steps of 0.5. The standard interpolates linearly
-between rows (§5.1.1, §6.1.1).
+between rows (§5.1.1, §6.1.1). The standard itself was not at hand: the rows were read from the
+reproduction of Table 1 in Caleb Bell's MIT-licensed Chemical Engineering Design Library
+(ChEDL, the ``fluids``/``thermo`` packages) and checked against the standard's worked examples
+(§5.1.4, §6.1.4) and its closed forms at 70 mm²/s (theory manual, *Lubrication*).
 """
 
 from __future__ import annotations
