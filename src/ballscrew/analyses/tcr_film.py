@@ -14,10 +14,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
+from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side, track_replenishment
 from ballscrew.analyses.tcr_models import gaussian_joint
 from ballscrew.case import Case
-from ballscrew.contact.hertz import HertzContact
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.contact_resistance.film_path import (
     FilmPath,
@@ -31,6 +30,7 @@ from ballscrew.contact_resistance.film_path import (
 from ballscrew.geometry.curvature import raceway_curvature
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.lubrication.film import film_function
+from ballscrew.lubrication.film_corrections import critical_inlet_ratio, equivalent_inlet_ratio
 
 if TYPE_CHECKING:
     from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR
@@ -125,14 +125,45 @@ def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: 
     return max(sigma, film.central)
 
 
-def _edge(params: ScrewParameters, case: Case, side: Side, hertz: HertzContact, h0: float) -> float:
+def _edge(params: ScrewParameters, case: Case, side: Side, raceway: RacewayTCR, h0: float) -> float:
     """h_max: the gap at the inlet meniscus of a starved or greased supply, else (flooded, or a
     meniscus beyond it) the groove-bottom clearance [m]."""
     clearance = _clearance(params, side)
     m = case.lubrication.meniscus
+    if m is None and case.lubrication.replenished:
+        m = _replenished_meniscus(params, case, raceway, side)
     if m is None:
         return clearance
+    hertz = raceway.contact.hertz
     return min(clearance, meniscus_thickness(hertz, *_radii(params, side), m, h0))
+
+
+def _replenished_meniscus(
+    params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side
+) -> float | None:
+    """The inlet ratio at which the meniscus rule (E6.7) thins the contact's central film as
+    the kinematic replenishment of the greased track does, m = 1 + (m* − 1) φ_rs^(1/0.29);
+    None (flooded edge) without EHL data or at rest."""
+    lub = params.lubrication
+    speed = abs(
+        entrainment_speed(params.geometry, case.operating.speed, case.kinematics.entrainment, side)
+    )
+    replenishment = track_replenishment(case, lub.density)
+    if not lub.lubricated or speed == 0.0 or replenishment is None:
+        return None
+    c = raceway.contact
+    phi = replenishment.factor(lub.viscosity, speed)
+    film = film_function(lub.film_model)(
+        c.curvature.rx,
+        c.curvature.ry,
+        2.0 * c.e_star,
+        lub.viscosity,
+        lub.pressure_viscosity,
+        speed,
+        c.load,
+    )
+    m_star = critical_inlet_ratio(c.curvature.rx, c.hertz.a, film.central / phi)
+    return equivalent_inlet_ratio(phi, m_star)
 
 
 def _clearance(params: ScrewParameters, side: Side) -> float:
@@ -172,7 +203,7 @@ def nut_films(
             if key not in solved:
                 hertz = raceway.contact.hertz
                 h0 = _separation(params, case, raceway, side)
-                h_max = _edge(params, case, side, hertz, h0)
+                h_max = _edge(params, case, side, raceway, h0)
                 g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
                 solved[key] = FilmPath(g, h0, h_max)
             paths[side] = solved[key]
