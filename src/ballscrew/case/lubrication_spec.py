@@ -64,8 +64,9 @@ class LubricationSpec(Model):
                 ge=1.0,
                 le=1e3,
                 description="inlet meniscus distance from the contact centre / Hertz semi-axis "
-                "along rolling, m >= 1 (starved: required; grease: optional, replacing the "
-                "kinematic replenishment)",
+                "along rolling, m >= 1 (starved: required); None = in the grease state the "
+                "kinematic replenishment of the track (SKF 2013 φ_rs; bearing section "
+                "D - d = D_w/0.3 [GUESS], K_Z = 3.1 [ASSUMED])",
             ),
         ]
         | None

@@ -13,8 +13,9 @@ All multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a 
 :func:`ballscrew.lubrication.supply.supplied_film_model` applies them to a film model for the
 case's ``[lubrication]`` section. SI units.
 
-[UNVERIFIED: the coefficients of all three correlations are as quoted in the secondary EHL
-literature; the original papers were not available to check them.]
+[UNVERIFIED: the coefficients of the correlations and of the SKF factor are as quoted in the
+secondary literature; the original papers and the catalogue page were not available to check
+them.]
 """
 
 from __future__ import annotations
