@@ -102,16 +102,17 @@ def contact_constriction(raceway: RacewayTCR, lam: Mapping[str, float]) -> float
     return ball_contact_constriction((h.a, h.b), lam["ball"], lam[raceway.contact.side])
 
 
-def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side) -> float:
-    """h0 of a loaded contact: the central EHL film at the case's speed when the medium has EHL
-    data, else (or when thinner) the raceway's RMS roughness σ (the ball is smooth) [m]."""
-    sigma = gaussian_joint(params, case.tcr, side).sigma
+def _central_film(
+    params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side
+) -> tuple[float, float] | None:
+    """(|u_e| [m/s], central EHL film [m]) of a loaded contact at the case's speed, as supplied;
+    None without EHL data or at rest."""
     lub = params.lubrication
-    speed = entrainment_speed(
-        params.geometry, case.operating.speed, case.kinematics.entrainment, side
+    speed = abs(
+        entrainment_speed(params.geometry, case.operating.speed, case.kinematics.entrainment, side)
     )
     if not lub.lubricated or speed == 0.0:
-        return sigma
+        return None
     c = raceway.contact
     film = film_function(lub.film_model)(
         c.curvature.rx,
@@ -119,10 +120,18 @@ def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: 
         2.0 * c.e_star,
         lub.viscosity,
         lub.pressure_viscosity,
-        abs(speed),
+        speed,
         c.load,
     )
-    return max(sigma, film.central)
+    return speed, film.central
+
+
+def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side) -> float:
+    """h0 of a loaded contact: the central EHL film at the case's speed when the medium has EHL
+    data, else (or when thinner) the raceway's RMS roughness σ (the ball is smooth) [m]."""
+    sigma = gaussian_joint(params, case.tcr, side).sigma
+    film = _central_film(params, case, raceway, side)
+    return sigma if film is None else max(sigma, film[1])
 
 
 def _edge(params: ScrewParameters, case: Case, side: Side, raceway: RacewayTCR, h0: float) -> float:
@@ -145,24 +154,14 @@ def _replenished_meniscus(
     the kinematic replenishment of the greased track does, m = 1 + (m* − 1) φ_rs^(1/0.29);
     None (flooded edge) without EHL data or at rest."""
     lub = params.lubrication
-    speed = abs(
-        entrainment_speed(params.geometry, case.operating.speed, case.kinematics.entrainment, side)
-    )
     replenishment = track_replenishment(case, lub.density)
-    if not lub.lubricated or speed == 0.0 or replenishment is None:
+    film = _central_film(params, case, raceway, side)
+    if film is None or replenishment is None or lub.viscosity is None:
         return None
-    c = raceway.contact
+    speed, central = film
     phi = replenishment.factor(lub.viscosity, speed)
-    film = film_function(lub.film_model)(
-        c.curvature.rx,
-        c.curvature.ry,
-        2.0 * c.e_star,
-        lub.viscosity,
-        lub.pressure_viscosity,
-        speed,
-        c.load,
-    )
-    m_star = critical_inlet_ratio(c.curvature.rx, c.hertz.a, film.central / phi)
+    c = raceway.contact
+    m_star = critical_inlet_ratio(c.curvature.rx, c.hertz.a, central / phi)
     return equivalent_inlet_ratio(phi, m_star)
 
 
