@@ -1,4 +1,5 @@
-"""Inlet-heating and starvation corrections of the Hamrock–Dowson film (REF contact A)."""
+"""Inlet-heating, starvation and replenishment corrections of the Hamrock–Dowson film (REF
+contact A)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,11 @@ from ballscrew.contact.hertz import hamrock_brewe
 from ballscrew.errors import InputError
 from ballscrew.lubrication.film import FILM_MODELS, hamrock_dowson
 from ballscrew.lubrication.film_corrections import (
+    REPLENISHMENT_GREASE,
+    REPLENISHMENT_OIL,
     critical_inlet_ratio,
+    equivalent_inlet_ratio,
+    replenishment_factor,
     starvation_factor,
     thermal_loading,
     thermal_reduction_gupta,
@@ -108,3 +113,56 @@ def test_meniscus_inside_the_hertz_zone_is_refused(m):
         starved_film_model(m)
     with pytest.raises(InputError, match=r"^inlet_ratio = "):
         starvation_factor(m, 1.5)
+
+
+RPM = math.pi / 30.0  # rad/s per r/min
+
+
+def test_replenishment_factor_is_the_skf_formula_in_catalogue_units():
+    # 6205 deep-groove bearing, d = 25 mm, D = 52 mm, grease of ν = 100 mm²/s base oil at
+    # 3000 r/min, K_Z = 3.1: φ_rs = exp[−6e-8 · 100 · 3000 · 77 · √(3.1/54)] (SKF 2013)
+    expected = math.exp(-6e-8 * 100 * 3000 * 77 * math.sqrt(3.1 / 54))
+    phi = replenishment_factor(100e-6, 3000 * RPM, 38.5e-3, 27e-3, REPLENISHMENT_GREASE, 3.1)
+    assert phi == pytest.approx(expected, rel=1e-12)
+    assert phi == pytest.approx(0.7174, abs=1e-4)
+
+
+def test_replenishment_is_flooded_at_rest_and_thins_with_speed_and_viscosity():
+    def phi(nu, rpm):
+        return replenishment_factor(nu, rpm * RPM, 0.020, 0.021)
+
+    assert phi(68e-6, 0.0) == 1.0 and phi(0.0, 3000.0) == 1.0
+    speeds = [phi(68e-6, n) for n in (1.0, 100.0, 1000.0, 3000.0, 1e6)]
+    assert speeds[0] == pytest.approx(1.0, abs=1e-4)
+    assert all(b < a for a, b in itertools.pairwise(speeds)) and speeds[-1] < 1e-3
+    viscosities = [phi(nu, 1000.0) for nu in (1e-6, 10e-6, 100e-6, 1000e-6)]
+    assert all(b < a for a, b in itertools.pairwise(viscosities))
+    # K_rs enters the exponent linearly: oil bath (3e-8) is the square root of grease (6e-8)
+    oil = replenishment_factor(68e-6, 3000 * RPM, 0.020, 0.021, REPLENISHMENT_OIL)
+    assert oil == pytest.approx(math.sqrt(phi(68e-6, 3000.0)), rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("args", "field"),
+    [
+        ((68e-6, -1.0, 0.02, 0.02), "speed"),
+        ((-1e-6, 1.0, 0.02, 0.02), "kinematic_viscosity"),
+        ((68e-6, 1.0, 0.0, 0.02), "mean_diameter"),
+        ((68e-6, 1.0, 0.02, 0.0), "section"),
+    ],
+)
+def test_bad_replenishment_input_is_refused(args, field):
+    with pytest.raises(InputError, match=rf"^{field} = "):
+        replenishment_factor(*args)
+
+
+@pytest.mark.parametrize("central", [True, False])
+def test_equivalent_inlet_ratio_inverts_the_starvation_law(central):
+    m_star = 1.8
+    for phi in (0.05, 0.3, 0.9, 1.0):
+        m = equivalent_inlet_ratio(phi, m_star, central)
+        assert 1.0 < m <= m_star
+        assert starvation_factor(m, m_star, central) == pytest.approx(phi, rel=1e-9)
+    assert equivalent_inlet_ratio(1.0, m_star, central) == m_star
+    with pytest.raises(InputError, match=r"^starvation_factor = "):
+        equivalent_inlet_ratio(1.2, m_star, central)

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import itertools
+import math
 
 import pytest
 
 import ballscrew
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_model
+from ballscrew.analyses.parameters import ScrewParameters, track_replenishment
 from ballscrew.case import CaseError
 from ballscrew.contact.hertz import hamrock_brewe
 from ballscrew.lubrication import hamrock_dowson
@@ -18,7 +20,7 @@ from ballscrew.lubrication.film_corrections import (
     thermal_reduction_gupta,
 )
 from ballscrew.lubrication.lubricant_library import library_lubricant
-from ballscrew.lubrication.supply import supplied_film_model
+from ballscrew.lubrication.supply import Replenishment, supplied_film_model
 
 # contact A of the reference screw (tests/lubrication/test_film.py)
 RX, RY, E_PRIME = 2.820e-3, 34.93e-3, 2.2637e11
@@ -65,6 +67,69 @@ def test_thermal_factor_is_gupta_at_the_lubricants_loading():
     assert phi == pytest.approx(0.438, abs=1e-3)  # L = 9.3 at 20 m/s, VG 68 at 40 °C
     slow = supplied_film_model("hamrock_dowson", thermal=thermal)(*ARGS)
     assert slow.central == pytest.approx(hamrock_dowson(*ARGS).central, rel=5e-3)
+
+
+# a 40 mm pitch-diameter screw with 6.35 mm balls whose balls roll at u_e = 0.0099 m/s per rad/s
+GREASED = Replenishment(0.040, 6.35e-3, 870.0, 1.0 / 0.0099)
+
+
+def _args(speed):
+    return (RX, RY, E_PRIME, ETA, ALPHA, speed, Q)
+
+
+def test_greased_film_is_the_skf_replenishment_factor_of_the_flooded_film():
+    model = supplied_film_model("hamrock_dowson", replenishment=GREASED)
+    for u in (0.01, 0.1, 1.0):
+        # SKF (2013) in catalogue units: ν [mm²/s], n [r/min], d + D = 2 d_m, D − d = D_w/0.3
+        nu, n = ETA / 870.0 * 1e6, u / 0.0099 * 30.0 / math.pi
+        phi = math.exp(-6e-8 * nu * n * 80.0 * math.sqrt(3.1 / (2.0 * 6.35 / 0.3)))
+        flooded, film = hamrock_dowson(*_args(u)), model(*_args(u))
+        assert film.central / flooded.central == pytest.approx(phi, rel=1e-12)
+        assert film.minimum / flooded.minimum == pytest.approx(phi, rel=1e-12)
+
+
+def test_greased_film_is_flooded_at_rest_and_thins_relative_to_it_with_speed():
+    model = supplied_film_model("hamrock_dowson", replenishment=GREASED)
+    speeds = (1e-5, 0.01, 0.1, 0.5, 1.0, 3.0)
+    ratios = [model(*_args(u)).central / hamrock_dowson(*_args(u)).central for u in speeds]
+    assert ratios[0] == pytest.approx(1.0, abs=1e-6)
+    assert all(b < a for a, b in itertools.pairwise(ratios)) and ratios[-1] < 0.8
+    slower_oil = Replenishment(0.040, 6.35e-3, 870.0, 1.0 / 0.0099, constant=3e-8)
+    oil = supplied_film_model("hamrock_dowson", replenishment=slower_oil)(*_args(1.0))
+    assert oil.central > model(*_args(1.0)).central  # oil bath refills faster than grease
+
+
+def test_replenishment_agrees_with_the_meniscus_rule_where_both_are_flooded():
+    """Both starvation rules leave the film flooded at low speed (the meniscus of the former
+    grease default, m = 1.5, lies beyond m*), and part as the contact speeds up."""
+    meniscus = supplied_film_model("hamrock_dowson", inlet_ratio=1.5)
+    greased = supplied_film_model("hamrock_dowson", replenishment=GREASED)
+    slow = _args(1e-4)
+    assert meniscus(*slow).central == hamrock_dowson(*slow).central
+    assert greased(*slow).central == pytest.approx(hamrock_dowson(*slow).central, rel=1e-5)
+    fast = _args(1.0)
+    assert greased(*fast).central < hamrock_dowson(*fast).central
+    assert meniscus(*fast).central < hamrock_dowson(*fast).central
+
+
+def test_case_grease_replenishes_unless_given_a_meniscus(wear_case_path):
+    grease = ballscrew.load_case(wear_case_path, {"lubrication.supply": "grease"})
+    assert grease.lubrication.replenished and grease.lubrication.meniscus is None
+    rep = track_replenishment(grease, 870.0)
+    geometry = ScrewParameters.from_case(grease).geometry
+    assert (rep.pitch_diameter, rep.ball_diameter) == (
+        geometry.pitch_diameter,
+        geometry.ball_diameter,
+    )
+    meniscus = ballscrew.load_case(
+        wear_case_path, {"lubrication.supply": "grease", "lubrication.inlet_ratio": 1.5}
+    )
+    assert not meniscus.lubrication.replenished and meniscus.lubrication.meniscus == 1.5
+    assert track_replenishment(meniscus, 870.0) is None
+    starved = ballscrew.load_case(
+        wear_case_path, {"lubrication.supply": "starved", "lubrication.inlet_ratio": 2.0}
+    )
+    assert not starved.lubrication.replenished
 
 
 def _case(path, overrides):

@@ -271,13 +271,21 @@ def test_ball_path_with_macro_constriction_rises_after_lift_off(gao_case_path, m
     assert ratio > 1.0, f"{model}: {ratio:.3f}"
 
 
+#: The supplies of the film-path checks: grease at the meniscus m = 1.5 (the grease default
+#: before the kinematic replenishment) and with the replenishment (the default now).
+SUPPLIES: dict[str, dict[str, float | str]] = {
+    "flooded": {"lubrication.supply": "flooded"},
+    "grease": {"lubrication.supply": "grease", "lubrication.inlet_ratio": 1.5},
+    "starved": {"lubrication.supply": "starved", "lubrication.inlet_ratio": 4.0},
+    "replenished": {"lubrication.supply": "grease"},
+}
+
+
 @cache
 def _film_paths(case_path: str, axial_load: float, supply: str) -> tuple[float, float]:
     """(with, without) the film path: R [K/W] of the screw's ball path (V2 micro TCR plus the
     macro-constriction, nuts in parallel), the film of ``supply`` in parallel per contact."""
-    lubrication = {"lubrication.supply": supply}
-    if supply == "starved":
-        lubrication["lubrication.inlet_ratio"] = 4.0
+    lubrication = SUPPLIES[supply]
     case = load_case(
         case_path,
         {
@@ -316,3 +324,21 @@ def test_film_path_flattens_the_rise_after_lift_off(
     assert base < base_off
     assert ratios == pytest.approx([lift_off, at_5kN], rel=0.02)
     assert all(abs(r - 1.0) < 0.5 * (w - 1.0) for r, w in zip(ratios, without, strict=True))
+
+
+def test_film_path_of_a_replenished_grease_track_halves_the_rise_after_lift_off(
+    gao_case_path,
+) -> None:
+    """Grease with the kinematic replenishment of its track (the grease default): the meniscus
+    of each loaded contact sits at the inlet ratio whose starvation (E6.7) thins the film as
+    φ_rs does (φ_rs = 0.91 at 1000 rpm: m ≈ 2.2 at the screw, 2.3 at the nut at 0 kN), beyond
+    m = 1.5, so the loaded contacts' films conduct more (R = 0.672 K/W at 0 kN against 0.835
+    at m = 1.5) and the rise after lift-off, relative to that lower R, is cut by about half
+    rather than to a tenth (×1.409 → ×1.221 at lift-off, ×1.333 → ×1.187 at 5 kN)."""
+    path = str(gao_case_path)
+    base, base_off = _film_paths(path, 0.0, "replenished")
+    ratios = [_film_paths(path, f, "replenished")[0] / base for f in (LIFT_OFF, 5000.0)]
+    without = [_film_paths(path, f, "replenished")[1] / base_off for f in (LIFT_OFF, 5000.0)]
+    assert base < base_off
+    assert ratios == pytest.approx([1.221, 1.187], rel=0.02)
+    assert all(1.0 < r < w for r, w in zip(ratios, without, strict=True))

@@ -26,6 +26,7 @@ from ballscrew.contact.elastic import composite_modulus
 from ballscrew.contact.hertz import hertz
 from ballscrew.geometry import ScrewGeometry, raceway_curvature
 from ballscrew.geometry.screw import SIDES, Side
+from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import Flanks, ball_load, flank_forces, nut_axial_compliance, preload_flanks
 from ballscrew.lubrication.film import FilmModel
 from ballscrew.lubrication.lubricant_library import (
@@ -33,7 +34,7 @@ from ballscrew.lubrication.lubricant_library import (
     LubricantState,
     library_lubricant,
 )
-from ballscrew.lubrication.supply import supplied_film_model
+from ballscrew.lubrication.supply import Replenishment, supplied_film_model
 from ballscrew.materials import Material
 from ballscrew.validation import case_with
 
@@ -131,14 +132,33 @@ def film_model(case: Case, named: LubricantState | None) -> str | FilmModel:
     """``medium.film_model`` bound to the supply state and inlet heating of ``[lubrication]``.
 
     The thermal correction takes β and λ of the named lubricant ``named``, or of ISO VG 68
-    mineral oil at the inlet temperature when no lubricant is named (ASSUMED).
+    mineral oil at the inlet temperature when no lubricant is named (ASSUMED); the kinematic
+    replenishment of a greased track takes ρ of ``named`` (870 kg/m³ otherwise, ASSUMED) and the
+    screw speed per entrainment speed of ``[kinematics] entrainment``.
     """
     spec = case.lubrication
     thermal = None
     if spec.thermal:
         oil = named or library_lubricant("iso_vg_68").at(spec.temperature)
         thermal = (oil.temperature_viscosity, oil.conductivity)
-    return supplied_film_model(case.medium.film_model, spec.meniscus, thermal)
+    density = named.density if named is not None else 870.0
+    replenishment = track_replenishment(case, density)
+    return supplied_film_model(case.medium.film_model, spec.meniscus, thermal, replenishment)
+
+
+def track_replenishment(case: Case, density: float) -> Replenishment | None:
+    """The kinematic replenishment of a greased track with an oil of ``density`` [kg/m³]
+    (None unless ``[lubrication]`` asks for it): the screw's d_m and D_w, and its speed per
+    entrainment speed of ``[kinematics] entrainment`` (Level 0, u_e ∝ ω)."""
+    if not case.lubrication.replenished:
+        return None
+    geometry = ScrewGeometry.from_spec(case.screw)
+    return Replenishment(
+        geometry.pitch_diameter,
+        geometry.ball_diameter,
+        density,
+        1.0 / entrainment_speed(geometry, 1.0, case.kinematics.entrainment),
+    )
 
 
 @dataclass(frozen=True)

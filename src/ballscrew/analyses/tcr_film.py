@@ -14,10 +14,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side
+from ballscrew.analyses.parameters import SIDES, ScrewParameters, Side, track_replenishment
 from ballscrew.analyses.tcr_models import gaussian_joint
 from ballscrew.case import Case
-from ballscrew.contact.hertz import HertzContact
 from ballscrew.contact_resistance.constriction import ball_contact_constriction
 from ballscrew.contact_resistance.film_path import (
     FilmPath,
@@ -31,6 +30,7 @@ from ballscrew.contact_resistance.film_path import (
 from ballscrew.geometry.curvature import raceway_curvature
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.lubrication.film import film_function
+from ballscrew.lubrication.film_corrections import critical_inlet_ratio, equivalent_inlet_ratio
 
 if TYPE_CHECKING:
     from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR
@@ -102,16 +102,17 @@ def contact_constriction(raceway: RacewayTCR, lam: Mapping[str, float]) -> float
     return ball_contact_constriction((h.a, h.b), lam["ball"], lam[raceway.contact.side])
 
 
-def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side) -> float:
-    """h0 of a loaded contact: the central EHL film at the case's speed when the medium has EHL
-    data, else (or when thinner) the raceway's RMS roughness σ (the ball is smooth) [m]."""
-    sigma = gaussian_joint(params, case.tcr, side).sigma
+def _central_film(
+    params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side
+) -> tuple[float, float] | None:
+    """(|u_e| [m/s], central EHL film [m]) of a loaded contact at the case's speed, as supplied;
+    None without EHL data or at rest."""
     lub = params.lubrication
-    speed = entrainment_speed(
-        params.geometry, case.operating.speed, case.kinematics.entrainment, side
+    speed = abs(
+        entrainment_speed(params.geometry, case.operating.speed, case.kinematics.entrainment, side)
     )
     if not lub.lubricated or speed == 0.0:
-        return sigma
+        return None
     c = raceway.contact
     film = film_function(lub.film_model)(
         c.curvature.rx,
@@ -119,20 +120,49 @@ def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: 
         2.0 * c.e_star,
         lub.viscosity,
         lub.pressure_viscosity,
-        abs(speed),
+        speed,
         c.load,
     )
-    return max(sigma, film.central)
+    return speed, film.central
 
 
-def _edge(params: ScrewParameters, case: Case, side: Side, hertz: HertzContact, h0: float) -> float:
+def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side) -> float:
+    """h0 of a loaded contact: the central EHL film at the case's speed when the medium has EHL
+    data, else (or when thinner) the raceway's RMS roughness σ (the ball is smooth) [m]."""
+    sigma = gaussian_joint(params, case.tcr, side).sigma
+    film = _central_film(params, case, raceway, side)
+    return sigma if film is None else max(sigma, film[1])
+
+
+def _edge(params: ScrewParameters, case: Case, side: Side, raceway: RacewayTCR, h0: float) -> float:
     """h_max: the gap at the inlet meniscus of a starved or greased supply, else (flooded, or a
     meniscus beyond it) the groove-bottom clearance [m]."""
     clearance = _clearance(params, side)
     m = case.lubrication.meniscus
+    if m is None and case.lubrication.replenished:
+        m = _replenished_meniscus(params, case, raceway, side)
     if m is None:
         return clearance
+    hertz = raceway.contact.hertz
     return min(clearance, meniscus_thickness(hertz, *_radii(params, side), m, h0))
+
+
+def _replenished_meniscus(
+    params: ScrewParameters, case: Case, raceway: RacewayTCR, side: Side
+) -> float | None:
+    """The inlet ratio at which the meniscus rule (E6.7) thins the contact's central film as
+    the kinematic replenishment of the greased track does, m = 1 + (m* − 1) φ_rs^(1/0.29);
+    None (flooded edge) without EHL data or at rest."""
+    lub = params.lubrication
+    replenishment = track_replenishment(case, lub.density)
+    film = _central_film(params, case, raceway, side)
+    if film is None or replenishment is None or lub.viscosity is None:
+        return None
+    speed, central = film
+    phi = replenishment.factor(lub.viscosity, speed)
+    c = raceway.contact
+    m_star = critical_inlet_ratio(c.curvature.rx, c.hertz.a, central / phi)
+    return equivalent_inlet_ratio(phi, m_star)
 
 
 def _clearance(params: ScrewParameters, side: Side) -> float:
@@ -172,7 +202,7 @@ def nut_films(
             if key not in solved:
                 hertz = raceway.contact.hertz
                 h0 = _separation(params, case, raceway, side)
-                h_max = _edge(params, case, side, hertz, h0)
+                h_max = _edge(params, case, side, raceway, h0)
                 g = loaded_film_conductance(lam, *radii[side], hertz, h0, h_max, rarefaction)
                 solved[key] = FilmPath(g, h0, h_max)
             paths[side] = solved[key]

@@ -7,7 +7,8 @@ Example::
 
     [lubrication]
     supply = "starved"          # "flooded" (default), "starved" or "grease"
-    inlet_ratio = 2.0           # inlet meniscus distance / Hertz semi-axis b (starved, grease)
+    inlet_ratio = 2.0           # inlet meniscus distance / Hertz semi-axis b (starved; grease
+                                # without it: SKF kinematic replenishment)
     thermal = true              # inlet shear-heating reduction (Gupta et al. 1992)
     temperature = "40 degC"     # inlet temperature of the named lubricant's properties
 """
@@ -20,12 +21,6 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import Model, quantity
 from ballscrew.errors import InputError
-
-#: Inlet meniscus ratio m of a greased contact: GUESS. Grease supplies its base oil by bleeding
-#: slowly into the track, so a greased contact runs starved (Damiens, Venner, Cann & Lubrecht
-#: 2004); no closed form gives m from the grease, and m = 1.5 (film 0.8–1.0 of flooded for
-#: ball-screw contacts at 0.1–1 m/s) is taken as a moderate starvation.
-DEFAULT_GREASE_INLET_RATIO = 1.5
 
 Supply = Literal["flooded", "starved", "grease"]
 
@@ -74,7 +69,8 @@ class LubricationSpec(Model):
     supply: Supply = Field(
         "flooded",
         description="flooded: Hamrock–Dowson film; starved: inlet meniscus at inlet_ratio "
-        "(Hamrock & Dowson 1977, IV); grease: base-oil film, starved at inlet_ratio",
+        "(Hamrock & Dowson 1977, IV); grease: base-oil film, starved by kinematic "
+        "replenishment (SKF 2013 φ_rs, K_rs = 6e-8) or, given inlet_ratio, at that meniscus",
     )
     inlet_ratio: (
         Annotated[
@@ -83,8 +79,9 @@ class LubricationSpec(Model):
                 ge=1.0,
                 le=1e3,
                 description="inlet meniscus distance from the contact centre / Hertz semi-axis "
-                "along rolling, m >= 1; None = 1.5 in the grease state [GUESS] (starved: "
-                "required)",
+                "along rolling, m >= 1 (starved: required); None = in the grease state the "
+                "kinematic replenishment of the track (SKF 2013 φ_rs; bearing section "
+                "D - d = D_w/0.3 [GUESS], K_Z = 3.1 [ASSUMED])",
             ),
         ]
         | None
@@ -114,9 +111,11 @@ class LubricationSpec(Model):
 
     @property
     def meniscus(self) -> float | None:
-        """The inlet ratio m of a starved or greased supply (None: flooded)."""
-        if self.supply == "flooded":
-            return None
-        if self.inlet_ratio is not None:
-            return self.inlet_ratio
-        return DEFAULT_GREASE_INLET_RATIO
+        """The inlet ratio m of a starved supply, or of a greased one given it (None else)."""
+        return None if self.supply == "flooded" else self.inlet_ratio
+
+    @property
+    def replenished(self) -> bool:
+        """True for a greased supply without an inlet ratio: its film is thinned by the
+        kinematic replenishment of the track (SKF 2013)."""
+        return self.supply == "grease" and self.inlet_ratio is None

@@ -1,17 +1,21 @@
 """Corrections of the isothermal, fully flooded Hamrock–Dowson film: inlet heating, starvation.
 
-Both multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a factor ≤ 1:
+All multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a factor ≤ 1:
 
 * inlet shear heating: Gupta, Cheng, Zhu, Forster & Schrand (1992), and Murch & Wilson (1975)
   for line contacts in pure rolling;
 * starvation by an inlet meniscus closer than the critical distance: Hamrock & Dowson (1977,
-  Part IV).
+  Part IV);
+* kinematic starvation of a track that the oil has too little time to replenish between
+  overrollings: the reduction factor φ_rs of the SKF model of the frictional moment (SKF Group,
+  *Rolling bearings*, PUB BU/P1 10000/2 EN, 2013).
 
 :func:`ballscrew.lubrication.supply.supplied_film_model` applies them to a film model for the
 case's ``[lubrication]`` section. SI units.
 
-[UNVERIFIED: the coefficients of all three correlations are as quoted in the secondary EHL
-literature; the original papers were not available to check them.]
+[UNVERIFIED: the coefficients of the correlations and of the SKF factor are as quoted in the
+secondary literature; the original papers and the catalogue page were not available to check
+them.]
 """
 
 from __future__ import annotations
@@ -22,12 +26,26 @@ from ballscrew.errors import InputError
 from ballscrew.validation import nonnegative, positive
 
 __all__ = [
+    "REPLENISHMENT_GEOMETRY",
+    "REPLENISHMENT_GREASE",
+    "REPLENISHMENT_OIL",
     "critical_inlet_ratio",
+    "equivalent_inlet_ratio",
+    "replenishment_factor",
     "starvation_factor",
     "thermal_loading",
     "thermal_reduction_gupta",
     "thermal_reduction_murch_wilson",
 ]
+
+
+#: K_rs of the SKF model for a low-level oil bath and oil-jet lubrication (SKF 2013).
+REPLENISHMENT_OIL = 3e-8
+#: K_rs of the SKF model for grease and oil–air lubrication (same source).
+REPLENISHMENT_GREASE = 6e-8
+#: K_Z, the SKF geometry constant of four-point contact ball bearings (same source): ASSUMED for
+#: the Gothic-arch groove of a ball screw, whose balls touch each raceway at ±β as they do.
+REPLENISHMENT_GEOMETRY = 3.1
 
 
 def thermal_loading(
@@ -108,3 +126,48 @@ def starvation_factor(inlet_ratio: float, critical_ratio: float, central: bool =
     if m >= m_star:
         return 1.0
     return ((m - 1.0) / (m_star - 1.0)) ** (0.29 if central else 0.25)
+
+
+def equivalent_inlet_ratio(factor: float, critical_ratio: float, central: bool = True) -> float:
+    """The inlet meniscus m whose starvation (:func:`starvation_factor`) thins the film by
+    ``factor``: m = 1 + (m* − 1) φ^(1/0.29) (central), φ^(1/0.25) (minimum).
+
+    The inverse of Hamrock & Dowson (1977, Part IV) for 0 < φ ≤ 1: φ = 1 gives the critical
+    distance m*, φ → 0 the Hertz edge m = 1. ``critical_ratio`` m* of
+    :func:`critical_inlet_ratio`.
+    """
+    phi = positive("starvation_factor", factor)
+    if phi > 1.0:
+        raise InputError("starvation_factor", factor, "<= 1 (a film factor of a starved inlet)")
+    m_star = positive("critical_ratio", critical_ratio)
+    return 1.0 + (m_star - 1.0) * phi ** (1.0 / (0.29 if central else 0.25))
+
+
+def replenishment_factor(
+    kinematic_viscosity: float,
+    speed: float,
+    mean_diameter: float,
+    section: float,
+    constant: float = REPLENISHMENT_GREASE,
+    geometry: float = REPLENISHMENT_GEOMETRY,
+) -> float:
+    """Kinematic replenishment/starvation reduction factor of the SKF model [-]:
+
+        φ_rs = 1 / exp[K_rs ν n (d + D) √(K_Z / (2 (D − d)))]
+
+    in the catalogue's units, ν [mm²/s], n [r/min], d, D [mm] (SKF Group, *Rolling bearings*,
+    PUB BU/P1 10000/2 EN, 2013, "The SKF model for calculating the frictional moment",
+    kinematic replenishment/starvation reduction factor). Inputs here are SI:
+    ``kinematic_viscosity`` ν [m²/s] of the oil or the grease's base oil; ``speed`` n [rad/s];
+    ``mean_diameter`` d_m = (d + D)/2 [m]; ``section`` D − d [m]; ``constant`` K_rs
+    (:data:`REPLENISHMENT_GREASE`, :data:`REPLENISHMENT_OIL`); ``geometry`` K_Z. φ_rs = 1 at
+    rest or for an inviscid oil, and falls monotonically with ν n: the faster and more viscous
+    the oil, the less of it flows back into the track between overrollings.
+    """
+    nu = nonnegative("kinematic_viscosity", kinematic_viscosity, "m^2/s") * 1e6  # mm²/s
+    n = nonnegative("speed", speed, "rad/s") * 30.0 / math.pi  # r/min
+    d_sum = 2e3 * positive("mean_diameter", mean_diameter, "m")  # d + D, mm
+    d_diff = 1e3 * positive("section", section, "m")  # D − d, mm
+    k_rs = nonnegative("replenishment_constant", constant)
+    k_z = positive("replenishment_geometry", geometry)
+    return math.exp(-k_rs * nu * n * d_sum * math.sqrt(k_z / (2.0 * d_diff)))

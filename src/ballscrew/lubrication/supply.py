@@ -9,44 +9,89 @@ chains use wherever they take a film model:
 
 * φ_T — inlet shear heating, Gupta et al. (1992) (:func:`~ballscrew.lubrication.film_corrections.
   thermal_reduction_gupta`), from the thermal loading L = β η₀ u_e²/λ of the lubricant;
-* φ_S — starvation by an inlet meniscus at m Hertz semi-axes from the contact centre, Hamrock &
-  Dowson (1977, Part IV) (:func:`~ballscrew.lubrication.film_corrections.starvation_factor`,
-  central and minimum films each with their own critical distance m*, computed from the film
-  before starvation).
-
-A greased contact is taken as its base oil's film (Harris & Kotzalas 2007), starved at an inlet
-meniscus m (a GUESS default, ``ballscrew.case.lubrication_spec``): the published grease
-replenishment models (Chevalier et al. 1998; Damiens et al. 2004; van Zoelen, Venner & Lugt
-2009) need the thickness of the oil layer on the track, which ballscrew does not predict.
+* φ_S — starvation, either by an inlet meniscus at m Hertz semi-axes from the contact centre,
+  Hamrock & Dowson (1977, Part IV) (:func:`~ballscrew.lubrication.film_corrections.
+  starvation_factor`, central and minimum films each with their own critical distance m*,
+  computed from the film before starvation), or by kinematic replenishment of the track
+  (:class:`Replenishment`, the factor φ_rs of the SKF model of the frictional moment, SKF Group,
+  *Rolling bearings*, 2013): the default of a greased contact.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 from ballscrew.contact.hertz import hamrock_brewe
 from ballscrew.errors import InputError
 from ballscrew.lubrication.film import FilmModel, FilmThickness, film_function
 from ballscrew.lubrication.film_corrections import (
+    REPLENISHMENT_GEOMETRY,
+    REPLENISHMENT_GREASE,
     critical_inlet_ratio,
+    replenishment_factor,
     starvation_factor,
     thermal_loading,
     thermal_reduction_gupta,
 )
 from ballscrew.validation import nonnegative, positive
 
-__all__ = ["supplied_film_model"]
+__all__ = ["SECTION_PER_BALL", "Replenishment", "supplied_film_model"]
+
+#: (D − d)/D_w, the bearing section a ball screw's ball stands for in the SKF replenishment
+#: factor: GUESS, the ratio of deep-groove ball bearings of the 62 and 63 series (D_w/(D − d)
+#: ≈ 0.28–0.32, e.g. 6205: 7.94 mm balls, D − d = 27 mm), taken as 1/0.3.
+SECTION_PER_BALL = 1.0 / 0.3
+
+
+@dataclass(frozen=True)
+class Replenishment:
+    """Kinematic replenishment of a ball screw's track: the SKF factor φ_rs
+    (:func:`~ballscrew.lubrication.film_corrections.replenishment_factor`) as a film factor.
+
+    ASSUMED adaptation of the bearing model: the screw is the rotating ring (n = ω, the screw
+    speed), d_m the pitch diameter, D − d = :data:`SECTION_PER_BALL` · D_w; φ_rs, which SKF
+    applies to the rolling frictional moment, scales the central and the minimum film alike.
+    The screw speed is recovered from the entrainment speed u_e the film model is called with
+    (u_e ∝ ω at Level 0), and ν = η₀/ρ from its inlet viscosity, so speed curves and heated
+    inlets see their own φ_rs.
+    """
+
+    pitch_diameter: float
+    """d_m [m]."""
+    ball_diameter: float
+    """D_w [m]."""
+    density: float
+    """ρ of the oil (of a grease: its base oil) at the inlet [kg/m³]."""
+    speed_per_entrainment: float
+    """ω/u_e of the screw at Level 0 [rad/m]."""
+    constant: float = REPLENISHMENT_GREASE
+    """K_rs: 6·10⁻⁸ grease and oil–air, 3·10⁻⁸ oil bath and oil jet (SKF 2013)."""
+    geometry: float = REPLENISHMENT_GEOMETRY
+    """K_Z (SKF 2013), ASSUMED as for four-point contact ball bearings."""
+
+    def factor(self, viscosity: float, entrainment_speed: float) -> float:
+        """φ_rs at the inlet viscosity η₀ [Pa s] and entrainment speed u_e [m/s]."""
+        return replenishment_factor(
+            viscosity / positive("density", self.density, "kg/m^3"),
+            abs(entrainment_speed) * self.speed_per_entrainment,
+            self.pitch_diameter,
+            SECTION_PER_BALL * self.ball_diameter,
+            self.constant,
+            self.geometry,
+        )
 
 
 def supplied_film_model(
     base: str | FilmModel,
     inlet_ratio: float | None = None,
     thermal: tuple[float, float] | None = None,
+    replenishment: Replenishment | None = None,
 ) -> str | FilmModel:
-    """``base`` corrected for a starved inlet at ``inlet_ratio`` m (None: flooded) and, when
-    ``thermal`` = (β [1/K], λ [W/(m K)]) of the lubricant at the inlet is given, for inlet shear
-    heating. Nothing to correct returns ``base`` itself (a registered name stays a name)."""
-    if inlet_ratio is None and thermal is None:
+    """``base`` corrected for a starved inlet at ``inlet_ratio`` m (None: flooded), for the
+    kinematic ``replenishment`` of the track (None: none) and, when ``thermal`` = (β [1/K],
+    λ [W/(m K)]) of the lubricant at the inlet is given, for inlet shear heating. Nothing to
+    correct returns ``base`` itself (a registered name stays a name)."""
+    if inlet_ratio is None and thermal is None and replenishment is None:
         return base
     if inlet_ratio is not None and not float(inlet_ratio) >= 1.0:
         raise InputError(
@@ -80,6 +125,10 @@ def supplied_film_model(
             minimum *= starvation_factor(
                 inlet_ratio, critical_inlet_ratio(rx, b, out.minimum * minimum, False), False
             )
+        if replenishment is not None:
+            supplied = replenishment.factor(viscosity, entrainment_speed)
+            central *= supplied
+            minimum *= supplied
         return replace(out, central=out.central * central, minimum=out.minimum * minimum)
 
     return film
