@@ -122,22 +122,35 @@ def pressure_profiles(
 
 
 def resistance_map(
-    x: np.ndarray, y: np.ndarray, resistance: np.ndarray, title: str, path: str | Path
+    x: np.ndarray,
+    y: np.ndarray,
+    resistance: np.ndarray,
+    cell: tuple[float, float],
+    title: str,
+    path: str | Path,
 ) -> Path:
-    """Element thermal contact resistance R_ij on the fractal cells (log colour scale, K/W)."""
+    """Element thermal contact resistance R_ij on the fractal cells (log colour scale, K/W).
+
+    ``x``, ``y``: the cells' centres [m]; ``cell``: their sides along x and y [m], so the map
+    covers the cells' edges (one cell, e.g. a whole patch, is drawn over its own extent).
+    """
     plt = pyplot()
     from matplotlib.colors import LogNorm
 
     finite = np.where(np.isfinite(resistance), resistance, np.nan)
     fig, ax = plt.subplots(figsize=(6.4, 4.2), layout="constrained")
-    extent = (y[0] * 1e6, y[-1] * 1e6, x[0] * 1e6, x[-1] * 1e6)
+    hx, hy = 0.5 * cell[0], 0.5 * cell[1]
+    extent = ((y[0] - hy) * 1e6, (y[-1] + hy) * 1e6, (x[0] - hx) * 1e6, (x[-1] + hx) * 1e6)
+    low, high = np.nanmin(finite), np.nanmax(finite)
+    if not high > low:  # one value (one element): a decade around it
+        low, high = low / np.sqrt(10.0), high * np.sqrt(10.0)
     image = ax.imshow(
         finite,
         origin="lower",
         extent=extent,
         aspect="auto",
         cmap="viridis_r",
-        norm=LogNorm(np.nanmin(finite), np.nanmax(finite)),
+        norm=LogNorm(low, high),
     )
     fig.colorbar(image, ax=ax, label="element resistance R_ij [K/W]")
     ax.set_xlabel("y, across the groove [µm] (axes not to scale)")

@@ -354,3 +354,14 @@ def test_a_physics_torque_is_set_beside_the_catalogue_reference(case):
     assert summary["preload_torque"]["value"] == pytest.approx(losses, rel=1e-12)
     note = operating_point_report.sections(point)[1].paragraphs[0]
     assert f"{losses / catalogue:.2f} × the makers' catalogue preload torque" in note
+
+
+def test_a_curve_beyond_the_speed_range_blames_its_option(tmp_path):
+    """--curve-to above the case's speed range (1e5 rad/s) was refused only after the case's
+    point was solved, and in the name of operating.speed; it is --curve-to's error up front."""
+    out = tmp_path / "fast"
+    args = ["operating-point", str(EXAMPLE), "--out", str(out), "--curve-to", "1e9"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and not out.exists()
+    assert "--curve-to" in result.output and "operating.speed" not in result.output
+    assert "100000" in result.output

@@ -162,3 +162,16 @@ def test_console_names_the_headline_model(tmp_path, gao_case_path, options, line
     assert lines[1].startswith("  resistance ") and lines[-1] == f"results: {out.resolve()}"
     quiet = CliRunner().invoke(app, [*args, "--force", "-q", *options])
     assert quiet.output.strip() == f"results: {out.resolve()}"
+
+
+def test_patch_headline_figures_draw_the_one_element_without_warnings(gao_case_path, tmp_path):
+    """A patch headline's element map is one element over the whole grid: it is drawn over the
+    grid's extent with no matplotlib warning (a 1 × 1 map once gave a singular axis)."""
+    from ballscrew.analyses import tcr_report
+
+    result = _result(str(gao_case_path), **{"tcr.headline": "V2/patch"})
+    figure = next(f for f in tcr_report.figures(result) if f.name == "tcr_nut1_screw")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        path = figure.draw(tmp_path / "map.png")
+    assert path.is_file()

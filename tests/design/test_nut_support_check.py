@@ -119,3 +119,21 @@ def test_the_check_folder_of_a_free_nut_under_a_reverse_load(tmp_path: Path) -> 
     assert summary["nut_tilt"]["value"] == pytest.approx(np.hypot(*balls.tilt), rel=1e-9)
     assert (out / "ball_loads.png").stat().st_size > 0
     assert "radial shift of the free nut" in (out / "report.html").read_text()
+
+
+def test_external_radial_loads_are_named_as_outside_the_makers_life_and_safety() -> None:
+    """A free nut's external radial force or moment raises its largest ball load, but C_a and
+    C_0a and the makers' life and static safety take the axial load alone: the check says so,
+    with the largest ball load, the distribution's (which balances them); none without them."""
+    assert not any("nut_radial_load" in w for w in check("free").warnings)
+    raw = raw_supported("free", nut_radial_load="3 kN", nut_tilting_moment="20 N*m")
+    case = case_from_dict(raw)
+    with pytest.warns(ballscrew.analyses.design_check.DesignWarning, match="axial load alone"):
+        result = design_check(case)
+    [warning] = [w for w in result.warnings if "nut_radial_load" in w]
+    params = ScrewParameters.from_case(case)
+    dist = elastic_distribution(params, case.loads, result.root_diameter, 2000.0)
+    largest = float(dist.loads.max())
+    assert f"{largest:.4g} N" in warning
+    assert np.allclose(dist.resultant[1:], [-3000.0, 0.0, 0.0, -20.0], atol=1e-6)
+    assert "\n" not in warning

@@ -485,6 +485,21 @@ def _warn(
         )
 
 
+def _warn_external_loads(case: Case, loaded: Distribution | None) -> None:
+    """Warn that the makers' life and static safety leave out a free nut's external radial
+    force and tilting moment, which its ball loads (``loaded``, the largest |F_a|) balance."""
+    spec = case.loads
+    if loaded is None or not (spec.nut_radial_load or spec.nut_tilting_moment):
+        return
+    warnings.warn(
+        "loads.nut_radial_load and nut_tilting_moment load the free nut's balls (largest ball "
+        f"load {float(loaded.loads.max()):.4g} N under the largest axial load), but the rating "
+        "life and static safety are the makers' formulas of the axial load alone",
+        DesignWarning,
+        stacklevel=3,
+    )
+
+
 def design_check(case: Case) -> DesignCheck:
     """Every design value of the case's screw with its margin (needs ``[design]``)."""
     spec = case_with(case, "screw", "operating", "design").design  # type: ignore[attr-defined]
@@ -554,6 +569,7 @@ def design_check(case: Case) -> DesignCheck:
     margins = _margins(values, spec, case)
     with recorded_warnings() as messages:
         _warn(margins, values, computed, spec, loaded_part(case))
+        _warn_external_loads(case, loaded)
     return DesignCheck(
         case=case,
         margins=margins,

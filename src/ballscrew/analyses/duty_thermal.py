@@ -8,8 +8,10 @@ through the schedule, the factorisation of each segment reused. The friction hea
 temperature in time: the heat of step n is Q(T_c(θₙ₋₁)) (:mod:`~ballscrew.analyses.duty_heat`,
 the lubricant's viscosity at the contact temperature of the step before), split between screw
 and nut as at the segment's steady point. A segment run long enough thus ends at its steady
-coupled operating point (theory manual, *Operating point*). A reverse segment (F_a < 0) heats
-as its mirror image at |F_a| (ASSUMED mirror symmetry of the nut).
+coupled operating point (theory manual, *Operating point*). A reverse segment (F_a < 0) makes
+the heat of its mirror image at |F_a| (ASSUMED mirror symmetry of the nut), and the two nuts of
+a double nut, each in its place, swap their balls' heat and contact conductance: nut 2 is the
+loaded one.
 """
 
 from __future__ import annotations
@@ -122,6 +124,21 @@ def _without_ball_heat(problem: ThermalProblem) -> ThermalProblem:
     return dataclasses.replace(problem, parts=parts)
 
 
+def _reversed(problem: ThermalProblem) -> ThermalProblem:
+    """``problem`` (built at |F_a|, nut 1 the loaded nut) under the reverse load −F_a: the two
+    nuts of a double nut swap their balls' heat and contact conductance, each nut staying in
+    its place (nut 2 is the loaded one). One nut body (a single nut's two flanks) is unchanged.
+    """
+    parts = problem.parts
+    if len(parts) < 2 or not (parts[0].balls and parts[-1].balls):
+        return problem
+    first, *middle, last = parts
+    swapped = ("contact_conductance", "screw_heat", "nut_heat")
+    one = dataclasses.replace(first, **{k: getattr(last, k) for k in swapped})
+    two = dataclasses.replace(last, **{k: getattr(first, k) for k in swapped})
+    return dataclasses.replace(problem, parts=(one, *middle, two))
+
+
 def _segment(
     case: Case, index: int, phase: DutyPhase, model: str, reuse: Discretisation | None = None
 ) -> tuple[_Segment, Discretisation]:
@@ -147,6 +164,8 @@ def _segment(
         **heat_overrides(heat, to_screw, phase.mean_speed),
     }
     problem, *_ = build_problem(with_overrides(base, overrides))
+    if phase.axial_load < 0.0:
+        problem = _reversed(problem)
     free = problem.shaft_length - problem.ring_length
     if phase.stroke > free:
         raise InputError(

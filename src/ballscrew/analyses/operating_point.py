@@ -33,7 +33,7 @@ from numpy.typing import NDArray
 from ballscrew.analyses import operating_point_report
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_model, speed_limit_messages
-from ballscrew.analyses.parameters import ScrewParameters, library_entry
+from ballscrew.analyses.parameters import SIDES, ScrewParameters, library_entry
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
@@ -470,9 +470,6 @@ def _films(case: Case, omega: float, eta: float | None, alpha: float | None) -> 
         roughness=balls.surface.film_roughness,
         per_nut=tuple(per_nut),
     )
-
-
-SIDES = ("screw", "nut")
 
 
 def _same_heat(a: FrictionTorque, b: FrictionTorque) -> bool:

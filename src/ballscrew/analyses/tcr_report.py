@@ -302,6 +302,7 @@ def figures(result: ScrewTCR) -> list[Figure]:
                     fractal_cell_centres(c.x, rmap.shape[0], r.tcr.cell_size[0]),
                     fractal_cell_centres(c.y, rmap.shape[1], r.tcr.cell_size[1]),
                     rmap,
+                    r.tcr.cell_size,
                     f"{label}: R_c = {r.tcr.resistance:.3g} K/W",
                 ),
             ),

@@ -66,18 +66,21 @@ def operating_point(
     at --curve-points speeds up to --curve-to."""
     from ballscrew.analyses.operating_point import operating_point as solve
     from ballscrew.analyses.operating_point import speed_curve
+    from ballscrew.case.base import MAX_SPEED
 
     omega = quantity_option("--speed", speed, "angular_velocity")
     load = quantity_option("--axial-load", axial_load, "force")
     top = quantity_option("--curve-to", curve_to, "angular_velocity")
-    if top is not None and not top > 0.0:
-        raise typer.BadParameter(f"{curve_to!r}: a speed > 0", param_hint="--curve-to")
+    if top is not None and not 0.0 < top <= MAX_SPEED:
+        raise typer.BadParameter(
+            f"{curve_to!r}: a speed > 0 and at most {MAX_SPEED:g} rad/s", param_hint="--curve-to"
+        )
 
     def run(case):  # type: ignore[no-untyped-def]
         point = solve(case, omega, load)
         if not curve_points:
             return point
-        end = top if top is not None else 2.0 * point.speed or REST_CURVE_TOP
+        end = top if top is not None else min(2.0 * point.speed, MAX_SPEED) or REST_CURVE_TOP
         speeds = np.linspace(end / curve_points, end, curve_points)
         return dataclasses.replace(point, curve=speed_curve(case, speeds, point.axial_load))
 
