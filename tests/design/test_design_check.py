@@ -410,3 +410,18 @@ def test_the_report_names_the_static_model_it_used() -> None:
 def test_the_summary_gives_dn_its_unit() -> None:
     summary = design_check(case_from_dict(raw_case())).summary()
     assert summary["dn"]["unit"] == summary["margins"]["dn"]["demand"]["unit"] == "mm·rpm"
+
+
+def test_the_largest_level_distribution_is_kept_for_the_report() -> None:
+    """The ball figure reuses the distribution the check solved under the largest |F_a|: it
+    balances that load (F1 − F2 = F_a) and is the report's own solve to rounding."""
+    from ballscrew.analyses.design_check_report import ball_distribution
+
+    raw = raw_case()
+    raw.setdefault("loads", {})["distribution"] = "elastic"
+    result = design_check(case_from_dict(raw))
+    kept, f_max = result.largest_distribution, result.spectrum.max_load
+    assert f_max == 2000.0
+    f1, f2 = kept.nut_forces
+    assert f1 - f2 == pytest.approx(f_max, rel=1e-10)
+    np.testing.assert_allclose(kept.loads, ball_distribution(result, f_max).loads, rtol=1e-12)

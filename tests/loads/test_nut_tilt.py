@@ -92,6 +92,19 @@ def test_all_five_balances_to_1e_10(fa: float, radial: float, moment: float) -> 
     assert np.all(d.loads >= 0.0) and np.hypot(*d.tilt) > 0.0
 
 
+@pytest.mark.parametrize(("radial", "moment"), [(0.0, 1e4), (3e5, 0.0)])
+def test_large_loads_on_a_free_nut_converge_and_balance(radial: float, moment: float) -> None:
+    """10 kN·m or 300 kN on a 1.5 kN preload: ball loads ~10³ reference loads, whose rounding
+    (~1e-13 of them) an absolute Newton stop of 1e-13 could not reach."""
+    d = solve(0.0, support="free", radial_load=radial, tilting_moment=moment)
+    _, force, torque = load_vectors(d)
+    scale_f = max(np.abs(force).max(), radial)
+    scale_m = max(np.abs(torque[:, :2]).max(), moment)
+    assert d.loads.max() > 1e4  # far beyond the preload's scale
+    assert np.abs(force.sum(axis=0) + np.array([radial, 0.0, 0.0])).max() < 1e-10 * scale_f
+    assert np.abs(torque[:, :2].sum(axis=0) + np.array([0.0, moment])).max() < 1e-10 * scale_m
+
+
 def test_the_guided_nut_leaves_a_radial_force_and_moment_to_its_housing() -> None:
     d = solve(2000.0)
     _, force, torque = load_vectors(d)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import partial
 from types import ModuleType
 from typing import ClassVar, Literal
@@ -203,6 +203,9 @@ class DesignCheck(Presented):
     warnings: tuple[str, ...] = ()
     computed_ratings: tuple[str, ...] = ()
     """Names of the load ratings computed from the geometry (not given in ``[design]``)."""
+    largest_distribution: Distribution | None = field(default=None, repr=False, compare=False)
+    """Elastic load of every ball (contacts and bodies) under the spectrum's largest |F_a|, the
+    nut values above come from (None: no loaded ball)."""
 
     analysis: ClassVar[str] = "check"
     presentation: ClassVar[ModuleType] = design_check_report
@@ -575,6 +578,7 @@ def design_check(case: Case) -> DesignCheck:
         margins=margins,
         warnings=tuple(dict.fromkeys((*distribution_messages, *messages))),
         computed_ratings=computed,
+        largest_distribution=loaded,
         **values,
     )
 

@@ -107,6 +107,14 @@ def ball_distribution(result: DesignCheck, axial_load: float | None = None) -> D
     )
 
 
+def _distribution_at(result: DesignCheck, load: float) -> Distribution:
+    """:func:`ball_distribution` at ``load`` ≥ 0 [N]; the one :func:`design_check` solved
+    where ``load`` is the spectrum's largest |F_a|."""
+    if load == result.spectrum.max_load and result.largest_distribution is not None:
+        return result.largest_distribution
+    return ball_distribution(result, load)
+
+
 def _largest_level(result: DesignCheck) -> float:
     """The spectrum's level of the largest |F_a|, signed (a forward one where ± tie) [N]."""
     return max(result.spectrum.loads, key=lambda f: (abs(f), f))
@@ -249,7 +257,7 @@ def _ball_figure(result: DesignCheck, path: Path) -> Path:
     )
     top = 1e-9
     for ax, level in zip(np.atleast_1d(axes), levels, strict=True):
-        dist = ball_distribution(result, abs(level))
+        dist = _distribution_at(result, abs(level))
         q, z = dist.per_nut(dist.loads), dist.per_nut(dist.layout.z)
         top = max(top, float(dist.loads.max()))
         for k in range(dist.layout.nuts):

@@ -214,7 +214,8 @@ def compare_models(
     headline: str,
 ) -> tuple[dict[str, ModelTCR], ModelSpread | None]:
     """Each model of ``options.models`` and the ``headline`` on the solved contacts of
-    ``nuts``, and their spread.
+    ``nuts``, and their spread; a correlation headline is the nuts' own resistance (an element
+    headline's cells may differ from the comparison's ``partial_cells``).
 
     The correlations are left out when a contact lies outside their range (p/H ≥ 0.5) with a
     :class:`ModelRangeWarning`; the spread is None when fewer than two models remain.
@@ -229,7 +230,10 @@ def compare_models(
             warnings.warn(f"TCR model {name} left out: {outside}", ModelRangeWarning, 2)
             continue
         contact, description = contact_model(name, params, options, element_models)
-        per_nut = _nut_resistances(nuts, contact)
+        if name == headline and name in CORRELATIONS:  # the nuts' R: this model, solved once
+            per_nut = {n.index: n.resistance for n in nuts}
+        else:
+            per_nut = _nut_resistances(nuts, contact)
         r = float(parallel_resistance(list(per_nut.values())))
         results[name] = ModelTCR(name, description, r, r * float(apparent_area), per_nut)
     values = [m.resistance_per_area for m in results.values() if math.isfinite(m.resistance)]

@@ -69,6 +69,9 @@ __all__ = [
 ]
 
 _TOLERANCE = 1e-13
+"""Newton stop on max |residual| relative to the system's scale max(1, max |q̂|, max |f̂|): the
+rows are loads in units of the reference load, so a large radial load or tilting moment on a
+free nut leaves rounding of order ε max |q̂| (an absolute 1e-13 was unreachable there)."""
 _MAX_ITERATIONS = 60
 
 
@@ -328,11 +331,13 @@ def _newton(
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
     """Solve q = φ(A q + B ξ + c), G q = f for y = (q, ξ) (scaled units; Hertz φ(d) = d₊^(3/2)).
 
-    Returns the solution, the Jacobian at it and the iteration count. Small dense systems:
-    BLAS runs on one thread (threaded BLAS on busy cores is many times slower here).
+    Stops when max |residual| < 1e-13 max(1, max |q|, max |f|). Returns the solution, the
+    Jacobian at it and the iteration count. Small dense systems: BLAS runs on one thread
+    (threaded BLAS on busy cores is many times slower here).
     """
     n, m = a.shape[0], b.shape[1]
     diagonal = np.arange(n)
+    f_max = float(np.max(np.abs(f), initial=1.0))
 
     def residual(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         q, slope = law(a @ y[:n] + b @ y[n:] + c)
@@ -347,7 +352,8 @@ def _newton(
             jac[diagonal, diagonal] += 1.0
             jac[:n, n:] = -slope[:, None] * b
             jac[n:, :n] = g
-            if norm < _TOLERANCE:
+            tolerance = _TOLERANCE * max(f_max, float(np.max(np.abs(y[:n]))))
+            if norm < tolerance:
                 return y, jac, it - 1
             try:
                 step = np.linalg.solve(jac, -r)
@@ -362,7 +368,7 @@ def _newton(
                     break
                 t *= 0.5
             y, r, slope, norm = trial, r_t, slope_t, norm_t
-    raise ConvergenceError("ball load distribution (Newton)", it, norm, _TOLERANCE)
+    raise ConvergenceError("ball load distribution (Newton)", it, norm, tolerance)
 
 
 def solve_distribution(
