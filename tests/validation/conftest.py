@@ -256,7 +256,9 @@ def pytest_deselected(items: Sequence[pytest.Item]) -> None:
 def pytest_runtest_logreport(report: pytest.TestReport) -> None:
     if _CURRENT and _in_suite(Path(str(report.fspath)).resolve()):
         if report.when == "call" or (report.when == "setup" and not report.passed):
-            _CURRENT[-1].outcomes[report.nodeid] = report.outcome
+            xfail = getattr(report, "wasxfail", None)
+            outcome = f"FAIL (known miss): {xfail}" if xfail else f"{report.outcome}"
+            _CURRENT[-1].outcomes[report.nodeid] = outcome
 
 
 def _complete(state: _Session) -> bool:
@@ -310,7 +312,7 @@ def render(state: _Session) -> str:
             f"{_fmt_tolerance(r)} | {r.status} |"
         )
     for nodeid in unrecorded:
-        lines.append(f"| `{nodeid}` | | | | | | | | | {state.outcomes[nodeid]} without a record |")
+        lines.append(f"| `{nodeid}` | | | | | | | | | {state.outcomes[nodeid]} (no row recorded) |")
     for r in records:
         lines += _section(r)
     return "\n".join(lines) + "\n"
