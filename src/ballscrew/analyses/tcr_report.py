@@ -20,14 +20,14 @@ if TYPE_CHECKING:
 _LABEL = {"screw": "ball–screw contact", "nut": "ball–nut contact"}
 
 HEADLINE = (
-    "R (resistance) and R″ = R·S (resistance_per_area) are the headline: the micro TCR of "
-    "Gao, Wang & Liu (2019), the asperity spots and the gap between them inside each Hertz "
-    "patch. The macro-constriction of the patches and the lubricant film around the balls lie "
-    "outside the patches, so neither is in R, and tcr.film_path leaves R unchanged. The "
-    "screw-to-nut path through the balls is ball_path_without_film (micro TCR plus "
-    "macro-constriction, in every run) and, with tcr.film_path, ball_path_with_film (the film "
-    "beside each patch); heat_path_resistance is the one of the two that the thermal model "
-    "takes."
+    "R (resistance) and R″ = R·S (resistance_per_area) are the headline: the micro TCR (the "
+    "quantity Gao, Wang & Liu (2019) define) by the headline_model, the asperity spots and the "
+    "gap between them inside each Hertz patch. The macro-constriction of the patches and the "
+    "lubricant film around the balls lie outside the patches, so neither is in R, and "
+    "tcr.film_path leaves R unchanged. The screw-to-nut path through the balls is "
+    "ball_path_without_film (micro TCR plus macro-constriction, in every run) and, with "
+    "tcr.film_path, ball_path_with_film (the film beside each patch); heat_path_resistance is the"
+    " one of the two that the thermal model takes."
 )
 """Which number is the headline and why the film path does not change it (summary, report)."""
 

@@ -596,7 +596,8 @@ def sections(result: ThermalField) -> list[Section]:
             paragraphs=(
                 "Screw shaft, nut(s) and spacer. The balls of each nut are "
                 "smeared over its bore as an interface conductance h = 1/(R·A_bore), R being the "
-                "nut's total screw-to-nut resistance: the fractal micro TCR of the chain (A1–A3) "
+                "nut's total screw-to-nut resistance: the micro TCR of the chain (A1–A3, by the "
+                "[tcr] headline model) "
                 "plus, unless switched off, the macro-constriction of the Hertz patches into ball "
                 "and raceways. The ball-screw friction heat enters both faces of that interface; "
                 "the spacer bore is adiabatic; every outer surface convects to ambient.",
