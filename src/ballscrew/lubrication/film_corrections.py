@@ -13,9 +13,10 @@ All multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a 
 :func:`ballscrew.lubrication.supply.supplied_film_model` applies them to a film model for the
 case's ``[lubrication]`` section. SI units.
 
-[UNVERIFIED: the coefficients of the correlations and of the SKF factor are as quoted in the
-secondary literature; the original papers and the catalogue page were not available to check
-them.]
+[UNVERIFIED: the coefficients of the correlations are as quoted in the secondary literature;
+the original papers were not available to check them. The SKF factor's form and its K_rs (3e-8
+oil bath or jet, 6e-8 grease or oil–air) agree in three independent public reproductions of the
+catalogue formula; the catalogue page itself was not read.]
 """
 
 from __future__ import annotations
