@@ -136,20 +136,27 @@ def curve_plot(result: OperatingPoint, path: Path) -> Path:
     torque.set_xlabel("speed [rpm]")
     torque.set_ylabel("torque [N·m]", color="b")
     heat = torque.twinx()
-    heat.plot(rpm, curve.heat, "r-s", ms=3, label="heat")
+    heat.plot(rpm, curve.heat, "r-s", ms=3, label="friction heat (right axis)")
     heat.set_ylabel("friction heat [W]", color="r")
-    torque.legend(loc="upper left", fontsize=7)
     torque.grid(alpha=0.3)
     temp.plot(rpm, curve.nut_temperature - CELSIUS, "g-o", ms=3, label="nut")
     temp.plot(rpm, curve.screw_temperature - CELSIUS, "m-s", ms=3, label="screw under the nut")
     temp.axhline(NUT_WARNING_TEMPERATURE - CELSIUS, color="k", ls=":", lw=0.8, label="60 °C")
     temp.set_xlabel("speed [rpm]")
     temp.set_ylabel("temperature [°C]")
-    temp.legend(fontsize=7)
     temp.grid(alpha=0.3)
     if result.speed > 0.0:
         for ax in (torque, temp):
-            ax.axvline(result.speed * 30.0 / math.pi, color="0.5", lw=0.8)
+            ax.axvline(result.speed * 30.0 / math.pi, color="0.5", lw=0.8, label="this point")
+    lines = [*torque.get_lines(), *heat.get_lines()]
+    torque.legend(
+        lines,
+        [line.get_label() for line in lines],
+        loc="upper left",
+        bbox_to_anchor=(0.0, 0.93),
+        fontsize=7,
+    )
+    temp.legend(fontsize=7)
     return save_figure(fig, path)
 
 
