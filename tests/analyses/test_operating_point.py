@@ -21,8 +21,8 @@ from ballscrew.analyses.operating_point import (
     medium_law,
     operating_point,
 )
-from ballscrew.analyses.thermal import solve_field
 from ballscrew.analyses.result import AnalysisResult
+from ballscrew.analyses.thermal import solve_field
 from ballscrew.cli import app
 
 RPM = 2 * math.pi / 60
