@@ -7,7 +7,8 @@ point is the fixed point of
     T_c → η(T_c), α_p(T_c) → friction torque M(η) → heat M·ω − F_a·v → steady field → T_c,
 
 with T_c the mean of the nut and screw temperatures at the nut, solved by fixed-point
-iteration (damped whenever the residual does not shrink) to a residual of 0.01 K, or as soon as
+iteration (a secant step on the residual from the second iteration, damped whenever the residual
+does not shrink) to a residual of 0.01 K, or as soon as
 the heat at the new T_c equals the heat just solved (a friction model that does not see the
 viscosity) (theory manual, *Operating point*). A case without a named lubricant keeps its
 ``[medium]`` viscosity at every temperature.
@@ -65,6 +66,9 @@ FloatArray = NDArray[np.float64]
 TOLERANCE = 0.01
 """Change of the contact temperature [K] at which the fixed point is reached."""
 MAX_ITERATIONS = 60
+MIN_SECANT_SLOPE = 0.25
+"""Smallest |r′| of the secant step on the residual r(T_c) = T(T_c) − T_c [-]: a step is at most
+4 × the plain one."""
 NUT_WARNING_TEMPERATURE = 333.15
 """Nut temperature above which the result warns [K] (60 °C; nuts on machine axes run 5–30 K
 above ambient)."""
@@ -377,6 +381,7 @@ def operating_point(
     contact = ambient if start_temperature is None else float(start_temperature)
     relaxation, residual, iterations = 1.0, math.inf, 0
     disc: Discretisation | None = None  # meshed and assembled once, re-bound to every heat
+    last: tuple[float, float] | None = None  # (T_c, residual) of the previous field
 
     def friction_at(temperature: float) -> FrictionTorque:
         return friction_torque(base, viscosity=law(temperature)[0])
@@ -403,11 +408,17 @@ def operating_point(
             if abs(new) >= residual:  # not contracting: damp the update
                 relaxation *= 0.5
             residual = abs(new)
-            trial = friction_at(contact + relaxation * new)
+            step = relaxation * new
+            if relaxation == 1.0 and last is not None:  # secant on r(T_c) = T(T_c) − T_c
+                slope = (new - last[1]) / (contact - last[0])
+                if slope < 0.0:
+                    step = new / max(-slope, MIN_SECANT_SLOPE)
+            last = (contact, new)
+            trial = friction_at(contact + step)
             if relaxation == 1.0 and _same_heat(trial, friction):  # T(T_c) is the fixed point
                 contact += new
                 break
-            contact += relaxation * new
+            contact += step
             friction = trial
         eta, alpha = law(contact)
         films = _films(base, omega, eta, alpha)

@@ -34,6 +34,9 @@ from ballscrew.lubrication.film import FilmModel, film_function
 
 __all__ = ["BallModel"]
 
+#: Load sharings kept per model (the oldest dropped first): the few contacts of one solve.
+_SHARINGS_KEPT = 16
+
 
 @dataclass(frozen=True)
 class BallModel:
@@ -133,6 +136,22 @@ class BallModel:
         lubricant or entrainment."""
         if not self.lubricated or speed == 0.0:
             return LoadSharing(1.0, float(load), 0.0, None)
+        key = (float(load), abs(float(speed)), contact)
+        known = self._sharings.get(key)
+        if known is None:
+            if len(self._sharings) >= _SHARINGS_KEPT:
+                self._sharings.pop(next(iter(self._sharings)))
+            known = self._sharings[key] = self._share(*key)
+        return known
+
+    @cached_property
+    def _sharings(self) -> dict[tuple[float, float, str], LoadSharing]:
+        """The load sharings solved on this model by (Q, |u_e|, contact): the flanks of a
+        preloaded nut solve the same contact at the same load and speed (mirror images)."""
+        return {}
+
+    def _share(self, load: float, speed: float, contact: Side) -> LoadSharing:
+        """:func:`~ballscrew.lubrication.share_load` of ``contact`` at Q and u_e ≥ 0."""
         c = self.curvature(contact)
         a, b = self.hertz_semi_axes(contact, load)
         return share_load(
@@ -141,7 +160,7 @@ class BallModel:
             c.ry,
             self.viscosity,
             self.pressure_viscosity,
-            abs(speed),
+            speed,
             math.pi * a * b,
             self.surface.film_heights,
             film_model=self.film_model,
