@@ -16,11 +16,12 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, field
-from functools import partial
+from functools import cached_property, partial
 from types import ModuleType
 from typing import ClassVar, Literal
 
 import numpy as np
+import xarray as xr
 
 from ballscrew import design
 from ballscrew.analyses import design_check_report
@@ -223,6 +224,12 @@ class DesignCheck(Presented):
     def part(self) -> str:
         """What a loaded flank is called: :func:`loaded_part` of the case."""
         return loaded_part(self.case)
+
+    @cached_property
+    def stiffness_curve(self) -> xr.Dataset:
+        """:func:`design_check_report.stiffness_curve` of the result, built once: the data file
+        and the stiffness figure both read it (its body curve is 40+ elastic solves)."""
+        return design_check_report.stiffness_curve(self)
 
     @property
     def preload_drag_torque_min(self) -> float:

@@ -173,7 +173,8 @@ def _body_lift_off(result: DesignCheck) -> float:
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     """Nut displacement and stiffness against the axial load: Hertz contacts only, and the
     contacts with the elastic bodies, with units. Without preload the curves start one step
-    above zero load, where the unloaded contacts have no stiffness to give."""
+    above zero load, where the unloaded contacts have no stiffness to give. A report reads it
+    through :attr:`DesignCheck.stiffness_curve`, which builds it once per result."""
     fp, nuts = result.case.operating.preload, result.flanks
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
     top = max(1.5 * lift_off, 1.2 * result.spectrum.max_load, 3.0 * fp, 1.0)
@@ -212,13 +213,13 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
 
 
 def fields(result: DesignCheck) -> xr.Dataset:
-    """The stiffness curve."""
-    return stiffness_curve(result)
+    """The stiffness curve (a shallow copy of the result's: its arrays, not its dataset)."""
+    return result.stiffness_curve.copy()
 
 
 def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
     plt = pyplot()
-    curve = stiffness_curve(result)
+    curve = result.stiffness_curve
     loads = curve["axial_load"].values * 1e-3
     body = curve["body_load"].values * 1e-3
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")
