@@ -155,14 +155,23 @@ def test_check_command_writes_the_folder(tmp_path: Path) -> None:
 
 
 def test_the_check_builds_its_stiffness_curve_once(tmp_path: Path, monkeypatch) -> None:
-    """One ``ballscrew check`` sweeps the body curve (40+ elastic solves) once, and the
-    stiffness figure draws exactly the curve of the data file (bit for bit)."""
+    """One ``ballscrew check`` sweeps the body curve (40+ elastic solves) once, from the
+    preloaded nut the check solved (no solve of its own at F_a = 0), and the stiffness figure
+    draws exactly the curve of the data file (bit for bit)."""
     import xarray as xr
 
     from ballscrew.analyses import design_check_report as report
 
-    sweeps, drawn = [], []
-    body_curve, save_figure = report._body_curve, report.save_figure
+    sweeps, solves, drawn = [], [], []
+    body_curve, save_figure, solve = (
+        report._body_curve,
+        report.save_figure,
+        report.elastic_distribution,
+    )
+
+    def counted_solve(*args, **kwargs):
+        solves.append(kwargs)
+        return solve(*args, **kwargs)
 
     def counted(*args):
         sweeps.append(args)
@@ -174,6 +183,7 @@ def test_the_check_builds_its_stiffness_curve_once(tmp_path: Path, monkeypatch) 
 
     monkeypatch.setattr(report, "_body_curve", counted)
     monkeypatch.setattr(report, "save_figure", kept)
+    monkeypatch.setattr(report, "elastic_distribution", counted_solve)
     raw = raw_case()
     raw.setdefault("loads", {})["distribution"] = "elastic"
     case_file, out = tmp_path / "case.toml", tmp_path / "out"
@@ -181,6 +191,8 @@ def test_the_check_builds_its_stiffness_curve_once(tmp_path: Path, monkeypatch) 
     result = CliRunner().invoke(app, ["check", str(case_file), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     assert len(sweeps) == 1
+    assert len(solves) == report._BODY_POINTS  # the case's load is the largest: kept
+    assert all(kwargs["interference"] is not None for kwargs in solves)
     (lines,) = (axes for name, axes in drawn if name == "stiffness_curve.png")
     with xr.open_dataset(out / "fields.nc", engine="h5netcdf") as curve:
         loads, body = curve["axial_load"].values * 1e-3, curve["body_load"].values * 1e-3

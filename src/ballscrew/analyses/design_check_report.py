@@ -109,9 +109,11 @@ def ball_distribution(result: DesignCheck, axial_load: float | None = None) -> D
 
 def _distribution_at(result: DesignCheck, load: float) -> Distribution:
     """:func:`ball_distribution` at ``load`` ≥ 0 [N]; the one :func:`design_check` solved
-    where ``load`` is the spectrum's largest |F_a|."""
+    where ``load`` is the spectrum's largest |F_a| or zero."""
     if load == result.spectrum.max_load and result.largest_distribution is not None:
         return result.largest_distribution
+    if load == 0.0 and result.unloaded_distribution is not None:
+        return result.unloaded_distribution
     return ball_distribution(result, load)
 
 
@@ -126,11 +128,7 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     fp = params.preload
     loads = np.linspace(0.0 if fp > 0 else top / _BODY_POINTS, top, _BODY_POINTS)
     interference = (  # of the preload, found at zero axial load; none without preload
-        elastic_distribution(
-            params, spec, result.root_diameter, axial_load=0.0, numerics=numerics
-        ).interference
-        if fp > 0
-        else None
+        _distribution_at(result, 0.0).interference if fp > 0 else None
     )
     runs = [
         elastic_distribution(
