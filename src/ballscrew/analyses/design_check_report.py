@@ -177,8 +177,7 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
     top = max(1.5 * lift_off, 1.2 * result.spectrum.max_load, 3.0 * fp, 1.0)
     loads = np.linspace(0.0 if fp > 0 else top / _CURVE_POINTS, top, _CURVE_POINTS)
-    x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
-    k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
+    x, k = design.nut_load_curve(loads, fp, result.compliance, nuts)
     body_loads, body_x, body_k = _body_curve(result, top)
     return xr.Dataset(
         {
