@@ -154,6 +154,60 @@ def test_check_command_writes_the_folder(tmp_path: Path) -> None:
     assert summary["margins"]["speed"]["status"] == "green"
 
 
+def test_the_check_builds_its_stiffness_curve_once(tmp_path: Path, monkeypatch) -> None:
+    """One ``ballscrew check`` sweeps the body curve (40+ elastic solves) once, from the
+    preloaded nut the check solved (no solve of its own at F_a = 0), and the stiffness figure
+    draws exactly the curve of the data file (bit for bit)."""
+    import xarray as xr
+
+    from ballscrew.analyses import design_check_report as report
+
+    sweeps, solves, drawn = [], [], []
+    body_curve, save_figure, solve = (
+        report._body_curve,
+        report.save_figure,
+        report.elastic_distribution,
+    )
+
+    def counted_solve(*args, **kwargs):
+        solves.append(kwargs)
+        return solve(*args, **kwargs)
+
+    def counted(*args):
+        sweeps.append(args)
+        return body_curve(*args)
+
+    def kept(fig, path):
+        drawn.append((path.name, [[line.get_data() for line in ax.lines] for ax in fig.axes]))
+        return save_figure(fig, path)
+
+    monkeypatch.setattr(report, "_body_curve", counted)
+    monkeypatch.setattr(report, "save_figure", kept)
+    monkeypatch.setattr(report, "elastic_distribution", counted_solve)
+    raw = raw_case()
+    raw.setdefault("loads", {})["distribution"] = "elastic"
+    case_file, out = tmp_path / "case.toml", tmp_path / "out"
+    case_file.write_text(dump_toml(raw))
+    result = CliRunner().invoke(app, ["check", str(case_file), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    assert len(sweeps) == 1
+    assert len(solves) == report._BODY_POINTS  # the case's load is the largest: kept
+    assert all(kwargs["interference"] is not None for kwargs in solves)
+    (lines,) = (axes for name, axes in drawn if name == "stiffness_curve.png")
+    with xr.open_dataset(out / "fields.nc", engine="h5netcdf") as curve:
+        loads, body = curve["axial_load"].values * 1e-3, curve["body_load"].values * 1e-3
+        shown = [
+            (loads, curve["deflection"].values * 1e6),
+            (body, curve["deflection_bodies"].values * 1e6),
+            (loads, curve["stiffness"].values * 1e-6),
+            (body, curve["stiffness_bodies"].values * 1e-6),
+        ]
+    plotted = [*lines[0][:2], *lines[1][:2]]
+    for (x, y), (px, py) in zip(shown, plotted, strict=True):
+        np.testing.assert_array_equal(px, x)
+        np.testing.assert_array_equal(py, y)
+
+
 def test_check_command_bad_input_exit_2(tmp_path: Path) -> None:
     raw = raw_case(mounting="clamped")
     case_file = tmp_path / "case.toml"

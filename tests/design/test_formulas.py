@@ -102,9 +102,27 @@ def test_hertz_stiffness_is_the_derivative_of_the_load_deflection_curve(nuts, lo
     assert k == pytest.approx(forward, rel=1e-5)
 
 
+def test_the_load_curve_gives_the_closed_form_stiffness_below_and_above_lift_off() -> None:
+    """Two halves 1.5 F_i^(1/3)/C summed (F₁^(2/3) + F₂^(2/3) = 2 F_p^(2/3) below lift-off: 2×
+    a half's at F_a = 0), one half 1.5 F_a^(1/3)/C above; one flank 1.5 (F_p + F_a)^(1/3)/C."""
+    fp = 1500.0
+    loads = np.array([0.0, 1000.0, 3000.0, 4000.0, 8000.0])
+    x, k = design.nut_load_curve(loads, fp, COMPLIANCE)
+    f1, f2 = np.array([tuple(nut_forces(fp, f)) for f in loads]).T
+    closed = 1.5 * (np.cbrt(f1) + np.cbrt(f2)) / COMPLIANCE
+    np.testing.assert_allclose(k, closed, rtol=1e-12)
+    above = loads > design.LIFT_OFF_FACTOR * fp
+    np.testing.assert_allclose(k[above], 1.5 * np.cbrt(loads[above]) / COMPLIANCE, rtol=1e-9)
+    np.testing.assert_allclose(x, COMPLIANCE * (f1 ** (2 / 3) - fp ** (2 / 3)), rtol=1e-12)
+    _, single = design.nut_load_curve(loads, fp, COMPLIANCE, nuts=1)
+    np.testing.assert_allclose(single, 1.5 * np.cbrt(fp + loads) / COMPLIANCE, rtol=1e-12)
+    with pytest.raises(InputError, match=r"^preload = 0"):
+        design.nut_load_curve(loads, 0.0, COMPLIANCE, nuts=1)
+
+
 @pytest.mark.parametrize("nuts", [0, 3])
 def test_a_nut_count_other_than_one_or_two_names_nuts(nuts) -> None:
-    for call in (design.nut_stiffness, design.nut_load_deflection):
+    for call in (design.nut_stiffness, design.nut_load_deflection, design.nut_load_curve):
         with pytest.raises(InputError, match=rf"^nuts = {nuts} .*1 or 2"):
             call(1000.0, 1500.0, COMPLIANCE, nuts)
 

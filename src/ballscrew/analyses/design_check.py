@@ -16,11 +16,12 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, field
-from functools import partial
+from functools import cached_property, partial
 from types import ModuleType
 from typing import ClassVar, Literal
 
 import numpy as np
+import xarray as xr
 
 from ballscrew import design
 from ballscrew.analyses import design_check_report
@@ -206,6 +207,9 @@ class DesignCheck(Presented):
     largest_distribution: Distribution | None = field(default=None, repr=False, compare=False)
     """Elastic load of every ball (contacts and bodies) under the spectrum's largest |F_a|, the
     nut values above come from (None: no loaded ball)."""
+    unloaded_distribution: Distribution | None = field(default=None, repr=False, compare=False)
+    """The same under F_a = 0: the preloaded nut, whose spacer interference the stiffness curve
+    keeps (None without preload)."""
 
     analysis: ClassVar[str] = "check"
     presentation: ClassVar[ModuleType] = design_check_report
@@ -223,6 +227,12 @@ class DesignCheck(Presented):
     def part(self) -> str:
         """What a loaded flank is called: :func:`loaded_part` of the case."""
         return loaded_part(self.case)
+
+    @cached_property
+    def stiffness_curve(self) -> xr.Dataset:
+        """:func:`design_check_report.stiffness_curve` of the result, built once: the data file
+        and the stiffness figure both read it (its body curve is 40+ elastic solves)."""
+        return design_check_report.stiffness_curve(self)
 
     @property
     def preload_drag_torque_min(self) -> float:
@@ -406,11 +416,11 @@ def _margins(check: dict, spec: DesignSpec, case: Case) -> tuple[Margin, ...]:
 
 def _elastic_nut(
     params: ScrewParameters, case: Case, root: float, largest: float
-) -> tuple[float, float, Distribution | None]:
+) -> tuple[float, float, Distribution | None, Distribution | None]:
     """(stiffness at the case's axial load, travel x(F) − x(0) under the largest load F, the
-    distribution under F) of the nut with contacts and bodies [N/m, m]. A preloaded nut keeps
-    the spacer interference of F = 0 (one solve, shared); without preload x(0) = 0, the
-    unloaded contacts (no distribution under F = 0)."""
+    distributions under F and under F_a = 0) of the nut with contacts and bodies [N/m, m]. A
+    preloaded nut keeps the spacer interference of F_a = 0 (one solve, shared); without preload
+    x(0) = 0, the unloaded contacts (no distribution under F_a = 0)."""
     run = partial(elastic_distribution, params, case.loads, root, numerics=case.numerics)
     solved: dict[float, Distribution] = {}
     interference = None
@@ -425,9 +435,9 @@ def _elastic_nut(
 
     stiffness = at(params.axial_load).stiffness
     if largest == 0.0:
-        return stiffness, 0.0, solved.get(0.0)
+        return stiffness, 0.0, solved.get(0.0), solved.get(0.0)
     rest = solved[0.0].displacement if 0.0 in solved else 0.0
-    return stiffness, at(largest).displacement - rest, at(largest)
+    return stiffness, at(largest).displacement - rest, at(largest), solved.get(0.0)
 
 
 def _nut_rigid_body(dist: Distribution | None, support: str) -> dict[str, float | None]:
@@ -522,7 +532,7 @@ def design_check(case: Case) -> DesignCheck:
     contact_k = design.nut_stiffness(case.operating.axial_load, preload, compliance, flanks)
     f_max = spectrum.max_load
     with recorded_warnings() as distribution_messages:
-        nut_k, travel, loaded = _elastic_nut(params, case, root, f_max)
+        nut_k, travel, loaded, unloaded = _elastic_nut(params, case, root, f_max)
     shaft_k = design.shaft_axial_stiffness(
         root, length, screw.youngs_modulus, spec.mounting, spec.nut_distance
     )
@@ -579,6 +589,7 @@ def design_check(case: Case) -> DesignCheck:
         warnings=tuple(dict.fromkeys((*distribution_messages, *messages))),
         computed_ratings=computed,
         largest_distribution=loaded,
+        unloaded_distribution=unloaded,
         **values,
     )
 

@@ -109,9 +109,11 @@ def ball_distribution(result: DesignCheck, axial_load: float | None = None) -> D
 
 def _distribution_at(result: DesignCheck, load: float) -> Distribution:
     """:func:`ball_distribution` at ``load`` ≥ 0 [N]; the one :func:`design_check` solved
-    where ``load`` is the spectrum's largest |F_a|."""
+    where ``load`` is the spectrum's largest |F_a| or zero."""
     if load == result.spectrum.max_load and result.largest_distribution is not None:
         return result.largest_distribution
+    if load == 0.0 and result.unloaded_distribution is not None:
+        return result.unloaded_distribution
     return ball_distribution(result, load)
 
 
@@ -126,11 +128,7 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     fp = params.preload
     loads = np.linspace(0.0 if fp > 0 else top / _BODY_POINTS, top, _BODY_POINTS)
     interference = (  # of the preload, found at zero axial load; none without preload
-        elastic_distribution(
-            params, spec, result.root_diameter, axial_load=0.0, numerics=numerics
-        ).interference
-        if fp > 0
-        else None
+        _distribution_at(result, 0.0).interference if fp > 0 else None
     )
     runs = [
         elastic_distribution(
@@ -173,13 +171,13 @@ def _body_lift_off(result: DesignCheck) -> float:
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     """Nut displacement and stiffness against the axial load: Hertz contacts only, and the
     contacts with the elastic bodies, with units. Without preload the curves start one step
-    above zero load, where the unloaded contacts have no stiffness to give."""
+    above zero load, where the unloaded contacts have no stiffness to give. A report reads it
+    through :attr:`DesignCheck.stiffness_curve`, which builds it once per result."""
     fp, nuts = result.case.operating.preload, result.flanks
     lift_off = design.LIFT_OFF_FACTOR * fp if nuts == 2 else 0.0
     top = max(1.5 * lift_off, 1.2 * result.spectrum.max_load, 3.0 * fp, 1.0)
     loads = np.linspace(0.0 if fp > 0 else top / _CURVE_POINTS, top, _CURVE_POINTS)
-    x = design.nut_load_deflection(loads, fp, result.compliance, nuts)
-    k = np.array([design.nut_stiffness(f, fp, result.compliance, nuts) for f in loads])
+    x, k = design.nut_load_curve(loads, fp, result.compliance, nuts)
     body_loads, body_x, body_k = _body_curve(result, top)
     return xr.Dataset(
         {
@@ -212,13 +210,13 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
 
 
 def fields(result: DesignCheck) -> xr.Dataset:
-    """The stiffness curve."""
-    return stiffness_curve(result)
+    """The stiffness curve (a shallow copy of the result's: its arrays, not its dataset)."""
+    return result.stiffness_curve.copy()
 
 
 def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
     plt = pyplot()
-    curve = stiffness_curve(result)
+    curve = result.stiffness_curve
     loads = curve["axial_load"].values * 1e-3
     body = curve["body_load"].values * 1e-3
     fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.4), layout="constrained")

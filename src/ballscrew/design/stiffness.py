@@ -31,6 +31,7 @@ __all__ = [
     "CATALOGUE_RIGIDITY_SHARE",
     "catalogue_nut_rigidity",
     "lost_motion",
+    "nut_load_curve",
     "nut_load_deflection",
     "nut_stiffness",
     "series_stiffness",
@@ -58,6 +59,16 @@ def _half_forces(axial_load: float, preload: float, nuts: int) -> tuple[float, f
     return float(f1), float(f2)
 
 
+def _half_force_array(loads: NDArray[np.float64], preload: float, nuts: int) -> NDArray[np.float64]:
+    """(F₁, F₂) of the loaded and the other half at every load, shape (loads.size, 2) [N]."""
+    return np.array([_half_forces(float(f), preload, nuts) for f in loads.ravel()]).reshape(-1, 2)
+
+
+def _displacement(first: NDArray[np.float64], preload: float, compliance: float) -> NDArray:
+    """x = δ(F₁) − δ(F_p) of the loaded half's forces ``first`` [m]."""
+    return nut_axial_deflection(first, compliance) - nut_axial_deflection(preload, compliance)
+
+
 def nut_load_deflection(
     axial_load: ArrayLike, preload: float, compliance: float, nuts: int = 2
 ) -> NDArray[np.float64]:
@@ -67,9 +78,8 @@ def nut_load_deflection(
     """
     fp = nonnegative("preload", preload, "N")
     loads = nonnegative_array("axial_load", axial_load, "N")
-    first = np.array([_half_forces(float(f), fp, nuts)[0] for f in loads.ravel()])
-    x = nut_axial_deflection(first, compliance) - nut_axial_deflection(fp, compliance)
-    return x.reshape(loads.shape)
+    first = _half_force_array(loads, fp, nuts)[:, 0]
+    return _displacement(first, fp, compliance).reshape(loads.shape)
 
 
 def nut_stiffness(axial_load: float, preload: float, compliance: float, nuts: int = 2) -> float:
@@ -81,6 +91,24 @@ def nut_stiffness(axial_load: float, preload: float, compliance: float, nuts: in
         raise InputError("preload", preload, "> 0 N where the axial load is 0 N")
     deflections = nut_axial_deflection(np.array(forces), compliance)
     return float(np.sum(preloaded_axial_stiffness(np.array(forces), deflections)))
+
+
+def nut_load_curve(
+    axial_load: ArrayLike, preload: float, compliance: float, nuts: int = 2
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """(x, dF_a/dx) at every axial load: :func:`nut_load_deflection` and :func:`nut_stiffness`
+    from one solve of the halves' forces per load, 1.5 F_i/δ_i summed over the loaded halves
+    [m, N/m]."""
+    fp = nonnegative("preload", preload, "N")
+    loads = nonnegative_array("axial_load", axial_load, "N")
+    forces = _half_force_array(loads, fp, nuts)
+    loaded = forces > 0.0
+    if not loaded.any(axis=1).all():
+        raise InputError("preload", preload, "> 0 N where the axial load is 0 N")
+    f = np.where(loaded, forces, 1.0)  # an unloaded half adds no stiffness (zeroed below)
+    halves = preloaded_axial_stiffness(f, nut_axial_deflection(f, compliance))
+    k = np.where(loaded, halves, 0.0).sum(axis=1)
+    return _displacement(forces[:, 0], fp, compliance).reshape(loads.shape), k.reshape(loads.shape)
 
 
 def series_stiffness(*stiffnesses: float) -> float:
