@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 import threading
 import time
+import warnings
 from types import SimpleNamespace
 
 import pytest
@@ -137,3 +138,26 @@ def test_the_tcr_cache_evicts_safely_under_threads(monkeypatch):
         sys.setswitchinterval(interval)
         thermal_setup._cached_tcr.clear()
     assert not errors, errors[0]
+
+
+def test_a_coupled_tcr_is_keyed_on_the_thermal_model(gao_case_path, tcr_cache):
+    """Coupled, the medium is the oil at the operating point's contact temperature, which the
+    ambient moves: 20 → 40 °C ambient is another R (0.2083 → 0.2088 K/W at 16 cells; the old
+    key, without ``[thermal]``, handed the 20 °C result on)."""
+    cool = ballscrew.load_case(
+        gao_case_path,
+        QUICK
+        | {
+            "medium.viscosity": None,
+            "medium.pressure_viscosity": None,
+            "kinematics.lubricant": "iso_vg_68",
+            "operating.coupled": True,
+        },
+    )
+    warm = with_overrides(cool, {"thermal.ambient_temperature": 313.15})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the operating point's film warnings
+        a, b = tcr_cache(cool), tcr_cache(warm)
+        fresh = screw_tcr(warm)
+    assert b.resistance == pytest.approx(fresh.resistance, rel=1e-12)
+    assert b.resistance != pytest.approx(a.resistance, rel=1e-4)
