@@ -1,27 +1,32 @@
 """A small thread-safe cache of results keyed by the case inputs they depend on.
 
 The key is the JSON of the case fields an analysis reads (``include``) or of all but those it
-does not read (``exclude``); a too-small key would hand one case the result of another, so a
-cache names every section its computation reads, through every function it calls.
+does not read (``exclude``, fixed or a function of the case where what is read depends on the
+case's options); a too-small key would hand one case the result of another, so a cache names
+every section its computation reads, through every function it calls.
 """
 
 from __future__ import annotations
 
 import threading
 from collections.abc import Callable
-from typing import Generic, TypeVar
+from typing import Any, Generic, TypeAlias, TypeVar
 
 from ballscrew.case import Case
 
-__all__ = ["CaseCache"]
+__all__ = ["CaseCache", "Fields"]
 
 T = TypeVar("T")
+Fields: TypeAlias = set[str] | dict[str, Any]
+"""Case fields as pydantic's ``include``/``exclude``: section names, or a section → its fields
+(``True`` for the whole section)."""
 
 
 class CaseCache(Generic[T]):
     """At most ``size`` results of ``compute(case)``, the oldest evicted first.
 
-    ``include``/``exclude`` select the case fields of the key (as ``Case.model_dump_json``).
+    ``include``/``exclude`` select the case fields of the key (as ``Case.model_dump_json``);
+    ``exclude`` may be a function of the case (the fields that case's computation never reads).
     The result is computed outside the lock (two threads may compute the same key once each).
     """
 
@@ -30,8 +35,8 @@ class CaseCache(Generic[T]):
         compute: Callable[[Case], T],
         size: int,
         *,
-        include: set[str] | None = None,
-        exclude: set[str] | None = None,
+        include: Fields | None = None,
+        exclude: Fields | Callable[[Case], Fields] | None = None,
     ) -> None:
         self.compute = compute
         self.size = size
@@ -42,7 +47,8 @@ class CaseCache(Generic[T]):
 
     def key(self, case: Case) -> str:
         """The JSON of the fields the result depends on."""
-        return case.model_dump_json(include=self.include, exclude=self.exclude)
+        exclude = self.exclude(case) if callable(self.exclude) else self.exclude
+        return case.model_dump_json(include=self.include, exclude=exclude)
 
     def __call__(self, case: Case) -> T:
         key = self.key(case)

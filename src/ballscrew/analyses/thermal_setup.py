@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from ballscrew.analyses.case_cache import CaseCache
+from ballscrew.analyses.case_cache import CaseCache, Fields
 from ballscrew.analyses.kinematics import computed_drag_torque
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.screw_tcr import ScrewTCR, screw_tcr
@@ -137,14 +137,32 @@ def thermal_spec(case: Case) -> ThermalSpec:
     return case.thermal
 
 
-_cached_tcr = CaseCache(
-    screw_tcr,
-    32,
-    exclude={"name", "description", "thermal", "wear", "friction", "duty", "duty_repeat"},
+#: Sections :func:`screw_tcr` never reads (without ``[operating] coupled``).
+_NOT_TCR: Fields = dict.fromkeys(
+    ("name", "description", "thermal", "wear", "friction", "duty", "duty_repeat"), True
 )
-""":func:`screw_tcr` of the case's headline, cached on every section it reads (through
+
+
+def _not_tcr(case: Case) -> Fields:
+    """The case fields :func:`screw_tcr` of ``case`` does not read.
+
+    Coupled, it solves the operating point, which reads every section. Without ``[tcr]
+    film_path`` it reads neither the speed nor the oil's viscosity (the contacts take the ball
+    loads, roughness, materials and the medium's conductivity), so the operating point at a
+    new speed or contact temperature reuses the contacts; the meniscus film path reads both.
+    """
+    if case.operating.coupled:
+        return {"name": True, "description": True}
+    if case.tcr.film_path != "none":
+        return _NOT_TCR
+    return _NOT_TCR | {"operating": {"speed"}, "medium": {"viscosity", "pressure_viscosity"}}
+
+
+_cached_tcr = CaseCache(screw_tcr, 32, exclude=_not_tcr)
+""":func:`screw_tcr` of the case's headline, cached on every field it reads (through
 :class:`ScrewParameters` and the ball loads: also ``loads``, ``design``, ``kinematics``,
-``lubrication``)."""
+``lubrication``). Cases that differ only in fields it does not read share one result, whose
+``case`` is the first of them solved."""
 
 
 def model_nut_resistances(case: Case, tcr: ScrewTCR, name: str) -> dict[int, float]:
