@@ -141,9 +141,14 @@ def film_model(case: Case, named: LubricantState | None) -> str | FilmModel:
     if spec.thermal:
         oil = named or library_lubricant("iso_vg_68").at(spec.temperature)
         thermal = (oil.temperature_viscosity, oil.conductivity)
-    density = named.density if named is not None else 870.0
-    replenishment = track_replenishment(case, density)
+    replenishment = track_replenishment(case, oil_density(named))
     return supplied_film_model(case.medium.film_model, spec.meniscus, thermal, replenishment)
+
+
+def oil_density(named: LubricantState | None) -> float:
+    """ρ of the lubricant at the inlet [kg/m³]: the named lubricant's, else 870 (ASSUMED,
+    paraffinic mineral oil: the default of :attr:`Lubrication.density`)."""
+    return Lubrication.density if named is None else named.density
 
 
 def track_replenishment(case: Case, density: float) -> Replenishment | None:
@@ -232,7 +237,7 @@ class ScrewParameters:
                 eta,
                 alpha,
                 film_model(case, named),
-                named.density if named is not None else 870.0,
+                oil_density(named),
                 medium.rarefaction,
             ),
             nuts=(),
