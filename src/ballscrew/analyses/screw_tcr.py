@@ -386,7 +386,9 @@ def _correlation(
 def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
     """Sweepable scalars of :func:`screw_tcr` (case's headline) with their units: the headline
     micro TCR, the ball path without film and the one the thermal model takes
-    (``heat_path_resistance``; with ``[tcr] film_path`` also ``ball_path_with_film``)."""
+    (``heat_path_resistance``; with ``[tcr] film_path`` also ``ball_path_with_film``), and
+    every rival model's R and R″ (``model_V2_patch_resistance`` for ``V2/patch``) with their
+    spread (``uncertainty_low``, ``uncertainty_high``), so that a sweep carries the band."""
     result = screw_tcr(case)
     scalars = {
         "resistance": (result.resistance, "K/W"),
@@ -399,6 +401,13 @@ def tcr_scalars(case: Case) -> dict[str, tuple[float, str]]:
     }
     if result.ball_path_with_film is not None:
         scalars["ball_path_with_film"] = (result.ball_path_with_film, "K/W")
+    for name, model in result.models.items():
+        key = "model_" + name.replace("/", "_")
+        scalars[f"{key}_resistance"] = (model.resistance, "K/W")
+        scalars[f"{key}_resistance_per_area"] = (model.resistance_per_area, "m^2*K/W")
+    if result.uncertainty is not None:
+        scalars["uncertainty_low"] = (result.uncertainty.low, "m^2*K/W")
+        scalars["uncertainty_high"] = (result.uncertainty.high, "m^2*K/W")
     for nut in result.nuts:
         scalars[f"nut{nut.index}_resistance"] = (nut.resistance, "K/W")
         scalars[f"nut{nut.index}_ball_load"] = (nut.ball_load, "N")
