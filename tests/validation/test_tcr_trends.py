@@ -16,15 +16,19 @@ the choice): ``test_trend_mean_plane``.
 
 from __future__ import annotations
 
+import math
 import warnings
+from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import ballscrew
 from ballscrew import load_case
-from ballscrew.contact_resistance import ELEMENT_MODELS, ball_contact_constriction
+from ballscrew.analyses.tcr_film import conductivities, heat_paths
+from ballscrew.contact_resistance import ELEMENT_MODELS, parallel_resistance
 from ballscrew.contact_resistance.correlations import CORRELATIONS
 
 MODELS = (
@@ -34,6 +38,7 @@ MODELS = (
 )
 COARSE = {"numerics.cells_across": 24}
 PRELOAD = 1500.0  # N, the example's preload; the second nut lifts off at 2^(3/2) F_p ≈ 4243 N
+LIFT_OFF = 2**1.5 * PRELOAD
 
 
 @cache
@@ -236,39 +241,184 @@ def test_manual_trend_table_is_what_the_models_give(gao_case_path) -> None:
         assert int(cells[-1]) == sum("✓" in cell for cell in cells[:-1]), model
 
 
+@dataclass(frozen=True)
+class ScrewPath:
+    """One model's screw-to-nut path without film: every loaded nut's micro TCR and the
+    macro-constriction of its Hertz patches (A6) in series, the nuts in parallel (A3) [K/W]."""
+
+    micro: float
+    """The micro TCR alone, R of ``screw_tcr`` for the model."""
+    macro: float
+    """The macro-constriction alone."""
+    total: float
+    """micro + macro per nut, the nuts in parallel: the path a thermal model takes."""
+    ball: tuple[float, float]
+    """(micro, macro) of one ball of nut 1, screw and nut contact in series [K/W]."""
+
+
 @cache
-def _ball_paths(case_path: str, axial_load: float) -> dict[str, float]:
-    """R [K/W] of the screw's ball path per model: each nut's micro TCR plus the
-    macro-constriction of its Hertz patches (A6) in series, the nuts in parallel."""
-    case = load_case(case_path, {**COARSE, "operating.axial_load": axial_load})
+def _screw_paths(
+    case_path: str, **overrides: float | str
+) -> tuple[tuple[float, float], float, dict[str, ScrewPath]]:
+    """(nut forces, nut 1's ball load, model → its path) of the reference screw; the paths are
+    the thermal models' (``heat_paths`` with the model's micro TCR of each nut)."""
+    case = load_case(case_path, {**COARSE, **overrides})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         result = ballscrew.screw_tcr(case)
-    lam = case.materials.ball.thermal_conductivity, case.materials.screw.thermal_conductivity
-    constriction = {
-        n.index: sum(
-            ball_contact_constriction((c.contact.hertz.a, c.contact.hertz.b), *lam)
-            for c in (n.screw, n.nut)
+    lam = conductivities(case)
+    paths = {}
+    for name, m in result.models.items():
+        nuts = heat_paths(result.nuts, (), lam, micro=m.nut_resistances)
+        first = result.nuts[0].balls
+        paths[name] = ScrewPath(
+            micro=float(parallel_resistance([p.micro for p in nuts])),
+            macro=float(parallel_resistance([p.constriction for p in nuts])),
+            total=float(parallel_resistance([p.ball_path_without_film for p in nuts])),
+            ball=(nuts[0].micro * first, nuts[0].constriction * first),
         )
-        / n.balls
-        for n in result.nuts
-    }
-    return {
-        name: 1.0 / sum(1.0 / (r + constriction[k]) for k, r in m.nut_resistances.items())
-        for name, m in result.models.items()
-    }
+    return result.nut_forces, result.nuts[0].ball_load, paths
 
 
-@pytest.mark.parametrize("model", MODELS)
-def test_ball_path_with_macro_constriction_rises_after_lift_off(gao_case_path, model) -> None:
-    """Gao et al.'s reason for the rise, heat crossing at one nut only, holds for the path the
-    thermal models use: the macro-constriction of a patch goes as 1/a ∝ Q^(-1/3) and dominates
-    the micro TCR, so R of the ball path rises after lift-off for every micro model (×1.24-1.40
-    at 5 kN; ×√2 at lift-off for a constriction alone)."""
-    ratio = (
-        _ball_paths(str(gao_case_path), 5000.0)[model] / _ball_paths(str(gao_case_path), 0.0)[model]
+def _total_ratio(case_path: str, model: str, **overrides: float) -> float:
+    """R of the total path with ``overrides`` over R without."""
+    return (
+        _screw_paths(case_path, **overrides)[2][model].total
+        / _screw_paths(case_path)[2][model].total
     )
-    assert ratio > 1.0, f"{model}: {ratio:.3f}"
+
+
+# The total path's misses (R at 3 kN / at 0 kN, outside ±5 %): the macro-constriction goes as
+# Q^(-1/3), so it alone moves by 2/[(1+u)^(1/2) + (1−u)^(1/2)] = 1.075 at u = 0.68 (3 kN), and
+# it dominates the micro TCR of every model.
+TOTAL_FLAT_NEAR_LIFT_OFF_MISSES = {
+    "V2": 1.075,
+    "MT": 1.075,
+    "V1": 1.075,
+    "CMY": 1.098,
+    "Mikic": 1.096,
+    "V2/patch": 1.086,
+    "MT/patch": 1.076,
+    "V1/patch": 1.087,
+}
+
+
+def _total_trend_params() -> list:
+    out = []
+    for model in MODELS:
+        for overrides, trend in TREND_COLUMNS:
+            (key, value), marks = next(iter(overrides.items())), []
+            miss = TOTAL_FLAT_NEAR_LIFT_OFF_MISSES.get(model) if value == NEAR_LIFT_OFF else None
+            if miss:
+                reason = f"total R ratio {miss} at 3 kN (not within 5 %)"
+                marks = [pytest.mark.xfail(strict=True, reason=reason)]
+            out.append(
+                pytest.param(model, overrides, trend, id=f"{model}-{key}={value:g}", marks=marks)
+            )
+    return out
+
+
+@pytest.mark.parametrize(("model", "overrides", "trend"), _total_trend_params())
+def test_total_path_trend(gao_case_path, model, overrides, trend) -> None:
+    """Gao et al.'s trends for the path a thermal model sees, micro TCR plus macro-constriction
+    (R in K/W, not R″: the constriction has no apparent area). Every model rises after lift-off
+    (×1.24–1.40 at 5 kN): the constriction conductance of a patch goes as a ∝ Q^(1/3) and
+    dominates the micro TCR; the same Q^(1/3) makes every model rise 7.5–10 % by 3 kN."""
+    ratio = _total_ratio(str(gao_case_path), model, **overrides)
+    assert _reproduced(ratio, trend), f"{model} {overrides}: {ratio:.3f}"
+
+
+def test_macro_constriction_of_the_screw_rises_by_root_two_at_lift_off(gao_case_path) -> None:
+    """At lift-off half the balls carry 2^(3/2) times the load, so each of their patches is
+    2^(1/2) times as wide (Hertz, a ∝ Q^(1/3)) and the macro-constriction (A6, ∝ 1/a) of the
+    screw is 2 · 2^(-1/2) = √2 times its value under preload alone."""
+    path = str(gao_case_path)
+    ratios = {
+        name: _screw_paths(path, **{"operating.axial_load": LIFT_OFF})[2][name].macro / p.macro
+        for name, p in _screw_paths(path)[2].items()
+    }
+    assert ratios == pytest.approx(dict.fromkeys(ratios, math.sqrt(2.0)), rel=1e-3)
+
+
+# The manual's tables of *Why R rises or falls after lift-off* (contact-resistance.md), checked
+# against the same runs: the loads, each model's micro R and total R, the load exponents and
+# the total path's trends.
+LIFT_OFF_LOADS = (0.0, 1000.0, 2000.0, 3000.0, 4000.0, LIFT_OFF, 5000.0, 6000.0, 8000.0)
+MICRO_TABLE = "<!-- lift-off micro table: checked by tests/validation/test_tcr_trends.py -->"
+TOTAL_TABLE = "<!-- lift-off total table: checked by tests/validation/test_tcr_trends.py -->"
+EXPONENT_TABLE = "<!-- lift-off exponents: checked by tests/validation/test_tcr_trends.py -->"
+TOTAL_TREND_TABLE = "<!-- total path trends: checked by tests/validation/test_tcr_trends.py -->"
+
+
+def _marked_table(marker: str) -> list[dict[str, str]]:
+    """The rows (header → cell) of the manual's table that follows ``marker``."""
+    text = MANUAL.read_text(encoding="utf-8")
+    lines = text[text.index(marker) :].splitlines()[1:]
+    header = [c.strip() for c in lines[0].strip("|").split("|")]
+    rows = []
+    for line in lines[2:]:
+        if not line.startswith("|"):
+            break
+        rows.append(dict(zip(header, (c.strip() for c in line.strip("|").split("|")), strict=True)))
+    return rows
+
+
+def _exponent(case_path: str, model: str, low: float, high: float, part: int | None) -> float:
+    """d ln g/d ln Q of one ball of nut 1 between the axial loads ``low`` and ``high`` (secant):
+    g = 1/R of the ball's micro TCR (``part`` 0), macro-constriction (1) or both in series."""
+    (_, q0, p0), (_, q1, p1) = (
+        _screw_paths(case_path, **{"operating.axial_load": f}) for f in (low, high)
+    )
+    r0, r1 = (sum(p[model].ball) if part is None else p[model].ball[part] for p in (p0, p1))
+    return -math.log(r1 / r0) / math.log(q1 / q0)
+
+
+EXPONENT_COLUMNS = {  # header → (low, high, part) of :func:`_exponent`
+    "micro 0 → lift-off": (0.0, LIFT_OFF, 0),
+    "micro lift-off → 8 kN": (LIFT_OFF, 8000.0, 0),
+    "macro": (0.0, 8000.0, 1),
+    "total 0 → lift-off": (0.0, LIFT_OFF, None),
+    "total lift-off → 8 kN": (LIFT_OFF, 8000.0, None),
+}
+
+
+def _load_row(case_path: str, cell: str) -> tuple[tuple[float, float], float, dict[str, ScrewPath]]:
+    """The runs of the manual's row whose axial load [N] is ``cell``."""
+    (load,) = (f for f in LIFT_OFF_LOADS if abs(f - float(cell)) < 1.0)
+    return _screw_paths(case_path, **{"operating.axial_load": load})
+
+
+def test_manual_lift_off_tables_are_what_the_models_give(gao_case_path) -> None:
+    """The manual's loads, nut forces, micro, macro and total R (to 4 digits), load exponents
+    (to 0.001) and total-path trends (ratio to 0.001, mark, count) are the runs above."""
+    path = str(gao_case_path)
+    micro, total = _marked_table(MICRO_TABLE), _marked_table(TOTAL_TABLE)
+    assert [float(r["F_a [N]"]) for r in micro] == pytest.approx(LIFT_OFF_LOADS, abs=1.0)
+    assert [r["F_a [N]"] for r in total] == [r["F_a [N]"] for r in micro]
+    for row, total_row in zip(micro, total, strict=True):
+        forces, ball_load, paths = _load_row(path, row["F_a [N]"])
+        assert float(row["F_1 [N]"]) == pytest.approx(forces[0], abs=0.5)
+        assert float(row["F_2 [N]"]) == pytest.approx(forces[1], abs=0.5)
+        assert float(row["Q_1 [N]"]) == pytest.approx(ball_load, abs=0.01)
+        assert float(total_row["macro"]) == pytest.approx(paths["CMY"].macro, rel=1e-3)
+        for model in MODELS:
+            assert float(row[model]) == pytest.approx(paths[model].micro, rel=1e-3), model
+            assert float(total_row[model]) == pytest.approx(paths[model].total, rel=1e-3), model
+    exponents = {r["model"].strip("`"): r for r in _marked_table(EXPONENT_TABLE)}
+    assert sorted(exponents) == sorted(MODELS)
+    for model, row in exponents.items():
+        for column, (low, high, part) in EXPONENT_COLUMNS.items():
+            value = _exponent(path, model, low, high, part)
+            assert float(row[column]) == pytest.approx(value, abs=1e-3), (model, column)
+    trends = {r["model"].strip("`"): list(r.values())[1:] for r in _marked_table(TOTAL_TREND_TABLE)}
+    assert sorted(trends) == sorted(MODELS)
+    for model, cells in trends.items():
+        for cell, (overrides, trend) in zip(cells, TREND_COLUMNS, strict=False):
+            ratio = _total_ratio(path, model, **overrides)
+            value, mark = cell.split()
+            assert float(value) == pytest.approx(ratio, abs=1e-3), (model, overrides)
+            assert mark == ("✓" if _reproduced(ratio, trend) else "✗"), (model, overrides)
+        assert int(cells[-1]) == sum("✓" in cell for cell in cells[:-1]), model
 
 
 #: The supplies of the film-path checks: grease at the meniscus m = 1.5 (the grease default
@@ -300,9 +450,6 @@ def _film_paths(case_path: str, axial_load: float, supply: str) -> tuple[float, 
     result = ballscrew.screw_tcr(case)
     without = [p.without_film for p in result.heat_paths() if p.without_film < float("inf")]
     return result.heat_path_resistance, 1.0 / sum(1.0 / r for r in without)
-
-
-LIFT_OFF = 2**1.5 * PRELOAD
 
 
 @pytest.mark.parametrize(
@@ -342,3 +489,43 @@ def test_film_path_of_a_replenished_grease_track_halves_the_rise_after_lift_off(
     assert base < base_off
     assert ratios == pytest.approx([1.221, 1.187], rel=0.02)
     assert all(1.0 < r < w for r, w in zip(ratios, without, strict=True))
+
+
+CELL_TABLE = "<!-- lift-off cell sizes: checked by tests/validation/test_tcr_trends.py -->"
+CELL_COLUMNS = {  # header → (axial load, part of ScrewPath) of the ratio to 0 kN
+    "micro lift-off/0": (LIFT_OFF, "micro"),
+    "micro 5 kN/0": (5000.0, "micro"),
+    "total lift-off/0": (LIFT_OFF, "total"),
+    "total 5 kN/0": (5000.0, "total"),
+}
+
+
+def test_manual_cell_size_table_is_what_v2_gives(gao_case_path) -> None:
+    """The paper's cell model V2 at each Δ_f of the manual's table: micro R at 0 kN (4 digits)
+    and the ratios (0.001) of the micro and total R after lift-off; the micro step grows with
+    the cell, the total step does not (within 0.5 % of its mean)."""
+    path, totals = str(gao_case_path), []
+    for row in _marked_table(CELL_TABLE):
+        cell = {"tcr.cell_size": float(row["Δ_f [µm]"]) * 1e-6}
+        base = _screw_paths(path, **cell)[2]["V2"]
+        assert float(row["micro R 0 kN [K/W]"]) == pytest.approx(base.micro, rel=1e-3)
+        for column, (load, part) in CELL_COLUMNS.items():
+            after = _screw_paths(path, **cell, **{"operating.axial_load": load})[2]["V2"]
+            ratio = getattr(after, part) / getattr(base, part)
+            assert float(row[column]) == pytest.approx(ratio, abs=1e-3), (row, column)
+        totals.append(float(row["total lift-off/0"]))
+    steps = [float(r["micro lift-off/0"]) for r in _marked_table(CELL_TABLE)]
+    assert steps == sorted(steps)
+    assert totals == pytest.approx([np.mean(totals)] * len(totals), rel=0.005)
+
+
+def test_elastic_load_share_moves_the_total_path_by_percent_not_its_trend(gao_case_path) -> None:
+    """``loads.distribution = "elastic"`` takes every ball at the most loaded one's load
+    (1.036 × the mean at 0 kN): CMY's total path 1.462 → 1.441 K/W at 0 kN and 1.813 → 1.779
+    K/W at 5 kN, and the rise after lift-off within 1 % of the uniform share's (1.240)."""
+    path, elastic = str(gao_case_path), {"loads.distribution": "elastic"}
+    base = _screw_paths(path, **elastic)[2]["CMY"].total
+    loaded = _screw_paths(path, **elastic, **{"operating.axial_load": 5000.0})[2]["CMY"].total
+    assert (base, loaded) == pytest.approx((1.441, 1.779), rel=1e-3)
+    uniform = _total_ratio(path, "CMY", **{"operating.axial_load": 5000.0})
+    assert loaded / base == pytest.approx(uniform, rel=0.01)
