@@ -19,7 +19,8 @@ case's ``[lubrication]`` section. SI units.
 [UNVERIFIED: the coefficients of the correlations are as quoted in the secondary literature;
 the original papers were not available to check them. The SKF factor's form and its K_rs (3e-8
 oil bath or jet, 6e-8 grease or oil–air) agree in three independent public reproductions of the
-catalogue formula; the catalogue page itself was not read.]
+catalogue formula; the catalogue page itself was not read. The thin-layer law's form was read
+in a secondary summary of Lugt (2013), its r and γ are ASSUMED (:func:`layer_starvation_factor`).]
 """
 
 from __future__ import annotations
