@@ -268,3 +268,30 @@ def test_loaded_film_of_a_sphere_equals_the_radial_integral_of_johnsons_gap() ->
     reference, _ = quad(lambda r: 2.0 * math.pi * r * lam / (h0 + gap(r)), a, outer, limit=200)
     found = loaded_film_conductance(lam, radius, radius, contact, h0, h_max)
     assert found == pytest.approx(reference, rel=1e-6)
+
+
+def test_layer_fed_track_is_wetted_out_to_the_layer() -> None:
+    """A track fed by a known oil layer (lubrication.inlet_layer) is wetted where the gap has
+    closed to the layer: h_max = max(h0, h_oil) at every loaded contact, below the flooded edge."""
+    layer = 2e-6
+    case = load_case(
+        EXAMPLE,
+        {
+            **COARSE,
+            **PAPER_CELLS,
+            "tcr.film_path": "meniscus",
+            "lubrication.supply": "starved",
+            "lubrication.inlet_layer": layer,
+        },
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fed = screw_tcr(case)
+    flooded = _tcr(0.0, "meniscus")
+    pairs = [(f, g) for f in fed.films for g in flooded.films if f.index == g.index and f.loaded]
+    assert pairs
+    for f, g in pairs:
+        for side in ("screw", "nut"):
+            path, wide = getattr(f, side), getattr(g, side)
+            assert path.h_max == pytest.approx(max(path.h0, layer), rel=1e-12)
+            assert path.h_max < wide.h_max and path.conductance < wide.conductance

@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 import math
 
+import numpy as np
 import pytest
 
 from ballscrew.contact.hertz import hamrock_brewe
@@ -15,7 +16,9 @@ from ballscrew.lubrication.film_corrections import (
     REPLENISHMENT_GREASE,
     REPLENISHMENT_OIL,
     critical_inlet_ratio,
+    dowson_higginson_density,
     equivalent_inlet_ratio,
+    layer_starvation_factor,
     replenishment_factor,
     starvation_factor,
     thermal_loading,
@@ -166,3 +169,65 @@ def test_equivalent_inlet_ratio_inverts_the_starvation_law(central):
     assert equivalent_inlet_ratio(1.0, m_star, central) == m_star
     with pytest.raises(InputError, match=r"^starvation_factor = "):
         equivalent_inlet_ratio(1.2, m_star, central)
+
+
+# thin-layer starvation: Chevalier et al. (1998), Damiens et al. (2004)
+
+
+def test_dowson_higginson_density_closed_form_and_limits():
+    assert dowson_higginson_density(0.0) == 1.0
+    assert dowson_higginson_density(1e9) == pytest.approx(1.0 + 0.6 / 2.7, rel=1e-12)  # 1.222
+    assert dowson_higginson_density(1e18) == pytest.approx(1.0 + 0.6 / 1.7, rel=1e-8)
+    with pytest.raises(InputError, match="pressure"):
+        dowson_higginson_density(-1.0)
+
+
+@pytest.mark.parametrize("gamma", [1.0, 2.0, 3.0, 15.0])
+def test_layer_starvation_at_r_equal_one_is_the_closed_form(gamma):
+    # r = h_oil/(ρ̄ h_ff) = 1: h_c/h_ff = 1/2^(1/γ)
+    rho, h_ff = 1.25, 200e-9
+    phi = layer_starvation_factor(rho * h_ff, h_ff, rho, gamma)
+    assert phi == pytest.approx(2.0 ** (-1.0 / gamma), rel=1e-13)
+
+
+def test_layer_starvation_limits_flooded_and_mass_conservation():
+    rho, h_ff = 1.2, 150e-9
+    # a thick layer gives the fully flooded film, also far beyond float overflow of r^γ
+    r = 1e-3 / (rho * h_ff)
+    assert layer_starvation_factor(1e-3, h_ff, rho) == pytest.approx(1.0 - r**-3 / 3, abs=1e-15)
+    assert layer_starvation_factor(1e300, 1e-300, 1.0) == 1.0
+    # a thin layer: all the oil passes, h_c → h_oil/ρ̄ (to O(r^(γ+1)))
+    for h_oil in (1e-9, 1e-10, 1e-12):
+        h_c = h_ff * layer_starvation_factor(h_oil, h_ff, rho)
+        assert h_c == pytest.approx(h_oil / rho, rel=1e-6)
+        assert h_c <= h_oil / rho * (1.0 + 1e-14)  # never more film than oil
+    assert layer_starvation_factor(1e-300, 1.0, 1.0) == pytest.approx(1e-300, rel=1e-12)
+    assert layer_starvation_factor(0.0, h_ff, rho) == 0.0
+    assert layer_starvation_factor(1e-7, 0.0, rho) == 1.0  # no film to starve
+
+
+def test_layer_starvation_is_monotone_and_sharpens_to_min_r_1_as_gamma_grows():
+    rho, h_ff = 1.2, 150e-9
+    layers = np.geomspace(1e-10, 1e-4, 200)
+    phi = np.array([layer_starvation_factor(h, h_ff, rho) for h in layers])
+    assert np.all(np.diff(phi) > 0.0) and np.all((phi > 0.0) & (phi < 1.0))
+    r = layers / (rho * h_ff)
+    assert np.all(phi < np.minimum(r, 1.0))  # below both bounds: the oil and the flooded film
+    sharp = np.array([layer_starvation_factor(h, h_ff, rho, 1e4) for h in layers])
+    np.testing.assert_allclose(sharp, np.minimum(r, 1.0), rtol=1e-3)
+
+
+@pytest.mark.parametrize(
+    ("args", "field"),
+    [
+        ((-1e-9, 1e-7, 1.2), "inlet_layer"),
+        ((float("nan"), 1e-7, 1.2), "inlet_layer"),
+        ((1e-7, -1e-7, 1.2), "film"),
+        ((1e-7, 1e-7, 0.0), "density_ratio"),
+        ((1e-7, 1e-7, 1.2, 0.0), "starvation_exponent"),
+    ],
+)
+def test_layer_starvation_bad_input_is_a_one_line_error(args, field):
+    with pytest.raises(InputError) as err:
+        layer_starvation_factor(*args)
+    assert str(err.value).startswith(field) and "\n" not in str(err.value)

@@ -3,19 +3,24 @@
 from __future__ import annotations
 
 import itertools
+import json
 import math
 
 import pytest
+from typer.testing import CliRunner
 
 import ballscrew
 from ballscrew.analyses.friction import friction_torque
 from ballscrew.analyses.kinematics import ball_model
 from ballscrew.analyses.parameters import ScrewParameters, track_replenishment
 from ballscrew.case import CaseError
+from ballscrew.cli import app
 from ballscrew.contact.hertz import hamrock_brewe
+from ballscrew.errors import InputError
 from ballscrew.lubrication import hamrock_dowson
 from ballscrew.lubrication.film_corrections import (
     critical_inlet_ratio,
+    dowson_higginson_density,
     thermal_loading,
     thermal_reduction_gupta,
 )
@@ -162,6 +167,23 @@ def test_case_supply_thins_the_film_of_every_chain(wear_case_path):
         ({"lubrication.supply": "starved", "lubrication.inlet_ratio": 0.5}, "inlet_ratio"),
         ({"lubrication.supply": "oil bath"}, "supply"),
         ({"lubrication.inlet_ratio": 2.0}, "not allowed with supply = 'flooded'"),
+        ({"lubrication.inlet_layer": "0.2 um"}, "inlet_layer = 2e-07 m is not allowed with"),
+        (
+            {"lubrication.supply": "starved", "lubrication.inlet_layer": "-0.1 um"},
+            "inlet_layer",
+        ),
+        (
+            {"lubrication.supply": "grease", "lubrication.inlet_layer": "2 mm"},
+            "inlet_layer",
+        ),
+        (
+            {
+                "lubrication.supply": "starved",
+                "lubrication.inlet_ratio": 2.0,
+                "lubrication.inlet_layer": "0.2 um",
+            },
+            "not allowed with inlet_ratio",
+        ),
     ],
 )
 def test_bad_supply_is_a_one_line_error(wear_case_path, overrides, text):
@@ -169,3 +191,97 @@ def test_bad_supply_is_a_one_line_error(wear_case_path, overrides, text):
         ballscrew.load_case(wear_case_path, overrides)
     message = str(err.value)
     assert text in message and "\n" not in message.strip()
+
+
+# a known oil layer on the track: Chevalier et al. (1998), Damiens et al. (2004)
+
+
+def test_layer_fed_film_is_the_thin_layer_law_of_the_flooded_film():
+    flooded = hamrock_dowson(*ARGS)
+    rho = dowson_higginson_density(hamrock_brewe(RX, RY, 0.5 * E_PRIME, Q).p0)
+    assert 1.1 < rho < 1.3  # p_h ≈ 1 GPa on the reference contact
+    layer = rho * flooded.central  # r = 1: h_c/h_c,ff = 2^(−1/3)
+    film = supplied_film_model("hamrock_dowson", inlet_layer=layer)(*ARGS)
+    assert film.central == pytest.approx(2.0 ** (-1.0 / 3.0) * flooded.central, rel=1e-12)
+    assert film.minimum / film.central == pytest.approx(flooded.minimum / flooded.central)
+
+
+def test_layer_fed_film_limits_and_monotone_in_the_layer():
+    flooded = hamrock_dowson(*ARGS)
+    rho = dowson_higginson_density(hamrock_brewe(RX, RY, 0.5 * E_PRIME, Q).p0)
+    films = [
+        supplied_film_model("hamrock_dowson", inlet_layer=h)(*ARGS).central
+        for h in (1e-3, 1e-6, 1e-7, 3e-8, 1e-8, 1e-9, 0.0)
+    ]
+    assert films[0] == pytest.approx(flooded.central, rel=1e-9)  # flooded
+    assert all(b < a for a, b in itertools.pairwise(films))
+    assert films[-2] == pytest.approx(1e-9 / rho, rel=1e-3)  # h_c → h_oil/ρ̄
+    assert films[-1] == 0.0
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"inlet_layer": -1e-9}, "lubrication.inlet_layer"),
+        ({"inlet_layer": 1e-7, "inlet_ratio": 2.0}, "lubrication.inlet_layer"),
+    ],
+)
+def test_bad_layer_is_a_one_line_input_error(kwargs, field):
+    with pytest.raises(InputError) as err:
+        supplied_film_model("hamrock_dowson", **kwargs)
+    assert str(err.value).startswith(field) and "\n" not in str(err.value)
+
+
+def test_case_layer_starves_and_replaces_the_grease_replenishment(wear_case_path):
+    starved = _case(
+        wear_case_path, {"lubrication.supply": "starved", "lubrication.inlet_layer": "50 nm"}
+    )
+    assert (
+        starved.lubrication.layer == pytest.approx(50e-9) and starved.lubrication.meniscus is None
+    )
+    grease = _case(
+        wear_case_path, {"lubrication.supply": "grease", "lubrication.inlet_layer": "50 nm"}
+    )
+    assert not grease.lubrication.replenished and grease.lubrication.layer == pytest.approx(50e-9)
+    assert track_replenishment(grease, 870.0) is None
+    flooded = ball_model(_case(wear_case_path, {})).film(60.0, 0.5).central
+    thin = ball_model(starved).film(60.0, 0.5).central
+    assert thin < flooded and thin < 50e-9  # cannot exceed the oil of the layer
+    assert ball_model(grease).film(60.0, 0.5).central == pytest.approx(thin, rel=1e-12)
+
+
+def test_operating_point_film_falls_as_the_layer_thins_and_bad_layer_exits_2(
+    tmp_path, gao_case_path
+):
+    runner = CliRunner()
+
+    def film(*sets):
+        out = tmp_path / f"op{len(list(tmp_path.iterdir()))}"
+        args = ["operating-point", str(gao_case_path), "--out", str(out), "--curve-points", "0"]
+        result = runner.invoke(app, [*args, *(a for s in sets for a in ("--set", s))])
+        assert result.exit_code == 0, result.output
+        return json.loads((out / "summary.json").read_text())["film_thickness"]["value"]
+
+    flooded = film()
+    layers = ("1 um", "200 nm", "50 nm")
+    films = [film("lubrication.supply=starved", f"lubrication.inlet_layer={h}") for h in layers]
+    assert flooded > films[0] > films[1] > films[2] > 0.0
+    assert films[2] < 50e-9 / 1.2  # below h_oil/ρ̄
+    out = tmp_path / "bad"
+    bad = runner.invoke(
+        app,
+        [
+            "operating-point",
+            str(gao_case_path),
+            "--out",
+            str(out),
+            "--set",
+            "lubrication.supply=starved",
+            "--set",
+            "lubrication.inlet_layer=-1e-7",
+        ],
+    )
+    assert bad.exit_code == 2
+    assert "inlet_layer" in bad.output and "Traceback" not in bad.output
+    assert len(bad.output.strip().splitlines()) == 1
+    assert not out.exists()

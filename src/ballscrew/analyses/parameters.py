@@ -142,7 +142,9 @@ def film_model(case: Case, named: LubricantState | None) -> str | FilmModel:
         oil = named or library_lubricant("iso_vg_68").at(spec.temperature)
         thermal = (oil.temperature_viscosity, oil.conductivity)
     replenishment = track_replenishment(case, oil_density(named))
-    return supplied_film_model(case.medium.film_model, spec.meniscus, thermal, replenishment)
+    return supplied_film_model(
+        case.medium.film_model, spec.meniscus, thermal, replenishment, spec.layer
+    )
 
 
 def oil_density(named: LubricantState | None) -> float:

@@ -136,8 +136,12 @@ def _separation(params: ScrewParameters, case: Case, raceway: RacewayTCR, side: 
 
 def _edge(params: ScrewParameters, case: Case, side: Side, raceway: RacewayTCR, h0: float) -> float:
     """h_max: the gap at the inlet meniscus of a starved or greased supply, else (flooded, or a
-    meniscus beyond it) the groove-bottom clearance [m]."""
+    meniscus beyond it) the groove-bottom clearance [m]. Fed by an oil layer h_oil,∞, the
+    meniscus stands where the gap has closed to the layer (ASSUMED, mass conservation of a
+    layer that fills the gap: Chevalier et al. 1998): h_max = max(h0, h_oil,∞)."""
     clearance = _clearance(params, side)
+    if case.lubrication.layer is not None:
+        return min(clearance, max(h0, case.lubrication.layer))
     m = case.lubrication.meniscus
     if m is None and case.lubrication.replenished:
         m = _replenished_meniscus(params, case, raceway, side)

@@ -9,6 +9,8 @@ Example::
     supply = "starved"          # "flooded" (default), "starved" or "grease"
     inlet_ratio = 2.0           # inlet meniscus distance / Hertz semi-axis b (starved; grease
                                 # without it: SKF kinematic replenishment)
+    # inlet_layer = "0.2 um"    # or instead: the oil layer on the track ahead of the contact
+                                # (Chevalier et al. 1998 thin-layer starvation)
     thermal = true              # inlet shear-heating reduction (Gupta et al. 1992)
     temperature = "40 degC"     # inlet temperature of the named lubricant's properties
 """
@@ -69,8 +71,9 @@ class LubricationSpec(Model):
     supply: Supply = Field(
         "flooded",
         description="flooded: Hamrock–Dowson film; starved: inlet meniscus at inlet_ratio "
-        "(Hamrock & Dowson 1977, IV); grease: base-oil film, starved by kinematic "
-        "replenishment (SKF 2013 φ_rs, K_rs = 6e-8) or, given inlet_ratio, at that meniscus",
+        "(Hamrock & Dowson 1977, IV) or oil layer inlet_layer on the track (Chevalier et al. "
+        "1998); grease: base-oil film, starved by kinematic replenishment (SKF 2013 φ_rs, "
+        "K_rs = 6e-8) or, given inlet_ratio or inlet_layer, by that meniscus or layer",
     )
     inlet_ratio: (
         Annotated[
@@ -86,6 +89,17 @@ class LubricationSpec(Model):
         ]
         | None
     ) = None
+    inlet_layer: (
+        quantity(
+            "length",
+            "oil layer thickness h_oil on the track ahead of a contact (starved or grease, "
+            "instead of inlet_ratio): h_c/h_c,ff = r/(1 + r^3)^(1/3), r = h_oil/(rho_bar h_c,ff) "
+            "(Chevalier et al. 1998; exponent 3 [ASSUMED])",
+            ge=0,
+            le=1e-3,
+        )
+        | None
+    ) = None
     thermal: bool = Field(
         False, description="reduce the film for inlet shear heating (Gupta et al. 1992)"
     )
@@ -98,15 +112,23 @@ class LubricationSpec(Model):
 
     @model_validator(mode="after")
     def _inlet_for_starved(self) -> LubricationSpec:
-        if self.supply == "starved" and self.inlet_ratio is None:
+        if self.inlet_ratio is not None and self.inlet_layer is not None:
             raise ValueError(
-                "inlet_ratio is missing: supply = 'starved' needs the inlet meniscus ratio m >= 1"
+                f"inlet_layer = {self.inlet_layer:g} m is not allowed with inlet_ratio = "
+                f"{self.inlet_ratio:g}: give the inlet meniscus or the oil layer, not both"
             )
-        if self.supply == "flooded" and self.inlet_ratio is not None:
+        if self.supply == "starved" and self.inlet_ratio is None and self.inlet_layer is None:
             raise ValueError(
-                f"inlet_ratio = {self.inlet_ratio:g} is not allowed with supply = "
-                "'flooded': use 'starved' or 'grease'"
+                "inlet_ratio is missing: supply = 'starved' needs the inlet meniscus ratio m >= 1 "
+                "or the oil layer inlet_layer >= 0 m"
             )
+        for key in ("inlet_ratio", "inlet_layer"):
+            value = getattr(self, key)
+            if self.supply == "flooded" and value is not None:
+                raise ValueError(
+                    f"{key} = {value:g}{' m' if key == 'inlet_layer' else ''} is not allowed "
+                    "with supply = 'flooded': use 'starved' or 'grease'"
+                )
         return self
 
     @property
@@ -115,7 +137,12 @@ class LubricationSpec(Model):
         return None if self.supply == "flooded" else self.inlet_ratio
 
     @property
+    def layer(self) -> float | None:
+        """The oil layer h_oil,∞ [m] on the track of a starved or greased supply (None else)."""
+        return None if self.supply == "flooded" else self.inlet_layer
+
+    @property
     def replenished(self) -> bool:
-        """True for a greased supply without an inlet ratio: its film is thinned by the
-        kinematic replenishment of the track (SKF 2013)."""
-        return self.supply == "grease" and self.inlet_ratio is None
+        """True for a greased supply with neither an inlet ratio nor an oil layer: its film is
+        thinned by the kinematic replenishment of the track (SKF 2013)."""
+        return self.supply == "grease" and self.inlet_ratio is None and self.inlet_layer is None

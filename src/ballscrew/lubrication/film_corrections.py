@@ -6,6 +6,9 @@ All multiply the film of :func:`ballscrew.lubrication.film.hamrock_dowson` by a 
   for line contacts in pure rolling;
 * starvation by an inlet meniscus closer than the critical distance: Hamrock & Dowson (1977,
   Part IV);
+* starvation by a thin oil layer on the track: the film-reduction law of Chevalier, Lubrecht,
+  Cann, Colin & Dalmaz (1998), as used for elliptical contacts by Damiens, Venner, Cann &
+  Lubrecht (2004);
 * kinematic starvation of a track that the oil has too little time to replenish between
   overrollings: the reduction factor φ_rs of the SKF model of the frictional moment (SKF Group,
   *Rolling bearings*, PUB BU/P1 10000/2 EN, 2013).
@@ -16,7 +19,8 @@ case's ``[lubrication]`` section. SI units.
 [UNVERIFIED: the coefficients of the correlations are as quoted in the secondary literature;
 the original papers were not available to check them. The SKF factor's form and its K_rs (3e-8
 oil bath or jet, 6e-8 grease or oil–air) agree in three independent public reproductions of the
-catalogue formula; the catalogue page itself was not read.]
+catalogue formula; the catalogue page itself was not read. The thin-layer law's form was read
+in a secondary summary of Lugt (2013), its r and γ are ASSUMED (:func:`layer_starvation_factor`).]
 """
 
 from __future__ import annotations
@@ -30,8 +34,11 @@ __all__ = [
     "REPLENISHMENT_GEOMETRY",
     "REPLENISHMENT_GREASE",
     "REPLENISHMENT_OIL",
+    "STARVATION_EXPONENT",
     "critical_inlet_ratio",
+    "dowson_higginson_density",
     "equivalent_inlet_ratio",
+    "layer_starvation_factor",
     "replenishment_factor",
     "starvation_factor",
     "thermal_loading",
@@ -47,6 +54,12 @@ REPLENISHMENT_GREASE = 6e-8
 #: K_Z, the SKF geometry constant of four-point contact ball bearings (same source): ASSUMED for
 #: the Gothic-arch groove of a ball screw, whose balls touch each raceway at ±β as they do.
 REPLENISHMENT_GEOMETRY = 3.1
+#: γ of the thin-layer starvation law (:func:`layer_starvation_factor`): ASSUMED 3, the value
+#: quoted for circular contacts (Lugt 2013, *Grease Lubrication in Rolling Bearings*, §9 on
+#: the starvation model of Damiens et al. 2004: γ ≈ 3 circular, up to ≈ 15 for wide elliptical
+#: contacts). The lowest value of that range gives the most gradual, i.e. the thinnest, film at
+#: r ≈ 1; the published dependence of γ on M, L and the ellipticity was not read.
+STARVATION_EXPONENT = 3.0
 
 
 def thermal_loading(
@@ -172,3 +185,51 @@ def replenishment_factor(
     k_rs = nonnegative("replenishment_constant", constant)
     k_z = positive("replenishment_geometry", geometry)
     return math.exp(-k_rs * nu * n * d_sum * math.sqrt(k_z / (2.0 * d_diff)))
+
+
+def dowson_higginson_density(pressure: float) -> float:
+    """ρ̄ = ρ(p)/ρ₀ = 1 + 0.6 p/(1 + 1.7 p), p in GPa [-] (Dowson & Higginson 1966).
+
+    The compressibility of a mineral oil at gauge pressure ``pressure`` p [Pa]; 1.22 at 1 GPa,
+    → 1 + 0.6/1.7 = 1.353 as p → ∞.
+    """
+    p = nonnegative("pressure", pressure, "Pa") * 1e-9
+    return 1.0 + 0.6 * p / (1.0 + 1.7 * p)
+
+
+def layer_starvation_factor(
+    layer: float, film: float, density_ratio: float, exponent: float = STARVATION_EXPONENT
+) -> float:
+    """h_c/h_c,ff = r/(1 + r^γ)^(1/γ),  r = h_oil,∞/(ρ̄ h_c,ff)  [-].
+
+    Film reduction of an EHL point contact fed by a uniform oil layer of thickness h_oil,∞ on
+    the track: Chevalier, F., Lubrecht, A. A., Cann, P. M. E., Colin, F. & Dalmaz, G. (1998),
+    "Film thickness in starved EHL point contacts", J. Tribol. 120(1):126–133; elliptical
+    contacts: Damiens, B., Venner, C. H., Cann, P. M. E. & Lubrecht, A. A. (2004), "Starved
+    lubrication of elliptical EHD contacts", J. Tribol. 126(1):105–111. ``layer`` h_oil,∞ [m]
+    (≥ 0); ``film`` h_c,ff ≥ 0, the fully flooded central film [m] (0: nothing to starve,
+    factor 1); ``density_ratio`` ρ̄ = ρ/ρ₀ of the oil in the contact
+    (:func:`dowson_higginson_density`); ``exponent`` γ > 0, the starvation (side-flow
+    resistance) parameter (:data:`STARVATION_EXPONENT`).
+
+    Limits: r → ∞ gives 1 (fully flooded); r → 0 gives h_c → h_oil,∞/ρ̄, all the oil of the
+    layer passing the contact (mass conservation); monotone in the layer.
+
+    [Read, in a secondary summary of Lugt (2013), *Grease Lubrication in Rolling Bearings*,
+    eq. 9.73: the form r/(1 + r^γ)^(1/γ) and γ ≈ 3 (circular) to 15 (wide elliptical). ASSUMED:
+    r = h_oil,∞/(ρ̄ h_c,ff) with ρ̄ at the Hertz peak pressure (the mass balance of the law's
+    r → 0 limit); the originals were not available.]
+    """
+    h_oil = nonnegative("inlet_layer", layer, "m")
+    h_ff = nonnegative("film", film, "m")
+    rho = positive("density_ratio", density_ratio)
+    gamma = positive("starvation_exponent", exponent)
+    if h_ff == 0.0:
+        return 1.0  # no film to starve (u_e = 0)
+    r = h_oil / (rho * h_ff)
+    if r == 0.0:
+        return 0.0
+    # r/(1 + r^γ)^(1/γ) = (1 + r^−γ)^(−1/γ) = exp(−softplus(−γ ln r)/γ): no overflow at either end
+    x = -gamma * math.log(r)
+    softplus = x + math.log1p(math.exp(-x)) if x > 0.0 else math.log1p(math.exp(x))
+    return math.exp(-softplus / gamma)

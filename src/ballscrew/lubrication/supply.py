@@ -12,9 +12,13 @@ chains use wherever they take a film model:
 * φ_S — starvation, either by an inlet meniscus at m Hertz semi-axes from the contact centre,
   Hamrock & Dowson (1977, Part IV) (:func:`~ballscrew.lubrication.film_corrections.
   starvation_factor`, central and minimum films each with their own critical distance m*,
-  computed from the film before starvation), or by kinematic replenishment of the track
-  (:class:`Replenishment`, the factor φ_rs of the SKF model of the frictional moment, SKF Group,
-  *Rolling bearings*, 2013): the default of a greased contact.
+  computed from the film before starvation), or by a known oil layer h_oil,∞ on the track,
+  Chevalier et al. (1998) and Damiens et al. (2004) (:func:`~ballscrew.lubrication.
+  film_corrections.layer_starvation_factor`, from the central film before starvation and ρ̄
+  at the Hertz peak pressure, applied to the central and the minimum film alike), or by
+  kinematic replenishment of the track (:class:`Replenishment`, the factor φ_rs of the SKF
+  model of the frictional moment, SKF Group, *Rolling bearings*, 2013): the default of a
+  greased contact.
 """
 
 from __future__ import annotations
@@ -28,6 +32,8 @@ from ballscrew.lubrication.film_corrections import (
     REPLENISHMENT_GEOMETRY,
     REPLENISHMENT_GREASE,
     critical_inlet_ratio,
+    dowson_higginson_density,
+    layer_starvation_factor,
     replenishment_factor,
     starvation_factor,
     thermal_loading,
@@ -86,17 +92,25 @@ def supplied_film_model(
     inlet_ratio: float | None = None,
     thermal: tuple[float, float] | None = None,
     replenishment: Replenishment | None = None,
+    inlet_layer: float | None = None,
 ) -> str | FilmModel:
-    """``base`` corrected for a starved inlet at ``inlet_ratio`` m (None: flooded), for the
-    kinematic ``replenishment`` of the track (None: none) and, when ``thermal`` = (β [1/K],
+    """``base`` corrected for a starved inlet at ``inlet_ratio`` m or fed by an oil layer of
+    ``inlet_layer`` h_oil,∞ [m] on the track (at most one; None: flooded), for the kinematic
+    ``replenishment`` of the track (None: none) and, when ``thermal`` = (β [1/K],
     λ [W/(m K)]) of the lubricant at the inlet is given, for inlet shear heating. Nothing to
     correct returns ``base`` itself (a registered name stays a name)."""
-    if inlet_ratio is None and thermal is None and replenishment is None:
+    if inlet_ratio is None and thermal is None and replenishment is None and inlet_layer is None:
         return base
     if inlet_ratio is not None and not float(inlet_ratio) >= 1.0:
         raise InputError(
             "lubrication.inlet_ratio", inlet_ratio, ">= 1 (meniscus outside the Hertz zone)"
         )
+    if inlet_layer is not None:
+        if inlet_ratio is not None:
+            raise InputError(
+                "lubrication.inlet_layer", inlet_layer, "not together with inlet_ratio (give one)"
+            )
+        nonnegative("lubrication.inlet_layer", inlet_layer, "m")
     if thermal is not None:
         nonnegative("temperature_viscosity", thermal[0], "1/K")
         positive("conductivity", thermal[1], "W/(m K)")
@@ -125,6 +139,12 @@ def supplied_film_model(
             minimum *= starvation_factor(
                 inlet_ratio, critical_inlet_ratio(rx, b, out.minimum * minimum, False), False
             )
+        if inlet_layer is not None and hertz is not None:
+            supplied = layer_starvation_factor(
+                inlet_layer, out.central * central, dowson_higginson_density(hertz.p0)
+            )
+            central *= supplied
+            minimum *= supplied
         if replenishment is not None:
             supplied = replenishment.factor(viscosity, entrainment_speed)
             central *= supplied
