@@ -500,17 +500,21 @@ def _preload_interference(
     """ĝ at which nut 1 carries the preload with no external load (scaled units); ``b`` and
     ``rows``: the columns and balance rows of the nut's displacements (axial first).
 
-    Newton starts from equal ball loads with ĝ such that the median ball has the approach of
-    that load: the bodies' strain and the ring's widening at equal loads, a@q₀, reach several
-    Hertz approaches on a long nut, and a start with ĝ = q₀^(2/3) alone left one nut with no
-    loaded ball, where x and ĝ act alike and the Jacobian is singular (15 turns per nut failed).
+    Newton starts from equal ball loads with x̂ and ĝ such that the median ball *of each nut*
+    has the approach of that load: the bodies' strain and the ring's widening at equal loads,
+    a@q₀, reach several Hertz approaches on a long nut, of opposite sign on the two nuts, and a
+    start that leaves one nut with no loaded ball makes x̂ and ĝ act alike on the loaded balls,
+    so the Jacobian is singular (ĝ = q₀^(2/3) alone failed from 15 turns per nut on, ĝ from the
+    median over both nuts from 30 turns on). The approach of nut k is ±x̂ + ĝ + (a@q₀ + c).
     """
     n, m = b.shape
     sigma = b[:, 0]
     g = np.vstack([rows, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
     q0 = np.full(n, preload_hat)
-    g0 = preload_hat ** (2.0 / 3.0) - float(np.median(a @ q0 + c))
-    start = np.concatenate([q0, np.zeros(m), [g0]])
+    d0 = a @ q0 + c
+    median_1, median_2 = (float(np.median(d0[side])) for side in (sigma > 0, sigma < 0))
+    g0 = preload_hat ** (2.0 / 3.0) - 0.5 * (median_1 + median_2)
+    start = np.concatenate([q0, [0.5 * (median_2 - median_1)], np.zeros(m - 1), [g0]])
     f = np.zeros(m + 1)
     f[-1] = preload_hat
     y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law)
