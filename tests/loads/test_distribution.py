@@ -10,6 +10,7 @@ import pytest
 from ballscrew.errors import InputError
 from ballscrew.loads import ball_load, nut_forces
 from ballscrew.loads.distribution import (
+    LIFT_OFF_SEARCH,
     NutBodies,
     ball_layout,
     body_properties,
@@ -101,6 +102,16 @@ def test_lift_off_of_the_second_nut() -> None:
     assert beyond.nut_forces[0] == pytest.approx(1.05 * with_bodies, rel=1e-12)
     before = solve(0.95 * with_bodies)
     assert before.nut_forces[1] > 0.0
+
+
+def test_no_lift_off_where_soft_bars_keep_the_load_from_nut_2() -> None:
+    """Bars of E A = 5 MN (the shaft of a 40 mm screw is 190 MN) take an external load up
+    within nut 1's first turns: nut 2 still carries at LIFT_OFF_SEARCH F_p, so no lift-off
+    (inf), where the search stops instead of doubling on."""
+    soft = NutBodies(screw_rigidity=5e6, nut_rigidity=5e6)
+    assert lift_off_load(layout(), K, BETA, ALPHA, 1500.0, soft, rtol=1e-4) == math.inf
+    top = solve(LIFT_OFF_SEARCH * 1500.0, bodies=soft)
+    assert top.nut_forces[1] > 0.0
 
 
 def test_an_undersized_ball_lifts_off_alone() -> None:
