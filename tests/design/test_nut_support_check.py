@@ -130,10 +130,37 @@ def test_external_radial_loads_are_named_as_outside_the_makers_life_and_safety()
     case = case_from_dict(raw)
     with pytest.warns(ballscrew.analyses.design_check.DesignWarning, match="axial load alone"):
         result = design_check(case)
-    [warning] = [w for w in result.warnings if "nut_radial_load" in w]
+    [warning] = [w for w in result.warnings if "axial load alone" in w]
     params = ScrewParameters.from_case(case)
     dist = elastic_distribution(params, case.loads, result.root_diameter, 2000.0)
     largest = float(dist.loads.max())
     assert f"{largest:.4g} N" in warning
     assert np.allclose(dist.resultant[1:], [-3000.0, 0.0, 0.0, -20.0], atol=1e-6)
     assert "\n" not in warning
+
+
+def test_the_lift_off_with_bodies_has_the_cases_radial_load_and_errors() -> None:
+    """The report's lift-off with bodies is that of the distribution the case solves: with a
+    free nut's radial load and a lead error nut 2 still carries 0.1 % below it and not 0.1 %
+    above; it moves from the one without them, and the check warns that the margin's
+    2^1.5 F_p leaves them out, naming that lift-off (none without them)."""
+    assert not any("lift-off margin" in w for w in check("free").warnings)
+    lead_error = [0.0, 2e-6, 0.0] * 2  # per turn (3 turns per nut), both nuts
+    raw = raw_supported("free", nut_radial_load="500 N", lead_error=lead_error)
+    case = case_from_dict(raw)
+    with pytest.warns(ballscrew.analyses.design_check.DesignWarning, match="lift-off margin"):
+        result = design_check(case)
+    lift = result.stiffness_curve.attrs["lift_off_load_bodies_N"]
+    [warning] = [w for w in result.warnings if "lift-off margin" in w]
+    assert "loads.lead_error, loads.nut_radial_load" in warning
+    assert warning.endswith(f"at {lift * 1e-3:.4g} kN")
+    params = ScrewParameters.from_case(case)
+    spec, root = case.loads, result.root_diameter
+    g = elastic_distribution(params, spec, root, 0.0).interference
+    nut_2 = [
+        elastic_distribution(params, spec, root, f, g).nut_forces[1]
+        for f in (0.999 * lift, 1.001 * lift)
+    ]
+    assert nut_2[0] > 0.0 and nut_2[1] == 0.0
+    plain = check("free").stiffness_curve.attrs["lift_off_load_bodies_N"]
+    assert abs(lift / plain - 1.0) > 0.02

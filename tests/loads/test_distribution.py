@@ -10,6 +10,7 @@ import pytest
 from ballscrew.errors import InputError
 from ballscrew.loads import ball_load, nut_forces
 from ballscrew.loads.distribution import (
+    LIFT_OFF_SEARCH,
     NutBodies,
     ball_layout,
     body_properties,
@@ -103,6 +104,16 @@ def test_lift_off_of_the_second_nut() -> None:
     assert before.nut_forces[1] > 0.0
 
 
+def test_no_lift_off_where_soft_bars_keep_the_load_from_nut_2() -> None:
+    """Bars of E A = 5 MN (the shaft of a 40 mm screw is 190 MN) take an external load up
+    within nut 1's first turns: nut 2 still carries at LIFT_OFF_SEARCH F_p, so no lift-off
+    (inf), where the search stops instead of doubling on."""
+    soft = NutBodies(screw_rigidity=5e6, nut_rigidity=5e6)
+    assert lift_off_load(layout(), K, BETA, ALPHA, 1500.0, soft, rtol=1e-4) == math.inf
+    top = solve(LIFT_OFF_SEARCH * 1500.0, bodies=soft)
+    assert top.nut_forces[1] > 0.0
+
+
 def test_an_undersized_ball_lifts_off_alone() -> None:
     excess = np.zeros(180)
     excess[40] = -20e-6  # 20 µm smaller than its neighbours
@@ -179,3 +190,37 @@ def test_a_long_double_nut_converges() -> None:
         long_nut, K, BETA, ALPHA, 2000.0, 3030.0, BODIES, interference=rest.interference
     )
     assert loaded.nut_forces[0] - loaded.nut_forces[1] == pytest.approx(2000.0, rel=1e-10)
+
+
+@pytest.mark.parametrize(("turns", "support"), [(30, "guided"), (40, "free")])
+def test_a_30_and_40_turn_double_nut_converges(turns: int, support: str) -> None:
+    """591 and 788 balls per nut (the `ballscrew init` 40 × 10 starter at 10 × 3 and 10 × 4
+    turns): the bodies' strain of equal loads is ±5 Hertz approaches, of opposite sign on the
+    two nuts, and the preload start from the median over both nuts left nut 1 with no loaded
+    ball (singular Jacobian, from 30 turns on). Each nut's preload and the balance hold to
+    1e-10. As in a bolt and nut (Sopwith 1948) the bars concentrate the load at the ends it
+    enters by: the preload at the nuts' ends next to the spacer, the external load at nut 1's
+    loaded end; its far end and nut 2 hardly see the external load, so nut 2 barely unloads."""
+    balls = {30: 591, 40: 788}[turns]
+    long_nut = ball_layout(balls, 2, LEAD, D_M, BALL, ALPHA, LEAD)
+    fp = 10800.0
+    rest = solve_distribution(long_nut, K, BETA, ALPHA, 0.0, fp, BODIES, support=support)
+    assert rest.nut_forces == pytest.approx([fp, fp], rel=1e-10)
+    loaded = solve_distribution(
+        long_nut,
+        K,
+        BETA,
+        ALPHA,
+        20000.0,
+        fp,
+        BODIES,
+        interference=rest.interference,
+        support=support,
+    )
+    assert loaded.nut_forces[0] - loaded.nut_forces[1] == pytest.approx(20000.0, rel=1e-10)
+    if support == "free":
+        assert np.abs(loaded.resultant[1:]).max() < 1e-10 * 20000.0 * D_M
+    preloaded = rest.per_nut(rest.loads)[0]  # the preload flows in at the spacer end
+    assert preloaded[-1] > 10.0 * preloaded[0]
+    added = loaded.per_nut(loaded.loads - rest.loads)[0]  # the load at the loaded end
+    assert added[0] > 20.0 * added[-1] and loaded.nut_forces[1] > 0.9 * fp

@@ -31,6 +31,7 @@ from ballscrew.loads.distribution import (
     NutBodies,
     ball_layout,
     body_properties,
+    lift_off_load,
     loaded_contact_angle,
     solve_distribution,
 )
@@ -44,6 +45,7 @@ __all__ = [
     "ball_loads",
     "chain_ball_loads",
     "elastic_distribution",
+    "elastic_lift_off",
     "nut_model",
 ]
 
@@ -183,6 +185,40 @@ def elastic_distribution(
     if contact is not None:
         warn_above_table(contact, float(dist.loads.max()))
     return dist
+
+
+def elastic_lift_off(
+    params: ScrewParameters,
+    spec: LoadsSpec,
+    root_diameter: float | None = None,
+    numerics: NumericsSpec | None = None,
+    rtol: float = 1e-4,
+) -> float:
+    """Axial load [N] at which the last ball of the second loaded flank lifts off in the
+    distribution :func:`elastic_distribution` solves (contacts and bodies, the nut support, lead
+    and ball-diameter errors, a free nut's external radial load and moment); 0 with one loaded
+    flank, inf where none lifts off below ``LIFT_OFF_SEARCH`` × F_p
+    (:func:`~ballscrew.loads.distribution.lift_off_load`)."""
+    if params.flanks.count != 2:
+        return 0.0
+    layout, bodies = nut_model(params, spec, root_diameter)
+    g = params.geometry
+    with as_case_fields(_FIELDS):
+        return lift_off_load(
+            layout,
+            sum(params.hertz_constants),
+            g.contact_angle,
+            g.lead_angle,
+            params.preload,
+            bodies,
+            rtol,
+            contact=ball_contact_law(params, spec, numerics),
+            support=spec.nut_support,
+            lead_error=spec.lead_error or None,
+            ball_excess=spec.ball_diameter_error or None,
+            radial_load=spec.nut_radial_load,
+            tilting_moment=spec.nut_tilting_moment,
+        )
 
 
 def _root(case: Case) -> float | None:

@@ -25,7 +25,7 @@ import xarray as xr
 
 from ballscrew import design
 from ballscrew.analyses import design_check_report
-from ballscrew.analyses.ball_loads import elastic_distribution
+from ballscrew.analyses.ball_loads import elastic_distribution, elastic_lift_off
 from ballscrew.analyses.duty import moving_fraction
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
@@ -34,7 +34,7 @@ from ballscrew.case.design_spec import DesignSpec
 from ballscrew.errors import InputError
 from ballscrew.kinematics.limits import critical_speed, dn_value, groove_root_diameter
 from ballscrew.loads import preload_drag_torque
-from ballscrew.loads.distribution import Distribution
+from ballscrew.loads.distribution import LIFT_OFF_SEARCH, Distribution
 from ballscrew.units import format_number, format_quantity, in_display_units
 from ballscrew.validation import case_with
 
@@ -513,6 +513,32 @@ def _warn_external_loads(case: Case, loaded: Distribution | None) -> None:
     )
 
 
+def _warn_lift_off(case: Case, params: ScrewParameters, root: float) -> None:
+    """Warn that the lift-off margin's 2^1.5 F_p leaves out the case's lead and ball-diameter
+    errors and a free nut's external radial load and moment, naming the lift-off of the
+    distribution with them, the contacts and the bodies (:func:`elastic_lift_off`)."""
+    spec = case.loads
+    keys = ("lead_error", "ball_diameter_error", "nut_radial_load", "nut_tilting_moment")
+    given = [f"loads.{key}" for key in keys if getattr(spec, key)]
+    if params.flanks.count != 2 or not given:
+        return
+    lift = elastic_lift_off(params, spec, root, case.numerics)
+    part = loaded_part(case)
+    at = (
+        f"none below {format_quantity(LIFT_OFF_SEARCH * params.preload, 'N')}"
+        if math.isinf(lift)
+        else f"at {format_quantity(lift, 'N')}"
+    )
+    rigid = format_quantity(design.LIFT_OFF_FACTOR * params.preload, "N")
+    warnings.warn(
+        f"the lift-off margin's 2^1.5 F_p = {rigid} is that of a rigid nut without "
+        f"{', '.join(given)}; with them, the contacts and the bodies the last ball of the "
+        f"second {part} lifts off {at}",
+        DesignWarning,
+        stacklevel=3,
+    )
+
+
 def design_check(case: Case) -> DesignCheck:
     """Every design value of the case's screw with its margin (needs ``[design]``)."""
     spec = case_with(case, "screw", "operating", "design").design  # type: ignore[attr-defined]
@@ -583,6 +609,7 @@ def design_check(case: Case) -> DesignCheck:
     with recorded_warnings() as messages:
         _warn(margins, values, computed, spec, loaded_part(case))
         _warn_external_loads(case, loaded)
+        _warn_lift_off(case, params, root)
     return DesignCheck(
         case=case,
         margins=margins,

@@ -11,10 +11,10 @@ import numpy as np
 import xarray as xr
 
 from ballscrew import design
-from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution, nut_model
+from ballscrew.analyses.ball_loads import elastic_distribution, elastic_lift_off
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
-from ballscrew.loads.distribution import Distribution, lift_off_load
+from ballscrew.loads.distribution import LIFT_OFF_SEARCH, Distribution
 from ballscrew.plotting import legend_outside, pyplot, save_figure
 from ballscrew.units import in_display_units
 
@@ -147,27 +147,6 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     return loads, x, np.array([r.stiffness for r in runs])
 
 
-def _body_lift_off(result: DesignCheck) -> float:
-    """Axial load at which the last ball of the second loaded flank lifts off, contacts and
-    bodies, the case's nut support (0 with one loaded flank) [N]."""
-    params, spec = _params(result), result.case.loads
-    if params.flanks.count != 2:
-        return 0.0
-    layout, bodies = nut_model(params, spec, result.root_diameter)
-    g = params.geometry
-    return lift_off_load(
-        layout,
-        sum(params.hertz_constants),
-        g.contact_angle,
-        g.lead_angle,
-        params.preload,
-        bodies,
-        1e-4,
-        contact=ball_contact_law(params, spec, result.case.numerics),
-        support=spec.nut_support,
-    )
-
-
 def stiffness_curve(result: DesignCheck) -> xr.Dataset:
     """Nut displacement and stiffness against the axial load: Hertz contacts only, and the
     contacts with the elastic bodies, with units. Without preload the curves start one step
@@ -200,7 +179,9 @@ def stiffness_curve(result: DesignCheck) -> xr.Dataset:
         },
         attrs={
             "lift_off_load_N": lift_off,
-            "lift_off_load_bodies_N": _body_lift_off(result),
+            "lift_off_load_bodies_N": elastic_lift_off(
+                _params(result), result.case.loads, result.root_diameter, result.case.numerics
+            ),
             "preload_N": fp,
             "nut_support": result.case.loads.nut_support,
             "nuts": result.case.screw.nuts,
@@ -234,6 +215,9 @@ def _stiffness_figure(result: DesignCheck, path: Path) -> Path:
             at = curve.attrs[key] * 1e-3
             if 0 < at <= loads.max():
                 ax.axvline(at, ls="--", c=color, lw=0.8, label=text)
+            elif math.isinf(at):  # a long nut's bars keep the load from nut 2
+                beyond = LIFT_OFF_SEARCH * curve.attrs["preload_N"] * 1e-3
+                ax.plot([], [], ls="--", c=color, lw=0.8, label=f"{text}: none to {beyond:.4g} kN")
             elif at > 0:  # a free nut's tilt keeps balls loaded far beyond: said, not drawn
                 ax.plot([], [], ls="--", c=color, lw=0.8, label=f"{text} at {at:.4g} kN")
         ax.axvline(result.case.operating.axial_load * 1e-3, ls=":", c="C3", label="case")
@@ -426,8 +410,8 @@ def _support_note(result: DesignCheck) -> str:
             "(loads.nut_radial_load, nut_tilting_moment) by shifting and tilting on its balls "
             f"relative to the screw, given {at}; the lift-off with bodies is where the last ball "
             f"of the second {result.part} lifts off (the tilt keeps a few loaded long after "
-            f"that {result.part}'s force has nearly gone), without the lead and ball-diameter "
-            "errors or the external radial force and moment."
+            f"that {result.part}'s force has nearly gone), with the case's lead and "
+            "ball-diameter errors and external radial force and moment."
         )
     return (
         " Nut support guided: the helix places the balls unsymmetrically, and the nut's housing "
@@ -456,7 +440,9 @@ def sections(result: DesignCheck) -> list[Section]:
                 "capacity / demand: GREEN ≥ 1.25, AMBER ≥ 1, RED < 1. Speed and buckling against "
                 "the makers' 0.8 × critical speed and 0.5 × buckling load (THK, HIWIN). "
                 "A preloaded nut's largest axial load against the lift-off load 2^1.5 F_p, above "
-                f"which its second {result.part} runs unloaded, with backlash (HIWIN F 3.5-3.7); "
+                f"which its second {result.part} runs unloaded, with backlash (HIWIN F 3.5-3.7; "
+                "rigid bodies, no lead or ball-diameter errors, no radial load or moment: the "
+                "stiffness figure's lift-off with bodies has the case's); "
                 "a shaft fixed at both ends, pretensioned for the temperature rise, against its "
                 "permissible tension (THK A-694). The amber band of every margin is a GUESS.",
             ),

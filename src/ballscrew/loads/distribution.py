@@ -43,10 +43,11 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
 
 from ballscrew.backend import blas_single_thread
 from ballscrew.errors import ConvergenceError, InputError
@@ -57,6 +58,7 @@ from ballscrew.loads.rigid_nut import ball_directions, validate_support
 from ballscrew.validation import positive
 
 __all__ = [
+    "LIFT_OFF_SEARCH",
     "BallLayout",
     "Distribution",
     "NutBodies",
@@ -500,17 +502,21 @@ def _preload_interference(
     """ĝ at which nut 1 carries the preload with no external load (scaled units); ``b`` and
     ``rows``: the columns and balance rows of the nut's displacements (axial first).
 
-    Newton starts from equal ball loads with ĝ such that the median ball has the approach of
-    that load: the bodies' strain and the ring's widening at equal loads, a@q₀, reach several
-    Hertz approaches on a long nut, and a start with ĝ = q₀^(2/3) alone left one nut with no
-    loaded ball, where x and ĝ act alike and the Jacobian is singular (15 turns per nut failed).
+    Newton starts from equal ball loads with x̂ and ĝ such that the median ball *of each nut*
+    has the approach of that load: the bodies' strain and the ring's widening at equal loads,
+    a@q₀, reach several Hertz approaches on a long nut, of opposite sign on the two nuts, and a
+    start that leaves one nut with no loaded ball makes x̂ and ĝ act alike on the loaded balls,
+    so the Jacobian is singular (ĝ = q₀^(2/3) alone failed from 15 turns per nut on, ĝ from the
+    median over both nuts from 30 turns on). The approach of nut k is ±x̂ + ĝ + (a@q₀ + c).
     """
     n, m = b.shape
     sigma = b[:, 0]
     g = np.vstack([rows, np.where(sigma > 0, 1.0 / (n // 2), 0.0)])
     q0 = np.full(n, preload_hat)
-    g0 = preload_hat ** (2.0 / 3.0) - float(np.median(a @ q0 + c))
-    start = np.concatenate([q0, np.zeros(m), [g0]])
+    d0 = a @ q0 + c
+    median_1, median_2 = (float(np.median(d0[side])) for side in (sigma > 0, sigma < 0))
+    g0 = preload_hat ** (2.0 / 3.0) - 0.5 * (median_1 + median_2)
+    start = np.concatenate([q0, [0.5 * (median_2 - median_1)], np.zeros(m - 1), [g0]])
     f = np.zeros(m + 1)
     f[-1] = preload_hat
     y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law)
@@ -529,6 +535,12 @@ def loaded_contact_angle(
     return np.arccos(a * math.cos(contact_angle) / (a + d))
 
 
+LIFT_OFF_SEARCH = 2.0**1.5 * 2.0**7
+"""The lift-off search stops at this many times the preload (128 × the rigid nut's
+2^1.5 F_p): a long nut's bars keep an external load from its far end and nut 2 (a 30-turn
+nut's last ball there lifts off near 870 F_p, beyond any static load rating)."""
+
+
 def lift_off_load(
     layout: BallLayout,
     hertz_constant: float,
@@ -539,26 +551,48 @@ def lift_off_load(
     rtol: float = 1e-6,
     contact: TabulatedContact | None = None,
     support: str = "guided",
+    lead_error: ArrayLike | None = None,
+    ball_excess: ArrayLike | None = None,
+    radial_load: float = 0.0,
+    tilting_moment: float = 0.0,
 ) -> float:
-    """Axial load at which the last ball of nut 2 lifts off (bisection on F_2(F_a) = 0) [N].
+    """Axial load at which the last ball of nut 2 lifts off [N]; inf where nut 2 still
+    carries at LIFT_OFF_SEARCH × F_p.
 
-    ``contact`` (the tabulated law of a ball's contacts, None = Hertz) and ``support`` (the
-    nut's radial guidance) as in :func:`solve_distribution`.
+    The root of the largest approach of nut 2's balls, max_j δ_j(F_a) (positive while one of
+    them carries, continuous across the lift-off), by Brent's method (``xtol`` = ``rtol`` ×
+    the bracket's end) on a bracket doubled from 2^1.5 F_p, with the preload interference of
+    F_a = 0 kept. Every other argument as in :func:`solve_distribution`, so the lift-off is
+    that of the distribution the case solves (lead and ball-diameter errors, a free nut's
+    external radial load and tilting moment).
     """
     if layout.nuts != 2:
         raise InputError("nuts", layout.nuts, "2 (lift-off of the second nut)")
-    args = (hertz_constant, contact_angle, lead_angle)
-    solve = partial(solve_distribution, layout, *args, contact=contact, support=support)
-    g = solve(axial_load=0.0, preload=preload, bodies=bodies).interference
+    solve = partial(
+        solve_distribution,
+        layout,
+        hertz_constant,
+        contact_angle,
+        lead_angle,
+        preload=preload,
+        bodies=bodies,
+        lead_error=lead_error,
+        ball_excess=ball_excess,
+        contact=contact,
+        support=support,
+        radial_load=radial_load,
+        tilting_moment=tilting_moment,
+    )
+    g = solve(axial_load=0.0).interference
 
-    def unloaded(fa: float) -> bool:
-        dist = solve(axial_load=fa, preload=preload, bodies=bodies, interference=g)
-        return bool(dist.nut_forces[1] <= 0.0)
+    @cache
+    def approach(fa: float) -> float:
+        dist = solve(axial_load=fa, interference=g)
+        return float(dist.per_nut(dist.approach)[1].max())
 
     lo, hi = 0.0, 2.0**1.5 * preload
-    while not unloaded(hi):
+    while approach(hi) > 0.0:
+        if hi >= LIFT_OFF_SEARCH * preload:
+            return math.inf
         lo, hi = hi, 2.0 * hi
-    while hi - lo > rtol * hi:
-        mid = 0.5 * (lo + hi)
-        lo, hi = (lo, mid) if unloaded(mid) else (mid, hi)
-    return hi
+    return float(brentq(approach, lo, hi, xtol=rtol * hi, rtol=4.0 * np.finfo(float).eps))
