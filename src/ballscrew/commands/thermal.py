@@ -23,8 +23,11 @@ DutyOpt = Annotated[
 def thermal(
     case_file: CaseArg, model: ThermalModelOpt = None, duty: DutyOpt = True, *, output: Output
 ) -> None:
-    """Steady and transient temperatures, sensors and thermal elongation at the operating point,
-    and over the [[duty]] cycle when the case has one (needs [thermal])."""
+    """Temperatures and elongation at the operating point and over [[duty]] (needs [thermal]).
+
+    The steady and transient field, sensors and elongation at the case's [operating] point; a
+    case with a [[duty]] list is also followed through its cycle, as by `ballscrew duty`
+    (--no-duty: the operating point only)."""
     from ballscrew.analyses.thermal import thermal_field
 
     output.analyse(case_file, lambda case: thermal_field(case, model, duty=duty))
