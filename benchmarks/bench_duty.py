@@ -50,7 +50,7 @@ def main() -> None:
           f"{'T_c [°C]':>9} {'max rise [K]':>12}")  # fmt: skip
     for model in ("network", "axisymmetric"):
         start = time.perf_counter()
-        field = thermal_field(example, model)
+        field = thermal_field(example, model, duty=False)  # the operating point: the day is above
         seconds = time.perf_counter() - start
         c = field.coupling
         print(

@@ -116,7 +116,7 @@ def case_table(quick: bool) -> None:
     case = bs.load_case(path)
     tcr = bs.screw_tcr(case, variant=None)
     for model in ("network", "axisymmetric", "3d"):
-        r = bs.thermal_field(case, model, tcr=tcr)
+        r = bs.thermal_field(case, model, tcr=tcr, duty=False)  # the operating point alone
         print(
             f"  {model:>12}: {r.unknowns:>6d} unknowns, {r.seconds:6.2f} s "
             f"(steady {r.solution.seconds['steady']:.3f} s, transient "

@@ -128,6 +128,12 @@ THERMAL_NUMBERS: dict[str, Callable[[Any], float]] = {
     "contact.0.resistance": lambda r: r.interfaces[0].resistance,
     "sensors.0.steady": lambda r: r.sensors[0].steady,
     "transient.final_elongation": lambda r: r.solution.transient.elongation[-1],
+    # the example's [[duty]] cycle, followed by `ballscrew thermal` and thermal_field alike
+    "duty.peak_elongation": lambda r: r.duty.elongation.max(),
+    "duty.final_elongation": lambda r: r.duty.elongation[-1],
+    "duty.peak_temperature": lambda r: r.duty.max_temperature.max(),
+    "duty.final_contact_temperature": lambda r: r.duty.contact_temperature[-1],
+    "duty.heat_in": lambda r: r.duty.heat_in,
 }
 
 THERMAL = gao(

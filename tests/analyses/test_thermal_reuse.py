@@ -41,6 +41,7 @@ def coarse_case():
             "numerics.cells_across": 16,
             "thermal.mesh.size": "10 mm",
             "thermal.transient.duration": "10 min",
+            "duty": [],  # the operating point alone: what these tests are about
         },
     )
 

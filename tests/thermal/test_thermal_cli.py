@@ -5,11 +5,13 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 import xarray as xr
 from typer.testing import CliRunner
 
 from ballscrew.cli import app
+from quick_cases import QUICK, run_cli, write_case
 
 runner = CliRunner()
 
@@ -99,3 +101,82 @@ def test_3d_model_writes_its_folder(tmp_path, gao_case_path):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["model"] == "3d"
     assert abs(summary["heat_balance"]["relative_error"]) < 1e-6
+
+
+#: The example on the network model with a short duty: 20 min of strokes, then 10 min at rest.
+SHORT_DUTY = QUICK | {
+    "thermal.model": "network",
+    "thermal.transient.time_step": "300 s",
+    "duty_repeat": 1,
+    "duty": [
+        {
+            "speed": "1500 rpm",
+            "axial_load": "2 kN",
+            "stroke": "400 mm",
+            "dwell": "2 s",
+            "duration": "20 min",
+        },
+        {"speed": 0, "duration": "10 min"},
+    ],
+}
+#: What the results of one command say about its own run, not about the case's numbers.
+RUN_KEYS = ("analysis", "warnings", "guessed_defaults", "inputs", "timing")
+
+
+def _numbers(summary: dict) -> dict:
+    return {k: v for k, v in summary.items() if k not in RUN_KEYS}
+
+
+def test_thermal_follows_the_duty_cycle_as_ballscrew_duty_does(tmp_path):
+    """A case with [[duty]]: ``ballscrew thermal`` writes the duty part, the numbers, histories
+    and figure of ``ballscrew duty`` on the same case, next to the operating point's field."""
+    case = write_case(tmp_path, "gao2019_tcr.toml", SHORT_DUTY)
+    out = tmp_path / "thermal"
+    result = run("thermal", case, "--out", out)
+    assert result.exit_code == 0, result.output
+    assert "duty cycle: peak elongation" in result.output
+    ours = json.loads((out / "summary.json").read_text())
+    theirs = run_cli("duty", case, "--out", tmp_path / "duty")
+    assert ours["duty"] == _numbers(theirs)
+    assert ours["duty"]["duration"]["value"] == 1800.0
+    assert ours["transient"]["duration"]["value"] == 600.0  # the point's own transient
+    assert {"duty_day.png", "temperature_map.png", "elongation.png"} <= set(
+        p.name for p in out.iterdir()
+    )
+    with (
+        xr.open_dataset(out / "fields.nc", engine="h5netcdf") as fields,
+        xr.open_dataset(tmp_path / "duty" / "fields.nc", engine="h5netcdf") as day,
+    ):
+        for name in day.data_vars:
+            np.testing.assert_array_equal(fields[f"duty_{name}"].values, day[name].values)
+        np.testing.assert_array_equal(fields["duty_time"].values, day["time"].values)
+        assert fields["duty_sensor_temperature"].dims == ("duty_time", "sensor")
+        assert fields.sizes["time"] == 3 and fields.sizes["duty_time"] == 7
+    html = (out / "report.html").read_text()
+    assert "Temperatures and elongation over the day" in html
+    assert "the sections after the heat balance follow the case&#x27;s [[duty]] cycle" in html
+
+
+def test_the_operating_point_is_the_same_with_and_without_a_duty(tmp_path):
+    """The duty part leaves the operating point's numbers alone; ``--no-duty`` and a case
+    without [[duty]] write no duty part, and the report says when a duty was not run."""
+    with_duty = write_case(tmp_path, "gao2019_tcr.toml", SHORT_DUTY)
+    (tmp_path / "plain").mkdir()
+    without = write_case(tmp_path / "plain", "gao2019_tcr.toml", SHORT_DUTY | {"duty": []})
+    both = run_cli("thermal", with_duty, "--out", tmp_path / "both")
+    skipped = run_cli("thermal", with_duty, "--no-duty", "--out", tmp_path / "skipped")
+    plain = run_cli("thermal", without, "--out", tmp_path / "plain" / "out")
+    assert "duty" not in skipped and "duty" not in plain
+    point = {k: v for k, v in _numbers(both).items() if k != "duty"}
+    assert point == _numbers(skipped) == _numbers(plain)
+    assert skipped["warnings"] == plain["warnings"]
+    for folder in (tmp_path / "skipped", tmp_path / "plain" / "out"):
+        assert not (folder / "duty_day.png").exists()
+        with xr.open_dataset(folder / "fields.nc", engine="h5netcdf") as fields:
+            assert "duty_time" not in fields.dims
+    html = (tmp_path / "skipped" / "report.html").read_text()
+    assert "the case&#x27;s [[duty]] cycle was not run (--no-duty" in html
+    assert (
+        "the single [operating] point"
+        not in (tmp_path / "plain" / "out" / "report.html").read_text()
+    )

@@ -48,7 +48,11 @@ for _analysis in (
         "thermal",
         "temperature field and thermal elongation (the case's [thermal] model)",
         scalars=thermal_scalars,
-        headlines=_THERMAL_HEADLINES,
+        headlines=(*_THERMAL_HEADLINES, "duty.peak_elongation", "duty.final_elongation"),
+        labels={
+            "duty.peak_elongation": "duty cycle: peak elongation",
+            "duty.final_elongation": "duty cycle: final elongation",
+        },
         key_figure="temperature_map.png",
     ),
     Analysis(

@@ -5,6 +5,11 @@ bearings and the ball screw's friction, cooled by convection, with the thermal c
 resistance of the TCR chain on the balls; steady state, the transient from ambient, and the
 elongation ΔL = α∫ΔT dz (theory manual: *Thermal*).
 
+A case with a ``[[duty]]`` cycle is also followed through it on the same model
+(:func:`~ballscrew.analyses.duty_thermal.thermal_duty`, ``duty`` of the result): the field
+above is that of the single ``[operating]`` point, the duty part the elongation and
+temperatures over the cycle.
+
 Models: ``"axisymmetric"`` (default; 2-D scikit-fem), ``"network"`` (1-D axial, milliseconds)
 and ``"3d"`` (hexahedra, helical contact patches; :mod:`~ballscrew.thermal.threed`).
 
@@ -20,7 +25,7 @@ import dataclasses
 import time as _time
 from dataclasses import dataclass
 from types import ModuleType
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -47,6 +52,9 @@ from ballscrew.thermal.models import THERMAL_MODELS, MeshOptions, build_model
 from ballscrew.thermal.problem import ThermalProblem
 from ballscrew.thermal.simulate import Solution, check_transient, simulate, time_to_fraction
 from ballscrew.validation import case_with
+
+if TYPE_CHECKING:
+    from ballscrew.analyses.duty_thermal import DutyThermal
 
 __all__ = [
     "ConvectionCoefficient",
@@ -131,6 +139,8 @@ class ThermalField(Presented):
     """Warnings raised while solving (one line each)."""
     coupling: HeatCoupling | None = None
     """The operating point behind the balls' heat (None: a fixed heat of the case)."""
+    duty: DutyThermal | None = None
+    """The case's ``[[duty]]`` cycle on the same model (None: no duty list, or not asked)."""
 
     analysis: ClassVar[str] = "thermal"
     presentation: ClassVar[ModuleType] = thermal_report
@@ -231,7 +241,8 @@ class ThermalField(Presented):
 
     @property
     def title(self) -> str:
-        return f"Temperature field and thermal elongation: {self.case_name}"
+        cycle = "" if self.duty is None else " at the operating point and over the duty cycle"
+        return f"Temperature field and thermal elongation{cycle}: {self.case_name}"
 
 
 field_dataset = thermal_report.fields
@@ -244,6 +255,7 @@ def thermal_field(
     *,
     tcr: ScrewTCR | None = None,
     transient: bool = True,
+    duty: bool = True,
 ) -> ThermalField:
     """Temperature field and thermal elongation of the ball screw of ``case``.
 
@@ -255,7 +267,31 @@ def thermal_field(
     With ``[thermal.drag_torque] source = "operating_point"`` (the default) the balls' heat is
     that of the coupled operating point, its fixed point solved on the network model and then
     on ``model`` (``coupling`` of the result); the transient runs from ambient at that heat.
+
+    A case with a ``[[duty]]`` list is also run through its cycle on ``model``, the run of
+    :func:`~ballscrew.analyses.duty_thermal.thermal_duty` (``duty`` of the result);
+    ``duty=False`` keeps to the single operating point.
     """
+    field = _point_field(case, model, tcr, transient)
+    if not (duty and case.duty):
+        return field
+    # imported here: the duty cycle builds its segments with this module
+    from ballscrew.analyses.duty_thermal import thermal_duty
+
+    started = _time.perf_counter()
+    cycle = thermal_duty(case, field.model)
+    return dataclasses.replace(
+        field,
+        duty=cycle,
+        seconds=field.seconds + _time.perf_counter() - started,
+        warnings=tuple(dict.fromkeys((*field.warnings, *cycle.warnings))),
+    )
+
+
+def _point_field(
+    case: Case, model: str | None, tcr: ScrewTCR | None, transient: bool
+) -> ThermalField:
+    """:func:`thermal_field` at the case's single operating point."""
     spec, model = _checked(case, model, transient)
     if spec.drag_torque.source != "operating_point":
         return solve_field(case, model, tcr=tcr, transient=transient)
@@ -443,13 +479,14 @@ def _mesh_options(spec: ThermalSpec) -> MeshOptions:
 
 
 def thermal_scalars(case: Case, model: str | None = None) -> dict[str, tuple[float, str]]:
-    """Sweepable steady-state scalars of :func:`thermal_field` with their units.
+    """Sweepable steady-state scalars of :func:`thermal_field` at the operating point (the
+    ``[[duty]]`` cycle is not run) with their units.
 
     ``model`` defaults to the case's ``[thermal] model`` (``ballscrew sweep --analysis
     thermal``); :func:`thermal_network_scalars` takes the 1-D network (milliseconds per point,
     thousands of points in a minute) and :func:`thermal_fe_scalars` the axisymmetric model.
     """
-    result = thermal_field(case, model, transient=False)
+    result = thermal_field(case, model, transient=False, duty=False)
     return {
         "max_temperature_rise": (result.max_temperature_rise, "K"),
         "elongation": (result.elongation, "m"),

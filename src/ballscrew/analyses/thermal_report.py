@@ -1,4 +1,9 @@
-"""What the thermal analysis shows: its summary, fields, figures and report sections."""
+"""What the thermal analysis shows: its summary, fields, figures and report sections.
+
+A result that followed the case's ``[[duty]]`` cycle adds that of the duty run
+(:mod:`~ballscrew.analyses.duty_thermal_report`): its summary under ``duty``, its histories as
+``duty_*`` variables over ``duty_time``, its figure and its sections.
+"""
 
 from __future__ import annotations
 
@@ -10,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import xarray as xr
 
+from ballscrew.analyses import duty_thermal_report
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
 from ballscrew.plotting import label_box, legend_outside, plain, pyplot, save_figure
@@ -139,6 +145,8 @@ def summary(result: ThermalField) -> dict[str, Any]:
             "viscosity": value(coupling.viscosity, "Pa*s"),
             "iterations": coupling.iterations,
         }
+    if result.duty is not None:
+        summary["duty"] = duty_thermal_report.summary(result.duty)
     if t is not None:
         summary["transient"] = {
             "duration": value(t.time[-1], "s"),
@@ -277,7 +285,7 @@ def fields(result: ThermalField) -> xr.Dataset:
                 amb + t.snapshots[:, ex["ring_mean"]],
                 kelvin("nut assembly mean temperature"),
             )
-    return xr.Dataset(
+    dataset = xr.Dataset(
         data,
         coords=coords,
         attrs={
@@ -290,6 +298,14 @@ def fields(result: ThermalField) -> xr.Dataset:
             "unknowns": result.unknowns,
         },
     )
+    if result.duty is None:
+        return dataset
+    cycle = duty_thermal_report.fields(result.duty)
+    cycle = cycle.rename({name: f"duty_{name}" for name in cycle.data_vars}).rename(
+        time="duty_time"
+    )
+    # the sensors are those of the field: an exact join, a mismatch is an error, not NaNs
+    return dataset.merge(cycle, join="exact", combine_attrs="override")
 
 
 def _sensor_markers(ax: Axes, result: ThermalField, z_scale: float = 1e3) -> None:
@@ -478,6 +494,12 @@ def _fmt_s(seconds: float) -> str:
 
 
 def figures(result: ThermalField) -> list[Figure]:
+    """The figures of the field (:func:`field_figures`), then that of the duty cycle."""
+    cycle = [] if result.duty is None else duty_thermal_report.figures(result.duty)
+    return [*field_figures(result), *cycle]
+
+
+def field_figures(result: ThermalField) -> list[Figure]:
     """Steady temperature map, rise over time (with a transient) and elongation."""
     out = [
         Figure(
@@ -656,10 +678,28 @@ def sections(result: ThermalField) -> list[Section]:
                     sensor_rows,
                 ),
             ),
-            figures=tuple(f.name for f in figures(result)),
+            paragraphs=_duty_text(result),
+            figures=tuple(f.name for f in field_figures(result)),
         ),
         Section("Heat balance", tables=(_table(("quantity", "value"), balance),)),
+        *([] if result.duty is None else duty_thermal_report.sections(result.duty)),
     ]
+
+
+def _duty_text(result: ThermalField) -> tuple[str, ...]:
+    """Where the results stand with respect to the case's ``[[duty]]`` list (none: nothing)."""
+    if not result.case.duty:
+        return ()
+    if result.duty is None:
+        return (
+            "These results are at the single [operating] point; the case's [[duty]] cycle was "
+            "not run (--no-duty, or duty=False in Python): ballscrew duty follows it.",
+        )
+    return (
+        "These results are at the single [operating] point; the sections after the heat "
+        "balance follow the case's [[duty]] cycle on the same model (the run of ballscrew "
+        "duty).",
+    )
 
 
 def _coupling_text(result: ThermalField) -> tuple[str, ...]:

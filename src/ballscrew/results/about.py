@@ -29,7 +29,8 @@ ABOUT: dict[str, tuple[str, str]] = {
     "thermal": (
         "The temperature field of screw and nut (network, axisymmetric or 3-D finite-element "
         "model) from the friction and bearing heat, convection and the contact conductance, "
-        "steady and over time, and the resulting thermal elongation of the screw.",
+        "steady and over time at the operating point, and the resulting thermal elongation of "
+        "the screw; a case's [[duty]] cycle is followed as well, as by the duty analysis.",
         "thermal.md",
     ),
     "operating-point": (
