@@ -263,3 +263,26 @@ def test_measured_as_path_frame_or_array(tmp_path) -> None:
     assert as_measured(str(csv)).values[1] == pytest.approx(0.5e-6)
     with pytest.raises(InputError, match="measured"):
         as_measured(np.zeros((3, 3)))
+
+
+def test_the_calibrated_range_holds_only_the_levels_the_fit_saw(case) -> None:
+    """With --fit-until, a level that starts after the last fitted point was not calibrated: a
+    calibrated case that runs it must warn (before, the whole programme's 2000–4000 N was
+    stored whatever the split)."""
+    from ballscrew.analyses.wear import wear_options
+    from ballscrew.analyses.wear_duty import range_messages
+
+    data = noisy(("wear_coefficient", "torque_scale"))
+    spans = {}
+    for until in (None, 1.0e6, 7.2e5, 4.0e5):
+        result = calibrate(case, data, model=CaseModel(), fit_until=until)
+        spans[until] = (result.calibrated_range["load_min"], result.calibrated_range["load_max"])
+    assert spans == {
+        None: (2000.0, 4000.0),
+        1.0e6: (2000.0, 4000.0),  # the 4000 N level starts at 9.6e5 rev, a point after it is fitted
+        7.2e5: (2000.0, 3000.0),
+        4.0e5: (2000.0, 2000.0),
+    }
+    fitted = calibrated_case(calibrate(case, data, model=CaseModel(), fit_until=7.2e5))
+    messages = range_messages(fitted.wear, wear_options(fitted).programme)
+    assert len(messages) == 1 and "level 3" in messages[0] and "4000 N" in messages[0]

@@ -39,6 +39,7 @@ __all__ = [
     "calibrate",
     "calibrated_case",
     "case_setup",
+    "last_fitted",
     "programme_range",
     "schedule_programme",
 ]
@@ -66,14 +67,24 @@ def as_measured(measured: Any, quantity: str = "friction_torque") -> MeasuredHis
     return measured_history(array[:, 0], array[:, 1], quantity, "array")
 
 
-def programme_range(case: Any) -> dict[str, float] | None:
-    """Speeds and loads of the case's wear programme (or duty), as the calibrated range."""
+def programme_range(case: Any, seen: float | None = None) -> dict[str, float] | None:
+    """Speeds and loads of the case's wear programme (or duty), as the calibrated range.
+
+    ``seen``: the revolutions of the last fitted measurement; only the levels that start before
+    it were seen by the fit (None: every level)."""
     from ballscrew.analyses.wear import wear_options
 
     try:
-        levels = [part for lv in wear_options(case).programme for _, part in lv.parts()]
+        programme = wear_options(case).programme
     except (AttributeError, TypeError):  # a stand-in case without a programme
         return None
+    starts = np.cumsum([0.0] + [lv.revolutions for lv in programme[:-1]])
+    levels = [
+        part
+        for start, lv in zip(starts, programme, strict=True)
+        if seen is None or start < seen or start == 0.0
+        for _, part in lv.parts()
+    ]
     speeds = [lv.speed for lv in levels]
     loads = [abs(lv.axial_load) for lv in levels]  # a reverse duty segment: its |F_a|
     return {
@@ -154,8 +165,16 @@ def calibrate(
         result,
         case=setup.case,
         warnings=tuple(messages),
-        calibrated_range=programme_range(setup.case),
+        calibrated_range=programme_range(setup.case, last_fitted(data, fit_until)),
     )
+
+
+def last_fitted(data: MeasuredHistory, fit_until: float | None) -> float:
+    """Revolutions of the last measurement the fit sees (all, or those up to ``fit_until``)."""
+    revolutions = data.revolutions
+    if fit_until is not None:
+        revolutions = revolutions[revolutions <= fit_until]
+    return float(revolutions.max())
 
 
 @dataclass
