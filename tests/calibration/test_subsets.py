@@ -8,6 +8,8 @@ import math
 import numpy as np
 import pytest
 
+from ballscrew.analyses.operating_point import operating_point
+from ballscrew.analyses.wear import wear_options
 from ballscrew.calibration import (
     CalibrationError,
     calibrate,
@@ -221,14 +223,15 @@ def test_schedule_columns_become_the_programme(tmp_path, case) -> None:
     seen = []
 
     def model(c):
-        seen.append([(lv.speed, lv.axial_load, lv.revolutions) for lv in c.wear.programme])
+        levels = wear_options(c).programme
+        seen.append([(lv.speed, lv.axial_load, lv.revolutions) for lv in levels])
         return CaseModel()(c)
 
     calibrate(case, data, fit=("wear_coefficient",), model=model)
     assert seen[0] == [
-        (pytest.approx(100 * math.pi / 30), 2000.0, 4.8e5),
-        (pytest.approx(100 * math.pi / 30), 3000.0, 4.8e5),
-        (pytest.approx(300 * math.pi / 30), 3000.0, 4.8e5),
+        (pytest.approx(100 * math.pi / 30), 2000.0, pytest.approx(4.8e5, rel=1e-12)),
+        (pytest.approx(100 * math.pi / 30), 3000.0, pytest.approx(4.8e5, rel=1e-12)),
+        (pytest.approx(300 * math.pi / 30), 3000.0, pytest.approx(4.8e5, rel=1e-12)),
     ]
     half = tmp_path / "half.csv"
     half.write_text("revolutions,speed [rpm],friction_torque\n0,100,0.4\n1,100,0.3\n")
@@ -286,3 +289,36 @@ def test_the_calibrated_range_holds_only_the_levels_the_fit_saw(case) -> None:
     fitted = calibrated_case(calibrate(case, data, model=CaseModel(), fit_until=7.2e5))
     messages = range_messages(fitted.wear, wear_options(fitted).programme)
     assert len(messages) == 1 and "level 3" in messages[0] and "4000 N" in messages[0]
+
+
+def test_each_schedule_level_runs_at_its_operating_point(tmp_path, case) -> None:
+    """A test-bench file's speed steps wear at each step's own contact temperature and viscosity
+    (before, its levels all took the case's constant lubricant values)."""
+    oil = with_overrides(
+        case,
+        {
+            "medium.viscosity": None,
+            "medium.pressure_viscosity": None,
+            "kinematics.lubricant": "iso_vg_68",
+        },
+    )
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],friction_torque [N*m]\n"
+        "0,100,2,0.42\n4.8e5,100,2,0.30\n9.6e5,1500,2,0.25\n1.44e6,1500,2,0.21\n"
+    )
+    levels = []
+
+    def model(c):
+        levels.append(wear_options(c).programme)
+        return CaseModel()(c)
+
+    calibrate(oil, csv, fit=("wear_coefficient",), model=model)
+    slow, fast = levels[0]
+    for level, rpm in ((slow, 100), (fast, 1500)):
+        point = operating_point(oil, rpm * math.pi / 30, 2000.0)
+        assert level.viscosity == pytest.approx(point.viscosity, rel=1e-3)
+        assert level.temperature == pytest.approx(point.contact_temperature, abs=0.02)
+    assert (slow.revolutions, fast.revolutions) == (pytest.approx(4.8e5), pytest.approx(9.6e5))
+    assert fast.temperature > slow.temperature + 5.0  # the faster step runs hotter, thinner oil
+    assert fast.viscosity < 0.8 * slow.viscosity

@@ -41,6 +41,7 @@ __all__ = [
     "case_setup",
     "last_fitted",
     "programme_range",
+    "schedule_duty",
     "schedule_programme",
 ]
 
@@ -244,7 +245,11 @@ def case_setup(
             raise InputError(
                 f"{data.source}: speed, axial_load", "a schedule", "a case without [[duty]]"
             )
-        case = with_overrides(case, {"wear.programme": schedule_programme(data)})
+        from ballscrew.case.wear_spec import WearSpec
+
+        default = [level.model_dump() for level in WearSpec().programme]
+        duty = schedule_duty(data)
+        case = with_overrides(case, {"wear.programme": default, "duty": duty, "duty_repeat": 1})
     if model is None:
         from ballscrew.analyses.wear import wear_life
 
@@ -302,6 +307,27 @@ def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:
                 }
             )
     return levels
+
+
+def schedule_duty(data: MeasuredHistory) -> list[dict[str, float]]:
+    """``[[duty]]`` segments of a measured schedule, so that each level runs at its own
+    operating point (contact temperature, viscosity, film): the levels of
+    :func:`schedule_programme` as turning segments of duration 2πN/ω, no dwell, the ``[wear]``
+    stroke (a segment longer than the largest duty time is split)."""
+    from ballscrew.case.duty_spec import MAX_DUTY_TIME
+
+    segments: list[dict[str, float]] = []
+    for level in schedule_programme(data):
+        duration = 2.0 * math.pi * level["revolutions"] / level["speed"]
+        pieces = math.ceil(duration / MAX_DUTY_TIME)
+        segments += pieces * [
+            {
+                "speed": level["speed"],
+                "axial_load": level["axial_load"],
+                "duration": duration / pieces,
+            }
+        ]
+    return segments
 
 
 def _names(
