@@ -322,3 +322,33 @@ def test_each_schedule_level_runs_at_its_operating_point(tmp_path, case) -> None
     assert (slow.revolutions, fast.revolutions) == (pytest.approx(4.8e5), pytest.approx(9.6e5))
     assert fast.temperature > slow.temperature + 5.0  # the faster step runs hotter, thinner oil
     assert fast.viscosity < 0.8 * slow.viscosity
+
+
+def test_a_stroke_column_sets_each_schedule_level_s_stroke(tmp_path, case) -> None:
+    """A schedule's stroke column (0: the [wear] stroke) reaches each level's L_w (E8.3); equal
+    speed and load with another stroke is another level; a stroke without speed is refused."""
+    from ballscrew.calibration import read_measured
+
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],stroke [mm],friction_torque [N*m]\n"
+        "0,100,2,300,0.42\n4.8e5,100,2,300,0.30\n9.6e5,100,2,600,0.25\n1.44e6,100,2,0,0.21\n"
+    )
+    data = read_measured(csv)
+    assert data.schedule[:, 2].tolist() == pytest.approx([0.3, 0.3, 0.6, 0.0])
+    levels = []
+
+    def model(c):
+        levels.append(wear_options(c).programme)
+        return CaseModel()(c)
+
+    calibrate(case, data, fit=("wear_coefficient",), model=model)
+    assert [(lv.stroke, lv.revolutions) for lv in levels[0]] == [
+        (pytest.approx(0.3), pytest.approx(4.8e5)),
+        (pytest.approx(0.6), pytest.approx(4.8e5)),
+        (None, pytest.approx(4.8e5)),  # 0: the [wear] stroke
+    ]
+    alone = tmp_path / "alone.csv"
+    alone.write_text("revolutions,stroke [mm],friction_torque\n0,300,0.4\n1,300,0.3\n")
+    with pytest.raises(InputError, match="stroke"):
+        read_measured(alone)

@@ -288,45 +288,37 @@ def case_setup(
 
 
 def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:
-    """``[[wear.programme]]`` levels of a measured schedule: the interval up to each row at that
-    row's speed and load, equal neighbours merged; standstill intervals dropped."""
+    """Levels of a measured schedule (axial load, speed, revolutions[, stroke]): the interval up
+    to each row at that row's speed, load (and stroke), equal neighbours merged; standstill
+    intervals dropped."""
     assert data.schedule is not None
     starts = np.r_[0.0, data.revolutions[:-1]]
+    names = ("speed", "axial_load", "stroke")[: data.schedule.shape[1]]
     levels: list[dict[str, float]] = []
-    for start, end, (speed, load) in zip(starts, data.revolutions, data.schedule, strict=True):
-        if end <= start or speed <= 0.0:
+    for start, end, row in zip(starts, data.revolutions, data.schedule, strict=True):
+        plan = {name: float(v) for name, v in zip(names, row, strict=True)}
+        if end <= start or plan["speed"] <= 0.0:
             continue
-        if levels and levels[-1]["speed"] == speed and levels[-1]["axial_load"] == load:
+        if levels and all(levels[-1][name] == plan[name] for name in names):
             levels[-1]["revolutions"] += float(end - start)
         else:
-            levels.append(
-                {
-                    "axial_load": float(load),
-                    "speed": float(speed),
-                    "revolutions": float(end - start),
-                }
-            )
+            levels.append({**plan, "revolutions": float(end - start)})
     return levels
 
 
 def schedule_duty(data: MeasuredHistory) -> list[dict[str, float]]:
     """``[[duty]]`` segments of a measured schedule, so that each level runs at its own
     operating point (contact temperature, viscosity, film): the levels of
-    :func:`schedule_programme` as turning segments of duration 2πN/ω, no dwell, the ``[wear]``
-    stroke (a segment longer than the largest duty time is split)."""
+    :func:`schedule_programme` as turning segments of duration 2πN/ω, no dwell, the schedule's
+    stroke or the ``[wear]`` one (a segment longer than the largest duty time is split)."""
     from ballscrew.case.duty_spec import MAX_DUTY_TIME
 
     segments: list[dict[str, float]] = []
     for level in schedule_programme(data):
-        duration = 2.0 * math.pi * level["revolutions"] / level["speed"]
+        revolutions = level.pop("revolutions")
+        duration = 2.0 * math.pi * revolutions / level["speed"]
         pieces = math.ceil(duration / MAX_DUTY_TIME)
-        segments += pieces * [
-            {
-                "speed": level["speed"],
-                "axial_load": level["axial_load"],
-                "duration": duration / pieces,
-            }
-        ]
+        segments += [{**level, "duration": duration / pieces} for _ in range(pieces)]
     return segments
 
 
