@@ -12,7 +12,6 @@ import ballscrew
 from ballscrew.analyses.wear import wear_setup
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import InputError
-from ballscrew.loads import preload_after_wear
 from ballscrew.wear import preload_after
 
 from .conftest import REF_PATH
@@ -25,20 +24,6 @@ def case() -> Case:
     return ballscrew.load_case(REF_PATH, {**LOADS, "wear.preload_contact": "worn"})
 
 
-def _hertz(setup, depth: float) -> float:
-    g = setup.geometry
-    return float(
-        preload_after_wear(
-            setup.initial_preload,
-            setup.compliance,
-            depth,
-            g.contact_angle,
-            g.lead_angle,
-            setup.body_compliance,
-        )
-    )
-
-
 def test_a_uniformly_lowered_groove_is_the_hertz_law(case: Case) -> None:
     """A depth h over the whole groove shifts the contact rigidly: δ_worn − δ_unworn = h, so the
     worn contact's preload is (E1.13) with h_max = h (to the solver's tolerance)."""
@@ -47,7 +32,7 @@ def test_a_uniformly_lowered_groove_is_the_hertz_law(case: Case) -> None:
         depth = np.full((2, setup.y.size), h)
         preload, solves = preload_after(setup, depth)
         assert solves >= 2
-        assert preload == pytest.approx(_hertz(setup, h), rel=1e-4)
+        assert preload == pytest.approx(setup.preload(h), rel=1e-4)
 
 
 def test_no_wear_keeps_the_initial_preload_without_a_solve(case: Case) -> None:
@@ -66,17 +51,22 @@ def test_a_conforming_groove_keeps_more_preload_than_its_deepest_point_says(case
     for h in (0.5e-6, 1.5e-6):
         depth = np.vstack([h * shape, 0.9 * h * shape])
         preload, _ = preload_after(setup, depth)
-        hertz = _hertz(setup, h)
+        hertz = setup.preload(h)
         assert hertz < preload < setup.initial_preload
         assert preload > 1.02 * hertz
 
 
 def test_the_default_is_the_hertz_law_of_the_largest_depth() -> None:
-    """The default (``"hertz"``) history: F_p of (E1.13) at every recorded h_max."""
+    """The default (``"hertz"``) history: F_p of (E1.13), (F_p0^(2/3) − h_max/(sinβ cosλ C_a))^(3/2),
+    at every recorded h_max."""
     case = ballscrew.load_case(REF_PATH, {**LOADS, "wear.max_depth_step": 3e-7})
     life = ballscrew.wear_life(case)
     setup = wear_setup(case)
-    expected = [_hertz(setup, h) for h in life.max_wear_depth]
+    g = setup.geometry
+    s = math.sin(g.contact_angle) * math.cos(g.lead_angle)
+    assert setup.body_compliance == 0.0  # the uniform distribution: contacts only
+    left = setup.initial_preload ** (2 / 3) - life.max_wear_depth / (s * setup.compliance)
+    expected = np.clip(left, 0.0, None) ** 1.5  # (E1.13) written out
     np.testing.assert_allclose(life.preload, expected, rtol=1e-12)
 
 
