@@ -57,8 +57,8 @@ def test_a_conforming_groove_keeps_more_preload_than_its_deepest_point_says(case
 
 
 def test_the_default_is_the_hertz_law_of_the_largest_depth() -> None:
-    """The default (``"hertz"``) history: F_p of (E1.13), (F_p0^(2/3) − h_max/(sinβ cosλ C_a))^(3/2),
-    at every recorded h_max."""
+    """The default (``"hertz"``) history: F_p of (E1.13) at every recorded h_max,
+    (F_p0^(2/3) − h_max/(sinβ cosλ C_a))^(3/2)."""
     case = ballscrew.load_case(REF_PATH, {**LOADS, "wear.max_depth_step": 3e-7})
     life = ballscrew.wear_life(case)
     setup = wear_setup(case)
