@@ -8,6 +8,8 @@ import math
 import numpy as np
 import pytest
 
+from ballscrew.analyses.operating_point import operating_point
+from ballscrew.analyses.wear import wear_options
 from ballscrew.calibration import (
     CalibrationError,
     calibrate,
@@ -221,14 +223,15 @@ def test_schedule_columns_become_the_programme(tmp_path, case) -> None:
     seen = []
 
     def model(c):
-        seen.append([(lv.speed, lv.axial_load, lv.revolutions) for lv in c.wear.programme])
+        levels = wear_options(c).programme
+        seen.append([(lv.speed, lv.axial_load, lv.revolutions) for lv in levels])
         return CaseModel()(c)
 
     calibrate(case, data, fit=("wear_coefficient",), model=model)
     assert seen[0] == [
-        (pytest.approx(100 * math.pi / 30), 2000.0, 4.8e5),
-        (pytest.approx(100 * math.pi / 30), 3000.0, 4.8e5),
-        (pytest.approx(300 * math.pi / 30), 3000.0, 4.8e5),
+        (pytest.approx(100 * math.pi / 30), 2000.0, pytest.approx(4.8e5, rel=1e-12)),
+        (pytest.approx(100 * math.pi / 30), 3000.0, pytest.approx(4.8e5, rel=1e-12)),
+        (pytest.approx(300 * math.pi / 30), 3000.0, pytest.approx(4.8e5, rel=1e-12)),
     ]
     half = tmp_path / "half.csv"
     half.write_text("revolutions,speed [rpm],friction_torque\n0,100,0.4\n1,100,0.3\n")
@@ -263,3 +266,89 @@ def test_measured_as_path_frame_or_array(tmp_path) -> None:
     assert as_measured(str(csv)).values[1] == pytest.approx(0.5e-6)
     with pytest.raises(InputError, match="measured"):
         as_measured(np.zeros((3, 3)))
+
+
+def test_the_calibrated_range_holds_only_the_levels_the_fit_saw(case) -> None:
+    """With --fit-until, a level that starts after the last fitted point was not calibrated: a
+    calibrated case that runs it must warn (before, the whole programme's 2000–4000 N was
+    stored whatever the split)."""
+    from ballscrew.analyses.wear import wear_options
+    from ballscrew.analyses.wear_duty import range_messages
+
+    data = noisy(("wear_coefficient", "torque_scale"))
+    spans = {}
+    for until in (None, 1.0e6, 7.2e5, 4.0e5):
+        result = calibrate(case, data, model=CaseModel(), fit_until=until)
+        spans[until] = (result.calibrated_range["load_min"], result.calibrated_range["load_max"])
+    assert spans == {
+        None: (2000.0, 4000.0),
+        1.0e6: (2000.0, 4000.0),  # the 4000 N level starts at 9.6e5 rev, a point after it is fitted
+        7.2e5: (2000.0, 3000.0),
+        4.0e5: (2000.0, 2000.0),
+    }
+    fitted = calibrated_case(calibrate(case, data, model=CaseModel(), fit_until=7.2e5))
+    messages = range_messages(fitted.wear, wear_options(fitted).programme)
+    assert len(messages) == 1 and "level 3" in messages[0] and "4000 N" in messages[0]
+
+
+def test_each_schedule_level_runs_at_its_operating_point(tmp_path, case) -> None:
+    """A test-bench file's speed steps wear at each step's own contact temperature and viscosity
+    (before, its levels all took the case's constant lubricant values)."""
+    oil = with_overrides(
+        case,
+        {
+            "medium.viscosity": None,
+            "medium.pressure_viscosity": None,
+            "kinematics.lubricant": "iso_vg_68",
+        },
+    )
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],friction_torque [N*m]\n"
+        "0,100,2,0.42\n4.8e5,100,2,0.30\n9.6e5,1500,2,0.25\n1.44e6,1500,2,0.21\n"
+    )
+    levels = []
+
+    def model(c):
+        levels.append(wear_options(c).programme)
+        return CaseModel()(c)
+
+    calibrate(oil, csv, fit=("wear_coefficient",), model=model)
+    slow, fast = levels[0]
+    for level, rpm in ((slow, 100), (fast, 1500)):
+        point = operating_point(oil, rpm * math.pi / 30, 2000.0)
+        assert level.viscosity == pytest.approx(point.viscosity, rel=1e-3)
+        assert level.temperature == pytest.approx(point.contact_temperature, abs=0.02)
+    assert (slow.revolutions, fast.revolutions) == (pytest.approx(4.8e5), pytest.approx(9.6e5))
+    assert fast.temperature > slow.temperature + 5.0  # the faster step runs hotter, thinner oil
+    assert fast.viscosity < 0.8 * slow.viscosity
+
+
+def test_a_stroke_column_sets_each_schedule_level_s_stroke(tmp_path, case) -> None:
+    """A schedule's stroke column (0: the [wear] stroke) reaches each level's L_w (E8.3); equal
+    speed and load with another stroke is another level; a stroke without speed is refused."""
+    from ballscrew.calibration import read_measured
+
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],stroke [mm],friction_torque [N*m]\n"
+        "0,100,2,300,0.42\n4.8e5,100,2,300,0.30\n9.6e5,100,2,600,0.25\n1.44e6,100,2,0,0.21\n"
+    )
+    data = read_measured(csv)
+    assert data.schedule[:, 2].tolist() == pytest.approx([0.3, 0.3, 0.6, 0.0])
+    levels = []
+
+    def model(c):
+        levels.append(wear_options(c).programme)
+        return CaseModel()(c)
+
+    calibrate(case, data, fit=("wear_coefficient",), model=model)
+    assert [(lv.stroke, lv.revolutions) for lv in levels[0]] == [
+        (pytest.approx(0.3), pytest.approx(4.8e5)),
+        (pytest.approx(0.6), pytest.approx(4.8e5)),
+        (None, pytest.approx(4.8e5)),  # 0: the [wear] stroke
+    ]
+    alone = tmp_path / "alone.csv"
+    alone.write_text("revolutions,stroke [mm],friction_torque\n0,300,0.4\n1,300,0.3\n")
+    with pytest.raises(InputError, match="stroke"):
+        read_measured(alone)

@@ -93,6 +93,7 @@ def wear_options(case: Case) -> WearOptions:
         load_classes=spec.load_classes,
         torque_offset=spec.torque_offset,
         asperity_roughness=spec.asperity_roughness,
+        preload_contact=spec.preload_contact,
     )
 
 
@@ -314,6 +315,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         del data["wear"]["torque_offset"]
     if data["wear"]["asperity_roughness"] == "cell":  # earlier checkpoints stay valid
         del data["wear"]["asperity_roughness"]
+    if data["wear"]["preload_contact"] == "hertz":  # earlier checkpoints stay valid
+        del data["wear"]["preload_contact"]
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":

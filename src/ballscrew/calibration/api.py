@@ -39,7 +39,9 @@ __all__ = [
     "calibrate",
     "calibrated_case",
     "case_setup",
+    "last_fitted",
     "programme_range",
+    "schedule_duty",
     "schedule_programme",
 ]
 
@@ -66,14 +68,24 @@ def as_measured(measured: Any, quantity: str = "friction_torque") -> MeasuredHis
     return measured_history(array[:, 0], array[:, 1], quantity, "array")
 
 
-def programme_range(case: Any) -> dict[str, float] | None:
-    """Speeds and loads of the case's wear programme (or duty), as the calibrated range."""
+def programme_range(case: Any, seen: float | None = None) -> dict[str, float] | None:
+    """Speeds and loads of the case's wear programme (or duty), as the calibrated range.
+
+    ``seen``: the revolutions of the last fitted measurement; only the levels that start before
+    it were seen by the fit (None: every level)."""
     from ballscrew.analyses.wear import wear_options
 
     try:
-        levels = [part for lv in wear_options(case).programme for _, part in lv.parts()]
+        programme = wear_options(case).programme
     except (AttributeError, TypeError):  # a stand-in case without a programme
         return None
+    starts = np.cumsum([0.0] + [lv.revolutions for lv in programme[:-1]])
+    levels = [
+        part
+        for start, lv in zip(starts, programme, strict=True)
+        if seen is None or start < seen or start == 0.0
+        for _, part in lv.parts()
+    ]
     speeds = [lv.speed for lv in levels]
     loads = [abs(lv.axial_load) for lv in levels]  # a reverse duty segment: its |F_a|
     return {
@@ -154,8 +166,16 @@ def calibrate(
         result,
         case=setup.case,
         warnings=tuple(messages),
-        calibrated_range=programme_range(setup.case),
+        calibrated_range=programme_range(setup.case, last_fitted(data, fit_until)),
     )
+
+
+def last_fitted(data: MeasuredHistory, fit_until: float | None) -> float:
+    """Revolutions of the last measurement the fit sees (all, or those up to ``fit_until``)."""
+    revolutions = data.revolutions
+    if fit_until is not None:
+        revolutions = revolutions[revolutions <= fit_until]
+    return float(revolutions.max())
 
 
 @dataclass
@@ -225,7 +245,11 @@ def case_setup(
             raise InputError(
                 f"{data.source}: speed, axial_load", "a schedule", "a case without [[duty]]"
             )
-        case = with_overrides(case, {"wear.programme": schedule_programme(data)})
+        from ballscrew.case.wear_spec import WearSpec
+
+        default = [level.model_dump() for level in WearSpec().programme]
+        duty = schedule_duty(data)
+        case = with_overrides(case, {"wear.programme": default, "duty": duty, "duty_repeat": 1})
     if model is None:
         from ballscrew.analyses.wear import wear_life
 
@@ -264,25 +288,38 @@ def case_setup(
 
 
 def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:
-    """``[[wear.programme]]`` levels of a measured schedule: the interval up to each row at that
-    row's speed and load, equal neighbours merged; standstill intervals dropped."""
+    """Levels of a measured schedule (axial load, speed, revolutions[, stroke]): the interval up
+    to each row at that row's speed, load (and stroke), equal neighbours merged; standstill
+    intervals dropped."""
     assert data.schedule is not None
     starts = np.r_[0.0, data.revolutions[:-1]]
+    names = ("speed", "axial_load", "stroke")[: data.schedule.shape[1]]
     levels: list[dict[str, float]] = []
-    for start, end, (speed, load) in zip(starts, data.revolutions, data.schedule, strict=True):
-        if end <= start or speed <= 0.0:
+    for start, end, row in zip(starts, data.revolutions, data.schedule, strict=True):
+        plan = {name: float(v) for name, v in zip(names, row, strict=True)}
+        if end <= start or plan["speed"] <= 0.0:
             continue
-        if levels and levels[-1]["speed"] == speed and levels[-1]["axial_load"] == load:
+        if levels and all(levels[-1][name] == plan[name] for name in names):
             levels[-1]["revolutions"] += float(end - start)
         else:
-            levels.append(
-                {
-                    "axial_load": float(load),
-                    "speed": float(speed),
-                    "revolutions": float(end - start),
-                }
-            )
+            levels.append({**plan, "revolutions": float(end - start)})
     return levels
+
+
+def schedule_duty(data: MeasuredHistory) -> list[dict[str, float]]:
+    """``[[duty]]`` segments of a measured schedule, so that each level runs at its own
+    operating point (contact temperature, viscosity, film): the levels of
+    :func:`schedule_programme` as turning segments of duration 2πN/ω, no dwell, the schedule's
+    stroke or the ``[wear]`` one (a segment longer than the largest duty time is split)."""
+    from ballscrew.case.duty_spec import MAX_DUTY_TIME
+
+    segments: list[dict[str, float]] = []
+    for level in schedule_programme(data):
+        revolutions = level.pop("revolutions")
+        duration = 2.0 * math.pi * revolutions / level["speed"]
+        pieces = math.ceil(duration / MAX_DUTY_TIME)
+        segments += [{**level, "duration": duration / pieces} for _ in range(pieces)]
+    return segments
 
 
 def _names(

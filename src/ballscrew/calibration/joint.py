@@ -31,7 +31,13 @@ import numpy as np
 
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.calibration import joint_report
-from ballscrew.calibration.api import CaseSetup, as_measured, case_setup, programme_range
+from ballscrew.calibration.api import (
+    CaseSetup,
+    as_measured,
+    case_setup,
+    last_fitted,
+    programme_range,
+)
 from ballscrew.calibration.multi import (
     FIT_PARAMETERS,
     HistoryFit,
@@ -317,7 +323,10 @@ def calibrate_joint(
         for history in result.histories:
             warn_if_systematic(history)
             warn_implausible_scale(history)
-    histories = tuple(_with_case(h, s.case) for h, s in zip(result.histories, setups, strict=True))
+    histories = tuple(
+        _with_case(h, s.case, last_fitted(d, u))
+        for h, s, d, u in zip(result.histories, setups, data, until, strict=True)
+    )
     return replace(
         result,
         histories=histories,
@@ -327,8 +336,8 @@ def calibrate_joint(
     )
 
 
-def _with_case(result: CalibrationResult, case: Any) -> CalibrationResult:
-    return replace(result, case=case, calibrated_range=programme_range(case))
+def _with_case(result: CalibrationResult, case: Any, seen: float) -> CalibrationResult:
+    return replace(result, case=case, calibrated_range=programme_range(case, seen))
 
 
 class _SharedRuns:

@@ -19,7 +19,8 @@ File format (``ballscrew calibrate --measured FILE.csv``)::
 * Optional schedule columns ``speed`` and ``axial_load`` (both or neither; e.g. ``speed [rpm]``,
   ``axial_load [kN]``) give the speed and load the bench ran at since the previous row (the
   first row's: since revolution 0); :func:`ballscrew.calibrate` then runs the model on that
-  programme instead of the case's ``[[wear.programme]]``.
+  programme instead of the case's ``[[wear.programme]]``. With them, an optional ``stroke``
+  column (e.g. ``stroke [mm]``; 0: the ``[wear]`` stroke) gives each row's reciprocating stroke.
 * The measured values must be physically plausible: some > 0, none above
   :data:`PLAUSIBLE_MAX`, none below 0 except as noise around 0: down to −5 % of the largest
   value where the neighbouring points are within 5 % of 0 too (a negative torque among
@@ -72,8 +73,19 @@ QUANTITIES: dict[str, str] = {
 #: Optional schedule columns of a test-bench file: name → physical kind.
 SCHEDULE: dict[str, str] = {"speed": "angular_velocity", "axial_load": "force"}
 
-#: Largest value of each schedule column (SI): that of a ``wear.programme`` speed and load.
-SCHEDULE_RANGE = (("speed", MAX_SPEED, "rad/s"), ("axial_load", MAX_FORCE, "N"))
+#: Optional stroke column of a schedule: name → physical kind.
+SCHEDULE_STROKE: dict[str, str] = {"stroke": "length"}
+
+#: Largest stroke of a schedule row [m] (that of a ``[[duty]]`` segment).
+MAX_STROKE = 100.0
+
+#: Largest value of each schedule column (SI): that of a ``wear.programme`` speed and load,
+#: and of a ``[[duty]]`` stroke.
+SCHEDULE_RANGE = (
+    ("speed", MAX_SPEED, "rad/s"),
+    ("axial_load", MAX_FORCE, "N"),
+    ("stroke", MAX_STROKE, "m"),
+)
 
 #: Largest plausible measured value of each quantity (SI): a ball-screw drag torque, a preload
 #: and a raceway wear depth beyond these are a unit or data error.
@@ -113,8 +125,8 @@ class MeasuredHistory:
     quantity: str
     source: str = "measured data"
     schedule: NDArray[np.float64] | None = None
-    """(speed [rad/s], axial load [N]) run since the previous row, one row per point; None:
-    the case's programme."""
+    """(speed [rad/s], axial load [N][, stroke [m]]) run since the previous row, one row per
+    point (a stroke of 0: the ``[wear]`` stroke); None: the case's programme."""
     notes: tuple[str, ...] = ()
     """The comment lines before the header of a CSV file: what it says about its data."""
 
@@ -202,11 +214,11 @@ def _check_schedule(
     source: str, schedule: ArrayLike, points: int, lines: Sequence[int] | None = None
 ) -> NDArray[np.float64]:
     plan = np.array(schedule, dtype=np.float64)
-    if plan.shape != (points, 2):
+    if plan.shape not in ((points, 2), (points, 3)):
         raise InputError(
-            f"{source}: schedule", plan.shape, f"(speed, axial_load) per row ({points})"
+            f"{source}: schedule", plan.shape, f"(speed, axial_load[, stroke]) per row ({points})"
         )
-    for column, (name, high, unit) in enumerate(SCHEDULE_RANGE):
+    for column, (name, high, unit) in enumerate(SCHEDULE_RANGE[: plan.shape[1]]):
         values = plan[:, column]
         bad = np.flatnonzero(~(np.isfinite(values) & (values >= 0.0) & (values <= high)))
         if bad.size:
@@ -307,7 +319,8 @@ class _Layout:
 
     quantity: str
     columns: tuple[tuple[str, int, float], ...]
-    scheduled: bool
+    scheduled: tuple[str, ...]
+    """The schedule columns read: none, or speed and axial_load[, stroke]."""
 
 
 def _layout(source: str, header: Sequence[str]) -> _Layout:
@@ -328,12 +341,18 @@ def _layout(source: str, header: Sequence[str]) -> _Layout:
     scheduled = [name for name in SCHEDULE if name in columns]
     if scheduled and len(scheduled) != len(SCHEDULE):
         raise InputError(f"{source}: schedule columns", scheduled, "both speed and axial_load")
-    kinds = {quantity: QUANTITIES[quantity]} | {name: SCHEDULE[name] for name in scheduled}
+    if "stroke" in columns:
+        if not scheduled:
+            raise InputError(f"{source}: stroke column", "without speed", "speed and axial_load")
+        scheduled.append("stroke")
+    kinds = {quantity: QUANTITIES[quantity]} | {
+        name: (SCHEDULE | SCHEDULE_STROKE)[name] for name in scheduled
+    }
     read = [("revolutions", rev_index, 1.0)] + [
         (name, columns[name][0], _unit_factor(source, name, columns[name][1], kind))
         for name, kind in kinds.items()
     ]
-    return _Layout(quantity, tuple(read), bool(scheduled))
+    return _Layout(quantity, tuple(read), tuple(scheduled))
 
 
 _Column = Sequence[object] | NDArray[Any]
@@ -375,7 +394,9 @@ def _history(
         name: _numbers(source, name, cells[name], lines) * factor
         for name, _, factor in layout.columns
     }
-    schedule = np.column_stack([values[name] for name in SCHEDULE]) if layout.scheduled else None
+    schedule = (
+        np.column_stack([values[name] for name in layout.scheduled]) if layout.scheduled else None
+    )
     return measured_history(
         values["revolutions"],
         values[layout.quantity],

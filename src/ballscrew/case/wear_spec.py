@@ -28,6 +28,7 @@ from typing import Annotated
 from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, model_choice, quantity
+from ballscrew.wear.preload import PRELOAD_CONTACTS
 from ballscrew.wear.rates import WEAR_LAWS
 from ballscrew.wear.step import ASPERITY_HEIGHTS
 
@@ -211,6 +212,12 @@ class WearSpec(Model):
         "the reference coefficient 1.304e-4 was calibrated); the wear law's micro-contact stays "
         "at the cell scale",
     ) = "film"
+    preload_contact: model_choice(
+        PRELOAD_CONTACTS,
+        "screw contact of the preload update after wear (E1.13): 'hertz' the unworn Hertz "
+        "contact pushed back by the largest depth (default), 'worn' the worn, more conforming "
+        "groove's own contact (numerical approach on the worn gap)",
+    ) = "hertz"
     running_in: RunningInSpec | None = Field(
         None,
         description="initial raceway surface and running-in depth ([wear.running_in]); "

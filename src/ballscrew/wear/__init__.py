@@ -14,6 +14,7 @@ reciprocation, worn groove, time integration, drag torque).
 
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.life import check_wear_work, integrate_wear
+from ballscrew.wear.preload import PRELOAD_CONTACTS, preload_after
 from ballscrew.wear.profile import worn_gap, worn_gap_function
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.rates import WEAR_LAWS, cell_wear_rate, wear_rate_model_a, wear_rate_model_c
@@ -29,6 +30,7 @@ from ballscrew.wear.strips import (
 
 __all__ = [
     "ASPERITY_HEIGHTS",
+    "PRELOAD_CONTACTS",
     "WEAR_LAWS",
     "FlankRate",
     "GridEdgeWarning",
@@ -41,6 +43,7 @@ __all__ = [
     "depth_per_revolution",
     "flank_rate",
     "integrate_wear",
+    "preload_after",
     "raceway_depth_rate",
     "reciprocating_rate",
     "strip_wear_speed",

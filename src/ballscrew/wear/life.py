@@ -18,7 +18,8 @@ programme (theory manual, *Wear*):
    (E8.4).
 3. Explicit step ΔN = min(max_depth_step / max_j ḣ_j, revolutions to the next level end or
    torque sample); h_s += ḣ_s ΔN.
-4. Preload from the largest depth (E1.13) with C_a of the Hertz constants (E1.8); drag torque
+4. Preload from the largest depth (E1.13) with C_a of the Hertz constants (E1.8), or from the
+   worn groove's own contact (``wear.preload_contact = "worn"``, :mod:`.preload`); drag torque
    T = K_T F_p L/(2π) (E9.1), K_T scaled by ``torque_scale`` or fitted to ``initial_torque``.
 
 The whole state is saved to a checkpoint file after every ``checkpoint_every`` steps; a stopped
@@ -42,6 +43,7 @@ from ballscrew.progress import advance
 from ballscrew.units import format_quantity
 from ballscrew.wear.checkpoint import ignore_checkpoint, load_checkpoint, save_checkpoint
 from ballscrew.wear.history import WearLife
+from ballscrew.wear.preload import preload_after
 from ballscrew.wear.programme import WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, FloatArray, WearSetup, nut_force_pair
 from ballscrew.wear.step import StepContact, step_rates
@@ -131,9 +133,10 @@ def _load(path: Path, fingerprint: str, ny: int) -> _State | None:
     return state if sound else ignore_checkpoint(path, "its arrays do not fit this case")
 
 
-def _record(state: _State, setup: WearSetup, forces: tuple[float, float], sampled: bool) -> None:
+def _record(
+    state: _State, setup: WearSetup, fp: float, forces: tuple[float, float], sampled: bool
+) -> None:
     h_max = float(state.depth.max())
-    fp = setup.preload(h_max)
     r = state.records
     r["revolutions"].append(state.revolutions)
     r["max_depth"].append(h_max)
@@ -143,6 +146,13 @@ def _record(state: _State, setup: WearSetup, forces: tuple[float, float], sample
     r["level"].append(state.level)
     r["sampled"].append(sampled)
     r["profiles"].append(state.depth.copy())
+
+
+def _preload(setup: WearSetup, state: _State) -> float:
+    """F_p after the state's worn depths (``wear.preload_contact``), its solves counted."""
+    fp, solves = preload_after(setup, state.depth)
+    state.solves += solves
+    return fp
 
 
 def _is_sample(revolutions: float, every: float) -> bool:
@@ -328,10 +338,12 @@ def integrate_wear(
             0, 0.0, np.zeros((2, setup.y.size)), {}, {k: [] for k in _RECORD_KEYS}, 0, 0, {}
         )
         first = spec.programme[0]
-        _record(state, setup, nut_force_pair(setup.initial_preload, first.axial_load), True)
+        fp0 = setup.initial_preload
+        _record(state, setup, fp0, nut_force_pair(fp0, first.axial_load), True)
     ends = np.cumsum([lv.revolutions for lv in spec.programme])
     every = spec.torque_sampling
     taken = 0
+    preload = _preload(setup, state)
     while state.level < len(spec.programme):
         level = spec.programme[state.level]
         end = float(ends[state.level])
@@ -342,7 +354,6 @@ def integrate_wear(
             if path is not None:
                 _save(path, state, fingerprint)
             return _finish(setup, state, False, time.perf_counter() - start)
-        preload = setup.preload(float(state.depth.max()))
         rates = _step_rates(setup, state, preload, level)
         check_wear_work(spec, state.steps, state.revolutions, state.level, rates)
         next_sample = (math.floor(state.revolutions / every + 1e-9) + 1) * every
@@ -356,12 +367,8 @@ def integrate_wear(
         state.steps += 1
         taken += 1
         sampled = _is_sample(state.revolutions, every)
-        _record(
-            state,
-            setup,
-            nut_force_pair(setup.preload(float(state.depth.max())), level.axial_load),
-            sampled,
-        )
+        preload = _preload(setup, state)
+        _record(state, setup, preload, nut_force_pair(preload, level.axial_load), sampled)
         advance("wear", state.revolutions, ends[-1])
         if sampled or state.revolutions >= end * (1.0 - 1e-12):
             log.debug(

@@ -106,3 +106,5 @@ class WearOptions:
     asperity_roughness: str = "film"
     """σ of the asperities of the JGP load sharing (``ballscrew.wear.step.ASPERITY_HEIGHTS``):
     "film" σ_Λ of the film parameter, "cell" the micro-contact cell's."""
+    preload_contact: str = "hertz"
+    """Screw contact of the preload update (``ballscrew.wear.preload.PRELOAD_CONTACTS``)."""
