@@ -60,7 +60,7 @@ def test_the_cell_share_does_not_read_the_film_roughness(ref_case) -> None:
 
 
 def test_with_the_film_roughness_a_boundary_contact_wears_as_a_dry_one(ref_case) -> None:
-    """Option "film" on the example raceway (σ_Λ = 1.405 µm, Λ = 0.04–0.3 at 100–1500 rpm): the
+    """Option "film" on the example raceway (σ_Λ = 1.005 µm, Λ = 0.06–0.4 at 100–1500 rpm): the
     asperities carry the whole load, ψ → 1, so the wear per revolution is that of the dry
     contact (ψ = 1 exactly, the cell law of Archard type being per unit sliding distance) at any
     speed (to 1e-4: 1 − ψ = 0 at 100 rpm, 1.5e-5 at 1500 rpm), where "cell" loses it to the film
