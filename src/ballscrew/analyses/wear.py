@@ -296,10 +296,14 @@ def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
 
 def fingerprint(case: Case, setup: WearSetup) -> str:
     """Hash of every input of the wear run (a checkpoint must come from the same inputs)."""
+    surface = case.surface.model_dump(mode="json")
+    # the 3-D G the wear law reads: a "surface" case keeps the fingerprint of earlier versions
+    surface.update(G=setup.surface.G)
+    del surface["G_convention"]
     data = {
         "wear": dataclasses.asdict(setup.spec),
         "screw": case.screw.model_dump(mode="json"),
-        "surface": case.surface.model_dump(mode="json"),
+        "surface": surface,
         "preload": case.operating.preload,
         "numerics": case.numerics.model_dump(mode="json"),
         "viscosity": setup.viscosity,
@@ -317,6 +321,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         del data["wear"]["torque_offset"]
     if data["wear"]["asperity_roughness"] == "cell":  # earlier checkpoints stay valid
         del data["wear"]["asperity_roughness"]
+    else:  # the share reads σ_Λ, of the profile G since surface.G_convention
+        data["film_roughness"] = setup.surface.film_roughness
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":
