@@ -16,12 +16,12 @@ import pytest
 import ballscrew
 from ballscrew.analyses.kinematics import ball_model
 from ballscrew.analyses.parameters import ScrewParameters
+from ballscrew.analyses.surface import surface_characterisation
 from ballscrew.analyses.wear import wear_setup
 from ballscrew.case import CaseError, case_from_dict, with_overrides
 from ballscrew.fractal import majumdar_bhushan as mb
 from ballscrew.fractal import yan_komvopoulos as yk
 from ballscrew.fractal.conventions import surface_roughness_from_profile
-from ballscrew.surface import fractal_parameters, read_profile
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 GAO = EXAMPLES / "gao2019_tcr.toml"
@@ -148,15 +148,17 @@ def test_a_measured_profile_reaches_the_wear_law_as_its_surface_g() -> None:
     over its length L (F3), the one the TCR correlations read, and the profile's own σ within
     25 % (the W–M sum is discrete in frequency); the profile G read as a surface G would give
     0.69 × that σ."""
-    profile = read_profile(PROFILE)
-    fit = fractal_parameters(profile)
+    measured = surface_characterisation(PROFILE)  # the ``ballscrew surface`` analysis
+    profile, fit = measured.profile, measured.fit
+    recommended = measured.summary()["recommended"]
+    assert recommended["G"]["value"] == fit.G
     heights = np.atleast_2d(np.asarray(profile.heights))
     length = heights.shape[1] * profile.spacing
     own_sigma = float(np.sqrt(np.mean(np.var(heights, axis=1))))
     case = case_from_dict(_without_convention(WEAR), {"surface.D": fit.D, "surface.G": fit.G})
     assert case.surface.G_convention == "profile"
     surface = wear_setup(case).surface
-    assert surface.G == pytest.approx(surface_roughness_from_profile(fit.D, fit.G), rel=1e-12)
+    assert surface.G == pytest.approx(recommended["G_surface"]["value"], rel=1e-12)
     sigma = yk.rms_height(surface.Ds, surface.G, length)
     assert sigma == pytest.approx(mb.profile_rms_roughness(fit.D, fit.G, length), rel=1e-9)
     assert sigma == pytest.approx(own_sigma, rel=0.25)
