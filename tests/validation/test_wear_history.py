@@ -138,13 +138,13 @@ def _check(validation, dataset, key: str, known_miss: bool) -> None:
 
 
 def test_xjtu_up_forecast(validation, dataset) -> None:
-    """Up: model −21.4 % at 1015 h against the line's −50.2 % (held-out RMS 0.040 vs 0.074 N m);
+    """Up: model −21.5 % at 1015 h against the line's −50.2 % (held-out RMS 0.040 vs 0.074 N m);
     with wear.asperity_roughness = "cell" +12.5 % (0.019 N m)."""
     _check(validation, dataset, "up_Nm", known_miss=False)
 
 
 def test_xjtu_down_forecast(validation, dataset) -> None:
-    """Down: model −0.8 % against the line's −5.2 % (held-out RMS 0.016 vs 0.021 N m).
+    """Down: model −0.9 % against the line's −5.2 % (held-out RMS 0.016 vs 0.021 N m).
 
     With wear.asperity_roughness = "cell" it was +14.9 % (0.032 N m), a known miss: the film
     over the σ of one grid cell made the wear per revolution fall faster than 1/speed (ψ = 0.25
