@@ -321,12 +321,12 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         del data["wear"]["torque_offset"]
     if data["wear"]["asperity_roughness"] == "cell":  # earlier checkpoints stay valid
         del data["wear"]["asperity_roughness"]
-    else:  # the share reads σ_Λ, of the profile G since surface.G_convention
-        data["film_roughness"] = setup.surface.film_roughness
     if not isinstance(setup.film_model, str):  # a starved or heated inlet
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":
         data["film_model"] = case.medium.film_model
+    if setup.spec.asperity_roughness == "film":  # σ_Λ, of the profile G since G_convention
+        data["film_roughness"] = setup.surface.film_roughness
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 
