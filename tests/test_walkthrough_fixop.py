@@ -99,7 +99,9 @@ def without_duty(text: str) -> str:
 
 def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     """100 rpm wore 2.4 µm, 1000 rpm then exactly 0 with no word why (full-film EHL: asperity
-    share ~1e-10 on the asperities of one wear-grid cell, wear.asperity_roughness = "cell").
+    share ~1e-10 on the asperities of one wear-grid cell, wear.asperity_roughness = "cell"; 1.2e-4
+    since the cell's asperities have the 3-D G of the raceway's profile G, surface.G_convention,
+    below the 1e-3 of the warning).
     The summary and report give Λ and ψ per level, and a warning names the level that wears
     practically nothing; the range warning says 'at 100 rpm', not '100–100 rpm'."""
     case_file = tmp_path / "wear.toml"
@@ -117,7 +119,7 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
     ceiling = 10.0**0.67 * (fast_["ball_load"]["value"] / slow["ball_load"]["value"]) ** -0.067
     ratio = fast_["film_parameter"]["value"] / slow["film_parameter"]["value"]
     assert 3.0 < ratio <= ceiling * (1 + 1e-9)
-    assert fast_["asperity_share"]["value"] < 1e-6
+    assert fast_["asperity_share"]["value"] < 1e-3
     depth = [lv["max_wear_depth"]["value"] for lv in summary["levels"]]
     assert depth[0] > 0.0 and depth[1] - depth[0] < 1e-3 * depth[0]
     warnings = summary["warnings"]
@@ -130,8 +132,8 @@ def test_a_level_that_wears_nothing_says_why(tmp_path) -> None:
 
 def test_a_boundary_level_wears_with_the_film_roughness(tmp_path) -> None:
     """The same programme with the default wear.asperity_roughness = "film": at 1000 rpm
-    Λ = 0.79 < 1 (boundary) and the asperities of height σ_Λ keep most of the load (ψ = 0.742
-    against 5.6e-9 with "cell"), so level 2 wears 95 nm after level 1's 126 nm (the wear law
+    Λ = 0.79 < 1 (boundary) and the asperities of height σ_Λ keep most of the load (ψ = 0.855
+    against 1.2e-4 with "cell"), so level 2 wears 86 nm after level 1's 101 nm (the wear law
     being per unit sliding distance) and no level is said to wear nothing."""
     case_file = tmp_path / "wear.toml"
     case_file.write_text(without_duty(starter(*THK)) + WEAR.replace('"cell"', '"film"'))

@@ -36,13 +36,15 @@ def test_default_numbers_are_unchanged(gao_case_path, wear_case_path):
     # the entrainment speed of that time (the ball-centre speed V), with the JGP share on the
     # asperity heights of σ_Λ (E6.6) since; on the cell's σ (E5.3) the drag torques were
     # 0.11867 (gao, 1000 rpm) and 0.11369 N m (wear reference screw on its own raceway, 100 rpm)
-    # and the Level-2 ball 0.094970 m/s, 12.7356 rad/s
+    # and the Level-2 ball 0.094970 m/s, 12.7356 rad/s. The gao raceway's G is a profile G: its
+    # asperities read the 3-D G of the same σ since surface.G_convention (drag torque 0.153082 N m
+    # with the profile G read as a surface G); the wear screw gives its surface G (unchanged)
     old = {"kinematics.entrainment": "ball_centre"}
     gao = ballscrew.load_case(gao_case_path, old)
     state = ball_kinematics(gao)
     assert state.ball_speed == pytest.approx(0.9333272113362386, rel=1e-9)
     assert state.spin_screw == pytest.approx(73.81469929037536, rel=1e-9)
-    assert computed_drag_torque(gao) == pytest.approx(0.15308162556612623, rel=1e-9)
+    assert computed_drag_torque(gao) == pytest.approx(0.15676986076780272, rel=1e-9)
     wear = ballscrew.load_case(
         wear_case_path,
         {

@@ -61,12 +61,13 @@ def test_the_fixed_point_does_not_depend_on_where_it_starts(case):
     assert hot.friction_torque == pytest.approx(cold.friction_torque, rel=1e-3)
 
 
-@pytest.mark.parametrize("rpm", [1000, 2100, 3000])
-def test_the_point_is_the_fixed_point_to_its_tolerance(case, rpm):
+@pytest.mark.parametrize(("rpm", "solves"), [(1000, 4), (2100, 4), (3000, 5)])
+def test_the_point_is_the_fixed_point_to_its_tolerance(case, rpm, solves):
     """One more plain step T_c → T(T_c) from the answer, evaluated here by hand (friction at
     η(T_c), its heat on the network, the mean of nut and screw), moves it by ≤ 0.01 K; the
     secant step gets there in at most 4 thermal solves (the plain iteration took 5 at 2100 and
-    3000 rpm)."""
+    3000 rpm), 5 at 3000 rpm since the asperities read the 3-D G of the raceway's profile G
+    (surface.G_convention; 4 with the profile G read as a surface G)."""
     oil = ballscrew.case.with_overrides(case, LIBRARY_OIL)
     with pytest.warns(OperatingPointWarning) if rpm > 1500 else nullcontext():
         point = operating_point(oil, speed=rpm * RPM)
@@ -83,7 +84,7 @@ def test_the_point_is_the_fixed_point_to_its_tolerance(case, rpm):
     steady = field.solution.steady
     again = field.ambient_temperature + 0.5 * (nut(steady) + float(screw @ steady))
     assert again == pytest.approx(point.contact_temperature, abs=TOLERANCE)
-    assert point.iterations <= 4
+    assert point.iterations <= solves
 
 
 def test_a_named_oil_thins_as_the_screw_heats(case):

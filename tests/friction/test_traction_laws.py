@@ -71,10 +71,12 @@ def test_unknown_law_is_a_one_line_error(wear_case_path):
     ("level", "rpm", "total"),
     # the ball model's torques, default law, at the entrainment speed of the ball-centre speed
     # V: those before the rival law existed (commit 795fb9e; 0.19186, 0.26263, 0.19454 N m)
-    # with the JGP share on the asperity heights of σ_Λ (E6.6) instead of the cell's σ (E5.3)
+    # with the JGP share on the asperity heights of σ_Λ (E6.6) instead of the cell's σ (E5.3),
+    # the asperities on the 3-D G of the profile G since surface.G_convention (0.29973 N m at
+    # 3000 rpm with the profile G read as a surface G)
     [
         (1, 100.0, 0.20083663518246525),
-        (1, 3000.0, 0.2997285541876681),
+        (1, 3000.0, 0.29758800525071494),
         (2, 100.0, 0.20435820619124825),
     ],
 )

@@ -13,6 +13,10 @@ from ballscrew.analyses.kinematics import ball_model
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.tcr_models import gaussian_joint
 from ballscrew.fractal import yan_komvopoulos as yk
+from ballscrew.fractal.conventions import (
+    profile_roughness_from_surface,
+    surface_roughness_from_profile,
+)
 from ballscrew.lubrication import AsperitySurface, composite_roughness
 
 
@@ -36,12 +40,18 @@ def test_composite_roughness_grows_as_the_sampling_length_to_2_minus_d():
 
 
 def test_the_surface_takes_a_band_a_measured_sigma_or_its_cell_sigma():
-    base = {"Ds": 2.59, "G": 9e-10, "e_star": 1e11, "hardness": 6e9, "cell_area": 1e-10}
+    """The band's σ_Λ is the one of the profile with this 3-D surface's RMS height: the surface
+    G = 1.87 × 9e-10 m of the profile G = 9e-10 m gives that profile's 302 nm."""
+    g = surface_roughness_from_profile(1.59, 9e-10)
+    base = {"Ds": 2.59, "G": g, "e_star": 1e11, "hardness": 6e9, "cell_area": 1e-10}
     cell = AsperitySurface(**base)
     banded = AsperitySurface(**base, roughness=(8e-4, 2.5e-6))
     measured = AsperitySurface(**base, roughness=0.2e-6)
     assert cell.film_roughness == cell.rms_height
-    assert banded.film_roughness == pytest.approx(composite_roughness(1.59, 9e-10, 8e-4, 2.5e-6))
+    assert banded.film_roughness == pytest.approx(302.0e-9, rel=2e-3)
+    assert banded.film_roughness == pytest.approx(
+        composite_roughness(1.59, 9e-10, 8e-4, 2.5e-6), rel=1e-12
+    )
     assert measured.film_roughness == 0.2e-6
     assert banded.rms_height == cell.rms_height  # the asperity model keeps its cell σ
 
@@ -78,7 +88,7 @@ def test_the_share_reads_the_asperity_heights_of_the_film_parameter():
     base = {"Ds": 2.59, "G": 9e-10, "e_star": 1.13e11, "hardness": 6.5e9, "cell_area": 1e-10}
     cell = AsperitySurface(**base, roughness=(8e-4, 2.5e-6))
     film = cell.film_heights
-    sigma = composite_roughness(1.59, 9e-10, 8e-4, 2.5e-6)
+    sigma = composite_roughness(1.59, profile_roughness_from_surface(1.59, 9e-10), 8e-4, 2.5e-6)
     assert film.rms_height == pytest.approx(sigma, rel=1e-12) == film.film_roughness
     assert cell.rms_height == pytest.approx(34e-9, rel=0.05)  # one 10 µm cell, (E5.3)
     for t in (0.5, 1.0, 2.0):

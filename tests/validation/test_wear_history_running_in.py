@@ -112,7 +112,7 @@ def test_xjtu_running_in_forecast_down(validation) -> None:
 @pytest.mark.parametrize(("key", "known_miss"), BEATS_THE_LINE)
 def test_xjtu_running_in_joint_forecast(validation, key, known_miss) -> None:
     """Up +9.1 % (line −50.2 %), Down +3.6 % (line −5.2 %; held-out RMS 0.012 against the
-    line's 0.021 N m); without running-in −7.7 % and −7.5 %. The fit puts the whole test into
+    line's 0.021 N m); without running-in −7.8 % and −7.5 %. The fit puts the whole test into
     the transient (h_r = 0.65 ± 0.58 µm, K = 5.2e-7). With wear.asperity_roughness = "cell":
     +12.6 % and +5.8 % (Down a known miss by 0.6 points)."""
     result = _joint().histories[KEYS.index(key)]

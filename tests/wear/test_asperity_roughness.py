@@ -60,11 +60,12 @@ def test_the_cell_share_does_not_read_the_film_roughness(ref_case) -> None:
 
 
 def test_with_the_film_roughness_a_boundary_contact_wears_as_a_dry_one(ref_case) -> None:
-    """Option "film" on the example raceway (σ_Λ = 1.405 µm, Λ = 0.04–0.3 at 100–1500 rpm): the
-    asperities carry the whole load, ψ → 1, so the wear per revolution is that of the dry
-    contact (ψ = 1 exactly, the cell law of Archard type being per unit sliding distance) at any
-    speed (to 1e-4: 1 − ψ = 0 at 100 rpm, 1.5e-5 at 1500 rpm), where "cell" loses it to the film
-    (ψ 0.64 → 1.5e-6)."""
+    """Option "film" on the example raceway (σ_Λ = 1.005 µm, Λ = 0.051 and 0.31 at 100 and
+    1500 rpm): the asperities carry the whole load, ψ → 1, so the wear per revolution is that of
+    the dry contact (ψ = 1 exactly, the cell law of Archard type being per unit sliding
+    distance) at any speed (to 3e-3: 1 − ψ = 4e-15 at 100 rpm, 2.1e-3 at 1500 rpm; 1.5e-5 with
+    the σ_Λ = 1.405 µm of the surface G read as a profile G before surface.G_convention), where
+    "cell" loses it to the film (ψ 0.64 → 1.5e-6)."""
     film_case = with_overrides(ref_case, {"wear.asperity_roughness": "film"})
     setup, slow = _first_contact(film_case, 100.0)
     _, fast = _first_contact(film_case, 1500.0)
@@ -74,9 +75,9 @@ def test_with_the_film_roughness_a_boundary_contact_wears_as_a_dry_one(ref_case)
     assert dry.psi == 1.0 and dry.film_parameter is None
     assert slow.film_parameter < fast.film_parameter < 1.0  # boundary by Tallian's measure
     for rate in (slow, fast):
-        assert rate.psi == pytest.approx(1.0, abs=1e-4)
+        assert rate.psi == pytest.approx(1.0, abs=3e-3)
         np.testing.assert_allclose(
-            rate.depth_per_revolution, dry.depth_per_revolution, rtol=1e-4, atol=0.0
+            rate.depth_per_revolution, dry.depth_per_revolution, rtol=3e-3, atol=0.0
         )
     _, cell_fast = _first_contact(ref_case, 1500.0)
     assert cell_fast.psi < 1e-3
@@ -94,7 +95,8 @@ def test_the_option_changes_only_the_load_split(ref_case) -> None:
 
 def test_the_option_is_part_of_the_fingerprint(ref_case) -> None:
     """A checkpoint of one option does not resume the other; "cell" keeps the fingerprint of
-    the version before the option, so its checkpoints stay valid."""
+    the version before the option (and before surface.G_convention: the example gives the 3-D
+    G its wear law reads), so its checkpoints stay valid."""
     film_case = with_overrides(ref_case, {"wear.asperity_roughness": "film"})
     cell_print = fingerprint(ref_case, wear_setup(ref_case))
     assert cell_print == "8ec04f5b740b851a5ef0fb0bb0e8082078cd3eb77e2caca711488647873a3751"

@@ -14,6 +14,7 @@ from ballscrew.analyses.wear import wear_options, wear_setup
 from ballscrew.analyses.wear_duty import CalibrationRangeWarning, duty_programme
 from ballscrew.case import Case
 from ballscrew.errors import InputError
+from ballscrew.fractal.conventions import profile_roughness_from_surface
 from ballscrew.wear.life import _State, _step_rates
 from ballscrew.wear.programme import RunningIn, WearLevel
 from ballscrew.wear.setup import nut_force_pair
@@ -199,9 +200,10 @@ def _band_sigma(D: float, G: float, band: tuple[float, float]) -> float:
 @pytest.mark.parametrize("measured", [None, 2.0e-7])
 def test_running_in_acts_on_the_roughness_of_the_film_parameter(measured: float | None) -> None:
     """σ_Λ of Λ = h_c/σ_Λ runs in with the surface: the profile's (F3) at D(h), G(h) of the
-    running-in law; a measured tcr.rms_roughness (of the [surface] raceway) by the same law's
-    ratio, σ_meas Σ(D(h), G(h))/Σ(D_ss, G_ss) — it used to stay at σ_meas, the new raceway's Λ
-    ignoring running-in. The engine's wear does not read σ_Λ."""
+    running-in law (the example's G are 3-D surface G, surface.G_convention = "surface": the
+    law runs on them and (F3) takes the profile G of each); a measured tcr.rms_roughness (of the
+    [surface] raceway) by the same law's ratio, σ_meas Σ(D(h), G(h))/Σ(D_ss, G_ss) — it used to
+    stay at σ_meas, the new raceway's Λ ignoring running-in. The engine's wear does not read σ_Λ."""
     overrides: dict[str, object] = {
         "wear.grid": [12, 48],
         "wear.running_in": {"D": 1.3, "G": "1e-9 m", "depth": "0.2 um"},
@@ -210,12 +212,12 @@ def test_running_in_acts_on_the_roughness_of_the_film_parameter(measured: float 
         overrides.update({"tcr.rms_roughness": measured, "tcr.rms_slope": 0.05})
     setup = wear_setup(ballscrew.load_case(REF_PATH, overrides))
     band = (8e-4, 2.5e-6)  # the [tcr] defaults
-    steady = _band_sigma(1.4, 1e-10, band)
+    steady = _band_sigma(1.4, profile_roughness_from_surface(1.4, 1e-10), band)
     for h in (0.0, 0.1e-6, 0.2e-6, 1e-6):
         weight = math.exp(-h / 0.2e-6)
         d = 1.4 + (1.3 - 1.4) * weight
         g = math.exp(math.log(1e-10) + (math.log(1e-9) - math.log(1e-10)) * weight)
-        sigma = _band_sigma(d, g, band)
+        sigma = _band_sigma(d, profile_roughness_from_surface(d, g), band)
         expected = sigma if measured is None else measured * sigma / steady
         assert setup.surface_at(h).film_roughness == pytest.approx(expected, rel=1e-12)
     run_in = setup.surface_at(50e-6).film_roughness
@@ -249,10 +251,12 @@ def test_a_rough_ball_adds_in_quadrature_as_the_raceway_runs_in() -> None:
         )
     )
     band = (8e-4, 2.5e-6)
-    ball = _band_sigma(1.5, 1e-11, band)
+    ball = _band_sigma(1.5, profile_roughness_from_surface(1.5, 1e-11), band)
     assert setup.surface_at(0.0).film_roughness == pytest.approx(
-        math.hypot(_band_sigma(1.3, 1e-9, band), ball), rel=1e-12
+        math.hypot(_band_sigma(1.3, profile_roughness_from_surface(1.3, 1e-9), band), ball),
+        rel=1e-12,
     )
     assert setup.surface_at(50e-6).film_roughness == pytest.approx(
-        math.hypot(_band_sigma(1.4, 1e-10, band), ball), rel=1e-12
+        math.hypot(_band_sigma(1.4, profile_roughness_from_surface(1.4, 1e-10), band), ball),
+        rel=1e-12,
     )

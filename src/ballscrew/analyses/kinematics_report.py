@@ -13,6 +13,7 @@ import xarray as xr
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
+from ballscrew.analyses.roughness import roughness_summary, roughness_text
 from ballscrew.kinematics.balance import BallState
 from ballscrew.kinematics.torque import BallDrag
 from ballscrew.plotting import legend_outside, plain, pyplot, save_figure, zero_noise
@@ -116,7 +117,7 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
             "limiting_shear": case.kinematics.limiting_shear,
             "micro_contact_size": value(case.kinematics.micro_contact_size, "m"),
             "film_roughness": value(run.roughness, "m"),
-            "surface": {"D": case.surface.D, "Ds": case.surface.D + 1.0},
+            "surface": {**roughness_summary(case, "surface"), "Ds": case.surface.D + 1.0},
             "lubricated": run.lubricated,
         },
     }
@@ -335,8 +336,8 @@ def sections(run: KinematicsRun) -> list[Section]:
             paragraphs=(
                 "Hamrock–Dowson films at the whole ball loads, the films of the film parameter "
                 "Λ = h_c/σ_Λ; Johnson–Greenwood–Poon load sharing at A with the "
-                "Yan–Komvopoulos fractal asperities (Ds = D + 1 = "
-                f"{case.surface.D + 1:g}, G = {case.surface.G:.3g} m, cell "
+                "Yan–Komvopoulos fractal asperities (Ds = D + 1, "
+                f"{roughness_text(case, 'surface')}, cell "
                 f"{case.kinematics.micro_contact_size * 1e6:g} µm) whose heights have the "
                 "same σ_Λ: the surfaces separate by h, the film of the film-borne load (1 − ψ) Q, "
                 "and the asperities carry ψ Q."

@@ -11,6 +11,7 @@ import xarray as xr
 
 from ballscrew.analyses import thermal_report
 from ballscrew.analyses.result import Figure, Section, Table, quantity
+from ballscrew.analyses.roughness import roughness_summary
 from ballscrew.lubrication import regime
 from ballscrew.plotting import pyplot, save_figure
 
@@ -63,6 +64,7 @@ def summary(result: OperatingPoint) -> dict[str, Any]:
         scalars["lubrication_regime"] = regime(result.film_parameter)
     if friction.asperity_share is not None:
         scalars["asperity_share"] = quantity(friction.asperity_share, "")
+        scalars["surface"] = roughness_summary(result.case, "surface")
     if friction.traction_coefficient is not None:
         scalars["traction_coefficient"] = quantity(friction.traction_coefficient, "")
     if result.curve is not None:

@@ -21,6 +21,7 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
+from ballscrew.analyses.roughness import profile_roughness, surface_roughness
 from ballscrew.case import Case
 from ballscrew.contact.elastic import composite_modulus
 from ballscrew.contact.hertz import hertz
@@ -193,7 +194,10 @@ class ScrewParameters:
     D: float
     """Profile fractal dimension of the raceways, 1 < D < 2."""
     G: float
-    """Fractal roughness of the raceways [m]."""
+    """Fractal roughness of the raceways, the Majumdar–Bhushan profile G [m] (TCR models, σ_Λ)."""
+    G_surface: float
+    """The same raceways' 3-D Yan–Komvopoulos surface G [m] (asperity load sharing, wear);
+    both converted once from the case's ``surface.G_convention``."""
     smooth_ball: bool
     """True when the case gives no ball roughness."""
     lubrication: Lubrication
@@ -231,7 +235,8 @@ class ScrewParameters:
             screw=Material(**case.materials.screw.properties),
             nut=Material(**case.materials.nut.properties),
             D=case.surface.D,
-            G=case.surface.G,
+            G=profile_roughness(case, case.surface.D, case.surface.G),
+            G_surface=surface_roughness(case, case.surface.D, case.surface.G),
             smooth_ball=case.surface.ball is None,
             lubrication=Lubrication(
                 medium.name,

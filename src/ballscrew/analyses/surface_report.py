@@ -11,6 +11,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
+from ballscrew.fractal.conventions import surface_roughness_from_profile
 from ballscrew.plotting import plain, pyplot, save_figure
 from ballscrew.surface.fit import FractalFit, SurfaceFit
 from ballscrew.surface.profile import Profile
@@ -88,11 +89,17 @@ def summary(result: SurfaceCharacterisation) -> dict[str, Any]:
             "D": fit.D,
             "surface_dimension": fit.D + 1.0,
             "G": value(fit.G, "m"),
+            "G_surface": value(
+                surface_roughness_from_profile(fit.D, fit.G, fit.recommended.gamma), "m"
+            ),
         },
         "methods": methods,
         "notes": list(fit.notes),
         "conventions": {
             "D": "profile fractal dimension, 1 < D < 2 (3-D surface Ds = D + 1)",
+            "G": "Majumdar–Bhushan profile G: a case takes it with surface.G_convention = "
+            "'profile' (the default); G_surface is the 3-D Yan–Komvopoulos G of the same RMS "
+            "height (theory manual, Fractal contact)",
             "psd": "one-sided, frequency in cycles/m: S = G^(2(D-1))/(2 ln γ) ω^-(5-2D)",
             "structure_function": "C_D G^(2(D-1)) (2π τ)^(4-2D) (theory manual, Surface, F4)",
         },
@@ -236,6 +243,7 @@ def sections(result: SurfaceCharacterisation) -> list[Section]:
     fits = [f for f in (fit.psd, fit.structure_function) if f is not None]
     notes = [n for f in fits for n in f.notes] + list(fit.notes)
     header = ("method", "D", "Ds = D + 1", "G [m]", "s.e. D", "s.e. ln G", "fit range", "R²")
+    g_surface = surface_roughness_from_profile(fit.D, fit.G, fit.recommended.gamma)
     return [
         Section(
             "Fractal parameters",
@@ -243,7 +251,9 @@ def sections(result: SurfaceCharacterisation) -> list[Section]:
                 f"{profile.n_profiles} profile(s) of {profile.n_points} points at "
                 f"Δx = {profile.spacing:.4g} m (L = {profile.length:.4g} m). Recommended: "
                 f"D = {fit.D:.4f} (surface Ds = {fit.D + 1:.4f}), G = {fit.G:.4g} m from "
-                f"the {_NAMES[fit.recommended.method]}.",
+                f"the {_NAMES[fit.recommended.method]}: a profile G (surface.G_convention = "
+                "'profile', the default); the 3-D Yan–Komvopoulos surface of the same RMS height "
+                f"has G = {g_surface:.4g} m.",
                 "Conventions: profile dimension 1 < D < 2, G in m, "
                 "one-sided PSD in cycles/m (F2), structure function with the (2π)^(4−2D) "
                 "factor (F4), γ = "

@@ -12,6 +12,7 @@ from ballscrew import plotting as plots
 from ballscrew.analyses.parameters import SIDES
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
+from ballscrew.analyses.roughness import roughness_summary, roughness_text
 
 if TYPE_CHECKING:
     from ballscrew.analyses.screw_tcr import NutTCR, RacewayTCR, ScrewTCR
@@ -180,7 +181,7 @@ def summary(result: ScrewTCR) -> dict[str, Any]:
             "gap_factor": case.tcr.gap_factor,
             "cutoff_area": value(case.tcr.cutoff_area, "m^2"),
             "load_threshold": case.tcr.load_threshold,
-            "surface": {"D": case.surface.D, "G": value(case.surface.G, "m")},
+            "surface": roughness_summary(case, "profile"),
             "correlation_roughness": _roughness_summary(case),
             "medium_conductivity": value(case.medium.thermal_conductivity, "W/(m*K)"),
             "contact_gap_model": case.numerics.gap_model,
@@ -352,7 +353,7 @@ def sections(result: ScrewTCR) -> list[Section]:
             "Thermal contact resistance of the screw",
             paragraphs=(
                 headline_model_text(result),
-                f"D = {case.surface.D:g}, G = {case.surface.G:.3g} m, λ_f = "
+                f"{roughness_text(case, 'profile')}, λ_f = "
                 f"{case.medium.thermal_conductivity:g} W/mK. Screw and nut contact in series "
                 "per ball, all loaded balls of both nuts in parallel (Gao, Wang & Liu 2019).",
                 HEADLINE,

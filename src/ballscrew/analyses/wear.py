@@ -20,7 +20,7 @@ from ballscrew.analyses import wear_report
 from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
-from ballscrew.analyses.roughness import roughness_input
+from ballscrew.analyses.roughness import ball_roughness, roughness_input, surface_roughness
 from ballscrew.analyses.wear_duty import duty_programme, warn_outside_range
 from ballscrew.analyses.wear_film import PartFilm, part_films, warn_full_film
 from ballscrew.budget import check_memory, contact_grid_bytes
@@ -31,7 +31,7 @@ from ballscrew.errors import InputError
 from ballscrew.fractal.yan_komvopoulos import surface_dimension
 from ballscrew.geometry import gap_function, raceway_curvature
 from ballscrew.loads import ball_load, preload_drag_torque
-from ballscrew.lubrication import AsperitySurface, composite_roughness
+from ballscrew.lubrication import AsperitySurface
 from ballscrew.validation import case_with
 from ballscrew.wear.history import WearLife
 from ballscrew.wear.life import check_wear_work, integrate_wear
@@ -89,7 +89,11 @@ def wear_options(case: Case) -> WearOptions:
         box_factor=spec.box_factor,
         checkpoint_every=spec.checkpoint_every,
         film_factor=spec.film_factor,
-        running_in=(None if running is None else RunningIn(running.D, running.G, running.depth)),
+        running_in=(
+            None
+            if running is None
+            else RunningIn(running.D, surface_roughness(case, running.D, running.G), running.depth)
+        ),
         load_classes=spec.load_classes,
         torque_offset=spec.torque_offset,
         asperity_roughness=spec.asperity_roughness,
@@ -174,8 +178,8 @@ def wear_setup(case: Case) -> WearSetup:
     }
     eta, alpha = params.lubrication.viscosity, params.lubrication.pressure_viscosity
     surface = AsperitySurface(
-        Ds=surface_dimension(case.surface.D),
-        G=case.surface.G,
+        Ds=surface_dimension(params.D),
+        G=params.G_surface,
         e_star=e_star,
         hardness=hardness,
         cell_area=dx * dy,
@@ -234,10 +238,9 @@ def _film_roughness(case: Case) -> FilmRoughness:
     """σ_Λ of the case's raceway as it runs in: the band of ``[tcr]``, a rough ball's σ over it
     (``surface.ball``) and ``tcr.rms_roughness`` when measured (theory manual, *Wear*,
     running-in)."""
-    tcr, ball = case.tcr, case.surface.ball
+    tcr = case.tcr
     band = (tcr.sampling_length, tcr.cutoff_length)
-    rough = 0.0 if ball is None else composite_roughness(ball.D, ball.G, *band)
-    return FilmRoughness(band, rough, tcr.rms_roughness)
+    return FilmRoughness(band, ball_roughness(case), tcr.rms_roughness)
 
 
 def _ball_classes(
@@ -294,10 +297,14 @@ def _preload_loop_compliance(case: Case, params: ScrewParameters) -> float:
 
 def fingerprint(case: Case, setup: WearSetup) -> str:
     """Hash of every input of the wear run (a checkpoint must come from the same inputs)."""
+    surface = case.surface.model_dump(mode="json")
+    # the 3-D G the wear law reads: a "surface" case keeps the fingerprint of earlier versions
+    surface.update(G=setup.surface.G)
+    del surface["G_convention"]
     data = {
         "wear": dataclasses.asdict(setup.spec),
         "screw": case.screw.model_dump(mode="json"),
-        "surface": case.surface.model_dump(mode="json"),
+        "surface": surface,
         "preload": case.operating.preload,
         "numerics": case.numerics.model_dump(mode="json"),
         "viscosity": setup.viscosity,
@@ -321,6 +328,8 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
         data["lubrication"] = case.lubrication.model_dump(mode="json")
     if setup.film_model != "hamrock_dowson":
         data["film_model"] = case.medium.film_model
+    if setup.spec.asperity_roughness == "film":  # σ_Λ, of the profile G since G_convention
+        data["film_roughness"] = setup.surface.film_roughness
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 

@@ -17,6 +17,7 @@ import xarray as xr
 
 from ballscrew.analyses.result import Figure, Section, Table
 from ballscrew.analyses.result import quantity as value
+from ballscrew.analyses.roughness import roughness_summary, surface_roughness
 from ballscrew.analyses.wear_film import FULL_FILM_SHARE, PartFilm
 from ballscrew.case import Case
 from ballscrew.case.wear_spec import WearSpec
@@ -88,9 +89,15 @@ def _lubrication_options(case: Case) -> dict[str, Any]:
     out: dict[str, Any] = {
         "film_factor": spec.film_factor,
         "asperity_roughness": spec.asperity_roughness,
+        "surface": roughness_summary(case, "surface"),
         "running_in": None
         if running is None
-        else {"D": running.D, "G": value(running.G, "m"), "depth": value(running.depth, "m")},
+        else {
+            "D": running.D,
+            "G": value(running.G, "m"),
+            "G_surface": value(surface_roughness(case, running.D, running.G), "m"),
+            "depth": value(running.depth, "m"),
+        },
         "programme": "duty" if case.duty else "wear.programme",
     }
     if case.duty:

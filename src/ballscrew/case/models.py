@@ -161,10 +161,27 @@ class FractalSurface(Model):
     G: quantity("length", "fractal roughness G", gt=0, le=1e-3)
 
 
+G_CONVENTIONS = ("profile", "surface")
+"""What the G of a case is: the Majumdar–Bhushan profile G or the 3-D Yan–Komvopoulos surface G
+(:mod:`ballscrew.fractal.conventions`)."""
+
+
 class SurfaceSpec(FractalSurface):
-    """Raceway roughness (``D``, ``G``) and, optionally, the ball's (smooth when absent)."""
+    """Raceway roughness (``D``, ``G``) and, optionally, the ball's (smooth when absent).
+
+    ``G_convention`` says which G the case gives, for ``G``, ``ball.G`` and
+    ``wear.running_in.G`` alike; every analysis converts it once to the G its model reads
+    (theory manual, *Fractal contact*, roughness conventions).
+    """
 
     ball: FractalSurface | None = Field(None, description="ball roughness; None = smooth ball")
+    G_convention: Literal[G_CONVENTIONS] = Field(  # type: ignore[valid-type]
+        "profile",
+        description="which G the case gives (for surface.G, surface.ball.G and "
+        "wear.running_in.G): 'profile' the Majumdar–Bhushan profile G of a measured profile "
+        "(ballscrew surface), 'surface' the 3-D Yan–Komvopoulos surface G; each model gets its "
+        "own G of the same RMS height",
+    )
 
 
 _KinematicViscosity = quantity("kinematic_viscosity", "kinematic viscosity", gt=0, le=1.0)

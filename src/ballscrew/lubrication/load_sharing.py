@@ -20,6 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 from ballscrew.errors import InputError
 from ballscrew.fractal import majumdar_bhushan as mb
 from ballscrew.fractal import yan_komvopoulos as yk
+from ballscrew.fractal.conventions import profile_roughness_from_surface
 from ballscrew.lubrication.film import (
     FilmModel,
     FilmThickness,
@@ -83,7 +84,8 @@ class AsperitySurface:
     Ds: float
     """Surface fractal dimension, 2 < Ds < 3 (= profile D + 1)."""
     G: float
-    """Fractal roughness G [m]."""
+    """Fractal roughness G of the 3-D Yan–Komvopoulos surface [m] (not the profile G:
+    :mod:`ballscrew.fractal.conventions`)."""
     e_star: float
     """Contact modulus E* of ball and raceway [Pa]."""
     hardness: float
@@ -108,13 +110,16 @@ class AsperitySurface:
 
     @cached_property
     def film_roughness(self) -> float:
-        """σ_Λ of the film parameter (E6.6), m: :func:`composite_roughness` of the profile
-        (D = Ds − 1, G) over the band :attr:`roughness`, a measured σ as given, or
-        :attr:`rms_height` without either."""
+        """σ_Λ of the film parameter (E6.6), m: :func:`composite_roughness` over the band
+        :attr:`roughness` of the profile (D = Ds − 1) with the RMS height of this surface
+        (:func:`~ballscrew.fractal.conventions.profile_roughness_from_surface`), a measured σ as
+        given, or :attr:`rms_height` without either."""
         if self.roughness is None:
             return self.rms_height
         if isinstance(self.roughness, tuple):
-            return composite_roughness(self.Ds - 1.0, self.G, *self.roughness, gamma=self.gamma)
+            d = self.Ds - 1.0
+            g = profile_roughness_from_surface(d, self.G, self.gamma)
+            return composite_roughness(d, g, *self.roughness, gamma=self.gamma)
         return float(self.roughness)
 
     @cached_property

@@ -8,6 +8,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numpy.typing import NDArray
 
+from ballscrew.fractal.conventions import profile_roughness_from_surface
 from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads import ball_load, nut_forces, preload_after_wear, preload_drag_torque
 from ballscrew.lubrication import AsperitySurface, composite_roughness
@@ -29,9 +30,11 @@ class FilmRoughness:
     """How the composite roughness σ_Λ of the film parameter (E6.6) follows the raceway's
     profile (D, G) as it runs in.
 
-    The profile model's σ_Λ is Σ(D, G) = √(σ_F3(D, G)² + σ_b²): (F3) over the measurement band
-    [l_c, L_u] (:func:`~ballscrew.lubrication.composite_roughness`) and a rough ball's σ_b over
-    the same band in quadrature (Tallian 1967). A measured σ_Λ belongs to the ``[surface]``
+    The profile model's σ_Λ is Σ(D, G) = √(σ_F3(D, G_p)² + σ_b²): (F3) over the measurement band
+    [l_c, L_u] (:func:`~ballscrew.lubrication.composite_roughness`) of the profile G_p with the
+    RMS height of the 3-D surface (D + 1, G)
+    (:func:`~ballscrew.fractal.conventions.profile_roughness_from_surface`) and a rough ball's
+    σ_b over the same band in quadrature (Tallian 1967). A measured σ_Λ belongs to the ``[surface]``
     (D_ss, G_ss) (the run-in raceway when running-in is given, ASSUMED) and runs in by the
     profile model's ratio: σ_Λ(h) = σ_meas Σ(D(h), G(h))/Σ(D_ss, G_ss), D(h), G(h) of the
     running-in law (:class:`~ballscrew.wear.programme.RunningIn`).
@@ -45,12 +48,18 @@ class FilmRoughness:
     """Measured σ_Λ of the ``[surface]`` raceway [m]; None: the profile model's."""
 
     def sigma(self, D: float, G: float, steady: tuple[float, float], gamma: float = 1.5) -> float:
-        """σ_Λ [m] of the profile (D, G); ``steady``: the (D_ss, G_ss) of a measured σ."""
-        model = math.hypot(composite_roughness(D, G, *self.band, gamma=gamma), self.ball)
+        """σ_Λ [m] of the surface of profile dimension D and surface roughness G [m] (3-D
+        Yan–Komvopoulos); ``steady``: the (D_ss, G_ss) of a measured σ."""
+        model = math.hypot(self._profile_sigma(D, G, gamma), self.ball)
         if self.measured is None:
             return model
-        reference = composite_roughness(*steady, *self.band, gamma=gamma)
+        reference = self._profile_sigma(*steady, gamma)
         return self.measured * model / math.hypot(reference, self.ball)
+
+    def _profile_sigma(self, D: float, G: float, gamma: float) -> float:
+        """(F3) over the band of the profile with the RMS height of the surface (D + 1, G)."""
+        g = profile_roughness_from_surface(D, G, gamma)
+        return composite_roughness(D, g, *self.band, gamma=gamma)
 
 
 @dataclass(frozen=True)
