@@ -116,9 +116,13 @@ def _level(case: Case, level: int | None) -> int:
 
 
 def prepare(
-    case: Case, speeds: float | FloatArray | list[float], level: int | None
+    case: Case,
+    speeds: float | FloatArray | list[float],
+    level: int | None,
+    warn_at: float | None = None,
 ) -> tuple[BallModel, int]:
-    """Validate speeds and level, warn about speed limits, and build the ball model.
+    """Validate speeds and level, warn about the speed limits of ``warn_at`` [rad/s] (default
+    the largest speed), and build the ball model.
 
     Every check runs before any computation (level 2 needs lubricant data).
     """
@@ -133,7 +137,7 @@ def prepare(
             "[kinematics] lubricant",
         )
     if values:
-        check_speed_limits(case, max(values), stacklevel=4)
+        check_speed_limits(case, max(values) if warn_at is None else warn_at, stacklevel=4)
     return model, lvl
 
 
@@ -388,6 +392,27 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
     return messages
 
 
+def curve_limit_messages(case: Case, speed: float, curve: FloatArray) -> list[str]:
+    """The speed limits that the curves versus speed pass and the case ``speed`` [rad/s] does
+    not (one line, said of the curves; empty when none): their top is the d·n limit's speed
+    or ``[kinematics] speed_range``, not a speed the screw runs at."""
+    top = float(np.max(curve))
+    if top <= speed:
+        return []
+
+    def kind(message: str) -> str:
+        return "whirling" if "whirling" in message else "d·n"
+
+    passed = {kind(m) for m in speed_limit_messages(case, speed)}
+    beyond = [m for m in speed_limit_messages(case, top) if kind(m) not in passed]
+    if not beyond:
+        return []
+    return [
+        f"the curves versus speed run to {format_quantity(top, 'rad/s')}, above the case speed "
+        f"{format_quantity(speed, 'rad/s')}: " + "; ".join(beyond)
+    ]
+
+
 def whirl_shaft(case: Case) -> tuple[float, str, float | None] | None:
     """(unsupported length [m], mounting, root diameter [m] or None = groove bottom) of the
     whirling check; None when neither ``[kinematics]`` nor ``[design]`` gives the length.
@@ -532,8 +557,12 @@ def run_kinematics(
     case = at_operating_temperature(case, _speed(case, omega))
     speeds = curve_speeds(case)
     with recorded_warnings() as raised:
-        model, lvl = prepare(case, np.append(speeds, omega), level)
-        messages = speed_limit_messages(case, float(max(omega, speeds.max())))
+        model, lvl = prepare(case, np.append(speeds, omega), level, warn_at=omega)
+        messages = speed_limit_messages(case, omega)
+        for message in curve_limit_messages(case, omega, speeds):
+            messages.append(message)
+            if case.kinematics.speed_warnings:
+                warnings.warn(message, SpeedLimitWarning, stacklevel=2)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SpeedLimitWarning)
             states, drags = {}, {}
