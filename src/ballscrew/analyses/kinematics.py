@@ -31,7 +31,12 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses import kinematics_report
 from ballscrew.analyses.ball_contact import solve_raceway_contact
-from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
+from ballscrew.analyses.parameters import (
+    ScrewParameters,
+    film_model,
+    library_entry,
+    lubricant_state,
+)
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.roughness import roughness_input
 from ballscrew.case import Case
@@ -106,6 +111,24 @@ def at_operating_temperature(case: Case, speed: float | None = None) -> Case:
     from ballscrew.analyses.operating_point import at_operating_point
 
     return at_operating_point(case, speed)[0]
+
+
+def film_viscosity_source(case: Case) -> str:
+    """Where the viscosity of the kinematics' film and traction comes from (``case`` as given,
+    before :func:`at_operating_temperature`), in words."""
+    if case.medium.viscosity is not None:
+        return "medium.viscosity, fixed at every temperature"
+    entry = library_entry(case)
+    if entry is None:
+        return "no lubricant data: dry contacts"
+    name = case.medium.lubricant or case.kinematics.lubricant or "of [medium] viscosity_40/100"
+    if case.operating.coupled:
+        return f"lubricant {name}, at the contact temperature of the coupled operating point"
+    return (
+        f"lubricant {name}, at [lubrication] temperature = "
+        f"{case.lubrication.temperature - 273.15:.4g} °C, not at the contact temperature that "
+        "the operating point computes (set [operating] coupled = true for it)"
+    )
 
 
 def _level(case: Case, level: int | None) -> int:
@@ -528,6 +551,10 @@ class KinematicsRun(Presented):
     roughness: float = math.nan
     """Composite RMS roughness σ_Λ of the screw raceway (E6.6) [m]: the σ of the film parameter
     and of the asperity heights of the JGP share."""
+    viscosity: float = math.nan
+    """Dynamic viscosity η₀ of the films and the traction [Pa s] (NaN dry)."""
+    viscosity_source: str = ""
+    """Where η₀ comes from (:func:`film_viscosity_source`)."""
 
     analysis: ClassVar[str] = "kinematics"
     presentation: ClassVar[ModuleType] = kinematics_report
@@ -554,6 +581,7 @@ def run_kinematics(
 ) -> KinematicsRun:
     """Run the analysis (all checks first, see :func:`prepare`)."""
     omega = case.operating.speed if speed is None else float(speed)
+    source = film_viscosity_source(case)
     case = at_operating_temperature(case, _speed(case, omega))
     speeds = curve_speeds(case)
     with recorded_warnings() as raised:
@@ -622,4 +650,6 @@ def run_kinematics(
         ),
         entrainment=entrainment,
         roughness=model.surface.film_roughness,
+        viscosity=math.nan if model.viscosity is None else model.viscosity,
+        viscosity_source=source,
     )
