@@ -513,6 +513,33 @@ def _warn_external_loads(case: Case, loaded: Distribution | None) -> None:
     )
 
 
+def _warn_operating_outside_duty(case: Case, spectrum: LoadSpectrum) -> None:
+    """Warn when ``[operating]`` runs harder than every ``[[duty]]`` segment: the life and the
+    margins take the duty's loads and speeds, so that point (a ``--set operating.…`` too) is
+    not checked; only the contact stiffness is taken at ``[operating] axial_load``."""
+    if spectrum.source != "duty":
+        return
+    op, over = case.operating, []
+    if abs(op.axial_load) > spectrum.max_load * (1.0 + 1e-9):
+        over.append(
+            f"axial_load = {format_quantity(abs(op.axial_load), 'N')} above the duty's largest "
+            f"{format_quantity(spectrum.max_load, 'N')}"
+        )
+    if op.speed > spectrum.max_speed * (1.0 + 1e-9):
+        over.append(
+            f"speed = {format_quantity(op.speed, 'rad/s')} above the duty's largest "
+            f"{format_quantity(spectrum.max_speed, 'rad/s')}"
+        )
+    if over:
+        warnings.warn(
+            f"[operating] {' and '.join(over)}: the life, static safety, speed, lift-off and "
+            "lost-motion values take the [[duty]] loads and speeds, not this point; add it to "
+            "[[duty]] to check it",
+            DesignWarning,
+            stacklevel=3,
+        )
+
+
 def design_check(case: Case) -> DesignCheck:
     """Every design value of the case's screw with its margin (needs ``[design]``)."""
     spec = case_with(case, "screw", "operating", "design").design  # type: ignore[attr-defined]
@@ -583,6 +610,7 @@ def design_check(case: Case) -> DesignCheck:
     with recorded_warnings() as messages:
         _warn(margins, values, computed, spec, loaded_part(case))
         _warn_external_loads(case, loaded)
+        _warn_operating_outside_duty(case, spectrum)
     return DesignCheck(
         case=case,
         margins=margins,
