@@ -62,7 +62,7 @@ from ballscrew.lubrication import (
     asperity_pressure,
     film_parameter,
 )
-from ballscrew.units import format_quantity
+from ballscrew.units import format_quantity, to_si
 from ballscrew.validation import case_with, positive
 
 __all__ = [
@@ -93,10 +93,10 @@ _SPEED_RANGE = f"a screw speed in [0, {MAX_SPEED:g}] rad/s (the range of operati
 def _speed(case: Case, speed: float | None) -> float:
     case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
-    try:
-        omega = float(value)
-    except (TypeError, ValueError):
-        raise InputError("speed", value, _SPEED_RANGE) from None
+    try:  # a number is rad/s; a string may carry its unit ("1500 rpm"), as operating_point's
+        omega = to_si(value, "angular_velocity")
+    except ValueError as exc:
+        raise InputError("speed", value, f"{exc}; {_SPEED_RANGE}") from None
     if not (math.isfinite(omega) and 0.0 <= omega <= MAX_SPEED):
         raise InputError("speed", value, _SPEED_RANGE)
     return omega
