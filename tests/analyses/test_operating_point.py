@@ -400,3 +400,19 @@ def test_a_curve_beyond_the_speed_range_blames_its_option(tmp_path):
     assert result.exit_code == 2 and not out.exists()
     assert "--curve-to" in result.output and "operating.speed" not in result.output
     assert "100000" in result.output
+
+
+def test_the_speed_curve_does_not_blame_operating_speed_for_its_points(case):
+    """A curve of 750 and 1500 rad/s (d·n 2.9e5 and 5.7e5 mm·rpm, beyond any screw's 2e5): no
+    'operating.speed = 750 rad/s' on the console, which the user never set (each point still
+    keeps its own d·n message)."""
+    import warnings
+
+    from ballscrew.analyses.operating_point import speed_curve
+    from ballscrew.errors import ImplausibleValueWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        curve = speed_curve(case, [750.0, 1500.0])
+    assert not [w for w in caught if issubclass(w.category, ImplausibleValueWarning)]
+    assert all(any("d·n" in m for m in point) for point in curve.warnings)
