@@ -413,6 +413,11 @@ def test_the_speed_curve_does_not_blame_operating_speed_for_its_points(case):
 
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        curve = speed_curve(case, [750.0, 1500.0])
+        curve = speed_curve(case, [750.0, 1500.0, 2500.0])
     assert not [w for w in caught if issubclass(w.category, ImplausibleValueWarning)]
     assert all(any("d·n" in m for m in point) for point in curve.warnings)
+    # Re_ω = ω d²/ν = 2500 × 0.04²/1.589e-5 = 2.5e5 < 4.3e5 < 4.9e5 at 4900 rad/s: kept, not raised
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        curve = speed_curve(case, [4900.0])
+    assert not caught and any("Kreith" in m for m in curve.warnings[0])

@@ -38,7 +38,7 @@ from ballscrew.analyses.parameters import SIDES, ScrewParameters, library_entry
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.thermal import HeatCoupling, ThermalField, solve_field
 from ballscrew.case import Case, with_overrides
-from ballscrew.errors import ConvergenceError, ImplausibleValueWarning, InputError
+from ballscrew.errors import ConvergenceError, InputError
 from ballscrew.friction.torque import FrictionTorque
 from ballscrew.kinematics.motion import entrainment_speed
 from ballscrew.loads import preload_drag_torque
@@ -559,10 +559,8 @@ def speed_curve(
         raise InputError("speeds", speeds, "one or more finite speeds > 0 rad/s")
     points = []
     for w in omega:  # one coupled fixed point per speed: each is its own iteration
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", OperatingPointWarning)
-            # the case speed is warned about once; each point keeps its own d·n message
-            warnings.simplefilter("ignore", ImplausibleValueWarning)
+        with warnings.catch_warnings():  # each point keeps its warnings (p.warnings), and
+            warnings.simplefilter("ignore")  # the case's own speed is warned about once
             points.append(operating_point(case, float(w), axial_load))
     values = {k: np.array([getattr(p, k) for p in points]) for k in CURVE_QUANTITIES}
     return SpeedCurve(
