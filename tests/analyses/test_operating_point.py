@@ -421,3 +421,13 @@ def test_the_speed_curve_does_not_blame_operating_speed_for_its_points(case):
         warnings.simplefilter("always")
         curve = speed_curve(case, [4900.0])
     assert not caught and any("Kreith" in m for m in curve.warnings[0])
+
+
+def test_a_field_without_sensors_has_no_empty_sensor_table(case):
+    """No [[thermal.sensors]]: the results section had a sensor table of headers only."""
+    from ballscrew.analyses import thermal_report
+    from ballscrew.case import with_overrides
+
+    point = operating_point(with_overrides(case, {"thermal.sensors": []}), speed=1500 * RPM)
+    results = {s.title: s for s in thermal_report.sections(point.field)}["Results"]
+    assert [t.header[0] for t in results.tables] == ["quantity"]
