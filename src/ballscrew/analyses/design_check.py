@@ -26,7 +26,7 @@ import xarray as xr
 from ballscrew import design
 from ballscrew.analyses import design_check_report
 from ballscrew.analyses.ball_loads import elastic_distribution
-from ballscrew.analyses.duty import moving_fraction
+from ballscrew.analyses.duty import moving_fraction, operating_excess
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
@@ -519,17 +519,7 @@ def _warn_operating_outside_duty(case: Case, spectrum: LoadSpectrum) -> None:
     not checked; only the contact stiffness is taken at ``[operating] axial_load``."""
     if spectrum.source != "duty":
         return
-    op, over = case.operating, []
-    if abs(op.axial_load) > spectrum.max_load * (1.0 + 1e-9):
-        over.append(
-            f"axial_load = {format_quantity(abs(op.axial_load), 'N')} above the duty's largest "
-            f"{format_quantity(spectrum.max_load, 'N')}"
-        )
-    if op.speed > spectrum.max_speed * (1.0 + 1e-9):
-        over.append(
-            f"speed = {format_quantity(op.speed, 'rad/s')} above the duty's largest "
-            f"{format_quantity(spectrum.max_speed, 'rad/s')}"
-        )
+    over = operating_excess(case, spectrum.max_load, spectrum.max_speed, "duty")
     if over:
         warnings.warn(
             f"[operating] {' and '.join(over)}: the life, static safety, speed, lift-off and "
