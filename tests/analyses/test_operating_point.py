@@ -401,3 +401,34 @@ def test_a_curve_beyond_the_speed_range_blames_its_option(tmp_path):
     assert result.exit_code == 2 and not out.exists()
     assert "--curve-to" in result.output and "operating.speed" not in result.output
     assert "100000" in result.output
+
+
+def test_the_speed_curve_does_not_blame_operating_speed_for_its_points(case):
+    """A curve of 750 and 1500 rad/s (d·n 2.9e5 and 5.7e5 mm·rpm, beyond any screw's 2e5): no
+    'operating.speed = 750 rad/s' on the console, which the user never set (each point still
+    keeps its own d·n message)."""
+    import warnings
+
+    from ballscrew.analyses.operating_point import speed_curve
+    from ballscrew.errors import ImplausibleValueWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        curve = speed_curve(case, [750.0, 1500.0, 2500.0])
+    assert not [w for w in caught if issubclass(w.category, ImplausibleValueWarning)]
+    assert all(any("d·n" in m for m in point) for point in curve.warnings)
+    # Re_ω = ω d²/ν = 2500 × 0.04²/1.589e-5 = 2.5e5 < 4.3e5 < 4.9e5 at 4900 rad/s: kept, not raised
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        curve = speed_curve(case, [4900.0])
+    assert not caught and any("Kreith" in m for m in curve.warnings[0])
+
+
+def test_a_field_without_sensors_has_no_empty_sensor_table(case):
+    """No [[thermal.sensors]]: the results section had a sensor table of headers only."""
+    from ballscrew.analyses import thermal_report
+    from ballscrew.case import with_overrides
+
+    point = operating_point(with_overrides(case, {"thermal.sensors": []}), speed=1500 * RPM)
+    results = {s.title: s for s in thermal_report.sections(point.field)}["Results"]
+    assert [t.header[0] for t in results.tables] == ["quantity"]

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import math
+import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -57,3 +59,31 @@ def test_kinematics_speed_limits_are_the_results_warnings(tmp_path):
     assert "[kinematics] dn_limit" in result.warnings[0]
     assert "whirling" in result.warnings[1] and "l = 900 mm" in result.warnings[1]
     assert [str(w.message) for w in caught] == list(result.warnings)
+
+
+def test_kinematics_warns_of_the_case_speed_not_the_curve_top(tmp_path):
+    """Whirling at 2 m: 0.8 n_cr = 1267 rpm, between the case's 1000 rpm and the curves' top at
+    the d·n limit (70000/40 = 1750 rpm). The case speed is not blamed; the curves are."""
+    from ballscrew.kinematics import critical_speed, groove_root_diameter
+    from ballscrew.kinematics.limits import SpeedLimitWarning
+
+    overrides = QUICK | {"design.unsupported_length": 2.0}
+    case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", overrides))
+    params = ballscrew.analyses.parameters.ScrewParameters.from_case(case)
+    root = groove_root_diameter(params.geometry)
+    allowed = 0.8 * critical_speed(
+        root, 2.0, params.screw.youngs_modulus, params.screw.density, "fixed-supported"
+    )
+    omega = case.operating.speed
+    assert omega < allowed < 70000 / 40 * math.pi / 30  # the premise of the test
+    with pytest.warns(SpeedLimitWarning) as caught:
+        result = run_kinematics(case)
+    assert len(result.warnings) == 1
+    assert result.warnings[0].startswith(
+        "the curves versus speed run to 1750 rpm, above the case speed 1000 rpm: speed 1750 rpm "
+        "exceeds 0.8 × the whirling speed"
+    )
+    assert [str(w.message) for w in caught] == list(result.warnings)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", SpeedLimitWarning)  # the case speed alone: no warning
+        ballscrew.ball_kinematics(case)

@@ -125,3 +125,16 @@ def test_screw_parameters_nut_forces_are_the_flanks_of_a_preloaded_single_nut(ca
         assert params.nut_forces == pytest.approx(expected, rel=1e-12)
     bare = ScrewParameters.from_case(case(**OFFSET, **LOAD, **{"operating.preload": 0.0}))
     assert bare.nut_forces == (2000.0, 0.0)
+
+
+def test_the_operating_point_report_names_a_lifted_flank(case):
+    """A four-point nut at F_a = 5 kN > 2^1.5 F_p = 4243 N: flank 2 is lifted off, and the
+    report says so instead of printing 'nan nm' for 'nut 2'."""
+    from ballscrew.analyses.operating_point import operating_point
+    from ballscrew.analyses.operating_point_report import sections
+
+    point = operating_point(case(**FOUR, **{"thermal.sensors": []}), axial_load=5000.0)
+    rows = {row[0]: row[1] for s in sections(point) for t in s.tables for row in t.rows}
+    label = "central film h_c, screw contact A of flank 2 at its ball load [nm]"
+    assert rows[label] == "— (lifted off or dry)"
+    assert rows["central film h_c, screw contact A of nut 1 [nm]"] > 0.0

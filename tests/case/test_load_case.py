@@ -90,6 +90,12 @@ def test_override_accepts_unit_strings_and_returns_new_case(gao_case_path):
             "numerics.cells_across = 64.5: Input should be a valid integer, got a number with a "
             "fractional part; allowed range is [8, 4096]",
         ),
+        (
+            "numerics.cells",
+            100000,
+            "numerics.cells = 100000: Input should be a valid tuple (explicit grid [nx, ny] over "
+            "the box, instead of cells_across)",
+        ),
     ],
 )
 def test_bad_values_name_field_value_and_range(gao_case_path, key, value, expected):

@@ -115,3 +115,14 @@ def test_the_rpm_hint_is_given_only_for_a_whole_number():
     )
     assert speed_hint(628.3, 0.040) == ""
     assert speed_hint(6000 * 3.141592653589793 / 30, 0.040) == ""
+
+
+def test_a_shaft_between_bearings_shorter_than_the_nut(tmp_path):
+    """10 mm between the bearings for a nut of 60 mm: a slip of unit or of meaning (the check
+    then gives a speed margin of 10⁴), warned about."""
+    (message,) = warnings_of(tmp_path, {"design.unsupported_length": "10 mm"})
+    assert message == (
+        "design.unsupported_length = 10 mm is shorter than a nut (60 mm); did you mean the "
+        "shaft between the bearings?"
+    )
+    assert not implausible_values(ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", {})))

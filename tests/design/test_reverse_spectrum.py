@@ -116,3 +116,18 @@ def test_the_range_is_symmetric() -> None:
     raw = raw_case()
     raw["duty"] = duty("-1e5 kN", "1e5 kN")
     assert [s.axial_load for s in case_from_dict(raw).duty] == [-1e8, 1e8]
+
+
+def test_an_operating_point_beyond_the_duty_is_said_to_be_unchecked() -> None:
+    """[operating] above every [[duty]] level (3 kN against 2 kN): the margins keep the duty's
+    2 kN (static safety C_0a/2 kN), and a warning says the point is not checked."""
+    with pytest.warns(DesignWarning, match=r"axial_load = 3 kN above the duty's largest 2 kN"):
+        check = check_of(("2 kN", "1 kN"), axial_load="3 kN")
+    assert check.spectrum.max_load == 2000.0
+    assert check.static_safety_factor == pytest.approx(check.static_load_rating / 2000.0)
+    assert any("not this point" in w for w in check.warnings)
+
+
+def test_an_operating_point_inside_the_duty_is_not_warned_about() -> None:
+    check = check_of(("2 kN", "1 kN"), axial_load="2 kN", speed="1000 rpm")
+    assert not any("not this point" in w for w in check.warnings)

@@ -76,3 +76,14 @@ def test_speed_warnings_read_in_rpm(ref_case):
     long = updated(ref_case, kinematics={"unsupported_length": 3.0, "mounting": "fixed-free"})
     with pytest.warns(SpeedLimitWarning, match=r"rpm \(fixed-free, l = 3 m, d_r = 33\.48 mm\)"):
         ballscrew.ball_kinematics(long, speed=1000 * RPM)
+
+
+def test_a_speed_with_its_unit_is_read_as_the_operating_point_reads_it(ref_case):
+    """ball_kinematics(case, speed="1500 rpm") is 1500 rpm = 157.08 rad/s (it was refused as
+    outside [0, 100000] rad/s), and a speed in the wrong unit names the unit."""
+    with_unit = ballscrew.ball_kinematics(ref_case, speed="1500 rpm")
+    in_si = ballscrew.ball_kinematics(ref_case, speed=1500 * RPM)
+    assert with_unit.screw_speed == pytest.approx(157.0796, rel=1e-6)
+    assert with_unit.orbital_speed == in_si.orbital_speed
+    with pytest.raises(ballscrew.errors.InputError, match=r"'2 m' is not an angular velocity"):
+        ballscrew.ball_kinematics(ref_case, speed="2 m")

@@ -119,10 +119,12 @@ for _analysis in (
             "nuts.nut1.spin_screw",
             "nuts.nut1.asperity_share",
             "nuts.nut1.film_thickness_central",
+            "viscosity",
             "drag_torque.contact_losses",
             "drag_torque.catalogue",
         ),
         labels={
+            "viscosity": "viscosity of the film (see viscosity_source)",
             "drag_torque.contact_losses": "drag torque: ball contacts' losses only",
             "drag_torque.catalogue": "drag torque: catalogue preload torque",
         },

@@ -26,7 +26,7 @@ import xarray as xr
 from ballscrew import design
 from ballscrew.analyses import design_check_report
 from ballscrew.analyses.ball_loads import elastic_distribution, elastic_lift_off
-from ballscrew.analyses.duty import moving_fraction
+from ballscrew.analyses.duty import moving_fraction, operating_excess
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.case import Case
@@ -539,6 +539,23 @@ def _warn_lift_off(case: Case, params: ScrewParameters, root: float) -> None:
     )
 
 
+def _warn_operating_outside_duty(case: Case, spectrum: LoadSpectrum) -> None:
+    """Warn when ``[operating]`` runs harder than every ``[[duty]]`` segment: the life and the
+    margins take the duty's loads and speeds, so that point (a ``--set operating.…`` too) is
+    not checked; only the contact stiffness is taken at ``[operating] axial_load``."""
+    if spectrum.source != "duty":
+        return
+    over = operating_excess(case, spectrum.max_load, spectrum.max_speed, "duty")
+    if over:
+        warnings.warn(
+            f"[operating] {' and '.join(over)}: the life, static safety, speed, lift-off and "
+            "lost-motion values take the [[duty]] loads and speeds, not this point; add it to "
+            "[[duty]] to check it",
+            DesignWarning,
+            stacklevel=3,
+        )
+
+
 def design_check(case: Case) -> DesignCheck:
     """Every design value of the case's screw with its margin (needs ``[design]``)."""
     spec = case_with(case, "screw", "operating", "design").design  # type: ignore[attr-defined]
@@ -610,6 +627,7 @@ def design_check(case: Case) -> DesignCheck:
         _warn(margins, values, computed, spec, loaded_part(case))
         _warn_external_loads(case, loaded)
         _warn_lift_off(case, params, root)
+        _warn_operating_outside_duty(case, spectrum)
     return DesignCheck(
         case=case,
         margins=margins,

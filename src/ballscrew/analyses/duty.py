@@ -20,8 +20,9 @@ import math
 from dataclasses import dataclass
 
 from ballscrew.case import Case
+from ballscrew.units import format_quantity
 
-__all__ = ["DutyPhase", "duty_schedule", "mirrored_load"]
+__all__ = ["DutyPhase", "duty_schedule", "mirrored_load", "operating_excess"]
 
 
 @dataclass(frozen=True)
@@ -50,6 +51,24 @@ class DutyPhase:
     def mean_speed(self) -> float:
         """Time-mean screw speed f·ω [rad/s]."""
         return self.moving_fraction * self.speed
+
+
+def operating_excess(case: Case, max_load: float, max_speed: float, levels: str) -> list[str]:
+    """What of ``[operating]`` lies above the largest |F_a| ``max_load`` [N] and speed
+    ``max_speed`` [rad/s] of the ``levels`` an analysis runs instead (its words, e.g. "duty"):
+    such a point, a ``--set operating.…`` too, is then not analysed."""
+    op, over = case.operating, []
+    if abs(op.axial_load) > max_load * (1.0 + 1e-9):
+        over.append(
+            f"axial_load = {format_quantity(abs(op.axial_load), 'N')} above the {levels}'s "
+            f"largest {format_quantity(max_load, 'N')}"
+        )
+    if op.speed > max_speed * (1.0 + 1e-9):
+        over.append(
+            f"speed = {format_quantity(op.speed, 'rad/s')} above the {levels}'s largest "
+            f"{format_quantity(max_speed, 'rad/s')}"
+        )
+    return over
 
 
 def mirrored_load(axial_load: float) -> float:

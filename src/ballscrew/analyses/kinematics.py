@@ -31,7 +31,12 @@ from numpy.typing import NDArray
 
 from ballscrew.analyses import kinematics_report
 from ballscrew.analyses.ball_contact import solve_raceway_contact
-from ballscrew.analyses.parameters import ScrewParameters, film_model, lubricant_state
+from ballscrew.analyses.parameters import (
+    ScrewParameters,
+    film_model,
+    library_entry,
+    lubricant_state,
+)
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.roughness import roughness_input
 from ballscrew.case import Case
@@ -57,7 +62,7 @@ from ballscrew.lubrication import (
     asperity_pressure,
     film_parameter,
 )
-from ballscrew.units import format_quantity
+from ballscrew.units import format_quantity, to_si
 from ballscrew.validation import case_with, positive
 
 __all__ = [
@@ -88,10 +93,10 @@ _SPEED_RANGE = f"a screw speed in [0, {MAX_SPEED:g}] rad/s (the range of operati
 def _speed(case: Case, speed: float | None) -> float:
     case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
-    try:
-        omega = float(value)
-    except (TypeError, ValueError):
-        raise InputError("speed", value, _SPEED_RANGE) from None
+    try:  # a number is rad/s; a string may carry its unit ("1500 rpm"), as operating_point's
+        omega = to_si(value, "angular_velocity")
+    except ValueError as exc:
+        raise InputError("speed", value, f"{exc}; {_SPEED_RANGE}") from None
     if not (math.isfinite(omega) and 0.0 <= omega <= MAX_SPEED):
         raise InputError("speed", value, _SPEED_RANGE)
     return omega
@@ -108,6 +113,24 @@ def at_operating_temperature(case: Case, speed: float | None = None) -> Case:
     return at_operating_point(case, speed)[0]
 
 
+def film_viscosity_source(case: Case) -> str:
+    """Where the viscosity of the kinematics' film and traction comes from (``case`` as given,
+    before :func:`at_operating_temperature`), in words."""
+    if case.medium.viscosity is not None:
+        return "medium.viscosity, fixed at every temperature"
+    entry = library_entry(case)
+    if entry is None:
+        return "no lubricant data: dry contacts"
+    name = case.medium.lubricant or case.kinematics.lubricant or "of [medium] viscosity_40/100"
+    if case.operating.coupled:
+        return f"lubricant {name}, at the contact temperature of the coupled operating point"
+    return (
+        f"lubricant {name}, at [lubrication] temperature = "
+        f"{case.lubrication.temperature - 273.15:.4g} °C, not at the contact temperature that "
+        "the operating point computes (set [operating] coupled = true for it)"
+    )
+
+
 def _level(case: Case, level: int | None) -> int:
     value = case.kinematics.level if level is None else level
     if isinstance(value, bool) or value not in LEVELS:
@@ -116,9 +139,13 @@ def _level(case: Case, level: int | None) -> int:
 
 
 def prepare(
-    case: Case, speeds: float | FloatArray | list[float], level: int | None
+    case: Case,
+    speeds: float | FloatArray | list[float],
+    level: int | None,
+    warn_at: float | None = None,
 ) -> tuple[BallModel, int]:
-    """Validate speeds and level, warn about speed limits, and build the ball model.
+    """Validate speeds and level, warn about the speed limits of ``warn_at`` [rad/s] (default
+    the largest speed), and build the ball model.
 
     Every check runs before any computation (level 2 needs lubricant data).
     """
@@ -133,7 +160,7 @@ def prepare(
             "[kinematics] lubricant",
         )
     if values:
-        check_speed_limits(case, max(values), stacklevel=4)
+        check_speed_limits(case, max(values) if warn_at is None else warn_at, stacklevel=4)
     return model, lvl
 
 
@@ -388,6 +415,27 @@ def speed_limit_messages(case: Case, speed: float) -> list[str]:
     return messages
 
 
+def curve_limit_messages(case: Case, speed: float, curve: FloatArray) -> list[str]:
+    """The speed limits that the curves versus speed pass and the case ``speed`` [rad/s] does
+    not (one line, said of the curves; empty when none): their top is the d·n limit's speed
+    or ``[kinematics] speed_range``, not a speed the screw runs at."""
+    top = float(np.max(curve))
+    if top <= speed:
+        return []
+
+    def kind(message: str) -> str:
+        return "whirling" if "whirling" in message else "d·n"
+
+    passed = {kind(m) for m in speed_limit_messages(case, speed)}
+    beyond = [m for m in speed_limit_messages(case, top) if kind(m) not in passed]
+    if not beyond:
+        return []
+    return [
+        f"the curves versus speed run to {format_quantity(top, 'rad/s')}, above the case speed "
+        f"{format_quantity(speed, 'rad/s')}: " + "; ".join(beyond)
+    ]
+
+
 def whirl_shaft(case: Case) -> tuple[float, str, float | None] | None:
     """(unsupported length [m], mounting, root diameter [m] or None = groove bottom) of the
     whirling check; None when neither ``[kinematics]`` nor ``[design]`` gives the length.
@@ -503,6 +551,10 @@ class KinematicsRun(Presented):
     roughness: float = math.nan
     """Composite RMS roughness σ_Λ of the screw raceway (E6.6) [m]: the σ of the film parameter
     and of the asperity heights of the JGP share."""
+    viscosity: float = math.nan
+    """Dynamic viscosity η₀ of the films and the traction [Pa s] (NaN dry)."""
+    viscosity_source: str = ""
+    """Where η₀ comes from (:func:`film_viscosity_source`)."""
 
     analysis: ClassVar[str] = "kinematics"
     presentation: ClassVar[ModuleType] = kinematics_report
@@ -529,11 +581,16 @@ def run_kinematics(
 ) -> KinematicsRun:
     """Run the analysis (all checks first, see :func:`prepare`)."""
     omega = case.operating.speed if speed is None else float(speed)
+    source = film_viscosity_source(case)
     case = at_operating_temperature(case, _speed(case, omega))
     speeds = curve_speeds(case)
     with recorded_warnings() as raised:
-        model, lvl = prepare(case, np.append(speeds, omega), level)
-        messages = speed_limit_messages(case, float(max(omega, speeds.max())))
+        model, lvl = prepare(case, np.append(speeds, omega), level, warn_at=omega)
+        messages = speed_limit_messages(case, omega)
+        for message in curve_limit_messages(case, omega, speeds):
+            messages.append(message)
+            if case.kinematics.speed_warnings:
+                warnings.warn(message, SpeedLimitWarning, stacklevel=2)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SpeedLimitWarning)
             states, drags = {}, {}
@@ -593,4 +650,6 @@ def run_kinematics(
         ),
         entrainment=entrainment,
         roughness=model.surface.film_roughness,
+        viscosity=math.nan if model.viscosity is None else model.viscosity,
+        viscosity_source=source,
     )

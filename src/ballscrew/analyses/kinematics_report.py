@@ -87,6 +87,8 @@ def summary(run: KinematicsRun) -> dict[str, Any]:
         "case": run.case_name,
         "level": run.level,
         "speed": value(run.speed, "rad/s"),
+        "viscosity": value(run.viscosity, "Pa*s"),
+        "viscosity_source": run.viscosity_source,
         "nuts": nuts,
         "drag_torque": {
             "catalogue": value(run.catalogue_torque, "N*m"),
@@ -348,6 +350,8 @@ def sections(run: KinematicsRun) -> list[Section]:
                 Table(
                     ("quantity", "value"),
                     (
+                        ("lubricant viscosity η₀ [mPa·s]", run.viscosity * 1e3),
+                        ("viscosity from", run.viscosity_source),
                         ("u_e at A [m/s]", run.entrainment[0]),
                         ("h_c at A [nm]", film.central * 1e9 if film else "—"),
                         ("h_min at A [nm]", film.minimum * 1e9 if film else "—"),

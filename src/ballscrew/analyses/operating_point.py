@@ -559,8 +559,8 @@ def speed_curve(
         raise InputError("speeds", speeds, "one or more finite speeds > 0 rad/s")
     points = []
     for w in omega:  # one coupled fixed point per speed: each is its own iteration
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", OperatingPointWarning)
+        with warnings.catch_warnings():  # each point keeps its warnings (p.warnings), and
+            warnings.simplefilter("ignore")  # the case's own speed is warned about once
             points.append(operating_point(case, float(w), axial_load))
     values = {k: np.array([getattr(p, k) for p in points]) for k in CURVE_QUANTITIES}
     return SpeedCurve(

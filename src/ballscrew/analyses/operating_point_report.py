@@ -267,6 +267,12 @@ def _torque_section(result: OperatingPoint) -> Section:
 
 def sections(result: OperatingPoint) -> list[Section]:
     """The coupled state in engineering units, then the thermal model's own sections."""
+    part = "flank" if result.case.screw.nuts == 1 else "nut"
+    unloaded = "at rest" if result.speed == 0.0 else "lifted off or dry"
+
+    def _film(h: float) -> float | str:
+        return 1e9 * h if math.isfinite(h) else f"— ({unloaded})"
+
     rows: list[tuple[Any, ...]] = [
         ("speed [rpm]", result.speed * 30.0 / math.pi),
         ("axial load [N]", result.axial_load),
@@ -291,7 +297,7 @@ def sections(result: OperatingPoint) -> list[Section]:
         ("minimum film h_min, screw contact A [nm]", 1e9 * result.film_thickness_minimum),
         ("central film h_c, nut contact B [nm]", 1e9 * result.film_thickness_nut),
         *(
-            (f"central film h_c, screw contact A of nut {k} at its ball load [nm]", 1e9 * h)
+            (f"central film h_c, screw contact A of {part} {k} at its ball load [nm]", _film(h))
             for k, h in enumerate(result.film_thickness_per_nut, start=1)
             if k > 1
         ),

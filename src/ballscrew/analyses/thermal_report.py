@@ -665,17 +665,23 @@ def sections(result: ThermalField) -> list[Section]:
             "Results",
             tables=(
                 _table(("quantity", "value"), steady),
-                _table(
+                *(
                     (
-                        "sensor",
-                        "body",
-                        "r [mm]",
-                        "z [mm]",
-                        "steady [°C]",
-                        "final [°C]",
-                        "time to 95 %",
-                    ),
-                    sensor_rows,
+                        _table(
+                            (
+                                "sensor",
+                                "body",
+                                "r [mm]",
+                                "z [mm]",
+                                "steady [°C]",
+                                "final [°C]",
+                                "time to 95 %",
+                            ),
+                            sensor_rows,
+                        ),
+                    )
+                    if sensor_rows
+                    else ()  # no [[thermal.sensors]]: no empty table
                 ),
             ),
             paragraphs=_duty_text(result),

@@ -9,6 +9,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -18,6 +19,7 @@ import numpy as np
 
 from ballscrew.analyses import wear_report
 from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
+from ballscrew.analyses.duty import operating_excess
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
 from ballscrew.analyses.roughness import ball_roughness, roughness_input, surface_roughness
@@ -333,6 +335,24 @@ def fingerprint(case: Case, setup: WearSetup) -> str:
     return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
 
 
+def _warn_operating_outside(case: Case, programme: tuple[WearLevel, ...]) -> None:
+    """Warn when ``[operating]`` runs harder than every level of the wear programme, which
+    the run follows instead (of ``[operating]`` it takes only the preload)."""
+    parts = [part for level in programme for _, part in level.parts()]
+    levels = "[[duty]]" if case.duty else "[wear] programme"
+    over = operating_excess(
+        case, max(abs(p.axial_load) for p in parts), max(p.speed for p in parts), levels
+    )
+    if over:
+        warnings.warn(
+            f"[operating] {' and '.join(over)}: the wear runs the {levels} levels, not this "
+            f"point (of [operating] it takes the preload only); add it to the {levels} to wear "
+            "at it",
+            UserWarning,
+            stacklevel=3,
+        )
+
+
 def wear_life(
     case: Case,
     *,
@@ -361,6 +381,7 @@ def wear_life(
     with recorded_warnings() as messages:
         setup = wear_setup(case)
         warn_outside_range(case.wear or WearSpec(), setup.spec.programme)
+        _warn_operating_outside(case, setup.spec.programme)
         life = integrate_wear(
             setup,
             fingerprint(case, setup),

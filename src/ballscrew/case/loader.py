@@ -530,7 +530,10 @@ def _describe(err: dict[str, Any]) -> str:
             return f"{dotted}: {message}; {_range_text(loc, spec)}"
         return f"{dotted}: {message}"
     value = f" = {err['input']!r}" if "input" in err and loc else ""
-    allowed = f"; {_range_text(loc, spec)}" if spec.constraints else ""
+    if spec.constraints:
+        allowed = f"; {_range_text(loc, spec)}"
+    else:  # no range to state: say what the field is
+        allowed = f" ({spec.description})" if spec.description else ""
     return f"{dotted or 'case'}{value}: {err['msg']}{allowed}"
 
 

@@ -96,6 +96,7 @@ def implausible_values(case: Case) -> list[str]:
         )
     found += _speeds(case)
     found += _roughness(case)
+    found += _unsupported_length(case)
     for part in ("ball", "screw", "nut"):
         material = getattr(case.materials, part)
         for name in ("youngs_modulus", "hardness"):
@@ -107,6 +108,24 @@ def implausible_values(case: Case) -> list[str]:
                     + unit_hint(value, "pressure", lambda v: not _too_soft(v))
                 )
     return found
+
+
+def _unsupported_length(case: Case) -> list[str]:
+    """The shaft between the bearings ([design], buckling and whirling) is longer than the nut
+    it carries (``thermal.nut_length``, else 4 d_m)."""
+    design, thermal = case.design, case.thermal
+    if design is None:
+        return []
+    length = design.unsupported_length
+    nut = thermal.nut_length if thermal is not None else None
+    nut = NUT_LENGTH_FACTOR * case.screw.pitch_diameter if nut is None else nut
+    if length < nut:
+        return [
+            f"design.unsupported_length = {format_quantity(length, 'length')} is shorter than "
+            f"a nut ({format_quantity(nut, 'length')}); did you mean the shaft between the "
+            "bearings?"
+        ]
+    return []
 
 
 def _roughness(case: Case) -> list[str]:
