@@ -90,7 +90,7 @@ FloatArray = NDArray[np.float64]
 _SPEED_RANGE = f"a screw speed in [0, {MAX_SPEED:g}] rad/s (the range of operating.speed)"
 
 
-def _speed(case: Case, speed: float | None) -> float:
+def _speed(case: Case, speed: float | str | None) -> float:
     case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
     try:  # a number is rad/s; a string may carry its unit ("1500 rpm"), as operating_point's
@@ -577,12 +577,12 @@ def _no_load(case: Case) -> Any:
 
 
 def run_kinematics(
-    case: Case, speed: float | None = None, level: int | None = None
+    case: Case, speed: float | str | None = None, level: int | None = None
 ) -> KinematicsRun:
     """Run the analysis (all checks first, see :func:`prepare`)."""
-    omega = case.operating.speed if speed is None else float(speed)
+    omega = _speed(case, speed)  # a number [rad/s] or a string with its unit, as ball_kinematics
     source = film_viscosity_source(case)
-    case = at_operating_temperature(case, _speed(case, omega))
+    case = at_operating_temperature(case, omega)
     speeds = curve_speeds(case)
     with recorded_warnings() as raised:
         model, lvl = prepare(case, np.append(speeds, omega), level, warn_at=omega)
