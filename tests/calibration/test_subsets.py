@@ -352,3 +352,28 @@ def test_a_stroke_column_sets_each_schedule_level_s_stroke(tmp_path, case) -> No
     alone.write_text("revolutions,stroke [mm],friction_torque\n0,300,0.4\n1,300,0.3\n")
     with pytest.raises(InputError, match="stroke"):
         read_measured(alone)
+
+
+def test_a_schedule_is_not_warned_about_against_the_cases_operating_point(tmp_path, case) -> None:
+    """A test-bench schedule replaces the programme, so the case's [operating] point (100 rpm,
+    2 kN, above the bench's 50 rpm and 1 kN) is not the bench's: the wear runs' warning that
+    [operating] lies above every level, asking to add it to a [[duty]] the user never wrote, is
+    left out of the fit's warnings; with the case's own programme it is kept."""
+    from ballscrew.analyses.wear import OperatingOutsideWarning, _warn_operating_outside
+
+    def model(c):  # the stand-in, with the wear run's own check of [operating]
+        _warn_operating_outside(c, wear_options(c).programme)
+        return CaseModel()(c)
+
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],friction_torque [N*m]\n"
+        "0,50,1,0.42\n4.8e5,50,1,0.30\n9.6e5,50,1,0.25\n1.44e6,50,1,0.21\n"
+    )
+    with pytest.warns(OperatingOutsideWarning):  # the runs do raise it
+        model(with_overrides(case, {"operating.axial_load": 5000.0}))
+    scheduled = calibrate(case, csv, fit=("wear_coefficient",), model=model)
+    assert not [w for w in scheduled.warnings if "not this point" in w]
+    harder = with_overrides(case, {"operating.axial_load": 5000.0})
+    own = calibrate(harder, noisy(("wear_coefficient",)), fit=("wear_coefficient",), model=model)
+    assert [w for w in own.warnings if "not this point" in w]

@@ -87,3 +87,15 @@ def test_a_speed_with_its_unit_is_read_as_the_operating_point_reads_it(ref_case)
     assert with_unit.orbital_speed == in_si.orbital_speed
     with pytest.raises(ballscrew.errors.InputError, match=r"'2 m' is not an angular velocity"):
         ballscrew.ball_kinematics(ref_case, speed="2 m")
+
+
+def test_the_kinematics_run_reads_a_speed_as_ball_kinematics_does(ref_case):
+    """run_kinematics (the `ballscrew kinematics` analysis) takes "1000 rpm" as 104.72 rad/s and
+    refuses a speed it cannot read with the one-line InputError naming ``speed``, not a bare
+    ValueError of float()."""
+    from ballscrew.analyses.kinematics import run_kinematics
+
+    with_unit = run_kinematics(ref_case, speed="1000 rpm", level=0)
+    assert with_unit.speed == pytest.approx(1000 * RPM, rel=1e-12)
+    with pytest.raises(ballscrew.errors.InputError, match=r"^speed = 'fast'"):
+        run_kinematics(ref_case, speed="fast", level=0)

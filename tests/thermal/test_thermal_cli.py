@@ -180,3 +180,33 @@ def test_the_operating_point_is_the_same_with_and_without_a_duty(tmp_path):
         "the single [operating] point"
         not in (tmp_path / "plain" / "out" / "report.html").read_text()
     )
+
+
+def test_a_duty_cycle_of_too_many_steps_is_refused_before_the_point_is_solved(
+    tmp_path, monkeypatch
+):
+    """The short duty run 1000 times with 1 s steps is 1.8e6 steps, above a budget of 1e6: the
+    one-line error names the [[duty]] cycle and its length (it said "over the duration"), exit
+    2, nothing written, and the operating point is never solved (it was, first, in vain);
+    --no-duty runs the point."""
+    import ballscrew.analyses.thermal as thermal
+
+    monkeypatch.setenv("BALLSCREW_MAX_STEPS", "1000000")
+    case = write_case(
+        tmp_path,
+        "gao2019_tcr.toml",
+        SHORT_DUTY | {"duty_repeat": 1000, "thermal.transient.time_step": "1 s"},
+    )
+    solved = []
+    point = thermal._point_field
+    monkeypatch.setattr(thermal, "_point_field", lambda *a: solved.append(a) or point(*a))
+    out = tmp_path / "refused"
+    result = run("thermal", case, "--out", out)
+    assert result.exit_code == 2, result.output
+    error = result.output.strip().splitlines()[-1]
+    assert error.startswith("error: thermal.transient.time_step = 1.0 is not allowed")
+    assert "over the [[duty]] cycle of 1.8e+06 s (1000 × the list)" in error
+    assert not out.exists() and not solved
+    skipped = run("thermal", case, "--no-duty", "--out", tmp_path / "point")
+    assert skipped.exit_code == 0, skipped.output
+    assert len(solved) == 1

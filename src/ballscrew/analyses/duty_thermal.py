@@ -43,6 +43,7 @@ from ballscrew.analyses.thermal_setup import (
     thermal_spec,
 )
 from ballscrew.backend import blas_single_thread
+from ballscrew.budget import check_count
 from ballscrew.case import Case, with_overrides
 from ballscrew.errors import InputError
 from ballscrew.thermal.discretisation import Discretisation, coolant_outlet_rise
@@ -51,7 +52,7 @@ from ballscrew.thermal.problem import ThermalProblem
 from ballscrew.thermal.simulate import check_transient
 from ballscrew.thermal.timestepping import StepSystem, implicit_euler
 
-__all__ = ["DutyThermal", "thermal_duty"]
+__all__ = ["DutyThermal", "checked_cycle", "thermal_duty"]
 
 FloatArray = NDArray[np.float64]
 
@@ -189,6 +190,20 @@ def _segment(
     return _Segment(conductance, bearings, load - bearings, table), disc
 
 
+def checked_cycle(case: Case) -> tuple[DutyPhase, ...]:
+    """The phases of the case's ``[[duty]]`` cycle, refused before any solve when there are none
+    or when ``[thermal.transient] time_step`` over the whole cycle (``duty_repeat`` times the
+    list) makes more steps than the budget allows."""
+    spec = thermal_spec(case)
+    phases = duty_schedule(case)
+    if not phases:
+        raise InputError("duty", [], "a [[duty]] list of segments for a duty-cycle run")
+    total, step = phases[-1].end, spec.transient.time_step
+    what = f"time steps over the [[duty]] cycle of {total:g} s ({case.duty_repeat} × the list)"
+    check_count("thermal.transient.time_step", step, total / step, what)
+    return phases
+
+
 def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
     """Temperatures and elongation of ``case`` over its ``[[duty]]`` cycle.
 
@@ -197,11 +212,8 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
     """
     spec = thermal_spec(case)
     model = THERMAL_MODELS.check(spec.model if model is None else model)
-    phases = duty_schedule(case)
-    if not phases:
-        raise InputError("duty", [], "a [[duty]] list of segments for a duty-cycle run")
+    phases = checked_cycle(case)
     total = phases[-1].end
-    check_transient(None, total, spec.transient.time_step)
     steps = max(1, math.ceil(total / spec.transient.time_step))
     dt = total / steps
     amb = spec.ambient_temperature

@@ -90,7 +90,7 @@ FloatArray = NDArray[np.float64]
 _SPEED_RANGE = f"a screw speed in [0, {MAX_SPEED:g}] rad/s (the range of operating.speed)"
 
 
-def _speed(case: Case, speed: float | None) -> float:
+def _speed(case: Case, speed: float | str | None) -> float:
     case_with(case, "screw", "operating", "materials")
     value = case.operating.speed if speed is None else speed
     try:  # a number is rad/s; a string may carry its unit ("1500 rpm"), as operating_point's
@@ -187,16 +187,17 @@ def _loaded(case: Case, preload: float | None) -> ScrewParameters:
 
 
 def ball_kinematics(
-    case: Case, speed: float | None = None, level: int | None = None, *, nut: int = 1
+    case: Case, speed: float | str | None = None, level: int | None = None, *, nut: int = 1
 ) -> BallState:
     """Kinematics and loads of a ball of ``nut`` (1 = loaded nut) at screw speed ``speed``.
 
-    ``speed`` [rad/s] defaults to ``operating.speed``; ``level`` 0, 1 or 2 defaults to the
-    case's ``[kinematics] level``. The result has ``ball_speed`` (m/s, ball centre relative to
-    the nut), ``orbital_speed`` (rad/s), ``spin_screw`` / ``spin_nut`` (rad/s, relative spin
-    about the contact normals Z_A, Z_B pointing into the ball), ``load_screw`` / ``load_nut`` (N)
-    and ``angle_screw`` / ``angle_nut`` (rad). With ``[operating] coupled = true`` the
-    lubricant is that of the coupled operating point at ``speed``.
+    ``speed`` [rad/s, or a string with its unit such as "1500 rpm"] defaults to
+    ``operating.speed``; ``level`` 0, 1 or 2 defaults to the case's ``[kinematics] level``. The
+    result has ``ball_speed`` (m/s, ball centre relative to the nut), ``orbital_speed``
+    (rad/s), ``spin_screw`` / ``spin_nut`` (rad/s, relative spin about the contact normals Z_A,
+    Z_B pointing into the ball), ``load_screw`` / ``load_nut`` (N) and ``angle_screw`` /
+    ``angle_nut`` (rad). With ``[operating] coupled = true`` the lubricant is that of the
+    coupled operating point at ``speed``.
     """
     omega = _speed(case, speed)
     case = at_operating_temperature(case, omega)
@@ -239,7 +240,7 @@ def _flanks_torque(model: BallModel, states: list[BallState]) -> float:
 
 def computed_drag_torque(
     case: Case,
-    speed: float | None = None,
+    speed: float | str | None = None,
     *,
     level: int | None = None,
     preload: float | None = None,
@@ -577,12 +578,12 @@ def _no_load(case: Case) -> Any:
 
 
 def run_kinematics(
-    case: Case, speed: float | None = None, level: int | None = None
+    case: Case, speed: float | str | None = None, level: int | None = None
 ) -> KinematicsRun:
     """Run the analysis (all checks first, see :func:`prepare`)."""
-    omega = case.operating.speed if speed is None else float(speed)
+    omega = _speed(case, speed)  # a number [rad/s] or a string with its unit, as ball_kinematics
     source = film_viscosity_source(case)
-    case = at_operating_temperature(case, _speed(case, omega))
+    case = at_operating_temperature(case, omega)
     speeds = curve_speeds(case)
     with recorded_warnings() as raised:
         model, lvl = prepare(case, np.append(speeds, omega), level, warn_at=omega)

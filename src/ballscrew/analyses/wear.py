@@ -42,7 +42,19 @@ from ballscrew.wear.programme import RunningIn, WearLevel, WearOptions
 from ballscrew.wear.setup import FLANKS, FilmRoughness, WearSetup, nut_force_pair
 from ballscrew.wear.strips import working_raceway_length
 
-__all__ = ["WearResult", "fingerprint", "wear_life", "wear_options", "wear_setup"]
+__all__ = [
+    "OperatingOutsideWarning",
+    "WearResult",
+    "fingerprint",
+    "wear_life",
+    "wear_options",
+    "wear_setup",
+]
+
+
+class OperatingOutsideWarning(UserWarning):
+    """``[operating]`` runs harder than every level of the wear programme, which the run
+    follows instead."""
 
 
 @dataclass(frozen=True)
@@ -348,7 +360,7 @@ def _warn_operating_outside(case: Case, programme: tuple[WearLevel, ...]) -> Non
             f"[operating] {' and '.join(over)}: the wear runs the {levels} levels, not this "
             f"point (of [operating] it takes the preload only); add it to the {levels} to wear "
             "at it",
-            UserWarning,
+            OperatingOutsideWarning,
             stacklevel=3,
         )
 

@@ -197,6 +197,8 @@ class CaseSetup:
     warned: dict[tuple[tuple[str, float], ...], list[warnings.WarningMessage]] = field(
         default_factory=dict
     )
+    ignored: tuple[type[Warning], ...] = ()
+    """Warning categories of the runs that do not concern the fit (left out of ``warned``)."""
 
     def simulate(self, values: Mapping[str, float]) -> WearHistory:
         """One model run of the case at ``values``; a BudgetError becomes a CalibrationError."""
@@ -215,7 +217,8 @@ class CaseSetup:
                     f"{self.source}: the wear model cannot run at the trial {trial} ({exc}); "
                     f"the measured {self.quantity} is out of the model's reach (check the data)"
                 ) from None
-        self.warned[tuple(sorted(values.items()))] = seen
+        kept = [w for w in seen if not issubclass(w.category, self.ignored)]
+        self.warned[tuple(sorted(values.items()))] = kept
         return history
 
     def reissue(self, fitted: Mapping[str, float]) -> None:
@@ -284,7 +287,22 @@ def case_setup(
         if "torque_scale" not in names:
             scale0 = _initial_torque_scale(case, float(initial_torque) - offset0)
             base["wear.torque_scale"] = scale0
-    return CaseSetup(case, base, start, float(scale0), offset0, model, data.source, data.quantity)
+    ignored: tuple[type[Warning], ...] = ()
+    if data.schedule is not None:  # the bench's levels, not the case's [operating] or [[duty]]
+        from ballscrew.analyses.wear import OperatingOutsideWarning
+
+        ignored = (OperatingOutsideWarning,)
+    return CaseSetup(
+        case,
+        base,
+        start,
+        float(scale0),
+        offset0,
+        model,
+        data.source,
+        data.quantity,
+        ignored=ignored,
+    )
 
 
 def schedule_programme(data: MeasuredHistory) -> list[dict[str, float]]:

@@ -49,6 +49,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ballscrew.budget import check_memory, format_bytes
 from ballscrew.case.base import MAX_FORCE, MAX_SPEED
+from ballscrew.case.duty_spec import MAX_STROKE
 from ballscrew.errors import InputError
 from ballscrew.units import SI_UNITS, to_si
 
@@ -75,9 +76,6 @@ SCHEDULE: dict[str, str] = {"speed": "angular_velocity", "axial_load": "force"}
 
 #: Optional stroke column of a schedule: name → physical kind.
 SCHEDULE_STROKE: dict[str, str] = {"stroke": "length"}
-
-#: Largest stroke of a schedule row [m] (that of a ``[[duty]]`` segment).
-MAX_STROKE = 100.0
 
 #: Largest value of each schedule column (SI): that of a ``wear.programme`` speed and load,
 #: and of a ``[[duty]]`` stroke.

@@ -33,10 +33,13 @@ from pydantic import Field, model_validator
 
 from ballscrew.case.base import MAX_FORCE, MAX_SPEED, Model, quantity
 
-__all__ = ["MAX_DUTY_TIME", "DutySegment", "require_time_shares"]
+__all__ = ["MAX_DUTY_TIME", "MAX_STROKE", "DutySegment", "require_time_shares"]
 
 MAX_DUTY_TIME = 1.0e8
 """Longest segment or cycle a case accepts, s (about three years)."""
+
+MAX_STROKE = 100.0
+"""Longest stroke of a segment, m (also the stroke column of a measured wear schedule)."""
 
 
 class DutySegment(Model):
@@ -52,9 +55,9 @@ class DutySegment(Model):
         ge=-MAX_FORCE,
         le=MAX_FORCE,
     ) = 0.0
-    stroke: quantity("length", "stroke of the nut (0: the nut turns in place)", ge=0, le=100.0) = (
-        0.0
-    )
+    stroke: quantity(
+        "length", "stroke of the nut (0: the nut turns in place)", ge=0, le=MAX_STROKE
+    ) = 0.0
     dwell: quantity(
         "time", "standstill at each stroke end, within the segment", ge=0, le=MAX_DUTY_TIME
     ) = 0.0
