@@ -31,6 +31,7 @@ OVERRIDES = {
     "operating.axial_load": 2000.0,
     "loads.distribution": "elastic",
     "design.unsupported_length": 1.3,
+    "thermal.shaft_length": 1.3,  # the span lies on the shaft
     "design.dynamic_load_rating": 52_700.0,
     "design.static_load_rating": 141_100.0,
 }

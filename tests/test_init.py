@@ -233,3 +233,44 @@ def test_a_single_nut_without_preload_is_written_with_a_load(bare_single) -> Non
     assert double.output.startswith("error: --preload = '0 N'") and "--nuts 1" in double.output
     negative = init(*SINGLE_BARE, "--preload", "-1")
     assert negative.exit_code == 2 and ">= 0" in negative.output
+
+
+@pytest.mark.parametrize(
+    ("sheet", "outer_mm"),
+    [
+        (SHEET, 64.0),  # 1.6 d0; TBI SFNU04010 (DIN 69051-5 form B) prints D = 63 mm
+        (["--d0", "32", "--lead", "5", "--ball", "3.175", "--turns", "2.5x2"], 51.2),  # TBI: 50
+        (["--d0", "16", "--lead", "10", "--ball", "7.5", "--turns", "1x2", "--nuts", "1"], 31.0),
+    ],
+)
+def test_one_nut_one_outer_diameter(sheet, outer_mm) -> None:
+    """The check's nut body ([loads]) and the thermal model's nut ([thermal]) are one nut: the
+    starter wrote 1.75 d0 to [thermal] and left [loads] at d_m + 5 D_b (56 and 47.9 mm for a
+    32 x 5 nut). 1.6 d0 lies within 2 % of DIN 69051-5 nuts of 32 and 40 mm; balls too large
+    for it get the least body d_m + 2 D_b = 16 + 15 mm, which the case accepts."""
+    result = init(*sheet)
+    assert result.exit_code == 0, result.output
+    case = case_from_dict(tomllib.loads(result.stdout))
+    assert case.loads.nut_outer_diameter == pytest.approx(outer_mm * 1e-3)
+    assert case.thermal is not None
+    assert case.thermal.nut_outer_diameter == case.loads.nut_outer_diameter
+    assert {"loads.nut_outer_diameter", "thermal.nut_outer_diameter"} <= set(case.assumed)
+
+
+def test_a_red_life_on_the_illustrative_duty_says_the_duty_is_not_sized(generated) -> None:
+    """Every double nut of `init` missed its own 20000 h (40 x 10: 11370 h) on a duty that is
+    an illustration; the check now says so where the duty is in [assumed], and only there."""
+    from ballscrew.analyses.design_check import design_check
+
+    raw = tomllib.loads(generated)
+    with pytest.warns(UserWarning):
+        result = design_check(case_from_dict(raw))
+    (life,) = [w for w in result.warnings if w.startswith("required life vs rating life")]
+    assert "20000 h against 11370 h" in life
+    assert "an illustrative cycle, not sized to this screw" in life
+    assert "the required life is assumed too" in life
+    del raw["assumed"]["duty"]
+    with pytest.warns(UserWarning):
+        result = design_check(case_from_dict(raw))
+    (life,) = [w for w in result.warnings if w.startswith("required life vs rating life")]
+    assert life == "required life vs rating life: 20000 h against 11370 h"

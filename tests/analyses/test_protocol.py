@@ -67,7 +67,7 @@ def test_kinematics_warns_of_the_case_speed_not_the_curve_top(tmp_path):
     from ballscrew.kinematics import critical_speed, groove_root_diameter
     from ballscrew.kinematics.limits import SpeedLimitWarning
 
-    overrides = QUICK | {"design.unsupported_length": 2.0}
+    overrides = QUICK | {"design.unsupported_length": 2.0, "thermal.shaft_length": 2.0}
     case = ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", overrides))
     params = ballscrew.analyses.parameters.ScrewParameters.from_case(case)
     root = groove_root_diameter(params.geometry)

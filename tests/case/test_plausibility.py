@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import tomllib
+from pathlib import Path
+
 import pytest
 
 import ballscrew
-from ballscrew.case import CaseError
+from ballscrew.case import CaseError, case_from_dict
 from ballscrew.case.plausibility import ImplausibleValueWarning, implausible_values
 from quick_cases import write_case
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def warnings_of(tmp_path, overrides):
@@ -126,3 +131,23 @@ def test_a_shaft_between_bearings_shorter_than_the_nut(tmp_path):
         "shaft between the bearings?"
     )
     assert not implausible_values(ballscrew.load_case(write_case(tmp_path, "gao2019_tcr.toml", {})))
+
+
+def test_a_shaft_between_bearings_longer_than_the_whole_shaft(tmp_path):
+    """5 m between the bearings on a shaft of 1 m ([thermal] shaft_length): one screw, two
+    lengths that cannot both hold; warned about. A [thermal] without shaft_length (its 1 m
+    default) is not compared."""
+    (message,) = warnings_of(tmp_path, {"design.unsupported_length": "5 m"})
+    assert message == (
+        "design.unsupported_length = 5 m is longer than the whole shaft, "
+        "thermal.shaft_length = 1 m; the span between the bearings lies on the shaft"
+    )
+    assert not implausible_values(
+        ballscrew.load_case(
+            write_case(tmp_path, "gao2019_tcr.toml", {"design.unsupported_length": "1 m"})
+        )
+    )
+    raw = tomllib.loads((EXAMPLES / "gao2019_tcr.toml").read_text())
+    del raw["thermal"]["shaft_length"]
+    raw["design"]["unsupported_length"] = "5 m"
+    assert not implausible_values(case_from_dict(raw))

@@ -36,6 +36,8 @@ def raw_case(**design_overrides: object) -> dict:
     raw.pop("duty", None)  # the load spectrum of these tests is [operating]
     raw.pop("duty_repeat", None)
     raw["design"] = DESIGN | design_overrides
+    # one screw: the bearings at the shaft's ends ([thermal] described a 1 m shaft)
+    raw["thermal"]["shaft_length"] = raw["design"]["unsupported_length"]
     raw["operating"].update(axial_load="2000 N", speed="1000 rpm")
     return raw
 
@@ -234,6 +236,7 @@ def test_margins_read_in_engineering_units() -> None:
     1.137e+04 h'; summary.json keeps SI."""
     raw = raw_case(required_life="1e6 h")
     raw["design"]["unsupported_length"] = "4 m"
+    raw["thermal"]["shaft_length"] = "4 m"
     with pytest.warns(UserWarning):
         result = design_check(case_from_dict(raw))
     life = next(w for w in result.warnings if w.startswith("required life"))
@@ -264,6 +267,7 @@ def test_a_red_margin_reads_demand_and_capacity_in_one_unit() -> None:
     table showed one unit a row; both now pick the unit by the larger value."""
     raw = raw_case()
     raw["design"]["unsupported_length"] = "12 m"
+    raw["thermal"]["shaft_length"] = "12 m"
     with pytest.warns(UserWarning):
         result = design_check(case_from_dict(raw))
     buckling = next(w for w in result.warnings if w.startswith("axial load vs 0.5"))

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from functools import cached_property, partial
 from types import ModuleType
@@ -76,6 +77,12 @@ _HINTS = {
     ),
 }
 """What a red margin means, added to its warning ({part}: nut or flank)."""
+
+_ASSUMED_DUTY = (
+    "the [[duty]] is listed in [assumed]: an illustrative cycle, not sized to this screw"
+    "{required}; write the machine's duty before reading this margin"
+)
+"""Added to a red life margin's warning when the duty is an assumed one."""
 
 Status = Literal["green", "amber", "red"]
 
@@ -462,7 +469,10 @@ def _warn(
     computed: tuple[str, ...],
     spec: DesignSpec,
     part: str,
+    assumed: Collection[str] = (),
 ) -> None:
+    """Warn of the computed ratings, every red margin (with what it means; a red life on an
+    ``assumed`` duty says so) and nut bodies much softer than the contacts."""
     methods = {
         "dynamic_load_rating": "Lundberg-Palmgren",
         "static_load_rating": design.STATIC_RATING_MODELS.entry(
@@ -481,6 +491,11 @@ def _warn(
             shown, unit = in_display_units((m.demand, m.capacity), m.unit)
             demand, capacity = (f"{format_number(v)} {unit}".rstrip() for v in shown)
             hint = f"; {_HINTS[m.name].format(part=part)}" if m.name in _HINTS else ""
+            if m.name == "life" and "duty" in assumed:
+                required = ", and the required life is assumed too"
+                hint += "; " + _ASSUMED_DUTY.format(
+                    required=required if "design.required_life" in assumed else ""
+                )
             warnings.warn(
                 f"{m.label}: {demand} against {capacity}{hint}",
                 DesignWarning,
@@ -624,7 +639,8 @@ def design_check(case: Case) -> DesignCheck:
     }
     margins = _margins(values, spec, case)
     with recorded_warnings() as messages:
-        _warn(margins, values, computed, spec, loaded_part(case))
+        assumed = case.assumed if case.duty else ()
+        _warn(margins, values, computed, spec, loaded_part(case), assumed)
         _warn_external_loads(case, loaded)
         _warn_lift_off(case, params, root)
         _warn_operating_outside_duty(case, spectrum)

@@ -112,7 +112,9 @@ def implausible_values(case: Case) -> list[str]:
 
 def _unsupported_length(case: Case) -> list[str]:
     """The shaft between the bearings ([design], buckling and whirling) is longer than the nut
-    it carries (``thermal.nut_length``, else 4 d_m)."""
+    it carries (``thermal.nut_length``, else 4 d_m) and, where ``thermal.shaft_length`` is
+    written, at most the whole shaft (the check does not read ``[thermal]``, so the two
+    sections may describe two different screws unnoticed)."""
     design, thermal = case.design, case.thermal
     if design is None:
         return []
@@ -125,6 +127,15 @@ def _unsupported_length(case: Case) -> list[str]:
             f"a nut ({format_quantity(nut, 'length')}); did you mean the shaft between the "
             "bearings?"
         ]
+    if thermal is not None and "shaft_length" in thermal.model_fields_set:
+        shaft = thermal.shaft_length
+        if length > shaft:
+            return [
+                f"design.unsupported_length = {format_quantity(length, 'length')} is longer "
+                f"than the whole shaft, thermal.shaft_length = "
+                f"{format_quantity(shaft, 'length')}; the span between the bearings lies on "
+                "the shaft"
+            ]
     return []
 
 

@@ -28,6 +28,7 @@ import tomllib
 from dataclasses import dataclass
 
 from ballscrew.case.design_spec import DesignSpec
+from ballscrew.case.nut_body import least_nut_outer_diameter
 from ballscrew.design import (
     MAX_PRELOAD_SHARE,
     accuracy_factor,
@@ -53,7 +54,16 @@ DEFAULT_PRELOAD_SHARE = {1: 0.02, 2: 0.05}
 DUTY_LOAD_SHARE = {1: 0.04, 2: 0.08}
 """Axial load of the illustrative duty cycle / the geometric C_a [ASSUMED]: below the lift-off
 load 2^1.5 F_p of the default preload (double nut 14 %, single nut 5.7 % of C_a), so the
-starter case does not run its own nut into backlash."""
+starter case does not run its own nut into backlash. Not sized to the required life: the
+40 × 10 double nut's life is 11 370 h against 20 000 h, and the check's red life margin says
+that the duty is an assumed one (``[assumed] duty``)."""
+
+NUT_OD_PER_D0 = 1.6
+"""Nut body outer diameter / d0 of the starter, written to both ``[loads]`` (the check's nut
+stiffness) and ``[thermal]`` (one nut, one diameter) [TYPICAL: DIN 69051-5 form B flanged
+nuts, TBI SFNU/SFU table (catalogue pp. C46–C48): D = 28, 36, 40, 50, 63, 75 mm for
+d0 = 16, 20, 25, 32, 40, 50 mm, D/d0 = 1.5–1.8, median 1.59]; at least the least body of
+:func:`~ballscrew.case.nut_body.least_nut_outer_diameter`."""
 
 SMALLEST_D0 = 1e-3
 """Nominal diameter [m] at or below which a d0 too small for its ball is taken as a value in the
@@ -215,6 +225,15 @@ def _rating_factor() -> float:
     return hardness_factor(softer) * accuracy_factor(_GRADE)
 
 
+def _nut_outer_diameter(sheet: CatalogueSheet) -> tuple[float, str]:
+    """:data:`NUT_OD_PER_D0` d0, at least the least nut body d_m + 2 D_b [m], and which."""
+    least = least_nut_outer_diameter(sheet.d_m, sheet.ball_diameter)
+    typical = NUT_OD_PER_D0 * sheet.nominal_diameter
+    if typical >= least:
+        return typical, f"{NUT_OD_PER_D0:g} d0, a typical DIN 69051 flanged nut body"
+    return least, "d_m + 2 D_b, the least nut body around balls this large"
+
+
 def _mm(value: float) -> str:
     return f'"{value * 1e3:.6g} mm"'
 
@@ -249,6 +268,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     oil = LUBRICANT_LIBRARY[_OIL]
     duty_load = round(DUTY_LOAD_SHARE[sheet.nuts] * ca, -1)
+    nut_od, nut_od_note = _nut_outer_diameter(sheet)
     bare = preload == 0.0  # a single nut without preload: its one flank needs a load
     root = "root_diameter = {}   # thread root (minor) diameter from the sheet\n"
     text = _TEMPLATE.format(
@@ -324,7 +344,8 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         assumed_nut_length="" if sheet.nut_length is not None else (
             '"thermal.nut_length" = "the loaded turns plus one lead at each end"\n'
         ),
-        nut_od=_mm(1.75 * d0),
+        nut_od=_mm(nut_od),
+        nut_od_note=json.dumps(nut_od_note),
     )  # fmt: skip
     _check_case(text, sheet)
     return text
@@ -429,13 +450,17 @@ speed = "1000 rpm"               # [ASSUMED]
 [numerics]
 cells_across = 32                # grid cells across each Hertz contact (64 for final numbers)
 
+# The nut body: one outer diameter for the check's nut stiffness (here) and the thermal model.
+[loads]
+nut_outer_diameter = {nut_od}  # [TYPICAL: DIN 69051 flanged nuts, D = 1.5-1.8 d0]
+
 # Thermal model: the nut(s) in the middle of the shaft, convection to still air, support
 # bearings left out (add [[thermal.bearings]]). Dimensions not on the sheet are [TYPICAL].
 [thermal]
 model = "network"                # fast; "axisymmetric" for the finite-element model
 shaft_length = {length}
 nut_length = {nut_length}          # each nut: {nut_length_note}
-nut_outer_diameter = {nut_od}  # 1.75 d0 [TYPICAL flange-nut body]
+nut_outer_diameter = {nut_od}  # the nut body of [loads] [TYPICAL]
 ambient_temperature = "20 degC"
 
 [thermal.transient]
@@ -461,7 +486,9 @@ accuracy_grade = {grade}               # C{grade} / P{grade} [ASSUMED]
 
 # A one-hour working cycle for `ballscrew duty` (run duty_repeat times, at the top) and the life
 # of `ballscrew check` [ASSUMED, illustrative: write your machine's]: 40 min of strokes at
-# 1000 rpm under {duty_share} of the geometric C_a, then 20 min of rest.
+# 1000 rpm under {duty_share} of the geometric C_a, then 20 min of rest. It is not sized to this
+# screw: its life may fall short of the required life above (the check's life margin is then
+# red and says why) until you write your machine's cycle.
 [[duty]]
 speed = "1000 rpm"
 axial_load = {duty_load}
@@ -487,7 +514,8 @@ speed = 0
 "kinematics.lubricant" = "an oil of the usual grade; many nuts are delivered greased"
 "medium.thermal_conductivity" = "typical mineral oil or grease 0.13-0.15 W/(m K)"
 "operating.speed" = "an illustrative speed"
-"thermal.nut_outer_diameter" = "1.75 d0, a typical flange-nut body"
+"loads.nut_outer_diameter" = {nut_od_note}
+"thermal.nut_outer_diameter" = {nut_od_note}
 "thermal.stroke.length" = "the stroke of the illustrative duty cycle"
 "design.unsupported_length" = "90 % of the shaft between the bearings"
 "design.required_life" = "a typical requirement of a machine tool"
