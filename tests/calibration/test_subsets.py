@@ -324,6 +324,32 @@ def test_each_schedule_level_runs_at_its_operating_point(tmp_path, case) -> None
     assert fast.viscosity < 0.8 * slow.viscosity
 
 
+def test_the_calibrated_case_of_a_schedule_fit_keeps_the_users_duty(tmp_path, case) -> None:
+    """The fit runs a test-bench schedule as [[duty]] segments, but the calibrated case is the
+    user's: no [[duty]] of the bench (thermal and the design check would follow it), the user's
+    own programme and [operating]; the bench's speeds and loads are its calibrated range."""
+    csv = tmp_path / "bench.csv"
+    csv.write_text(
+        "revolutions,speed [rpm],axial_load [kN],friction_torque [N*m]\n"
+        "0,100,2,0.42\n4.8e5,100,2,0.30\n9.6e5,150,3,0.25\n1.44e6,150,3,0.21\n"
+    )
+    duties = []
+
+    def model(c):
+        duties.append(len(c.duty))
+        return CaseModel()(c)
+
+    result = calibrate(case, csv, fit=("wear_coefficient",), model=model)
+    assert min(duties) == 2  # the fit did run the bench's two speed steps as [[duty]]
+    tuned = calibrated_case(result)
+    assert tuned.duty == case.duty == [] and tuned.duty_repeat == case.duty_repeat
+    assert tuned.wear.programme == case.wear.programme and tuned.operating == case.operating
+    assert tuned.wear.coefficient == result.wear_coefficient
+    bench = tuned.wear.calibrated
+    assert (bench.load_min, bench.load_max) == (2000.0, 3000.0)
+    assert bench.speed_max == pytest.approx(150 * math.pi / 30)
+
+
 def test_a_stroke_column_sets_each_schedule_level_s_stroke(tmp_path, case) -> None:
     """A schedule's stroke column (0: the [wear] stroke) reaches each level's L_w (E8.3); equal
     speed and load with another stroke is another level; a stroke without speed is refused."""

@@ -4,6 +4,7 @@ the closed-form limits of (E1.13) and the sign of the conforming groove's effect
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -11,8 +12,12 @@ import pytest
 import ballscrew
 from ballscrew.analyses.wear import wear_setup
 from ballscrew.case import Case, with_overrides
-from ballscrew.errors import InputError
-from ballscrew.wear import preload_after
+from ballscrew.contact import solve_normal_batch
+from ballscrew.errors import ConvergenceError, InputError
+from ballscrew.wear import GridEdgeWarning, preload_after
+from ballscrew.wear import preload as preload_module
+from ballscrew.wear.profile import worn_gap
+from ballscrew.wear.setup import FLANKS, WearSetup
 
 from .conftest import REF_PATH
 
@@ -83,6 +88,88 @@ def test_a_life_with_the_worn_contact(case: Case) -> None:
     assert worn.max_wear_depth[-1] == pytest.approx(hertz.max_wear_depth[-1], rel=0.05)
     assert worn.contact_solves > hertz.contact_solves
     assert math.isclose(worn.revolutions[-1], hertz.revolutions[-1])
+
+
+def _balance(setup: WearSetup, depth: np.ndarray, preload: float) -> tuple[float, object]:
+    """G(F_p) − F_p of (E1.13) with h_eff = δ_worn − δ_unworn of the deeper flank at
+    Q(F_p), written out, and the worn contact's solution."""
+    k = int(np.argmax(depth.max(axis=1)))
+    nominal = setup.nominal_gap[FLANKS[k]]
+    q = setup.ball_load(preload)
+    worn, unworn = solve_normal_batch(
+        np.stack([worn_gap(nominal, depth[k]), nominal]), setup.dx, setup.dy, setup.e_star,
+        np.array([q, q]), setup.tolerance, max_iterations=setup.max_iterations,
+    )  # fmt: skip
+    h_eff = min(worn.approach - unworn.approach, float(depth.max()))
+    return setup.preload(h_eff) - preload, worn
+
+
+def _groove(setup: WearSetup, half_width: float, h: float) -> np.ndarray:
+    """A conforming worn groove on flank +1: depth h(1 − y²/b²) over |y| < b = ``half_width``
+    times the grid's half-width."""
+    b = half_width * float(np.max(np.abs(setup.y)))
+    return np.vstack([h * np.clip(1.0 - (setup.y / b) ** 2, 0.0, None), np.zeros(setup.y.size)])
+
+
+def test_the_worn_preload_solves_its_balance_to_the_stated_tolerance(case: Case) -> None:
+    """The returned F_p is the root of F = G(F) (E1.13 with h_eff(Q(F))) to 1e-6 F_p0, from the
+    initial preload and from a start just above the root."""
+    setup = wear_setup(case)
+    depth = _groove(setup, 0.6, 1.5e-6)
+    limit = preload_module.TOLERANCE * setup.initial_preload
+    preload, _ = preload_after(setup, depth)
+    assert abs(_balance(setup, depth, preload)[0]) <= limit
+    again, solves = preload_after(setup, depth, previous=preload + 5.0)
+    assert again == pytest.approx(preload, abs=limit) and solves >= 4
+
+
+def test_a_deep_narrow_groove_keeps_preload_that_the_hertz_law_loses(case: Case) -> None:
+    """4 µm worn over half the grid: (E1.13) with h_max leaves no preload, the worn groove's
+    wide contact keeps some, and that F_p satisfies its own balance (the iteration starts from
+    above: from the Hertz floor of 0 N it would stop at once)."""
+    setup = wear_setup(case)
+    depth = _groove(setup, 0.5, 4.0e-6)
+    preload, _ = preload_after(setup, depth)
+    assert setup.preload(4.0e-6) == 0.0
+    assert preload > 0.3 * setup.initial_preload
+    residual, _ = _balance(setup, depth, preload)
+    assert abs(residual) <= preload_module.TOLERANCE * setup.initial_preload
+
+
+def test_an_unconverged_worn_preload_raises_with_its_residual(
+    case: Case, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    setup = wear_setup(case)
+    monkeypatch.setattr(preload_module, "MAX_ITERATIONS", 1)
+    with pytest.raises(ConvergenceError, match=r"preload_contact = 'worn'.*residual") as error:
+        preload_after(setup, _groove(setup, 0.6, 1.5e-6))
+    assert error.value.residual > preload_module.TOLERANCE
+
+
+def test_the_reference_worn_contact_stays_inside_the_grid() -> None:
+    """The step-stress run with the worn contact: no contact reaches the grid's edge, and at the
+    end the worn groove's contact at Q(F_p) carries Q to 1e-6 with no pressure on the boundary
+    cells (a clipped contact would lose load there or press on them)."""
+    case = ballscrew.load_case(REF_PATH, {"wear.preload_contact": "worn"})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", GridEdgeWarning)
+        life = ballscrew.wear_life(case).life
+    setup = wear_setup(case)
+    preload = float(life.preload[-1])
+    residual, worn = _balance(setup, life.profiles[-1], preload)
+    assert abs(residual) <= preload_module.TOLERANCE * setup.initial_preload
+    p = np.asarray(worn.pressure)
+    assert float(p.sum()) * setup.dx * setup.dy == pytest.approx(setup.ball_load(preload), rel=1e-6)
+    assert not (p[[0, -1], :].any() or p[:, [0, -1]].any())
+    assert worn.semi_axes[1] > wear_setup(case).y.max() / 4  # a wide, worn contact, not a point
+
+
+def test_a_worn_contact_clipped_by_the_grid_warns(case: Case) -> None:
+    """A groove worn 4 µm deep across the whole grid: the ball rides on its shoulders, the grid's
+    edge cells, and the preload update says so."""
+    setup = wear_setup(case)
+    with pytest.warns(GridEdgeWarning, match="preload update.*box_factor"):
+        preload_after(setup, _groove(setup, 1.0, 4.0e-6))
 
 
 def test_an_unknown_preload_contact_is_refused() -> None:

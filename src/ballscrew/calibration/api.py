@@ -97,8 +97,13 @@ def programme_range(case: Any, seen: float | None = None) -> dict[str, float] | 
 
 
 def calibrated_case(result: CalibrationResult) -> Any:
-    """The calibrated case: the fitted values in its ``[wear]`` section and the calibrated
-    speed/load range in ``[wear.calibrated]`` (a programme outside it then warns)."""
+    """The calibrated case: the case given to the fit with the fitted values in its ``[wear]``
+    section and the calibrated speed/load range in ``[wear.calibrated]`` (a programme outside
+    it then warns); all else is the user's own, ``[operating]``, ``[[duty]]`` and
+    ``wear.programme`` included. A test-bench schedule, which the fit ran as ``[[duty]]``
+    segments at their own operating points, is the test and not the screw's use: it stays out
+    of the case (thermal and the design check run on the user's duty) and is kept only as the
+    calibrated range."""
     from ballscrew.case import with_overrides
 
     overrides: dict[str, Any] = {FIT_PARAMETERS[n].key: v for n, v in result.values.items()}
@@ -164,7 +169,7 @@ def calibrate(
         warn_implausible_scale(result)
     return replace(
         result,
-        case=setup.case,
+        case=case,
         warnings=tuple(messages),
         calibrated_range=programme_range(setup.case, last_fitted(data, fit_until)),
     )

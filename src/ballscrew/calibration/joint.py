@@ -324,20 +324,16 @@ def calibrate_joint(
             warn_if_systematic(history)
             warn_implausible_scale(history)
     histories = tuple(
-        _with_case(h, s.case, last_fitted(d, u))
-        for h, s, d, u in zip(result.histories, setups, data, until, strict=True)
+        replace(h, case=c, calibrated_range=programme_range(s.case, last_fitted(d, u)))
+        for h, c, s, d, u in zip(result.histories, case_list, setups, data, until, strict=True)
     )
     return replace(
         result,
         histories=histories,
-        case=setups[0].case,
+        case=case_list[0],
         warnings=tuple(messages),
         evaluations=len(runs.memo),
     )
-
-
-def _with_case(result: CalibrationResult, case: Any, seen: float) -> CalibrationResult:
-    return replace(result, case=case, calibrated_range=programme_range(case, seen))
 
 
 class _SharedRuns:

@@ -75,7 +75,9 @@ class CalibrationResult(Presented):
         model_values: the fitted model's history of the quantity (SI).
         scan: (K, RMS residual) of the coarse scan, in the order evaluated.
         message: the least-squares solver's termination message.
-        case: the calibrated case (None for :func:`fit_wear_coefficient` on its own).
+        case: the case given to the fit, which :func:`~ballscrew.calibration.calibrated_case`
+            calibrates (None for :func:`fit_wear_coefficient` on its own); a test-bench
+            schedule is not in it (the fit ran it as ``[[duty]]``).
         options: the options of the run, as ``summary.json`` states them.
         warnings: warnings of the model run nearest the fitted K (one line each).
     """

@@ -149,8 +149,9 @@ def _record(
 
 
 def _preload(setup: WearSetup, state: _State) -> float:
-    """F_p after the state's worn depths (``wear.preload_contact``), its solves counted."""
-    fp, solves = preload_after(setup, state.depth)
+    """F_p after the state's worn depths (``wear.preload_contact``) from the last recorded
+    preload, its solves counted."""
+    fp, solves = preload_after(setup, state.depth, float(state.records["preload"][-1]))
     state.solves += solves
     return fp
 

@@ -37,6 +37,7 @@ __all__ = [
     "entrainment_speed",
     "flank_rate",
     "step_rates",
+    "warn_at_grid_edge",
 ]
 
 
@@ -69,6 +70,18 @@ def cell_heights(surface: AsperitySurface) -> AsperitySurface:
 
 class GridEdgeWarning(UserWarning):
     """The (worn) contact touches the edge of the fixed grid: the box is too small."""
+
+
+def warn_at_grid_edge(pressure: FloatArray, load: float, what: str = "the contact") -> None:
+    """Warn (:class:`GridEdgeWarning`) when ``pressure`` is nonzero on a boundary cell of the
+    fixed wear grid: the contact there would be clipped by the box."""
+    if pressure[[0, -1], :].any() or pressure[:, [0, -1]].any():
+        warnings.warn(
+            f"{what} at Q = {load:.4g} N reaches the edge of the fixed wear grid; "
+            "increase wear.box_factor",
+            GridEdgeWarning,
+            stacklevel=3,
+        )
 
 
 @dataclass(frozen=True)
@@ -258,13 +271,7 @@ def _rate(
 ) -> FlankRate:
     """Sliding, cell wear and raceway depth rate of one solved contact of film state ``film``."""
     p = np.asarray(sol.pressure, dtype=float)
-    if p[[0, -1], :].any() or p[:, [0, -1]].any():
-        warnings.warn(
-            f"the contact at Q = {q:.4g} N reaches the edge of the fixed wear grid; "
-            "increase wear.box_factor",
-            GridEdgeWarning,
-            stacklevel=2,
-        )
+    warn_at_grid_edge(p, q)
     cell = setup.cell_area
     surface = setup.surface_at(float(np.max(depth)))
     speed = sliding_field_closed_form(
