@@ -272,12 +272,12 @@ def thermal_field(
     :func:`~ballscrew.analyses.duty_thermal.thermal_duty` (``duty`` of the result);
     ``duty=False`` keeps to the single operating point.
     """
+    _checked(case, model, transient)
     if not (duty and case.duty):
         return _point_field(case, model, tcr, transient)
     # imported here: the duty cycle builds its segments with this module
     from ballscrew.analyses.duty_thermal import checked_cycle, thermal_duty
 
-    _checked(case, model, transient)
     checked_cycle(case)  # a cycle refused for its step count is refused before the point's solve
     field = _point_field(case, model, tcr, transient)
     started = _time.perf_counter()
