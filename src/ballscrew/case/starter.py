@@ -41,6 +41,7 @@ from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads.preload_method import preload_methods
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.materials import material
+from ballscrew.units import to_si
 
 __all__ = ["CatalogueSheet", "parse_turns", "starter_case"]
 
@@ -226,16 +227,26 @@ def _rating_factor() -> float:
 
 
 def _nut_outer_diameter(sheet: CatalogueSheet) -> tuple[float, str]:
-    """:data:`NUT_OD_PER_D0` d0, at least the least nut body d_m + 2 D_b [m], and which."""
-    least = least_nut_outer_diameter(sheet.d_m, sheet.ball_diameter)
+    """:data:`NUT_OD_PER_D0` d0, at least the least nut body d_m + 2 D_b [m], and which; the
+    least as the case reads it back (d_m and D_b written to six digits), and the diameter
+    rounded up to six digits so that its written value is not below it."""
+    least = least_nut_outer_diameter(_written(sheet.d_m), _written(sheet.ball_diameter))
     typical = NUT_OD_PER_D0 * sheet.nominal_diameter
-    if typical >= least:
+    if _written(typical) >= least:
         return typical, f"{NUT_OD_PER_D0:g} d0, a typical DIN 69051 flanged nut body"
-    return least, "d_m + 2 D_b, the least nut body around balls this large"
+    body = least
+    while _written(body) < least:  # one step of the sixth digit up
+        body += 10.0 ** (math.floor(math.log10(body * 1e3)) - 5) * 1e-3
+    return body, "d_m + 2 D_b, the least nut body around balls this large"
 
 
 def _mm(value: float) -> str:
     return f'"{value * 1e3:.6g} mm"'
+
+
+def _written(value: float) -> float:
+    """A length [m] as the case reads back its :func:`_mm` text."""
+    return to_si(_mm(value).strip('"'), "length")
 
 
 _OIL = "iso_vg_68"
