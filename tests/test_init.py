@@ -259,6 +259,11 @@ def test_one_nut_one_outer_diameter(sheet, outer_mm) -> None:
     assert case.thermal is not None
     assert case.thermal.nut_outer_diameter == case.loads.nut_outer_diameter
     assert {"loads.nut_outer_diameter", "thermal.nut_outer_diameter"} <= set(case.assumed)
+    # the file's comments name the DIN bodies only where the body is 1.6 d0
+    typical = outer_mm == pytest.approx(1.6 * float(sheet[1]))
+    lines = [ln for ln in result.stdout.splitlines() if ln.startswith("nut_outer_diameter")]
+    assert [("DIN 69051" in ln) for ln in lines] == [typical, False]
+    assert "TYPICAL" in lines[0] if typical else "ASSUMED: d_m + 2 D_b" in lines[0]
 
 
 def test_a_red_life_on_the_illustrative_duty_says_the_duty_is_not_sized(generated) -> None:
