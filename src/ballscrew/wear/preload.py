@@ -14,12 +14,15 @@ ball's contacts plus the elastic bodies. Wear of depth h(y) on the screw flank s
                                             conforming groove, whose contact is wider),
 
   and F_p' is the root of F = G(F) = F_p(E1.13 with h_eff(Q(F)) for h_max), Q = F/(Z sinβ cosλ)
-  (E1.6). G rises with F (the wider contact of a larger load loses less) and falls as the
-  groove wears, so the fixed-point iteration F ← G(F) started from the preload before the step
-  (or F_p0) falls monotonically to the largest root below it, the preload reached continuously
-  from the unworn nut; it stops when |G(F) − F| ≤ 1e-6 F_p0 and raises
-  :class:`~ballscrew.errors.ConvergenceError` with that residual after 40 iterations (it
-  contracts by a factor ≈ 0.02–0.15 per iteration on the step-stress screw). The grid's
+  (E1.6). The fixed-point iteration F ← G(F) starts from the preload before the step (or
+  F_p0), stops when |G(F) − F| ≤ 1e-6 F_p0 and raises
+  :class:`~ballscrew.errors.ConvergenceError` with that residual after 40 iterations. It
+  contracts, |G'| ≈ 0.02–0.15 on the step-stress screw, so the value returned lies within
+  |G'|/(1 − |G'|) of that residual from the root. Where the groove is shallower than the
+  ball's conformity G rises with F (the wider contact of a larger load loses less) and the
+  iterates fall monotonically to the root; where the ball bridges a deep, narrow groove on its
+  shoulders G falls with F and they alternate about it (4 µm worn over half the grid:
+  697 → 716 → 714.7 → 714.8 N). The grid's
   discretisation of the approach cancels in the difference; a worn contact that reaches the
   edge of the fixed grid warns (:class:`~ballscrew.wear.step.GridEdgeWarning`). The nut contact
   and the bodies stay as in (E1.13).
