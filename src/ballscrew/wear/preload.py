@@ -54,6 +54,7 @@ these depths [N]) → (F_p [N], contact solves made)."""
 TOLERANCE = 1e-6
 """|G(F_p) − F_p| of the worn-contact preload at convergence, relative to F_p0."""
 MAX_ITERATIONS = 40
+"""Fixed-point iterations of the worn-contact preload before a ``ConvergenceError``."""
 
 
 @PRELOAD_CONTACTS.register(
@@ -82,7 +83,9 @@ def worn_preload(setup: WearSetup, depth: FloatArray, previous: float) -> tuple[
     pressures = None
     residual = float("inf")
     for iteration in range(1, MAX_ITERATIONS + 1):
-        if force <= 0.0:  # G(0+) = 0: the loop has lost its whole interference
+        # the worn contact took the whole interference; G(0+) = 0 is ASSUMED (so where G rises
+        # with F; a bridged groove whose G fell to 0 at a larger F could keep a root above 0)
+        if force <= 0.0:
             return 0.0, 2 * (iteration - 1)
         q = setup.ball_load(force)
         worn, unworn = solve_normal_batch(
