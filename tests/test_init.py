@@ -241,12 +241,16 @@ def test_a_single_nut_without_preload_is_written_with_a_load(bare_single) -> Non
         (SHEET, 64.0),  # 1.6 d0; TBI SFNU04010 (DIN 69051-5 form B) prints D = 63 mm
         (["--d0", "32", "--lead", "5", "--ball", "3.175", "--turns", "2.5x2"], 51.2),  # TBI: 50
         (["--d0", "16", "--lead", "10", "--ball", "7.5", "--turns", "1x2", "--nuts", "1"], 31.0),
+        # the least body of the d_m written to six digits (9.87655 mm), rounded up, not down
+        # to 16.8765 mm below it (init refused its own case, blaming --d0)
+        (["--d0", "8", "--dp", "9.876545", "--lead", "5", "--ball", "3.5", "--turns", "1x2",
+          "--nuts", "1"], 16.8766),
     ],
-)
+)  # fmt: skip
 def test_one_nut_one_outer_diameter(sheet, outer_mm) -> None:
     """The check's nut body ([loads]) and the thermal model's nut ([thermal]) are one nut: the
     starter wrote 1.75 d0 to [thermal] and left [loads] at d_m + 5 D_b (56 and 47.9 mm for a
-    32 x 5 nut). 1.6 d0 lies within 2 % of DIN 69051-5 nuts of 32 and 40 mm; balls too large
+    32 x 5 nut). 1.6 d0 lies within 2.5 % of DIN 69051-5 nuts of 32 and 40 mm; balls too large
     for it get the least body d_m + 2 D_b = 16 + 15 mm, which the case accepts."""
     result = init(*sheet)
     assert result.exit_code == 0, result.output
@@ -255,6 +259,11 @@ def test_one_nut_one_outer_diameter(sheet, outer_mm) -> None:
     assert case.thermal is not None
     assert case.thermal.nut_outer_diameter == case.loads.nut_outer_diameter
     assert {"loads.nut_outer_diameter", "thermal.nut_outer_diameter"} <= set(case.assumed)
+    # the file's comments name the DIN bodies only where the body is 1.6 d0
+    typical = outer_mm == pytest.approx(1.6 * float(sheet[1]))
+    lines = [ln for ln in result.stdout.splitlines() if ln.startswith("nut_outer_diameter")]
+    assert [("DIN 69051" in ln) for ln in lines] == [typical, False]
+    assert "TYPICAL" in lines[0] if typical else "ASSUMED: d_m + 2 D_b" in lines[0]
 
 
 def test_a_red_life_on_the_illustrative_duty_says_the_duty_is_not_sized(generated) -> None:

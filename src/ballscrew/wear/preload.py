@@ -14,12 +14,15 @@ ball's contacts plus the elastic bodies. Wear of depth h(y) on the screw flank s
                                             conforming groove, whose contact is wider),
 
   and F_p' is the root of F = G(F) = F_p(E1.13 with h_eff(Q(F)) for h_max), Q = F/(Z sinβ cosλ)
-  (E1.6). G rises with F (the wider contact of a larger load loses less) and falls as the
-  groove wears, so the fixed-point iteration F ← G(F) started from the preload before the step
-  (or F_p0) falls monotonically to the largest root below it, the preload reached continuously
-  from the unworn nut; it stops when |G(F) − F| ≤ 1e-6 F_p0 and raises
-  :class:`~ballscrew.errors.ConvergenceError` with that residual after 40 iterations (it
-  contracts by a factor ≈ 0.02–0.15 per iteration on the step-stress screw). The grid's
+  (E1.6). The fixed-point iteration F ← G(F) starts from the preload before the step (or
+  F_p0), stops when |G(F) − F| ≤ 1e-6 F_p0 and raises
+  :class:`~ballscrew.errors.ConvergenceError` with that residual after 40 iterations. It
+  contracts, |G'| ≈ 0.02–0.15 on the step-stress screw, so the value returned lies within
+  |G'|/(1 − |G'|) of that residual from the root. Where the groove is shallower than the
+  ball's conformity G rises with F (the wider contact of a larger load loses less) and the
+  iterates fall monotonically to the root; where the ball bridges a deep, narrow groove on its
+  shoulders G falls with F and they alternate about it (4 µm worn over half the grid:
+  697 → 716 → 714.7 → 714.8 N). The grid's
   discretisation of the approach cancels in the difference; a worn contact that reaches the
   edge of the fixed grid warns (:class:`~ballscrew.wear.step.GridEdgeWarning`). The nut contact
   and the bodies stay as in (E1.13).
@@ -51,6 +54,7 @@ these depths [N]) → (F_p [N], contact solves made)."""
 TOLERANCE = 1e-6
 """|G(F_p) − F_p| of the worn-contact preload at convergence, relative to F_p0."""
 MAX_ITERATIONS = 40
+"""Fixed-point iterations of the worn-contact preload before a ``ConvergenceError``."""
 
 
 @PRELOAD_CONTACTS.register(
@@ -79,7 +83,9 @@ def worn_preload(setup: WearSetup, depth: FloatArray, previous: float) -> tuple[
     pressures = None
     residual = float("inf")
     for iteration in range(1, MAX_ITERATIONS + 1):
-        if force <= 0.0:  # G(0+) = 0: the loop has lost its whole interference
+        # the worn contact took the whole interference; G(0+) = 0 is ASSUMED (so where G rises
+        # with F; a bridged groove whose G fell to 0 at a larger F could keep a root above 0)
+        if force <= 0.0:
             return 0.0, 2 * (iteration - 1)
         q = setup.ball_load(force)
         worn, unworn = solve_normal_batch(
