@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from ballscrew.analyses.ball_contact import contact_scalars
 from ballscrew.analyses.design_check import design_scalars
+from ballscrew.analyses.duty_thermal import duty_scalars
 from ballscrew.analyses.operating_point import operating_point_scalars
 from ballscrew.analyses.result import ANALYSES, Analysis
 from ballscrew.analyses.screw_tcr import tcr_scalars
@@ -93,6 +94,7 @@ for _analysis in (
     Analysis(
         "duty",
         "temperatures and thermal elongation over the [[duty]] cycle",
+        scalars=duty_scalars,
         headlines=("peak_elongation", "final_elongation", "peak_temperature"),
         key_figure="duty_day.png",
     ),

@@ -52,7 +52,7 @@ from ballscrew.thermal.problem import ThermalProblem
 from ballscrew.thermal.simulate import check_transient
 from ballscrew.thermal.timestepping import StepSystem, implicit_euler
 
-__all__ = ["DutyThermal", "checked_cycle", "thermal_duty"]
+__all__ = ["DutyThermal", "checked_cycle", "duty_scalars", "thermal_duty"]
 
 FloatArray = NDArray[np.float64]
 
@@ -290,3 +290,18 @@ def thermal_duty(case: Case, model: str | None = None) -> DutyThermal:
         coolant_outlet_temperature=None if outlet is None else amb + outlet,
         warnings=tuple(messages),
     )
+
+
+def duty_scalars(case: Case) -> dict[str, tuple[float, str]]:
+    """Sweepable scalars of :func:`thermal_duty` (the case's ``[thermal] model``) with their
+    units: the peak and end-of-cycle elongation and largest temperature, the heat of the cycle
+    and its balance error (``ballscrew sweep --analysis duty``)."""
+    result = thermal_duty(case)
+    return {
+        "peak_elongation": (float(result.elongation.max()), "m"),
+        "final_elongation": (float(result.elongation[-1]), "m"),
+        "peak_temperature": (float(result.max_temperature.max()), "K"),
+        "final_temperature": (float(result.max_temperature[-1]), "K"),
+        "heat_in": (result.heat_in, "J"),
+        "heat_balance_error": (result.heat_balance_error, ""),
+    }

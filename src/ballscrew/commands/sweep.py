@@ -21,6 +21,7 @@ SWEEPABLE_HELP = (
     "thermal-network",
     "thermal-fe",
     "operating-point",
+    "duty",
     "check",
 )
 
