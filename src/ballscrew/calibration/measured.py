@@ -123,8 +123,8 @@ class MeasuredHistory:
     quantity: str
     source: str = "measured data"
     schedule: NDArray[np.float64] | None = None
-    """(speed [rad/s], axial load [N][, stroke [m]]) run since the previous row, one row per
-    point (a stroke of 0: the ``[wear]`` stroke); None: the case's programme."""
+    """Speed (rad/s), axial load (N) and, optionally, stroke (m) run since the previous row, one
+    row per point (a stroke of 0: the ``[wear]`` stroke); None: the case's programme."""
     notes: tuple[str, ...] = ()
     """The comment lines before the header of a CSV file: what it says about its data."""
 
