@@ -24,11 +24,15 @@ of the turn around ball j (n_t balls per turn, ⟨Q⟩_j their mean load); Lamé
 solid shaft give c_r = [(r_o² + r²)/(r_o² − r²) + ν_n]/(2π E_n) + (1 − ν_s)/(2π E_s) of radial
 approach per line load (the thick-ring expansion of the MESYS ball-screw manual).
 
-One Newton solve on (Q, x[, g]) with a dense Jacobian (no loop over balls) and a backtracking
-line search; the force balance Σ σ_j s Q_j = F_a (a single nut: F_p + F_a on its one flank) is
-a linear row of the system, so it holds to rounding. The contact angle under load follows the
-distance of the groove curvature centres A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j)
-(Harris & Kotzalas 2007); the axial share s keeps β₀ (the change is of order δ/A, 1–2 %).
+One Newton solve on (Q, x[, g]) with a backtracking line search; the force balance
+Σ σ_j s Q_j = F_a (a single nut: F_p + F_a on its one flank) is a linear row of the system, so it
+holds to rounding. Up to SPARSE_BALLS balls the Jacobian is dense; above, Newton solves the same
+step as a sparse system with twice as many more unknowns, the bars' tail forces
+t_k = Σ_{i≥k} σ_i Q_i and displacements u_k = Σ_{l≤k} Δz_l t_l over the balls in axial order
+(Σ_i min(z_i, z_j) σ_i Q_i = u_j: two bidiagonal rows per ball for a dense one), by sparse LU.
+The contact angle under load follows the distance of the groove curvature centres
+A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007); the axial
+share s keeps β₀ (the change is of order δ/A, 1–2 %).
 
 The helix does not place the balls symmetrically: their loads leave a radial force and a tilting
 moment on the nut. ``support="guided"`` (default) lets the housing take them (the nut moves only
@@ -46,8 +50,10 @@ from dataclasses import dataclass
 from functools import cache, partial
 
 import numpy as np
+import scipy.sparse as sp
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
+from scipy.sparse.linalg import splu
 
 from ballscrew.backend import blas_single_thread
 from ballscrew.errors import ConvergenceError, InputError
@@ -59,6 +65,7 @@ from ballscrew.validation import positive
 
 __all__ = [
     "LIFT_OFF_SEARCH",
+    "SPARSE_BALLS",
     "BallLayout",
     "Distribution",
     "NutBodies",
@@ -75,6 +82,10 @@ _TOLERANCE = 1e-13
 rows are loads in units of the reference load, so a large radial load or tilting moment on a
 free nut leaves rounding of order ε max |q̂| (an absolute 1e-13 was unreachable there)."""
 _MAX_ITERATIONS = 60
+SPARSE_BALLS = 500
+"""Balls (both nuts) from which Newton factorises the sparse bar system instead of the dense
+Jacobian: the measured crossover (one solve of a double nut, 400 balls: dense 18 ms, sparse
+24 ms; 500: 34 and 33 ms; 600: 56 and 41 ms)."""
 
 
 @dataclass(frozen=True)
@@ -322,6 +333,76 @@ def _scaled_law(contact: TabulatedContact, q_ref: float, d_ref: float) -> Law:
     return law
 
 
+@dataclass(frozen=True)
+class _Bars:
+    """The structure of the scaled a = κ σ_j (ℓ z_j − k min(z_i, z_j)) σ_i − R_ji (the bars'
+    flexibility, equations above, and the ring's banded window R) for a sparse Jacobian."""
+
+    kappa: float
+    lead_coef: float
+    bar: float
+    """k = c_s + c_n."""
+    z: NDArray[np.float64]
+    sigma: NDArray[np.float64]
+    ring: sp.csr_matrix
+
+    def jacobian(
+        self, b: NDArray[np.float64], g: NDArray[np.float64]
+    ) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+        """(E, F) of J = E + diag(φ', 0) F on (q, ξ, t, û), û = κ k u: the rows of q are
+        q_j + φ'_j [R q − σ_j (κ ℓ z_j t_first − û_j) − B ξ]_j, then G q, the tail rows
+        t_k − t_{k+1} − σ q = 0 and the displacement rows û_k − û_{k−1} − κ k Δz_k t_k = 0."""
+        n, m = b.shape
+        order = np.argsort(self.z, kind="stable")
+        rank = np.empty(n, dtype=np.int64)
+        rank[order] = np.arange(n)
+        dz = np.diff(self.z[order], prepend=0.0)  # min(z_a, z_b) = Σ_{k ≤ min(a, b)} Δz_k
+        t0, u0 = n + m, 2 * n + m
+        size = 3 * n + m
+        k = np.arange(n)
+        eye = sp.csr_matrix((np.ones(n), (k, k)), shape=(n, size))
+        balance = sp.coo_matrix(g).tocsr()
+        tail = sp.csr_matrix(
+            (
+                np.concatenate([np.ones(n), -np.ones(n - 1), -self.sigma[order]]),
+                (np.concatenate([k, k[:-1], k]), np.concatenate([t0 + k, t0 + k[1:], order])),
+            ),
+            shape=(n, size),
+        )
+        bars = sp.csr_matrix(
+            (
+                np.concatenate([np.ones(n), -np.ones(n - 1), -self.kappa * self.bar * dz]),
+                (np.concatenate([k, k[1:], k]), np.concatenate([u0 + k, u0 + k[:-1], t0 + k])),
+            ),
+            shape=(n, size),
+        )
+        e = sp.vstack([eye, sp.hstack([balance, sp.csr_matrix((m, size - n))]), tail, bars])
+        rows = sp.hstack(
+            [
+                self.ring,
+                sp.csr_matrix(-b),
+                sp.csr_matrix(
+                    (
+                        np.concatenate(
+                            [-self.kappa * self.lead_coef * self.sigma * self.z, self.sigma]
+                        ),
+                        (
+                            np.concatenate([k, k]),
+                            np.concatenate([np.full(n, t0 - n - m), u0 - n - m + rank]),
+                        ),
+                    ),
+                    shape=(n, 2 * n),
+                ),
+            ]
+        ).tocsr()
+        f = sp.vstack([rows, sp.csr_matrix((2 * n + m, size))]).tocsr()
+        return e.tocsr(), f
+
+
+Solver = Callable[[NDArray[np.float64]], NDArray[np.float64]]
+"""x ↦ J⁻¹ x for the Jacobian of the (q, ξ) system at the solution."""
+
+
 def _newton(
     a: NDArray[np.float64],
     b: NDArray[np.float64],
@@ -330,12 +411,14 @@ def _newton(
     f: NDArray[np.float64],
     y: NDArray[np.float64],
     law: Law = _hertz_law,
-) -> tuple[NDArray[np.float64], NDArray[np.float64], int]:
+    bars: _Bars | None = None,
+) -> tuple[NDArray[np.float64], Solver, int]:
     """Solve q = φ(A q + B ξ + c), G q = f for y = (q, ξ) (scaled units; Hertz φ(d) = d₊^(3/2)).
 
     Stops when max |residual| < 1e-13 max(1, max |q|, max |f|). Returns the solution, the
-    Jacobian at it and the iteration count. Small dense systems: BLAS runs on one thread
-    (threaded BLAS on busy cores is many times slower here).
+    solver of the Jacobian at it and the iteration count. Small dense systems: BLAS runs on one
+    thread (threaded BLAS on busy cores is many times slower here). With ``bars`` (the
+    structure of A) each step solves the sparse bar system instead (:class:`_Bars`).
     """
     n, m = a.shape[0], b.shape[1]
     diagonal = np.arange(n)
@@ -345,20 +428,37 @@ def _newton(
         q, slope = law(a @ y[:n] + b @ y[n:] + c)
         return np.concatenate([y[:n] - q, g @ y[:n] - f]), slope
 
-    r, slope = residual(y)
-    norm = float(np.max(np.abs(r)))
-    jac = np.zeros((n + m, n + m))
-    with blas_single_thread():
-        for it in range(1, _MAX_ITERATIONS + 1):
+    if bars is None:
+        jac = np.zeros((n + m, n + m))
+
+        def factor(slope: NDArray[np.float64]) -> Solver:
             np.multiply(-slope[:, None], a, out=jac[:n, :n])
             jac[diagonal, diagonal] += 1.0
             jac[:n, n:] = -slope[:, None] * b
             jac[n:, :n] = g
+            return partial(np.linalg.solve, jac)
+
+    else:
+        e, f_rows = bars.jacobian(b, g)
+        padding = np.zeros(2 * n + m)
+
+        def factor(slope: NDArray[np.float64]) -> Solver:
+            jac_sparse = (e + sp.diags(np.concatenate([slope, padding])) @ f_rows).tocsc()
+            try:
+                lu = splu(jac_sparse)
+            except RuntimeError as err:  # "Factor is exactly singular"
+                raise np.linalg.LinAlgError(str(err)) from err
+            return lambda rhs: lu.solve(np.concatenate([rhs, np.zeros(2 * n)]))[: n + m]
+
+    r, slope = residual(y)
+    norm = float(np.max(np.abs(r)))
+    with blas_single_thread():
+        for it in range(1, _MAX_ITERATIONS + 1):
             tolerance = _TOLERANCE * max(f_max, float(np.max(np.abs(y[:n]))))
             if norm < tolerance:
-                return y, jac, it - 1
+                return y, factor(slope), it - 1
             try:
-                step = np.linalg.solve(jac, -r)
+                step = factor(slope)(-r)
             except np.linalg.LinAlgError:  # a stiffness so far off that J is singular
                 break
             t, phi = 1.0, norm
@@ -433,6 +533,11 @@ def solve_distribution(
     flex, lead_coef = _flexibility(layout, bodies)
     ring = math.cos(beta) ** 2 * bodies.ring_compliance / layout.lead * _window(layout)
     a = (s * s * sigma[:, None] * flex * sigma[None, :] - ring) * q_ref / d_ref
+    bars = None
+    if sigma.size >= SPARSE_BALLS:
+        kappa = s * s * q_ref / d_ref
+        bar = 1.0 / bodies.screw_rigidity + 1.0 / bodies.nut_rigidity
+        bars = _Bars(kappa, lead_coef, bar, layout.z, sigma, sp.csr_matrix(ring * (q_ref / d_ref)))
     c = (s * sigma * expand_errors("lead_error", lead_error, layout)) / d_ref
     c = c + expand_errors("ball_excess", ball_excess, layout) / d_ref
     force_row = sigma / z_count
@@ -450,13 +555,13 @@ def solve_distribution(
     if layout.nuts == 1:
         g_hat = 0.0
     elif interference is None:
-        g_hat = _preload_interference(a, b, c, rows, fp / f_ref, law)
+        g_hat = _preload_interference(a, b, c, rows, fp / f_ref, law, bars)
     else:
         g_hat = interference * s / d_ref
     c_load = c + g_hat
     x0 = (f1 / f_ref) ** (2.0 / 3.0) - g_hat
     axial = fa if layout.nuts == 2 else f1  # one nut: F_p + F_a
-    y, jac, its = _newton(
+    y, jacobian_solve, its = _newton(
         a,
         b,
         c_load,
@@ -464,12 +569,13 @@ def solve_distribution(
         np.append(axial, external / scale[1:]) / f_ref,
         np.concatenate([q0, [x0], np.zeros(scale.size - 1)]),
         law,
+        bars,
     )
     n = sigma.size
     rhs = np.zeros(n + scale.size)
     rhs[n] = 1.0 / f_ref
     with blas_single_thread():
-        dy = np.linalg.solve(jac, rhs)
+        dy = jacobian_solve(rhs)
     arm = lead_coef * s * q_ref * sigma * (layout.z.max() - layout.z)
     x_scale = d_ref / s
     q = y[:n] * q_ref
@@ -498,6 +604,7 @@ def _preload_interference(
     rows: NDArray[np.float64],
     preload_hat: float,
     law: Law,
+    bars: _Bars | None = None,
 ) -> float:
     """ĝ at which nut 1 carries the preload with no external load (scaled units); ``b`` and
     ``rows``: the columns and balance rows of the nut's displacements (axial first).
@@ -519,7 +626,7 @@ def _preload_interference(
     start = np.concatenate([q0, [0.5 * (median_2 - median_1)], np.zeros(m - 1), [g0]])
     f = np.zeros(m + 1)
     f[-1] = preload_hat
-    y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law)
+    y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law, bars)
     return float(y[-1])
 
 
