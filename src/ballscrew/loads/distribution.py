@@ -488,6 +488,7 @@ def solve_distribution(
     support: str = "guided",
     radial_load: float = 0.0,
     tilting_moment: float = 0.0,
+    start: Distribution | None = None,
 ) -> Distribution:
     """Normal load of every ball under the axial load F_a on nut 1, equations above.
 
@@ -511,6 +512,9 @@ def solve_distribution(
             "free" (a rigid nut balanced by its balls in radial displacement and tilt too).
         radial_load, tilting_moment: external force [N] along e₁ (towards θ = 0) and moment
             [N·m] about e₂ on a free nut, at its centre.
+        start: the solution at a neighbouring load of the same nut (every other argument
+            alike) for Newton to start from, where the nut has SPARSE_BALLS balls or more;
+            smaller nuts start from the rigid solution (their results do not depend on it).
     """
     beta, alpha = validate_angles(contact_angle, lead_angle)
     k = positive("hertz_constant", hertz_constant, "m N^-2/3")
@@ -559,7 +563,18 @@ def solve_distribution(
     else:
         g_hat = interference * s / d_ref
     c_load = c + g_hat
-    x0 = (f1 / f_ref) ** (2.0 / 3.0) - g_hat
+    y0 = np.concatenate([q0, [(f1 / f_ref) ** (2.0 / 3.0) - g_hat], np.zeros(scale.size - 1)])
+    arm = lead_coef * s * q_ref * sigma * (layout.z.max() - layout.z)
+    x_scale = d_ref / s
+    if start is not None and bars is not None:  # y of the neighbouring solution
+        rigid0 = np.concatenate([start.radial_displacement, start.tilt])[: scale.size - 1]
+        y0 = np.concatenate(
+            [
+                start.loads / q_ref,
+                [(start.displacement - float(arm @ start.loads) / q_ref) / x_scale],
+                rigid0 * scale[1:] / d_ref,
+            ]
+        )
     axial = fa if layout.nuts == 2 else f1  # one nut: F_p + F_a
     y, jacobian_solve, its = _newton(
         a,
@@ -567,7 +582,7 @@ def solve_distribution(
         c_load,
         rows,
         np.append(axial, external / scale[1:]) / f_ref,
-        np.concatenate([q0, [x0], np.zeros(scale.size - 1)]),
+        y0,
         law,
         bars,
     )
@@ -576,8 +591,6 @@ def solve_distribution(
     rhs[n] = 1.0 / f_ref
     with blas_single_thread():
         dy = jacobian_solve(rhs)
-    arm = lead_coef * s * q_ref * sigma * (layout.z.max() - layout.z)
-    x_scale = d_ref / s
     q = y[:n] * q_ref
     approach = (a @ y[:n] + b @ y[n:] + c_load) * d_ref
     rigid = y[n + 1 :] * d_ref / scale[1:]
@@ -671,7 +684,8 @@ def lift_off_load(
     the bracket's end) on a bracket doubled from 2^1.5 F_p, with the preload interference of
     F_a = 0 kept. Every other argument as in :func:`solve_distribution`, so the lift-off is
     that of the distribution the case solves (lead and ball-diameter errors, a free nut's
-    external radial load and tilting moment).
+    external radial load and tilting moment). Each solve starts from the one before
+    (``start`` of :func:`solve_distribution`).
     """
     if layout.nuts != 2:
         raise InputError("nuts", layout.nuts, "2 (lift-off of the second nut)")
@@ -690,11 +704,12 @@ def lift_off_load(
         radial_load=radial_load,
         tilting_moment=tilting_moment,
     )
-    g = solve(axial_load=0.0).interference
+    last = [solve(axial_load=0.0)]  # each solve starts from the one before (a long nut's)
+    g = last[0].interference
 
     @cache
     def approach(fa: float) -> float:
-        dist = solve(axial_load=fa, interference=g)
+        last[0] = dist = solve(axial_load=fa, interference=g, start=last[0])
         return float(dist.per_nut(dist.approach)[1].max())
 
     lo, hi = 0.0, 2.0**1.5 * preload
