@@ -236,7 +236,8 @@ def test_the_sparse_bar_jacobian_matches_finite_differences() -> None:
     f = g @ np.ones(n) * 1.2
     start = np.concatenate([np.ones(n), np.zeros(m)])
     bars = _Bars(kappa, lead_coef, bar, z, sigma, sp.csr_matrix(ring))
-    y, jac_solve, _ = _newton(a, b, c, g, f, start, bars=bars)
+    y, jac_solve, _ = _newton(bars, b, c, g, f, start)
+    assert bars @ y[:n] == pytest.approx(a @ y[:n], rel=1e-13, abs=1e-15)
     fd, residual = _finite_difference_jacobian(a, b, c, g, f, y)
     eye = np.column_stack([jac_solve(column) for column in fd.T])
     assert eye == pytest.approx(np.eye(n + m), abs=1e-7)

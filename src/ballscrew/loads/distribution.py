@@ -29,7 +29,8 @@ One Newton solve on (Q, x[, g]) with a backtracking line search; the force balan
 holds to rounding. Up to SPARSE_BALLS balls the Jacobian is dense; above, Newton solves the same
 step as a sparse system with twice as many more unknowns, the bars' tail forces
 t_k = Σ_{i≥k} σ_i Q_i and displacements u_k = Σ_{l≤k} Δz_l t_l over the balls in axial order
-(Σ_i min(z_i, z_j) σ_i Q_i = u_j: two bidiagonal rows per ball for a dense one), by sparse LU.
+(Σ_i min(z_i, z_j) σ_i Q_i = u_j: two bidiagonal rows per ball for a dense one), banded in
+axial order but for the rigid displacements, by sparse LU.
 The contact angle under load follows the distance of the groove curvature centres
 A = (f_s + f_N − 1) D_b: cos β_j = A cos β₀ / (A + δ_j) (Harris & Kotzalas 2007); the axial
 share s keeps β₀ (the change is of order δ/A, 1–2 %).
@@ -47,7 +48,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import cache, partial
+from functools import cache, cached_property, partial
 
 import numpy as np
 import scipy.sparse as sp
@@ -82,10 +83,10 @@ _TOLERANCE = 1e-13
 rows are loads in units of the reference load, so a large radial load or tilting moment on a
 free nut leaves rounding of order ε max |q̂| (an absolute 1e-13 was unreachable there)."""
 _MAX_ITERATIONS = 60
-SPARSE_BALLS = 500
+SPARSE_BALLS = 400
 """Balls (both nuts) from which Newton factorises the sparse bar system instead of the dense
-Jacobian: the measured crossover (one solve of a double nut, 400 balls: dense 18 ms, sparse
-24 ms; 500: 34 and 33 ms; 600: 56 and 41 ms)."""
+Jacobian: the measured crossover (one solve of a double nut, 300 balls: dense 9.7 ms, sparse
+12.8 ms; 400: 18.9 and 15.2 ms; 800: 132 and 32 ms)."""
 
 
 @dataclass(frozen=True)
@@ -291,26 +292,43 @@ class Distribution:
         return values.reshape(self.layout.nuts, -1)
 
 
+def _bar_coefficients(bodies: NutBodies) -> tuple[float, float]:
+    """(ℓ, k) = (c_s + c_n [flange at the loaded end], c_s + c_n) of C = ℓ z_j − k min(z_i, z_j)."""
+    c_s, c_n = 1.0 / bodies.screw_rigidity, 1.0 / bodies.nut_rigidity
+    return c_s + (c_n if bodies.flange_at_loaded_end else 0.0), c_s + c_n
+
+
 def _flexibility(layout: BallLayout, bodies: NutBodies) -> tuple[NDArray[np.float64], float]:
     """C (m/N) for the signed axial ball forces, and the coefficient of the displacement."""
-    c_s, c_n = 1.0 / bodies.screw_rigidity, 1.0 / bodies.nut_rigidity
-    lead_coef = c_s + (c_n if bodies.flange_at_loaded_end else 0.0)
+    lead_coef, bar = _bar_coefficients(bodies)
     z = layout.z
-    flex = lead_coef * z[:, None] - (c_s + c_n) * np.minimum(z[:, None], z[None, :])
+    flex = lead_coef * z[:, None] - bar * np.minimum(z[:, None], z[None, :])
     return flex, lead_coef
 
 
-def _window(layout: BallLayout) -> NDArray[np.float64]:
+def _window(layout: BallLayout) -> sp.csr_matrix:
     """Averaging over the balls of the same nut within half a lead: f_j = cosβ n_t ⟨Q⟩_j / L
     with n_t balls per turn, so a nut's end turns see the local mean load, not half of it.
     Where the flanks share the balls both contact pairs press the ring: f_j = cosβ n_t
-    (⟨Q₁⟩_j + ⟨Q₂⟩_j) / L."""
-    same = layout.nut[:, None] == layout.nut[None, :]
-    near = np.abs(layout.z[:, None] - layout.z[None, :]) <= 0.5 * layout.lead * (1 + 1e-12)
-    w = ((same | layout.shared) & near).astype(float)
-    per_turn = layout.lead / float(np.abs(layout.z[1] - layout.z[0])) if layout.balls > 1 else 1.0
+    (⟨Q₁⟩_j + ⟨Q₂⟩_j) / L. Sparse: each ball's neighbours within half a lead are a run of the
+    balls of its nut in axial order."""
+    z, n = layout.z, layout.z.size
+    half = 0.5 * layout.lead * (1 + 1e-12)
+    groups = [np.arange(n)] if layout.shared else [np.flatnonzero(layout.nut == k) for k in (0, 1)]
+    rows, cols = [], []
+    for members in groups[: 1 if layout.shared else layout.nuts]:
+        order = members[np.argsort(z[members], kind="stable")]
+        zs = z[order]
+        lo = np.searchsorted(zs, zs - half, side="left")
+        count = np.searchsorted(zs, zs + half, side="right") - lo
+        first = np.cumsum(count) - count  # where each ball's run starts in the flat list
+        rows.append(np.repeat(order, count))
+        cols.append(order[np.arange(count.sum()) - np.repeat(first - lo, count)])
+    row, col = np.concatenate(rows), np.concatenate(cols)
+    per_turn = layout.lead / float(np.abs(z[1] - z[0])) if layout.balls > 1 else 1.0
     pairs = layout.nuts if layout.shared else 1
-    return w * (pairs * per_turn / w.sum(axis=1, keepdims=True))
+    weight = pairs * per_turn / np.bincount(row, minlength=n).astype(float)
+    return sp.csr_matrix((weight[row], (row, col)), shape=(n, n))
 
 
 Law = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.float64]]]
@@ -335,8 +353,9 @@ def _scaled_law(contact: TabulatedContact, q_ref: float, d_ref: float) -> Law:
 
 @dataclass(frozen=True)
 class _Bars:
-    """The structure of the scaled a = κ σ_j (ℓ z_j − k min(z_i, z_j)) σ_i − R_ji (the bars'
-    flexibility, equations above, and the ring's banded window R) for a sparse Jacobian."""
+    """The scaled a = κ σ_j (ℓ z_j − k min(z_i, z_j)) σ_i − R_ji (the bars' flexibility,
+    equations above, and the ring's banded window R) as an operator, ``a @ q`` in O(n), and its
+    sparse Jacobian."""
 
     kappa: float
     lead_coef: float
@@ -346,17 +365,34 @@ class _Bars:
     sigma: NDArray[np.float64]
     ring: sp.csr_matrix
 
+    @cached_property
+    def _axial(self) -> tuple[NDArray[np.int64], NDArray[np.float64]]:
+        """The balls in axial order and Δz_k, min(z_a, z_b) = Σ_{k ≤ min(a, b)} Δz_k."""
+        order = np.argsort(self.z, kind="stable")
+        return order, np.diff(self.z[order], prepend=0.0)
+
+    def __matmul__(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
+        """a q through the tail forces t and displacements u of σ q in axial order."""
+        order, dz = self._axial
+        tail = np.cumsum((self.sigma * q)[order][::-1])[::-1]
+        u = np.empty_like(tail)
+        u[order] = np.cumsum(dz * tail)
+        return self.kappa * self.sigma * (self.lead_coef * self.z * tail[0] - self.bar * u) - (
+            self.ring @ q
+        )
+
     def jacobian(
         self, b: NDArray[np.float64], g: NDArray[np.float64]
-    ) -> tuple[sp.csr_matrix, sp.csr_matrix]:
-        """(E, F) of J = E + diag(φ', 0) F on (q, ξ, t, û), û = κ k u: the rows of q are
+    ) -> tuple[sp.csr_matrix, sp.csr_matrix, NDArray[np.int64]]:
+        """(E, F, p) of J = E + diag(φ', 0) F on (q, ξ, t, û), û = κ k u: the rows of q are
         q_j + φ'_j [R q − σ_j (κ ℓ z_j t_first − û_j) − B ξ]_j, then G q, the tail rows
-        t_k − t_{k+1} − σ q = 0 and the displacement rows û_k − û_{k−1} − κ k Δz_k t_k = 0."""
+        t_k − t_{k+1} − σ q = 0 and the displacement rows û_k − û_{k−1} − κ k Δz_k t_k = 0.
+        Rows and columns in the order p, which makes J banded but for the last 1 + len(ξ)
+        columns and len(ξ) rows (LU without fill-reducing permutation)."""
         n, m = b.shape
-        order = np.argsort(self.z, kind="stable")
+        order, dz = self._axial
         rank = np.empty(n, dtype=np.int64)
         rank[order] = np.arange(n)
-        dz = np.diff(self.z[order], prepend=0.0)  # min(z_a, z_b) = Σ_{k ≤ min(a, b)} Δz_k
         t0, u0 = n + m, 2 * n + m
         size = 3 * n + m
         k = np.arange(n)
@@ -395,8 +431,11 @@ class _Bars:
                 ),
             ]
         ).tocsr()
-        f = sp.vstack([rows, sp.csr_matrix((2 * n + m, size))]).tocsr()
-        return e.tocsr(), f
+        f = sp.vstack([rows, sp.csr_matrix((2 * n + m, size))])
+        # banded order: (q, t, û) of each ball in axial order, then the dense t_first and ξ
+        banded = np.column_stack([order, t0 + k, u0 + k]).ravel()
+        perm = np.concatenate([np.delete(banded, 1), [t0], n + np.arange(m)])
+        return e.tocsr()[perm][:, perm], f.tocsr()[perm][:, perm], perm
 
 
 Solver = Callable[[NDArray[np.float64]], NDArray[np.float64]]
@@ -404,23 +443,22 @@ Solver = Callable[[NDArray[np.float64]], NDArray[np.float64]]
 
 
 def _newton(
-    a: NDArray[np.float64],
+    a: NDArray[np.float64] | _Bars,
     b: NDArray[np.float64],
     c: NDArray[np.float64],
     g: NDArray[np.float64],
     f: NDArray[np.float64],
     y: NDArray[np.float64],
     law: Law = _hertz_law,
-    bars: _Bars | None = None,
 ) -> tuple[NDArray[np.float64], Solver, int]:
     """Solve q = φ(A q + B ξ + c), G q = f for y = (q, ξ) (scaled units; Hertz φ(d) = d₊^(3/2)).
 
     Stops when max |residual| < 1e-13 max(1, max |q|, max |f|). Returns the solution, the
     solver of the Jacobian at it and the iteration count. Small dense systems: BLAS runs on one
-    thread (threaded BLAS on busy cores is many times slower here). With ``bars`` (the
-    structure of A) each step solves the sparse bar system instead (:class:`_Bars`).
+    thread (threaded BLAS on busy cores is many times slower here). Where A is the bars'
+    operator (:class:`_Bars`) each step solves their sparse system instead.
     """
-    n, m = a.shape[0], b.shape[1]
+    n, m = b.shape
     diagonal = np.arange(n)
     f_max = float(np.max(np.abs(f), initial=1.0))
 
@@ -428,7 +466,7 @@ def _newton(
         q, slope = law(a @ y[:n] + b @ y[n:] + c)
         return np.concatenate([y[:n] - q, g @ y[:n] - f]), slope
 
-    if bars is None:
+    if isinstance(a, np.ndarray):
         jac = np.zeros((n + m, n + m))
 
         def factor(slope: NDArray[np.float64]) -> Solver:
@@ -439,16 +477,23 @@ def _newton(
             return partial(np.linalg.solve, jac)
 
     else:
-        e, f_rows = bars.jacobian(b, g)
-        padding = np.zeros(2 * n + m)
+        e, f_rows, order = a.jacobian(b, g)
+        slopes = order < n  # where the unknowns q sit in the banded order
 
         def factor(slope: NDArray[np.float64]) -> Solver:
-            jac_sparse = (e + sp.diags(np.concatenate([slope, padding])) @ f_rows).tocsc()
+            d = np.zeros(3 * n + m)
+            d[slopes] = slope[order[slopes]]
             try:
-                lu = splu(jac_sparse)
+                lu = splu((e + sp.diags(d) @ f_rows).tocsc(), permc_spec="NATURAL")
             except RuntimeError as err:  # "Factor is exactly singular"
                 raise np.linalg.LinAlgError(str(err)) from err
-            return lambda rhs: lu.solve(np.concatenate([rhs, np.zeros(2 * n)]))[: n + m]
+
+            def solve(rhs: NDArray[np.float64]) -> NDArray[np.float64]:
+                x = np.empty(3 * n + m)
+                x[order] = lu.solve(np.concatenate([rhs, np.zeros(2 * n)])[order])
+                return x[: n + m]
+
+            return solve
 
     r, slope = residual(y)
     norm = float(np.max(np.abs(r)))
@@ -534,14 +579,14 @@ def solve_distribution(
     f_ref = max(fp, fa) if layout.nuts == 2 else fp + fa
     q_ref = f_ref / (z_count * s)
     d_ref = k * q_ref ** (2.0 / 3.0)
-    flex, lead_coef = _flexibility(layout, bodies)
     ring = math.cos(beta) ** 2 * bodies.ring_compliance / layout.lead * _window(layout)
-    a = (s * s * sigma[:, None] * flex * sigma[None, :] - ring) * q_ref / d_ref
-    bars = None
+    a: NDArray[np.float64] | _Bars
     if sigma.size >= SPARSE_BALLS:
-        kappa = s * s * q_ref / d_ref
-        bar = 1.0 / bodies.screw_rigidity + 1.0 / bodies.nut_rigidity
-        bars = _Bars(kappa, lead_coef, bar, layout.z, sigma, sp.csr_matrix(ring * (q_ref / d_ref)))
+        lead_coef, bar = _bar_coefficients(bodies)
+        a = _Bars(s * s * q_ref / d_ref, lead_coef, bar, layout.z, sigma, ring * (q_ref / d_ref))
+    else:
+        flex, lead_coef = _flexibility(layout, bodies)
+        a = (s * s * sigma[:, None] * flex * sigma[None, :] - ring.toarray()) * q_ref / d_ref
     c = (s * sigma * expand_errors("lead_error", lead_error, layout)) / d_ref
     c = c + expand_errors("ball_excess", ball_excess, layout) / d_ref
     force_row = sigma / z_count
@@ -559,14 +604,14 @@ def solve_distribution(
     if layout.nuts == 1:
         g_hat = 0.0
     elif interference is None:
-        g_hat = _preload_interference(a, b, c, rows, fp / f_ref, law, bars)
+        g_hat = _preload_interference(a, b, c, rows, fp / f_ref, law)
     else:
         g_hat = interference * s / d_ref
     c_load = c + g_hat
     y0 = np.concatenate([q0, [(f1 / f_ref) ** (2.0 / 3.0) - g_hat], np.zeros(scale.size - 1)])
     arm = lead_coef * s * q_ref * sigma * (layout.z.max() - layout.z)
     x_scale = d_ref / s
-    if start is not None and bars is not None:  # y of the neighbouring solution
+    if start is not None and isinstance(a, _Bars):  # y of the neighbouring solution
         rigid0 = np.concatenate([start.radial_displacement, start.tilt])[: scale.size - 1]
         y0 = np.concatenate(
             [
@@ -584,7 +629,6 @@ def solve_distribution(
         np.append(axial, external / scale[1:]) / f_ref,
         y0,
         law,
-        bars,
     )
     n = sigma.size
     rhs = np.zeros(n + scale.size)
@@ -611,13 +655,12 @@ def solve_distribution(
 
 
 def _preload_interference(
-    a: NDArray[np.float64],
+    a: NDArray[np.float64] | _Bars,
     b: NDArray[np.float64],
     c: NDArray[np.float64],
     rows: NDArray[np.float64],
     preload_hat: float,
     law: Law,
-    bars: _Bars | None = None,
 ) -> float:
     """ĝ at which nut 1 carries the preload with no external load (scaled units); ``b`` and
     ``rows``: the columns and balance rows of the nut's displacements (axial first).
@@ -639,7 +682,7 @@ def _preload_interference(
     start = np.concatenate([q0, [0.5 * (median_2 - median_1)], np.zeros(m - 1), [g0]])
     f = np.zeros(m + 1)
     f[-1] = preload_hat
-    y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law, bars)
+    y, _, _ = _newton(a, np.column_stack([b, np.ones(n)]), c, g, f, start, law)
     return float(y[-1])
 
 
