@@ -477,12 +477,12 @@ def _newton(
             return partial(np.linalg.solve, jac)
 
     else:
-        e, f_rows, order = a.jacobian(b, g)
-        slopes = order < n  # where the unknowns q sit in the banded order
+        e, f_rows, perm = a.jacobian(b, g)
+        slopes = perm < n  # where the unknowns q sit in the banded order
 
         def factor(slope: NDArray[np.float64]) -> Solver:
             d = np.zeros(3 * n + m)
-            d[slopes] = slope[order[slopes]]
+            d[slopes] = slope[perm[slopes]]
             try:
                 lu = splu((e + sp.diags(d) @ f_rows).tocsc(), permc_spec="NATURAL")
             except RuntimeError as err:  # "Factor is exactly singular"
@@ -490,7 +490,7 @@ def _newton(
 
             def solve(rhs: NDArray[np.float64]) -> NDArray[np.float64]:
                 x = np.empty(3 * n + m)
-                x[order] = lu.solve(np.concatenate([rhs, np.zeros(2 * n)])[order])
+                x[perm] = lu.solve(np.concatenate([rhs, np.zeros(2 * n)])[perm])
                 return x[: n + m]
 
             return solve
