@@ -6,8 +6,12 @@ preload solve plus load solve) at F_a = 2 kN, the same with non-Hertzian contact
 (``loads.contact = "numerical"``: the contact law tabulated afresh each time, one batched solve
 of the exact groove gap per raceway, then Newton), the same with the nut free to shift and tilt
 (``loads.nut_support = "free"``: five DOFs of the nut), and ``ballscrew.design_check`` (which
-solves it). Prints a table of median wall times after a warm-up run. Targets: distribution ≤ 20 ms
-(Hertz) and ≤ 1 s (numerical contacts), design check ≤ 50 ms.
+solves it). Then long double nuts (15, 30 and 40 turns per nut, 294–788 balls per nut: the
+sparse bar system of Newton above ``SPARSE_BALLS`` balls): one distribution, the design check
+and, at 30 turns, the report's stiffness curve (41 elastic solves and the lift-off search, the
+bulk of ``ballscrew check``), best of ``--long-repeats``. Prints a table of median wall times
+after a warm-up run. Targets: distribution ≤ 20 ms (Hertz) and ≤ 1 s (numerical contacts),
+design check ≤ 50 ms.
 
 Usage: python benchmarks/bench_design.py [--repeats N]
 """
@@ -18,10 +22,11 @@ import argparse
 import statistics
 import time
 from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 
 import ballscrew
-from ballscrew.analyses import contact_law
+from ballscrew.analyses import contact_law, design_check_report
 from ballscrew.analyses.ball_loads import elastic_distribution
 from ballscrew.analyses.parameters import ScrewParameters
 
@@ -35,6 +40,9 @@ OVERRIDES = {
     "design.dynamic_load_rating": 52_700.0,
     "design.static_load_rating": 141_100.0,
 }
+LONG_NUTS = {15: 294, 30: 591, 40: 788}
+"""Balls per nut of the 40 × 10 screw's long nuts by turns (``ballscrew init`` 5 × 3, 10 × 3 and
+10 × 4 turns)."""
 
 
 def _median(work: Callable[[], object], repeats: int) -> tuple[float, float]:
@@ -50,6 +58,7 @@ def _median(work: Callable[[], object], repeats: int) -> tuple[float, float]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=20)
+    parser.add_argument("--long-repeats", type=int, default=3)
     args = parser.parse_args()
     case = ballscrew.load_case(CASE, OVERRIDES)
     params = ScrewParameters.from_case(case)
@@ -84,6 +93,39 @@ def main() -> None:
             "≤ 50 ms",
         ),
     ]
+    for turns, balls in LONG_NUTS.items():
+        long_nut = ballscrew.load_case(
+            CASE,
+            OVERRIDES | {"screw.balls_per_nut": balls, "thermal.nut_length": (turns + 2) * 0.01},
+        )
+        long_params = ScrewParameters.from_case(long_nut)
+        rows.append(
+            (
+                f"{turns}-turn double nut ({2 * balls} balls): one elastic distribution",
+                _median(
+                    partial(elastic_distribution, long_params, long_nut.loads), args.long_repeats
+                ),
+                "",
+            )
+        )
+        rows.append(
+            (
+                f"{turns}-turn double nut: ballscrew.design_check",
+                _median(partial(ballscrew.design_check, long_nut), args.long_repeats),
+                "",
+            )
+        )
+        if turns == 30:
+            checked = ballscrew.design_check(long_nut)
+            rows.append(
+                (
+                    "30-turn double nut: the report's stiffness curve",
+                    _median(
+                        partial(design_check_report.stiffness_curve, checked), args.long_repeats
+                    ),
+                    "",
+                )
+            )
     print("| Work | Median | Best | Target |")
     print("|---|---|---|---|")
     for label, (median, best), target in rows:

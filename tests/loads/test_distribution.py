@@ -11,6 +11,7 @@ from ballscrew.errors import InputError
 from ballscrew.loads import ball_load, nut_forces
 from ballscrew.loads.distribution import (
     LIFT_OFF_SEARCH,
+    SPARSE_BALLS,
     NutBodies,
     ball_layout,
     body_properties,
@@ -224,3 +225,22 @@ def test_a_30_and_40_turn_double_nut_converges(turns: int, support: str) -> None
     assert preloaded[-1] > 10.0 * preloaded[0]
     added = loaded.per_nut(loaded.loads - rest.loads)[0]  # the load at the loaded end
     assert added[0] > 20.0 * added[-1] and loaded.nut_forces[1] > 0.9 * fp
+
+
+def test_a_long_nut_started_from_a_neighbouring_load_finds_the_same_root() -> None:
+    """Above SPARSE_BALLS balls (the sparse bar system) a solve started from the solution at a
+    neighbouring load (the stiffness curve, the lift-off search) converges in fewer Newton
+    iterations to the root of the cold start: loads, displacement and compliance to 1e-12."""
+    long_nut = ball_layout(300, 2, LEAD, D_M, BALL, ALPHA, LEAD)
+    assert long_nut.z.size >= SPARSE_BALLS
+    g = solve_distribution(long_nut, K, BETA, ALPHA, 0.0, 3030.0, BODIES).interference
+    near = solve_distribution(long_nut, K, BETA, ALPHA, 5000.0, 3030.0, BODIES, interference=g)
+    cold = solve_distribution(long_nut, K, BETA, ALPHA, 6000.0, 3030.0, BODIES, interference=g)
+    warm = solve_distribution(
+        long_nut, K, BETA, ALPHA, 6000.0, 3030.0, BODIES, interference=g, start=near
+    )
+    assert warm.iterations < cold.iterations
+    assert warm.loads == pytest.approx(cold.loads, rel=1e-12, abs=1e-12 * cold.loads.max())
+    assert warm.displacement == pytest.approx(cold.displacement, rel=1e-12)
+    assert warm.compliance == pytest.approx(cold.compliance, rel=1e-12)
+    assert warm.nut_forces[0] - warm.nut_forces[1] == pytest.approx(6000.0, rel=1e-12)

@@ -7,6 +7,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 
 from ballscrew.errors import InputError
 from ballscrew.loads import ball_load, nut_forces
@@ -181,8 +182,24 @@ def test_free_stiffness_is_the_derivative_of_the_load_deflection_curve(fa: float
     )
 
 
+def _finite_difference_jacobian(a, b, c, g, f, y):
+    """Central differences of q − φ(A q + B ξ + c), G q − f (Hertz φ) at y."""
+    n = a.shape[0]
+
+    def residual(v):
+        d = a @ v[:n] + b @ v[n:] + c
+        return np.concatenate([v[:n] - np.maximum(d, 0.0) ** 1.5, g @ v[:n] - f])
+
+    eps = 1e-6
+    fd = np.column_stack(
+        [(residual(y + eps * e) - residual(y - eps * e)) / (2 * eps) for e in np.eye(y.size)]
+    )
+    return fd, np.abs(residual(y)).max()
+
+
 def test_the_newton_jacobian_matches_finite_differences() -> None:
-    """J of q − φ(A q + B ξ + c), G q − f (Hertz φ) against central differences."""
+    """J of q − φ(A q + B ξ + c), G q − f (Hertz φ) against central differences: the solver
+    Newton returns inverts them."""
     from ballscrew.loads.distribution import _newton
 
     rng = np.random.default_rng(7)
@@ -192,18 +209,40 @@ def test_the_newton_jacobian_matches_finite_differences() -> None:
     g = b.T / n
     c = 1.0 + 0.1 * rng.random(n)
     f = g @ np.ones(n) * 1.2
-    y, jac, _ = _newton(a, b, c, g, f, np.concatenate([np.ones(n), np.zeros(m)]))
+    y, jac_solve, _ = _newton(a, b, c, g, f, np.concatenate([np.ones(n), np.zeros(m)]))
+    fd, residual = _finite_difference_jacobian(a, b, c, g, f, y)
+    assert jac_solve(fd) == pytest.approx(np.eye(n + m), abs=1e-7)
+    assert residual < 1e-12
 
-    def residual(v):
-        d = a @ v[:n] + b @ v[n:] + c
-        return np.concatenate([v[:n] - np.maximum(d, 0.0) ** 1.5, g @ v[:n] - f])
 
-    eps = 1e-6
-    fd = np.column_stack(
-        [(residual(y + eps * e) - residual(y - eps * e)) / (2 * eps) for e in np.eye(n + m)]
-    )
-    assert jac == pytest.approx(fd, abs=1e-8)
-    assert np.abs(residual(y)).max() < 1e-12
+def test_the_sparse_bar_jacobian_matches_finite_differences() -> None:
+    """The sparse system of the bars' tail forces and displacements (long nuts) solves with
+    the Jacobian of A = κ σ (ℓ z − k min(z_i, z_j)) σ − R, balls out of axial order and two at
+    the same z (a shared-ball nut), R banded: central differences, and the same root."""
+    from ballscrew.loads.distribution import _Bars, _newton
+
+    rng = np.random.default_rng(11)
+    n, m = 12, 3
+    z = rng.permutation(np.append(np.linspace(-0.02, 0.03, n - 1), 0.005))
+    sigma = np.where(rng.random(n) < 0.5, 1.0, -1.0)
+    kappa, lead_coef, bar = 2.0, 0.4, 1.3
+    near = np.abs(z[:, None] - z[None, :]) < 0.006
+    ring = 0.01 * near * rng.random((n, n))
+    a = kappa * sigma[:, None] * (lead_coef * z[:, None] - bar * np.minimum.outer(z, z))
+    a = a * sigma[None, :] - ring
+    b = np.column_stack([sigma, rng.normal(size=(n, m - 1))])
+    g = b.T / n
+    c = 1.0 + 0.1 * rng.random(n)
+    f = g @ np.ones(n) * 1.2
+    start = np.concatenate([np.ones(n), np.zeros(m)])
+    bars = _Bars(kappa, lead_coef, bar, z, sigma, sp.csr_matrix(ring))
+    y, jac_solve, _ = _newton(bars, b, c, g, f, start)
+    assert bars @ y[:n] == pytest.approx(a @ y[:n], rel=1e-13, abs=1e-15)
+    fd, residual = _finite_difference_jacobian(a, b, c, g, f, y)
+    eye = np.column_stack([jac_solve(column) for column in fd.T])
+    assert eye == pytest.approx(np.eye(n + m), abs=1e-7)
+    assert residual < 1e-12
+    assert y == pytest.approx(_newton(a, b, c, g, f, start)[0], rel=1e-12, abs=1e-14)
 
 
 def test_free_nut_of_a_single_nut_and_four_point_contact() -> None:

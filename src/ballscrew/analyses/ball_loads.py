@@ -154,8 +154,11 @@ def elastic_distribution(
     interference: float | None = None,
     errors: bool = True,
     numerics: NumericsSpec | None = None,
+    start: Distribution | None = None,
 ) -> Distribution:
-    """The elastic distribution of the case's screw at ``axial_load`` (None: the case's).
+    """The elastic distribution of the case's screw at ``axial_load`` (None: the case's);
+    ``start``: a solution at a neighbouring load for Newton to start from (long nuts,
+    :func:`~ballscrew.loads.distribution.solve_distribution`).
 
     ``spec.contact = "numerical"`` tabulates the contact law with ``numerics`` (None: the
     defaults of ``[numerics]``) once per screw and load range (cached), and warns
@@ -181,6 +184,7 @@ def elastic_distribution(
             support=spec.nut_support,
             radial_load=spec.nut_radial_load,
             tilting_moment=spec.nut_tilting_moment,
+            start=start,
         )
     if contact is not None:
         warn_above_table(contact, float(dist.loads.max()))

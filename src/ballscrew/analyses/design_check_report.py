@@ -130,17 +130,19 @@ def _body_curve(result: DesignCheck, top: float) -> tuple[np.ndarray, ...]:
     interference = (  # of the preload, found at zero axial load; none without preload
         _distribution_at(result, 0.0).interference if fp > 0 else None
     )
-    runs = [
-        elastic_distribution(
-            params,
-            spec,
-            result.root_diameter,
-            axial_load=f,
-            interference=interference,
-            numerics=numerics,
+    runs: list[Distribution] = []
+    for f in loads:  # each solve starts from the one at the load before (long nuts)
+        runs.append(
+            elastic_distribution(
+                params,
+                spec,
+                result.root_diameter,
+                axial_load=f,
+                interference=interference,
+                numerics=numerics,
+                start=runs[-1] if runs else None,
+            )
         )
-        for f in loads
-    ]
     x = np.array([r.displacement for r in runs])
     if fp > 0:  # from the preloaded state at zero load; without preload x(0) = 0 already
         x = x - x[0]
