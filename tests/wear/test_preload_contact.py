@@ -178,3 +178,44 @@ def test_a_worn_contact_clipped_by_the_grid_warns(case: Case) -> None:
 def test_an_unknown_preload_contact_is_refused() -> None:
     with pytest.raises((InputError, ValueError), match="preload_contact"):
         ballscrew.load_case(REF_PATH, {"wear.preload_contact": "exact"})
+
+
+def test_a_wide_bridged_groove_keeps_the_root_that_the_fixed_point_jumps_over(case: Case) -> None:
+    """8 µm worn over 0.84 of the grid: at F_p0 the ball sinks into the groove and the worn
+    contact takes the whole interference (G(F_p0) = 0, the first iterate 0 N), while at a
+    vanishing load it rides on the shoulders, G(0+) ≈ 42 N > 0: the balance has a root near
+    36 N, and that, not 0 N, is returned (the contact at F_p0 reaches the grid's edge)."""
+    setup = wear_setup(case)
+    depth = _groove(setup, 0.84, 8.0e-6)
+    top = setup.initial_preload
+    assert _balance(setup, depth, top)[0] == -top  # G(F_p0) = 0
+    with pytest.warns(GridEdgeWarning):
+        preload, _ = preload_after(setup, depth)
+    assert 20.0 < preload < 42.0
+    assert abs(_balance(setup, depth, preload)[0]) <= preload_module.TOLERANCE * top
+
+
+def test_the_zero_exit_finds_a_root_that_the_fixed_point_jumped_over() -> None:
+    """G(F) = 800 (1 − F/500) N, 0 above 500 N (a bridged groove: G(0+) > 0, falling with F):
+    from 1000 N the first iterate is G = 0, yet F = G(F) has its root at 800/2.6 N. A G with
+    G(0+) = 0 and no positive root still gives 0 N."""
+    limit = preload_module.TOLERANCE * 1000.0
+    bridged, _ = preload_module._preload_root(
+        lambda f: max(800.0 * (1.0 - f / 500.0), 0.0), 1000.0, 1000.0, ""
+    )
+    assert bridged == pytest.approx(800.0 / 2.6, abs=limit)
+    none, evaluations = preload_module._preload_root(
+        lambda f: max(0.5 * (f - 200.0), 0.0), 1000.0, 1000.0, ""
+    )
+    assert none == 0.0 and evaluations == 4  # G(1000), G(400), G(100) = 0 and G(ε) = 0
+
+
+def test_a_clipped_preload_update_warns_once(case: Case) -> None:
+    """A tight box (1.01 Hertz semi-axes) and 3 µm worn across the grid: the worn contact
+    touches the grid's edge at each of its seven iterates, and the update warns once."""
+    setup = wear_setup(with_overrides(case, {"wear.box_factor": 1.01}))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _, solves = preload_after(setup, _groove(setup, 1.0, 3.0e-6))
+    edge = [w for w in caught if issubclass(w.category, GridEdgeWarning)]
+    assert solves > 2 and len(edge) == 1

@@ -22,10 +22,13 @@ ball's contacts plus the elastic bodies. Wear of depth h(y) on the screw flank s
   ball's conformity G rises with F (the wider contact of a larger load loses less) and the
   iterates fall monotonically to the root; where the ball bridges a deep, narrow groove on its
   shoulders G falls with F and they alternate about it (4 µm worn over half the grid:
-  697 → 716 → 714.7 → 714.8 N). The grid's
-  discretisation of the approach cancels in the difference; a worn contact that reaches the
-  edge of the fixed grid warns (:class:`~ballscrew.wear.step.GridEdgeWarning`). The nut contact
-  and the bodies stay as in (E1.13).
+  697 → 716 → 714.7 → 714.8 N). An iterate whose worn contact takes the whole interference
+  (G(F_k) = 0) gives 0 N only when G(ε) ≤ ε at ε = 1e-6 F_p0: a bridged groove has G(0+) > 0
+  (≈ 798 N for the one above), and G(ε) > ε brackets a root in (ε, F_k], solved by Brent's
+  method to the same tolerance. The grid's discretisation of the approach cancels in the
+  difference; a worn contact that reaches the edge of the fixed grid warns once per update, at
+  the Q of the largest pressure on the grid's rim (:class:`~ballscrew.wear.step.GridEdgeWarning`).
+  The nut contact and the bodies stay as in (E1.13).
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ballscrew.contact import solve_normal_batch
 from ballscrew.errors import ConvergenceError
@@ -78,15 +82,12 @@ def worn_preload(setup: WearSetup, depth: FloatArray, previous: float) -> tuple[
     k = int(np.argmax(depth.max(axis=1)))
     nominal = setup.nominal_gap[FLANKS[k]]
     gaps = np.stack([worn_gap(nominal, depth[k]), nominal])
-    tolerance = TOLERANCE * setup.initial_preload
-    force = min(max(previous, floor), setup.initial_preload)
     pressures = None
-    residual = float("inf")
-    for iteration in range(1, MAX_ITERATIONS + 1):
-        # the worn contact took the whole interference; G(0+) = 0 is ASSUMED (so where G rises
-        # with F; a bridged groove whose G fell to 0 at a larger F could keep a root above 0)
-        if force <= 0.0:
-            return 0.0, 2 * (iteration - 1)
+    edge: tuple[float, FloatArray, float] | None = None  # largest rim pressure, p, Q
+
+    def balance(force: float) -> float:
+        """G(F): F_p of (E1.13) with h_eff(Q(F)) for h_max."""
+        nonlocal pressures, edge
         q = setup.ball_load(force)
         worn, unworn = solve_normal_batch(
             gaps,
@@ -98,19 +99,61 @@ def worn_preload(setup: WearSetup, depth: FloatArray, previous: float) -> tuple[
             max_iterations=setup.max_iterations,
             initial=pressures,
         )
-        warn_at_grid_edge(np.asarray(worn.pressure), q, "the worn contact of the preload update")
+        p = np.asarray(worn.pressure)
+        rim = float(max(p[[0, -1], :].max(), p[:, [0, -1]].max()))
+        if rim > 0.0 and (edge is None or rim > edge[0]):
+            edge = (rim, p, q)
         pressures = np.stack([worn.pressure, unworn.pressure])
-        updated = setup.preload(min(max(worn.approach - unworn.approach, 0.0), h_max))
+        return setup.preload(min(max(worn.approach - unworn.approach, 0.0), h_max))
+
+    start = min(max(previous, floor), setup.initial_preload)
+    detail = f"h_max = {h_max:.3g} m"
+    try:
+        force, evaluations = _preload_root(balance, start, setup.initial_preload, detail)
+    finally:  # one warning per update, at the Q of the largest pressure on the grid's rim
+        if edge is not None:
+            warn_at_grid_edge(edge[1], edge[2], "the worn contact of the preload update")
+    return force, 2 * evaluations
+
+
+def _preload_root(
+    balance: Callable[[float], float], start: float, scale: float, detail: str
+) -> tuple[float, int]:
+    """Root of F = G(F) (``balance``: G) by the fixed point from ``start`` to TOLERANCE·``scale``,
+    and the evaluations of G made.
+
+    Where the iterate F_k reaches G(F_k) = 0 (the worn contact took the whole interference),
+    0 N is returned only when G(ε) ≤ ε at ε = TOLERANCE·``scale``: a groove the ball bridges on
+    its shoulders has G(0+) > 0, and G(ε) > ε with G(F_k) − F_k < 0 brackets a root in
+    (ε, F_k], found by :func:`scipy.optimize.brentq` to the same tolerance.
+    """
+    tolerance = TOLERANCE * scale
+    evaluations = 0
+
+    def g(force: float) -> float:
+        nonlocal evaluations
+        evaluations += 1
+        return balance(force)
+
+    force = start
+    residual = float("inf")
+    for _ in range(MAX_ITERATIONS):
+        if force <= 0.0:
+            return 0.0, evaluations
+        updated = g(force)
+        if updated <= 0.0 < force - tolerance and g(tolerance) > tolerance:
+            root = brentq(lambda f: g(f) - f, tolerance, force, xtol=tolerance)
+            return float(root), evaluations
         residual = abs(updated - force)
         force = updated
         if residual <= tolerance:
-            return force, 2 * iteration
+            return force, evaluations
     raise ConvergenceError(
         "worn-groove preload update (wear.preload_contact = 'worn')",
         MAX_ITERATIONS,
-        residual / setup.initial_preload,
+        residual / scale,
         TOLERANCE,
-        f"|G(F_p) − F_p| = {residual:.3g} N at F_p = {force:.6g} N, h_max = {h_max:.3g} m",
+        f"|G(F_p) − F_p| = {residual:.3g} N at F_p = {force:.6g} N, {detail}",
     )
 
 
