@@ -29,6 +29,7 @@ from ballscrew.lubrication import composite_roughness
 
 __all__ = [
     "ball_roughness",
+    "measurement_band",
     "profile_roughness",
     "roughness_input",
     "roughness_summary",
@@ -82,23 +83,26 @@ def roughness_input(case: Case) -> float | tuple[float, float]:
     """``AsperitySurface.roughness`` of the case's contact: the measured σ [m], the band
     (L_u, l_c) [m] of (F3) for a smooth ball, or with a rough ball (``surface.ball``) the
     composite σ = √(σ_raceway² + σ_ball²) of both profiles over that band (Tallian 1967)."""
-    tcr = case.tcr
-    if tcr.rms_roughness is not None:
-        return float(tcr.rms_roughness)
-    band = (tcr.sampling_length, tcr.cutoff_length)
-    ball = case.surface.ball
-    if ball is None:
-        return band
+    if case.tcr.rms_roughness is not None:
+        return float(case.tcr.rms_roughness)
+    band = measurement_band(case)
     surface = case.surface
+    if surface.ball is None:
+        return band
     raceway = composite_roughness(surface.D, profile_roughness(case, surface.D, surface.G), *band)
     return math.hypot(raceway, ball_roughness(case))
+
+
+def measurement_band(case: Case) -> tuple[float, float]:
+    """(L_u, l_c) [m]: the wavelength band of a roughness measurement over which (F3) is taken."""
+    return case.tcr.sampling_length, case.tcr.cutoff_length
 
 
 def ball_roughness(case: Case) -> float:
     """σ_b [m] of a rough ball (``surface.ball``, its profile G) over the band
     [``tcr.cutoff_length``, ``tcr.sampling_length``] of (F3); 0 for a smooth ball."""
-    tcr, ball = case.tcr, case.surface.ball
+    ball = case.surface.ball
     if ball is None:
         return 0.0
     g = profile_roughness(case, ball.D, ball.G)
-    return composite_roughness(ball.D, g, tcr.sampling_length, tcr.cutoff_length)
+    return composite_roughness(ball.D, g, *measurement_band(case))

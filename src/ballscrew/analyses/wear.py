@@ -22,7 +22,12 @@ from ballscrew.analyses.ball_loads import ball_contact_law, elastic_distribution
 from ballscrew.analyses.duty import operating_excess
 from ballscrew.analyses.parameters import ScrewParameters
 from ballscrew.analyses.result import Presented, recorded_warnings
-from ballscrew.analyses.roughness import ball_roughness, roughness_input, surface_roughness
+from ballscrew.analyses.roughness import (
+    ball_roughness,
+    measurement_band,
+    roughness_input,
+    surface_roughness,
+)
 from ballscrew.analyses.wear_duty import duty_programme, warn_outside_range
 from ballscrew.analyses.wear_film import PartFilm, part_films, warn_full_film
 from ballscrew.budget import check_memory, contact_grid_bytes
@@ -252,9 +257,7 @@ def _film_roughness(case: Case) -> FilmRoughness:
     """σ_Λ of the case's raceway as it runs in: the band of ``[tcr]``, a rough ball's σ over it
     (``surface.ball``) and ``tcr.rms_roughness`` when measured (theory manual, *Wear*,
     running-in)."""
-    tcr = case.tcr
-    band = (tcr.sampling_length, tcr.cutoff_length)
-    return FilmRoughness(band, ball_roughness(case), tcr.rms_roughness)
+    return FilmRoughness(measurement_band(case), ball_roughness(case), case.tcr.rms_roughness)
 
 
 def _ball_classes(
